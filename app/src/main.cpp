@@ -1,0 +1,30 @@
+#include "command_registry.hpp"
+#include "errors.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  using namespace ceilplan::app;
+  CLI::App app{
+      "ceilplan: battery-wear-aware inspection planning for multirotors flying under ceilings"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "ceilplan 0.1.0");
+  addRegisteredCommands(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    std::cerr << "ceilplan: error: " << e.what() << " (see 'ceilplan --help')\n";
+    return kExitUsage;
+  } catch (const NoPathError& e) {
+    std::cerr << "ceilplan: no path: " << e.what() << '\n';
+    return kExitNoPath;
+  } catch (const std::exception& e) {
+    std::cerr << "ceilplan: error: " << e.what() << '\n';
+    return kExitInputError;
+  }
+  return kExitOk;
+}

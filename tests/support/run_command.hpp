@@ -1,0 +1,53 @@
+#pragma once
+// Runs the `ceilplan` executable as a user would and captures what it says.
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace ceilplan::testing {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+inline std::string readWholeFile(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A fresh scratch directory for one test, under the build tree.
+inline std::filesystem::path scratchDirectory(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(CEILPLAN_TEST_TMP) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// `arguments` is passed through the shell after the executable's path.
+inline CommandResult runCeilplan(const std::string& arguments) {
+  const std::filesystem::path dir = std::filesystem::path(CEILPLAN_TEST_TMP);
+  std::filesystem::create_directories(dir);
+  const std::string tag = std::to_string(std::rand());
+  const auto out_path = dir / ("stdout_" + tag);
+  const auto err_path = dir / ("stderr_" + tag);
+  const std::string command = std::string(CEILPLAN_EXE) + " " + arguments + " </dev/null >" +
+                              out_path.string() + " 2>" + err_path.string();
+  const int status = std::system(command.c_str());
+  CommandResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  result.out = readWholeFile(out_path);
+  result.err = readWholeFile(err_path);
+  std::filesystem::remove(out_path);
+  std::filesystem::remove(err_path);
+  return result;
+}
+
+}  // namespace ceilplan::testing
