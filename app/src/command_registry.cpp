@@ -23,6 +23,12 @@ void addRegisteredCommands(CLI::App& parent) {
   std::stable_sort(commands.begin(), commands.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const auto& entry : commands) entry.second(parent);
+  // Subcommands pass `--config` (see yaml_config.hpp) and `--version` up to the main app.
+  for (CLI::App* command : parent.get_subcommands({})) {
+    command->fallthrough();
+    command->footer("Every flag can also come from a YAML file: ceilplan " + command->get_name() +
+                    " --config FILE.yaml, keys = long flag names (flags given here win).");
+  }
 }
 
 }  // namespace ceilplan::app

@@ -1,16 +1,20 @@
 #include "command_registry.hpp"
 #include "errors.hpp"
+#include "yaml_config.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <exception>
 #include <iostream>
+#include <memory>
 
 int main(int argc, char** argv) {
   using namespace ceilplan::app;
   CLI::App app{
       "ceilplan: battery-wear-aware inspection planning for multirotors flying under ceilings"};
   app.require_subcommand(1);
+  app.config_formatter(std::make_shared<YamlConfig>(app));
+  app.set_config("--config", "", "YAML file whose keys are the chosen command's long flag names");
   app.set_version_flag("--version", "ceilplan 0.1.0");
   addRegisteredCommands(app);
   try {

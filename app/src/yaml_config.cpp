@@ -71,7 +71,9 @@ std::vector<CLI::ConfigItem> YamlConfig::from_config(std::istream& input) const 
     if (root.IsNull()) return items;
     if (!root.IsMap())
       throw CLI::ConversionError("config file must be a YAML map of flag names to values");
-    collect(root, {}, items);
+    std::vector<std::string> parents;
+    for (const CLI::App* chosen : root_->get_subcommands()) parents.push_back(chosen->get_name());
+    collect(root, parents, items);
   } catch (const YAML::Exception& e) {
     std::ostringstream message;
     message << "malformed YAML config at line " << e.mark.line + 1 << ", column "

@@ -1,0 +1,22 @@
+#pragma once
+
+namespace ceilplan::battery {
+
+// A battery pack as the simulation sees it. Defaults: the founding paper's 4S 5.2 Ah LiPo,
+// charged at 2C = 10.4 A (Kocer et al. 2019, reference-models.md section 1).
+struct Pack {
+  double capacity_ah = 5.2;        // nominal capacity C_nom
+  int cell_count = 4;              // series cells
+  double charge_current_a = 10.4;  // charger current (2C)
+  double soc_min = 0.0;            // a run that would go below this is refused
+  double soc_max = 1.0;            // charging never goes above this
+  double state_of_health = 1.0;    // usable capacity / nominal (paper eq. 7; 1 in the paper)
+
+  // Usable capacity: C_nom * SOH.
+  double usableCapacityAh() const { return capacity_ah * state_of_health; }
+
+  // Throws std::invalid_argument naming the first field that is out of range.
+  void validate() const;
+};
+
+}  // namespace ceilplan::battery

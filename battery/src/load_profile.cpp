@@ -1,0 +1,52 @@
+#include "ceilplan/battery/load_profile.hpp"
+
+#include "format.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace ceilplan::battery {
+
+std::string toString(Mode mode) {
+  switch (mode) {
+    case Mode::Discharge: return "discharge";
+    case Mode::Idle: return "idle";
+    case Mode::Charge: return "charge";
+  }
+  return "unknown";
+}
+
+Segment Segment::discharge(double current_a, double duration_s) {
+  return Segment{Mode::Discharge, current_a, duration_s, std::nullopt};
+}
+
+Segment Segment::idle(double duration_s) { return Segment{Mode::Idle, 0.0, duration_s, std::nullopt}; }
+
+Segment Segment::charge(double current_a, double max_duration_s, double until_soc) {
+  return Segment{Mode::Charge, current_a, max_duration_s, until_soc};
+}
+
+double Segment::signedCurrentA() const {
+  switch (mode) {
+    case Mode::Discharge: return current_a;
+    case Mode::Charge: return -current_a;
+    case Mode::Idle: return 0.0;
+  }
+  return 0.0;
+}
+
+void Segment::validate() const {
+  const std::string what = toString(mode) + " segment";
+  if (!(std::isfinite(current_a) && current_a >= 0.0))
+    throw std::invalid_argument(what + ": current must be a finite number >= 0 A, got " + detail::number(current_a));
+  if (!(std::isfinite(duration_s) && duration_s >= 0.0))
+    throw std::invalid_argument(what + ": duration must be a finite number >= 0 s, got " + detail::number(duration_s));
+  if (mode == Mode::Charge && current_a == 0.0 && duration_s > 0.0)
+    throw std::invalid_argument(what + ": charge current is 0 A, so the battery can never charge; set a charge current > 0");
+  if (mode == Mode::Idle && current_a != 0.0)
+    throw std::invalid_argument(what + ": an idle segment carries no current");
+  if (stop_soc && !(*stop_soc > 0.0 && *stop_soc <= 1.0))
+    throw std::invalid_argument(what + ": stop SOC must be in (0, 1], got " + detail::number(*stop_soc));
+}
+
+}  // namespace ceilplan::battery
