@@ -84,13 +84,12 @@ std::unique_ptr<AgeingModel> FecAgeingModel::clone() const {
 
 void FecAgeingModel::consume(const AgeingSample* previous, const AgeingSample* samples,
                              std::size_t count) {
+  // Summed sample by sample, so that any split of the history gives the same total.
   double soc_before = previous != nullptr ? previous->soc : samples[0].soc;
-  double swing = 0.0;
   for (std::size_t i = 0; i < count; ++i) {
-    swing += std::fabs(samples[i].soc - soc_before);
+    fec_ += 0.5 * std::fabs(samples[i].soc - soc_before);
     soc_before = samples[i].soc;
   }
-  fec_ += 0.5 * swing;
 }
 
 }  // namespace ceilplan::battery
