@@ -1,23 +1,19 @@
 #include "ceilplan/battery/ageing_model.hpp"
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace ceilplan::battery {
 namespace {
 
+using detail::number;
+
 constexpr double kCelsiusToKelvin = 273.15;
 constexpr double kLargestPlausibleCelsius = 150.0;  // above this a value is kelvin given as Celsius
-
-std::string number(double value) {
-  std::ostringstream text;
-  text.precision(4);
-  text << value;
-  return text.str();
-}
 
 bool sameWord(const std::string& a, const std::string& b) {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {

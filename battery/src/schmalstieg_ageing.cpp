@@ -1,5 +1,7 @@
 #include "ceilplan/battery/schmalstieg_ageing.hpp"
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -64,8 +66,8 @@ std::unique_ptr<AgeingModel> SchmalstiegAgeingModel::clone() const {
 double SchmalstiegAgeingModel::cellVoltage(double soc) const {
   const double v = cell_voltage_of_soc_(soc);
   if (!std::isfinite(v) || v <= 0.0 || v > kLargestCellVoltage_v)
-    throw std::invalid_argument("cell voltage " + std::to_string(v) + " V at SOC " +
-                                std::to_string(soc) +
+    throw std::invalid_argument("cell voltage " + detail::number(v) + " V at SOC " +
+                                detail::number(soc) +
                                 " is not a single cell's (0..5 V); give one cell's voltage");
   return v;
 }
