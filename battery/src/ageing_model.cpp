@@ -89,6 +89,8 @@ void AgeingModel::addSamples(const std::vector<AgeingSample>& samples) {
   addSamples(samples.data(), samples.size());
 }
 
+double AgeingModel::capacityLoss() const { return std::min(1.0, modelCapacityLoss()); }
+
 ObservedCRates AgeingModel::observedCRates(double nominal_capacity_ah) const {
   if (!(nominal_capacity_ah > 0.0) || !std::isfinite(nominal_capacity_ah))
     throw std::invalid_argument("nominal capacity " + number(nominal_capacity_ah) +

@@ -76,7 +76,7 @@ ValidityRange FecAgeingModel::validity() const {
       "no DoD, SOC, temperature or C-rate dependence; calendar ageing neglected (paper)");
 }
 
-double FecAgeingModel::capacityLoss() const {
+double FecAgeingModel::modelCapacityLoss() const {
   return fec_ / parameters_.cycles_at_full_depth * parameters_.end_of_life_capacity_loss;
 }
 

@@ -325,3 +325,12 @@ TEST(OperatingConditions, StudiesOutsideAModelsRangeCarryWarnings) {
   fec->addSamples(missions(2, 0.35, 9.5));
   EXPECT_TRUE(cb::validityWarnings(*fec, lipo_at_25c, 5.2).empty());
 }
+
+TEST(AgeingModels, CapacityLossStopsAtTheWholeCapacity) {
+  cb::WoehlerParameters p;
+  p.cycles_at_full_depth = 10.0;
+  cb::WoehlerAgeingModel model(p);
+  model.addSamples(cyclesAtTimeZero(100, 0.0, 1.0));
+  EXPECT_DOUBLE_EQ(model.damage(), 10.0);  // Miner's sum goes on...
+  EXPECT_DOUBLE_EQ(model.capacityLoss(), 1.0);  // ...the capacity lost cannot exceed it all
+}

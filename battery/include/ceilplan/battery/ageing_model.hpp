@@ -61,9 +61,10 @@ class AgeingModel {
   void addSamples(const AgeingSample* samples, std::size_t count);
   void addSamples(const std::vector<AgeingSample>& samples);
 
-  // Fraction of nominal capacity lost so far (0 new, 0.2 at the usual end of life). Ranges the
-  // rainflow count still holds open count as half cycles; feeding may go on afterwards.
-  virtual double capacityLoss() const = 0;
+  // Fraction of nominal capacity lost so far (0 new, 0.2 at the usual end of life), at most 1
+  // (a law extrapolated past a dead cell). Ranges the rainflow count still holds open count as
+  // half cycles; feeding may go on afterwards.
+  double capacityLoss() const;
 
   virtual std::unique_ptr<AgeingModel> clone() const = 0;
 
@@ -82,6 +83,8 @@ class AgeingModel {
   // start of the history.
   virtual void consume(const AgeingSample* previous, const AgeingSample* samples,
                        std::size_t count) = 0;
+  // The model's law, unclamped.
+  virtual double modelCapacityLoss() const = 0;
 
  private:
   void validate(const AgeingSample* samples, std::size_t count) const;

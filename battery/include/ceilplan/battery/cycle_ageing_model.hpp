@@ -11,8 +11,6 @@ namespace ceilplan::battery {
 
 class CycleAgeingModel : public AgeingModel {
  public:
-  double capacityLoss() const final { return capacityLossWith(counter_.residue()); }
-
   // The rainflow count of the SOC history so far (for inspection and reports).
   const RainflowCounter& rainflow() const { return counter_; }
 
@@ -21,6 +19,7 @@ class CycleAgeingModel : public AgeingModel {
   virtual void addCycle(const RainflowCycle& cycle) = 0;
   // Time passing between two consecutive samples (calendar ageing); nothing by default.
   virtual void addInterval(const AgeingSample& from, const AgeingSample& to);
+  double modelCapacityLoss() const final { return capacityLossWith(counter_.residue()); }
   // The loss so far if the still-open ranges `open` (half cycles) closed now.
   virtual double capacityLossWith(const std::vector<RainflowCycle>& open) const = 0;
 

@@ -49,7 +49,6 @@ class FecAgeingModel : public AgeingModel {
   explicit FecAgeingModel(const WoehlerParameters& parameters = {});
   std::string name() const override { return "fec"; }
   ValidityRange validity() const override;
-  double capacityLoss() const override;
   std::unique_ptr<AgeingModel> clone() const override;
 
   double fullEquivalentCycles() const { return fec_; }
