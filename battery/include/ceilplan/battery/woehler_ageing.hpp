@@ -56,6 +56,7 @@ class FecAgeingModel : public AgeingModel {
  private:
   void consume(const AgeingSample* previous, const AgeingSample* samples,
                std::size_t count) override;
+  double modelCapacityLoss() const override;
 
   WoehlerParameters parameters_;
   double fec_ = 0.0;
