@@ -56,20 +56,20 @@ void OperatingConditions::validate() const {
 }
 
 void AgeingModel::validate(const AgeingSample* samples, std::size_t count) const {
-  double previous_time_s = samples_seen_ > 0 ? last_.time_s : -INFINITY;
+  double previous_time_s = samples_seen_ > 0 ? last_.t_s : -INFINITY;
   for (std::size_t i = 0; i < count; ++i) {
     const AgeingSample& s = samples[i];
     const std::size_t index = samples_seen_ + i;
-    if (!std::isfinite(s.time_s) || !std::isfinite(s.soc) || !std::isfinite(s.current_a))
+    if (!std::isfinite(s.t_s) || !std::isfinite(s.soc) || !std::isfinite(s.current_a))
       throw std::invalid_argument(sampleError(index, "time, SOC or current is not a finite number"));
     if (s.soc < 0.0 || s.soc > 1.0)
       throw std::invalid_argument(
           sampleError(index, "SOC " + number(s.soc) + " is outside [0, 1]; give SOC as a fraction"));
-    if (s.time_s < previous_time_s)
+    if (s.t_s < previous_time_s)
       throw std::invalid_argument(sampleError(index, "time goes backwards (" +
                                                          number(previous_time_s) + " s to " +
-                                                         number(s.time_s) + " s)"));
-    previous_time_s = s.time_s;
+                                                         number(s.t_s) + " s)"));
+    previous_time_s = s.t_s;
   }
 }
 

@@ -108,7 +108,7 @@ void SchmalstiegAgeingModel::addInterval(const AgeingSample& from, const AgeingS
   const double v_to = cellVoltage(to.soc);
   const double capacity_rate_to = schmalstiegCalendarCapacityRate(v_to, t_k, parameters_);
   const double resistance_rate_to = schmalstiegCalendarResistanceRate(v_to, t_k, parameters_);
-  const double dt_days = (to.time_s - from.time_s) / kSecondsPerDay;
+  const double dt_days = (to.t_s - from.t_s) / kSecondsPerDay;
   calendar_capacity_loss_ =
       advancePowerLawState(calendar_capacity_loss_, 0.5 * (last_capacity_rate_ + capacity_rate_to),
                            kCalendarExponent, dt_days);

@@ -45,7 +45,7 @@ double XuAgeingModel::cycleStress(const RainflowCycle& cycle) const {
 void XuAgeingModel::addCycle(const RainflowCycle& cycle) { closed_cycle_damage_ += cycleStress(cycle); }
 
 void XuAgeingModel::addInterval(const AgeingSample& from, const AgeingSample& to) {
-  const double dt_s = to.time_s - from.time_s;
+  const double dt_s = to.t_s - from.t_s;
   elapsed_s_ += dt_s;
   soc_time_integral_s_ += 0.5 * (from.soc + to.soc) * dt_s;
 }

@@ -171,7 +171,7 @@ TEST(SchmalstiegModel, CycleLossIsBCapTimesSqrtOfThroughput) {
   EXPECT_DOUBLE_EQ(model.calendarCapacityLoss(), 0.0);
 }
 
-TEST(SchmalstiegModel, RejectsAPackVoltageForACells) {
+TEST(SchmalstiegModel, RejectsAPackVoltageGivenForACell) {
   cb::SchmalstiegAgeingModel model(cb::OperatingConditions{}, [](double soc) {
     return 4.0 * linearCellVoltage(soc);  // a 4S pack's voltage
   });

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace ceilplan::testing {
 
@@ -35,7 +36,8 @@ inline std::filesystem::path scratchDirectory(const std::string& name) {
 inline CommandResult runCeilplan(const std::string& arguments) {
   const std::filesystem::path dir = std::filesystem::path(CEILPLAN_TEST_TMP);
   std::filesystem::create_directories(dir);
-  const std::string tag = std::to_string(std::rand());
+  static int calls = 0;  // tests run in parallel processes: pid + call count names the capture files
+  const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(++calls);
   const auto out_path = dir / ("stdout_" + tag);
   const auto err_path = dir / ("stderr_" + tag);
   const std::string command = std::string(CEILPLAN_EXE) + " " + arguments + " </dev/null >" +

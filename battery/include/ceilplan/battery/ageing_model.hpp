@@ -13,7 +13,7 @@ namespace ceilplan::battery {
 // One point of a battery's history. `current_a` is positive while discharging (the sign of
 // paper eq. 7, SOC falling); the models use it only for the C-rates they report having seen.
 struct AgeingSample {
-  double time_s = 0.0;
+  double t_s = 0.0;
   double soc = 0.0;  // state of charge, 0..1
   double current_a = 0.0;
 };
