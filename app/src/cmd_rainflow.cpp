@@ -102,7 +102,7 @@ void addRainflowCommand(CLI::App& parent) {
   auto args = std::make_shared<RainflowArguments>();
   CLI::App* command = parent.add_subcommand(
       "rainflow", "Rainflow cycles (ASTM E1049-85) of an SOC column: depth, mean SOC, count, "
-                  "start and end rows");
+                  "and the 0-based data rows where each starts and ends");
   command->add_option("--csv", args->csv_path, "CSV file with a header row (a t_s column, if "
                                                "present, must not go backwards)")
       ->required();
