@@ -1,0 +1,59 @@
+#pragma once
+// Rainflow cycle counting per ASTM E1049-85 (section 5.4.4, "rainflow counting"), streaming:
+// a series fed piece by piece yields exactly the cycles it yields fed at once
+// (reference-models.md section 5).
+
+#include <cstddef>
+#include <vector>
+
+namespace ceilplan::battery {
+
+// One counted cycle: `range` is |a - b| (the depth of discharge for an SOC series), `mean` is
+// (a + b) / 2, `count` is 1 (full cycle) or 0.5 (half cycle). `start` and `end` are the global
+// sample indices (0-based, counting every sample fed so far) of its two turning points, in time
+// order; on a plateau a turning point is the plateau's first sample.
+struct RainflowCycle {
+  double range = 0.0;
+  double mean = 0.0;
+  double count = 0.0;
+  std::size_t start = 0;
+  std::size_t end = 0;
+};
+
+class RainflowCounter {
+ public:
+  // Feeds the next sample(s), in time order. Cycles closed by them are appended to `closed`
+  // (nothing is cleared). Throws std::invalid_argument on a non-finite value, naming its index;
+  // samples before the bad one have been counted.
+  void add(double value, std::vector<RainflowCycle>& closed);
+  void add(const double* values, std::size_t count, std::vector<RainflowCycle>& closed);
+  void add(const std::vector<double>& values, std::vector<RainflowCycle>& closed);
+
+  // What the series fed so far still holds, as half cycles: the last extreme is taken as a
+  // turning point (it may close full cycles, as at the end of ASTM's procedure) and every range
+  // left counts as one half cycle. Leaves the counter unchanged, so feeding may go on.
+  std::vector<RainflowCycle> residue() const;
+
+  std::size_t samplesSeen() const { return samples_seen_; }
+
+ private:
+  struct TurningPoint {
+    double value;
+    std::size_t index;
+  };
+
+  // Adds a confirmed turning point to `stack` and closes what ASTM's three-point rule closes.
+  static void pushTurningPoint(std::vector<TurningPoint>& stack, TurningPoint point,
+                               std::vector<RainflowCycle>& closed);
+
+  std::vector<TurningPoint> stack_;  // confirmed turning points not yet closed
+  TurningPoint candidate_{0.0, 0};   // the latest extreme, confirmed once the series turns back
+  int direction_ = 0;                // +1 rising, -1 falling, 0 before the series first moves
+  std::size_t samples_seen_ = 0;
+};
+
+// Counts a whole series at once: full cycles in the order they close, then the residue's half
+// cycles.
+std::vector<RainflowCycle> countRainflowCycles(const std::vector<double>& series);
+
+}  // namespace ceilplan::battery

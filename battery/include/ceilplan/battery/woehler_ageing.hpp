@@ -1,0 +1,65 @@
+#pragma once
+// Data-sheet cycle life: a Woehler law N(DoD) = N100 * DoD^-k with Miner's rule, and the
+// founding paper's FEC baseline on the same N100 (reference-models.md sections 1 and 5).
+
+#include "ceilplan/battery/ageing_model.hpp"
+#include "ceilplan/battery/cycle_ageing_model.hpp"
+
+namespace ceilplan::battery {
+
+// [open] calibration parameters (reference-models.md section 5: no public LiPo cycle-life
+// versus DoD data; N100 comes from a pack's data sheet, k about 1.2 to 2.1).
+struct WoehlerParameters {
+  double cycles_at_full_depth = 300.0;      // N100: full cycles to end of life at DoD 1 [open]
+  double exponent = 1.5;                    // k [open]
+  double end_of_life_capacity_loss = 0.2;   // end of life at SOH 0.8, the usual data-sheet rule
+
+  // Throws std::invalid_argument unless N100 > 0, k >= 0 and 0 < end-of-life loss <= 1.
+  void validate() const;
+};
+
+// N(depth) = N100 * depth^-k; infinite at depth 0. Depth is clamped to 1.
+double woehlerCyclesToEndOfLife(double depth, const WoehlerParameters& parameters);
+
+// Miner's rule: damage = sum n_i / N(DoD_i); capacity lost = damage * end-of-life loss.
+class WoehlerAgeingModel : public CycleAgeingModel {
+ public:
+  explicit WoehlerAgeingModel(const WoehlerParameters& parameters = {});
+  std::string name() const override { return "woehler"; }
+  ValidityRange validity() const override;
+  std::unique_ptr<AgeingModel> clone() const override;
+
+  // Miner damage so far (1 = end of life), open ranges as half cycles.
+  double damage() const;
+
+ private:
+  void addCycle(const RainflowCycle& cycle) override;
+  double capacityLossWith(const std::vector<RainflowCycle>& open) const override;
+  double damageWith(const std::vector<RainflowCycle>& open) const;
+
+  WoehlerParameters parameters_;
+  double closed_damage_ = 0.0;
+};
+
+// The founding paper's baseline: loss proportional to full equivalent cycles,
+// FEC = sum |dSOC| / 2 (section 5, as NREL BLAST-Lite; equal to section 1's
+// integral |i| dt / (2 C_nom) while SOH = 1), reaching end of life after N100 FEC.
+class FecAgeingModel : public AgeingModel {
+ public:
+  explicit FecAgeingModel(const WoehlerParameters& parameters = {});
+  std::string name() const override { return "fec"; }
+  ValidityRange validity() const override;
+  std::unique_ptr<AgeingModel> clone() const override;
+
+  double fullEquivalentCycles() const { return fec_; }
+
+ private:
+  void consume(const AgeingSample* previous, const AgeingSample* samples,
+               std::size_t count) override;
+  double modelCapacityLoss() const override;
+
+  WoehlerParameters parameters_;
+  double fec_ = 0.0;
+};
+
+}  // namespace ceilplan::battery
