@@ -109,6 +109,7 @@ DutyResult simulateDuty(const Pack& pack, const DutyCycle& duty, const DutyOptio
     day_tally.state_of_health = simulator.pack().state_of_health;
     result.days.push_back(day_tally);
     if (options.progress) options.progress(static_cast<double>(day + 1) / duty.days);
+    if (options.continue_after_day && !options.continue_after_day(day_tally)) break;
   }
   simulator.closeModeInterval();
   result.final_state = simulator.state();

@@ -68,6 +68,12 @@ class AgeingModel {
 
   virtual std::unique_ptr<AgeingModel> clone() const = 0;
 
+  // The model's measure of cycle ageing alone, additive over cycles, so cases compare by their
+  // ratio: FEC for "fec", Miner damage for "woehler", f_c for "xu", the sqrt(Q) capacity term
+  // for "schmalstieg". Open rainflow ranges count as half cycles.
+  virtual double cycleWear() const = 0;
+  virtual std::string cycleWearName() const = 0;
+
   std::size_t samplesSeen() const { return samples_seen_; }
   // Largest charging and discharging currents seen, in amperes (both >= 0).
   double peakChargeCurrentA() const { return peak_charge_current_a_; }

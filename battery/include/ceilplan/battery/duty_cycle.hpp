@@ -68,6 +68,8 @@ struct DutyOptions {
   bool record_run = false;       // keeps samples of the whole run
   MissionHook on_mission;        // optional
   std::function<void(double fraction)> progress;  // optional, called once a day
+  // Optional: called after every day; returning false ends the run there.
+  std::function<bool(const DayTally& day)> continue_after_day;
 };
 
 struct DutyResult {

@@ -71,6 +71,8 @@ class SchmalstiegAgeingModel : public CycleAgeingModel {
   double calendarCapacityLoss() const { return calendar_capacity_loss_; }
   double cycleCapacityLoss() const;           // open ranges as half cycles
   double resistanceGrowth() const;            // R / R_new - 1, open ranges as half cycles
+  double cycleWear() const override { return cycleCapacityLoss(); }
+  std::string cycleWearName() const override { return "cycle capacity loss"; }
 
   // The cell voltage the model uses, checked: throws std::invalid_argument on a value that is
   // not finite or not between 0 and 5 V (a pack voltage given for a cell's).

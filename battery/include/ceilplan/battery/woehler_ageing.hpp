@@ -31,6 +31,8 @@ class WoehlerAgeingModel : public CycleAgeingModel {
 
   // Miner damage so far (1 = end of life), open ranges as half cycles.
   double damage() const;
+  double cycleWear() const override { return damage(); }
+  std::string cycleWearName() const override { return "Miner damage"; }
 
  private:
   void addCycle(const RainflowCycle& cycle) override;
@@ -52,6 +54,8 @@ class FecAgeingModel : public AgeingModel {
   std::unique_ptr<AgeingModel> clone() const override;
 
   double fullEquivalentCycles() const { return fec_; }
+  double cycleWear() const override { return fec_; }
+  std::string cycleWearName() const override { return "FEC"; }
 
  private:
   void consume(const AgeingSample* previous, const AgeingSample* samples,

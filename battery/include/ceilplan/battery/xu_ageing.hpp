@@ -43,6 +43,8 @@ class XuAgeingModel : public CycleAgeingModel {
 
   double cycleDamage() const;     // f_c, open ranges as half cycles
   double calendarDamage() const;  // f_t
+  double cycleWear() const override { return cycleDamage(); }
+  std::string cycleWearName() const override { return "cycle damage f_c"; }
 
  private:
   void addCycle(const RainflowCycle& cycle) override;
