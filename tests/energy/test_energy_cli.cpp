@@ -1,0 +1,2 @@
+// placeholder, filled with the CLI
+#include <gtest/gtest.h>
