@@ -20,7 +20,7 @@ struct VehicleGeometry {
   double mass_kg = 1.4;
   int rotor_count = 4;
   double rotor_radius_m = 0.127;
-  double adjacent_rotor_spacing_m = 0.318198;  // d: 450 mm X frame, 0.225 m arms
+  double adjacent_rotor_spacing_m = 0.31819805153394637;  // d = sqrt(2) x 0.225 m arm: 450 mm X frame
   double opposite_rotor_spacing_m = 0.45;      // b
   double max_speed_m_s = 15.0;                 // beyond it the model refuses to answer
 };
