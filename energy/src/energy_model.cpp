@@ -68,8 +68,12 @@ EnergyModel::EnergyModel(const EnergyParameters& parameters)
 void EnergyModel::checkFlight(const FlightCondition& flight) const {
   checkGap("ground gap", flight.ground_gap_m);
   if (!(flight.speed_m_s >= 0.0)) refuse("speed", flight.speed_m_s, "m/s must be >= 0");
-  if (flight.speed_m_s > parameters_.vehicle.max_speed_m_s)
-    refuse("speed", flight.speed_m_s, "m/s is beyond the vehicle's max_speed_m_s");
+  if (flight.speed_m_s > parameters_.vehicle.max_speed_m_s) {
+    std::ostringstream message;
+    message << "speed " << flight.speed_m_s << " m/s is beyond the vehicle's max_speed_m_s ("
+            << parameters_.vehicle.max_speed_m_s << " m/s)";
+    throw std::invalid_argument(message.str());
+  }
   if (!std::isfinite(flight.climb_m_s)) refuse("climb rate", flight.climb_m_s, "m/s must be finite");
   if (!(flight.soc >= 0.0 && flight.soc <= 1.0)) refuse("state of charge", flight.soc, "is outside [0, 1]");
 }
