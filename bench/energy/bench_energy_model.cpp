@@ -34,43 +34,40 @@ const Inputs& inputs() {
   return shared;
 }
 
-void BM_CurrentSameGapOnAllRotors(benchmark::State& state) {
+// Runs `evaluate(model, inputs, i)` once per iteration, cycling i through the inputs.
+template <typename Evaluate>
+void cycleThroughInputs(benchmark::State& state, Evaluate evaluate) {
   const EnergyModel model(paperQuadParameters());
   const Inputs& in = inputs();
   std::size_t i = 0;
   for (auto _ : state) {
-    const double current_a = model.currentA(in.gap_m[i], 1.0, in.flight[i]);
-    benchmark::DoNotOptimize(current_a);
+    benchmark::DoNotOptimize(evaluate(model, in, i));
     i = (i + 1) % kInputs;
   }
+}
+
+void BM_CurrentSameGapOnAllRotors(benchmark::State& state) {
+  cycleThroughInputs(state, [](const EnergyModel& model, const Inputs& in, std::size_t i) {
+    return model.currentA(in.gap_m[i], 1.0, in.flight[i]);
+  });
 }
 BENCHMARK(BM_CurrentSameGapOnAllRotors);
 
 void BM_CurrentPerRotorGaps(benchmark::State& state) {
-  const EnergyModel model(paperQuadParameters());
-  const Inputs& in = inputs();
-  std::size_t i = 0;
-  for (auto _ : state) {
+  cycleThroughInputs(state, [](const EnergyModel& model, const Inputs& in, std::size_t i) {
     const RotorCeiling rotors[4] = {{in.gap_m[i], 1.0},
                                     {in.gap_m[(i + 1) % kInputs], 0.5},
                                     {in.gap_m[(i + 2) % kInputs], 1.0},
                                     {in.gap_m[(i + 3) % kInputs], 0.0}};
-    const double current_a = model.currentA(rotors, 4, in.flight[i]);
-    benchmark::DoNotOptimize(current_a);
-    i = (i + 1) % kInputs;
-  }
+    return model.currentA(rotors, 4, in.flight[i]);
+  });
 }
 BENCHMARK(BM_CurrentPerRotorGaps);
 
 void BM_FullBreakdown(benchmark::State& state) {
-  const EnergyModel model(paperQuadParameters());
-  const Inputs& in = inputs();
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const CurrentBreakdown b = model.breakdown(in.gap_m[i], 1.0, in.flight[i]);
-    benchmark::DoNotOptimize(b);
-    i = (i + 1) % kInputs;
-  }
+  cycleThroughInputs(state, [](const EnergyModel& model, const Inputs& in, std::size_t i) {
+    return model.breakdown(in.gap_m[i], 1.0, in.flight[i]);
+  });
 }
 BENCHMARK(BM_FullBreakdown);
 

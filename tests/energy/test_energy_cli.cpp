@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -38,15 +41,23 @@ void expectOneLineError(const std::string& arguments, const std::string& needle)
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
 }
 
+// run_command.hpp names its capture files with std::rand(); ctest runs every test of this
+// program as its own process in parallel, so seed per process or they share file names.
+class CurrentCommand : public ::testing::Test {
+ protected:
+  void SetUp() override { std::srand(static_cast<unsigned>(::getpid())); }
+};
+using CalibrateCommand = CurrentCommand;
+
 }  // namespace
 
-TEST(CurrentCommand, ShippedVehicleFileReproducesThePapersCurrents) {
+TEST_F(CurrentCommand, ShippedVehicleFileReproducesThePapersCurrents) {
   EXPECT_NEAR(currentJson("--vehicle " + kQuad, "free")["current_a"].get<double>(), 9.5, 1e-9);
   EXPECT_NEAR(currentJson("--vehicle " + kQuad + " --gap-m 0.05", "ceiling")["current_a"].get<double>(), 8.0, 1e-9);
   EXPECT_NEAR(currentJson("--gap-m 0.05", "builtin")["current_a"].get<double>(), 8.0, 1e-9);
 }
 
-TEST(CurrentCommand, PrintsCurrentPowerAndTheBreakdown) {
+TEST_F(CurrentCommand, PrintsCurrentPowerAndTheBreakdown) {
   const auto result = runCeilplan("current --gap-m 0.05 --ground-gap-m 0.5 --speed-m-s 3 --climb-m-s 0.2 --soc 0.8");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   for (const char* key : {"current_a", "power_w", "induced_w", "profile_w", "parasitic_w", "climb_w", "avionics_w",
@@ -54,7 +65,7 @@ TEST(CurrentCommand, PrintsCurrentPowerAndTheBreakdown) {
     EXPECT_NE(result.out.find(key), std::string::npos) << key;
 }
 
-TEST(CurrentCommand, SweepRunsFromContactToThreeRadiiAndEndsInFreeAir) {
+TEST_F(CurrentCommand, SweepRunsFromContactToThreeRadiiAndEndsInFreeAir) {
   const nlohmann::json report = currentJson("--sweep", "sweep");
   const auto& rows = report["sweep"];
   ASSERT_EQ(rows.size(), 61u);
@@ -65,7 +76,7 @@ TEST(CurrentCommand, SweepRunsFromContactToThreeRadiiAndEndsInFreeAir) {
     EXPECT_GE(rows[i]["current_a"].get<double>(), rows[i - 1]["current_a"].get<double>());
 }
 
-TEST(CurrentCommand, RefusesBadInputWithOneLine) {
+TEST_F(CurrentCommand, RefusesBadInputWithOneLine) {
   expectOneLineError("current --gap-m -0.1", "negative");
   expectOneLineError("current --gap-m nan", "not a number");
   expectOneLineError("current --speed-m-s 40", "max_speed_m_s");
@@ -74,7 +85,7 @@ TEST(CurrentCommand, RefusesBadInputWithOneLine) {
   expectOneLineError("current --vehicle /nonexistent/vehicle.yaml", "cannot be read");
 }
 
-TEST(CurrentCommand, RefusesVehicleFilesWithoutRotorsOrWithNegativeMass) {
+TEST_F(CurrentCommand, RefusesVehicleFilesWithoutRotorsOrWithNegativeMass) {
   const auto dir = scratchDirectory("bad_vehicles");
   writeFile(dir / "no_rotors.yaml", "name: x\nmass_kg: 1.0\n");
   writeFile(dir / "zero_rotors.yaml", "mass_kg: 1.0\nrotors:\n  count: 0\n  radius_m: 0.1\n");
@@ -86,7 +97,7 @@ TEST(CurrentCommand, RefusesVehicleFilesWithoutRotorsOrWithNegativeMass) {
   expectOneLineError("current --vehicle " + (dir / "typo.yaml").string(), "unknown key power.hover_curent_a");
 }
 
-TEST(CalibrateCommand, FitsThePublishedDataAndWritesAVehicleFileThatCurrentReads) {
+TEST_F(CalibrateCommand, FitsThePublishedDataAndWritesAVehicleFileThatCurrentReads) {
   const auto dir = scratchDirectory("calibrate_published");
   const auto out = dir / "calibrated.yaml";
   const auto result = runCeilplan("calibrate --data " + kPublishedData + " --vehicle " + kQuad + " --out " +
@@ -105,7 +116,7 @@ TEST(CalibrateCommand, FitsThePublishedDataAndWritesAVehicleFileThatCurrentReads
   EXPECT_NEAR(free_air, 9.5, 3.0 * fit["rmse_a"].get<double>());
 }
 
-TEST(CalibrateCommand, RecoversTheShippedVehicleFromItsOwnPredictions) {
+TEST_F(CalibrateCommand, RecoversTheShippedVehicleFromItsOwnPredictions) {
   const auto dir = scratchDirectory("calibrate_roundtrip");
   std::string csv = "gap_m,soc,current_a\n";
   for (double gap : {-1.0, 0.0, 0.01, 0.03, 0.05, 0.08, 0.12, 0.2})
@@ -130,7 +141,7 @@ TEST(CalibrateCommand, RecoversTheShippedVehicleFromItsOwnPredictions) {
         << parameter["parameter"];
 }
 
-TEST(CalibrateCommand, RefusesWhatTheDataCannotIdentifyAndWritesNothing) {
+TEST_F(CalibrateCommand, RefusesWhatTheDataCannotIdentifyAndWritesNothing) {
   const auto dir = scratchDirectory("calibrate_refusals");
   writeFile(dir / "hover.csv", "gap_m,current_a\nnone,9.5\nnone,9.6\n0.05,8.0\n0.02,7.0\n");
   const auto out = dir / "v.yaml";
