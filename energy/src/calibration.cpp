@@ -118,8 +118,8 @@ bool isFree(const std::vector<FreeParameter>& free, FreeParameter parameter) {
 }
 
 // The fit works on x in [0, 1]^n, each coordinate log-spaced over its range. Two coordinates
-// are chosen so that no point of the box is an invalid model (SLSQP evaluates outside
-// nonlinear constraints, so bounds are all it gets):
+// are chosen so that no point of the box is an invalid model (NLopt's gradient methods may
+// evaluate outside nonlinear constraints, never outside bounds):
 // - k1 is fitted through the contact excess e0 = R^2 / (K1 K2^2) = 1 - 1/kappa(0), bounded so
 //   that the thrust ratio at contact stays between 1.0001 and 20;
 // - hover_power_w, when fitted with motor_efficiency, through the hover shaft power, bounded

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <future>
 #include <stdexcept>
+#include <vector>
 
 using namespace ceilplan::energy;
 
@@ -179,4 +181,21 @@ TEST(PaperQuad, AnchorSolvesForTheMeasuredCurrentUnderEitherConvention) {
   EXPECT_NEAR(EnergyModel(p).currentA(0.05, 1.0, hover()), 8.0, 1e-9);
   EXPECT_THROW(ceilingThroughAnchor(p, 0.05, 9.6, kPaperReferenceSoc, kContactThrustRatio), std::invalid_argument);
   EXPECT_THROW(ceilingThroughAnchor(p, 0.30, 8.0, kPaperReferenceSoc, kContactThrustRatio), std::invalid_argument);
+}
+
+TEST(EnergyModel, OneModelServesManyThreadsWithIdenticalAnswers) {
+  const EnergyModel& model = paperModel();
+  auto sweep = [&model] {
+    std::vector<double> currents;
+    for (int i = 0; i < 2000; ++i) {
+      FlightCondition flight = hover(0.3 + 0.0003 * i);
+      flight.speed_m_s = (i % 10) * 1.0;
+      currents.push_back(model.currentA(0.0002 * i, 1.0, flight));
+    }
+    return currents;
+  };
+  const std::vector<double> expected = sweep();
+  std::vector<std::future<std::vector<double>>> runs;
+  for (int t = 0; t < 4; ++t) runs.push_back(std::async(std::launch::async, sweep));
+  for (auto& run : runs) EXPECT_EQ(run.get(), expected);
 }

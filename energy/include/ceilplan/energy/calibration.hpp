@@ -50,10 +50,11 @@ struct CalibrationResult {
 std::vector<FreeParameter> identifiableParameters(const EnergyParameters& start,
                                                   const std::vector<CalibrationSample>& samples);
 
-// Minimises the sum of squared current errors over `free` within fixed ranges (log-scaled),
-// subject to a finite thrust ratio at contact and non-negative profile power, with NLopt's
-// SLSQP. Throws std::invalid_argument naming the parameter when the data cannot identify it:
-// its column is not varied, or the fitted Jacobian has a (near) flat direction along it.
+// Minimises the sum of squared current errors over `free` within fixed ranges (log-scaled;
+// the contact thrust ratio stays within 1.0001..20 and profile power non-negative) with NLopt's
+// bounded L-BFGS. Throws std::invalid_argument naming the parameter when the data cannot
+// identify it: its column is not varied, or the fitted Jacobian has a (near) flat direction
+// along it. Deterministic: no random start.
 CalibrationResult calibrate(const EnergyParameters& start, const std::vector<CalibrationSample>& samples,
                             const std::vector<FreeParameter>& free);
 
