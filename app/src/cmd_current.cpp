@@ -1,0 +1,145 @@
+// `ceilplan current`: predicted battery current for one flight condition, or against ceiling gap.
+
+#include "command_registry.hpp"
+#include "output.hpp"
+#include "vehicle_energy_file.hpp"
+#include "yaml_config.hpp"
+
+#include "ceilplan/energy/energy_model.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace ceilplan::app {
+namespace {
+
+struct CurrentOptions {
+  std::optional<double> gap_m;
+  std::optional<double> ground_gap_m;
+  double coverage = 1.0;
+  double speed_m_s = 0.0;
+  double climb_m_s = 0.0;
+  std::optional<double> soc;
+  std::string vehicle_path;
+  std::string json_path;
+  bool sweep = false;
+};
+
+constexpr int kSweepStepsPerRadius = 20;
+
+std::string gapText(const std::optional<double>& gap_m) {
+  if (!gap_m) return "none";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g m", *gap_m);
+  return text;
+}
+
+nlohmann::json breakdownJson(const energy::CurrentBreakdown& b) {
+  return {{"current_a", b.current_a},
+          {"power_w", b.power_w},
+          {"terminal_voltage_v", b.terminal_voltage_v},
+          {"induced_w", b.induced_w},
+          {"profile_w", b.profile_w},
+          {"parasitic_w", b.parasitic_w},
+          {"climb_w", b.climb_w},
+          {"avionics_w", b.avionics_w},
+          {"ceiling_factor", b.ceiling_factor},
+          {"ground_factor", b.ground_factor},
+          {"induced_power_factor", b.induced_power_factor}};
+}
+
+void printBreakdown(const energy::CurrentBreakdown& b) {
+  std::printf("current_a             %.4f\n", b.current_a);
+  std::printf("power_w               %.3f\n", b.power_w);
+  std::printf("  induced_w           %.3f\n", b.induced_w);
+  std::printf("  profile_w           %.3f\n", b.profile_w);
+  std::printf("  parasitic_w         %.3f\n", b.parasitic_w);
+  std::printf("  climb_w             %.3f\n", b.climb_w);
+  std::printf("  avionics_w          %.3f\n", b.avionics_w);
+  std::printf("ceiling_factor        %.5f\n", b.ceiling_factor);
+  std::printf("ground_factor         %.5f\n", b.ground_factor);
+  std::printf("induced_power_factor  %.5f\n", b.induced_power_factor);
+  std::printf("terminal_voltage_v    %.3f\n", b.terminal_voltage_v);
+}
+
+void runCurrent(const CurrentOptions& options) {
+  const VehicleEnergyFile vehicle =
+      options.vehicle_path.empty() ? builtInVehicle() : readVehicleEnergyFile(options.vehicle_path);
+  const energy::EnergyModel model(vehicle.parameters);
+  energy::FlightCondition flight;
+  flight.ground_gap_m = options.ground_gap_m.value_or(energy::kNoSurface);
+  flight.speed_m_s = options.speed_m_s;
+  flight.climb_m_s = options.climb_m_s;
+  flight.soc = options.soc.value_or(vehicle.parameters.reference_soc);
+  const double gap_m = options.gap_m.value_or(energy::kNoSurface);
+  const energy::CurrentBreakdown at_point = model.breakdown(gap_m, options.coverage, flight);  // validates input
+
+  nlohmann::json report = {{"vehicle", vehicle.name},
+                           {"soc", flight.soc},
+                           {"coverage", options.coverage},
+                           {"ground_gap_m", options.ground_gap_m ? nlohmann::json(*options.ground_gap_m) : nullptr},
+                           {"speed_m_s", flight.speed_m_s},
+                           {"climb_m_s", flight.climb_m_s}};
+  std::printf("vehicle               %s\n", vehicle.name.c_str());
+  std::printf("soc %.3f  coverage %.3f  ground gap %s  speed %.3g m/s  climb %.3g m/s\n", flight.soc,
+              options.coverage, gapText(options.ground_gap_m).c_str(), flight.speed_m_s, flight.climb_m_s);
+  if (options.sweep) {
+    const double radius_m = model.rotorRadiusM();
+    const double free_air_a = model.currentA(energy::kNoSurface, options.coverage, flight);
+    std::printf("free air: current_a %.4f\n", free_air_a);
+    std::printf("%10s %8s %10s %10s %14s\n", "gap_m", "gap_R", "current_a", "power_w", "ceiling_factor");
+    nlohmann::json rows = nlohmann::json::array();
+    for (int i = 0; i <= 3 * kSweepStepsPerRadius; ++i) {
+      const double gap = radius_m * i / kSweepStepsPerRadius;
+      const energy::CurrentBreakdown b = model.breakdown(gap, options.coverage, flight);
+      std::printf("%10.4f %8.3f %10.4f %10.3f %14.5f\n", gap, gap / radius_m, b.current_a, b.power_w,
+                  b.ceiling_factor);
+      nlohmann::json row = breakdownJson(b);
+      row["gap_m"] = gap;
+      rows.push_back(row);
+    }
+    report["rotor_radius_m"] = radius_m;
+    report["free_air_current_a"] = free_air_a;
+    report["sweep"] = rows;
+  } else {
+    std::printf("ceiling gap           %s\n", gapText(options.gap_m).c_str());
+    printBreakdown(at_point);
+    report["gap_m"] = options.gap_m ? nlohmann::json(*options.gap_m) : nullptr;
+    report.update(breakdownJson(at_point));
+  }
+  if (!options.json_path.empty()) {
+    writeTextAtomically(options.json_path, [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+    std::printf("wrote %s\n", options.json_path.c_str());
+  }
+}
+
+const CommandRegistration registration(30, [](CLI::App& parent) {
+  auto options = std::make_shared<CurrentOptions>();
+  CLI::App* command = parent.add_subcommand(
+      "current", "Predict battery current and power from ceiling gap, ground gap, speed, climb and SOC");
+  command->config_formatter(std::make_shared<YamlConfig>());
+  command->set_config("--config", "", "YAML file whose keys are this command's long flag names");
+  CLI::Option* gap = command->add_option("--gap-m", options->gap_m,
+                                         "rotor plane to ceiling (m); absent: no ceiling");
+  command->add_option("--ground-gap-m", options->ground_gap_m, "rotor plane to ground (m); absent: no ground");
+  command->add_option("--coverage", options->coverage, "fraction of each rotor disc under the ceiling, 0..1")
+      ->capture_default_str();
+  command->add_option("--speed-m-s", options->speed_m_s, "horizontal speed (m/s)")->capture_default_str();
+  command->add_option("--climb-m-s", options->climb_m_s, "climb rate (m/s), negative in descent")
+      ->capture_default_str();
+  command->add_option("--soc", options->soc, "state of charge 0..1; default: the vehicle's reference_soc");
+  command->add_option("--vehicle", options->vehicle_path, "vehicle YAML file; default: the built-in quadrotor");
+  command->add_option("--json", options->json_path, "also write the result as JSON to this file");
+  command->add_flag("--sweep", options->sweep, "print current against ceiling gap from 0 to 3 rotor radii")
+      ->excludes(gap);
+  command->callback([options] { runCurrent(*options); });
+});
+
+}  // namespace
+}  // namespace ceilplan::app

@@ -1,0 +1,86 @@
+#pragma once
+// Predicted battery current from ceiling gap(s), ground gap, horizontal speed, climb rate and SOC.
+
+#include "ceilplan/energy/ceiling_effect.hpp"
+#include "ceilplan/energy/energy_parameters.hpp"
+#include "ceilplan/energy/ground_effect.hpp"
+#include "ceilplan/energy/pack_electrics.hpp"
+#include "ceilplan/energy/rotary_wing_power.hpp"
+
+#include <limits>
+
+namespace ceilplan::energy {
+
+// A gap with no surface: free air.
+inline constexpr double kNoSurface = std::numeric_limits<double>::infinity();
+
+// What one rotor sees above it.
+struct RotorCeiling {
+  double gap_m = kNoSurface;  // rotor plane to ceiling, >= 0
+  double coverage = 1.0;      // fraction of the rotor disc under the ceiling, 0..1
+};
+
+struct FlightCondition {
+  double ground_gap_m = kNoSurface;  // rotor plane to ground, >= 0
+  double speed_m_s = 0.0;            // horizontal, 0..max_speed_m_s
+  double climb_m_s = 0.0;            // vertical, positive up
+  double soc = 0.65;                 // state of charge, 0..1
+};
+
+// Powers are electrical, at the pack terminals; they add up to power_w.
+struct CurrentBreakdown {
+  double current_a = 0.0;           // total pack current
+  double power_w = 0.0;             // terminal voltage x current
+  double terminal_voltage_v = 0.0;
+  double induced_w = 0.0;
+  double profile_w = 0.0;
+  double parasitic_w = 0.0;
+  double climb_w = 0.0;             // negative in descent, floored
+  double avionics_w = 0.0;
+  double ceiling_factor = 1.0;      // thrust ratio T_ceiling / T_free, mean over rotors
+  double ground_factor = 1.0;       // thrust ratio T_ground / T_free
+  double induced_power_factor = 1.0;  // induced power / free-air induced power, both effects
+};
+
+// Immutable once built: every evaluation is const, allocation-free and safe to call from
+// many threads at once. Evaluations throw std::invalid_argument on bad input (negative or
+// NaN gap, coverage outside [0, 1], speed beyond the vehicle's limit, ...).
+class EnergyModel {
+ public:
+  static constexpr int kMaxRotors = 16;
+
+  // Validates and precomputes; throws std::invalid_argument naming the bad parameter.
+  explicit EnergyModel(const EnergyParameters& parameters);
+
+  // Convenience: the same gap and coverage on every rotor.
+  double currentA(double ceiling_gap_m, double coverage, const FlightCondition& flight) const;
+  CurrentBreakdown breakdown(double ceiling_gap_m, double coverage, const FlightCondition& flight) const;
+
+  // Per rotor: `rotors` points at exactly rotorCount() entries.
+  double currentA(const RotorCeiling* rotors, int rotor_count, const FlightCondition& flight) const;
+  CurrentBreakdown breakdown(const RotorCeiling* rotors, int rotor_count, const FlightCondition& flight) const;
+
+  const EnergyParameters& parameters() const noexcept { return parameters_; }
+  int rotorCount() const noexcept { return parameters_.vehicle.rotor_count; }
+  double rotorRadiusM() const noexcept { return parameters_.vehicle.rotor_radius_m; }
+  double maxSpeedM_s() const noexcept { return parameters_.vehicle.max_speed_m_s; }
+  const CeilingEffect& ceilingEffect() const noexcept { return ceiling_; }
+  const GroundEffect& groundEffect() const noexcept { return ground_; }
+  const RotaryWingPower& rotaryWingPower() const noexcept { return rotor_power_; }  // shaft power
+  const PackElectrics& pack() const noexcept { return pack_; }
+
+ private:
+  void checkFlight(const FlightCondition& flight) const;
+  CurrentBreakdown combine(double ceiling_factor, double induced_power_factor, double ground_factor,
+                           const FlightCondition& flight) const;
+
+  EnergyParameters parameters_;
+  CeilingEffect ceiling_;
+  GroundEffect ground_;
+  RotaryWingPower rotor_power_;
+  PackElectrics pack_;
+  double inverse_efficiency_;
+  double weight_n_;
+};
+
+}  // namespace ceilplan::energy

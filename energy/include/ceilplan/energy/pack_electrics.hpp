@@ -1,0 +1,41 @@
+#pragma once
+// From electrical propulsion power to pack current: a Rint pack with a constant avionics load.
+
+#include "ceilplan/energy/energy_parameters.hpp"
+#include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
+
+namespace ceilplan::energy {
+
+struct PackOperatingPoint {
+  double current_a;           // total pack current: propulsion + avionics
+  double terminal_voltage_v;  // n OCV(SOC) - I R
+};
+
+// Rint (reference-models.md section 6): V = n OCV(SOC) - I R, with I = I_prop + I_avionics and
+// the propulsion drawing P = V I_prop. Solving the quadratic gives
+//   I_prop = 2 P / (a + sqrt(a^2 - 4 R P)),  a = n OCV - R I_avionics,
+// which stays exact as R -> 0.
+class PackElectrics {
+ public:
+  explicit PackElectrics(const PackParameters& parameters);  // throws std::invalid_argument
+
+  double openCircuitVoltageV(double soc) const noexcept { return cell_count_ * ocv_.cellVoltageUncheckedV(soc); }
+
+  // `soc` must be in [0, 1] (unchecked). Throws std::runtime_error when the pack cannot deliver
+  // `propulsion_power_w` at all (beyond its maximum power point).
+  PackOperatingPoint operatingPoint(double propulsion_power_w, double soc) const;
+
+  // Inverse: the propulsion power that makes the pack deliver `current_a` in total.
+  double propulsionPowerForCurrentW(double current_a, double soc) const noexcept;
+
+  const LipoOpenCircuitVoltage& openCircuitVoltage() const noexcept { return ocv_; }
+  double avionicsCurrentA() const noexcept { return avionics_current_a_; }
+
+ private:
+  LipoOpenCircuitVoltage ocv_;
+  double cell_count_;
+  double resistance_ohm_;
+  double avionics_current_a_;
+};
+
+}  // namespace ceilplan::energy

@@ -1,0 +1,23 @@
+#pragma once
+// Turning a thrust ratio kappa = T_near / T_free into the ratio of induced power at equal
+// thrust, and back (reference-models.md section 2, [derived]).
+
+#include "ceilplan/energy/energy_parameters.hpp"
+
+#include <cmath>
+
+namespace ceilplan::energy {
+
+inline double inducedPowerRatio(double thrust_ratio, ThrustToPowerConvention convention) noexcept {
+  return convention == ThrustToPowerConvention::kMomentumTheory
+             ? 1.0 / (thrust_ratio * std::sqrt(thrust_ratio))
+             : 1.0 / thrust_ratio;
+}
+
+inline double thrustRatioForInducedPowerRatio(double power_ratio,
+                                              ThrustToPowerConvention convention) noexcept {
+  return convention == ThrustToPowerConvention::kMomentumTheory ? std::pow(power_ratio, -2.0 / 3.0)
+                                                               : 1.0 / power_ratio;
+}
+
+}  // namespace ceilplan::energy

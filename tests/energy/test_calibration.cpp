@@ -1,0 +1,144 @@
+#include "ceilplan/energy/calibration.hpp"
+#include "ceilplan/energy/paper_quad.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using namespace ceilplan::energy;
+
+namespace {
+
+// The constants the synthetic measurements are made with: not the defaults the fit starts from.
+EnergyParameters truth(bool motion_constants_too) {
+  EnergyParameters p = paperQuadParameters();
+  p.rotor.hover_power_w = 150.0;
+  p.ceiling.k1 = 6.0;
+  p.ceiling.k2_m = 0.06;
+  if (motion_constants_too) {
+    p.rotor.motor_efficiency = 0.72;
+    p.rotor.drag_area_m2 = 0.05;
+  }
+  return p;
+}
+
+std::vector<CalibrationSample> synthetic(const EnergyParameters& p, bool vary_motion) {
+  const EnergyModel model(p);
+  std::vector<CalibrationSample> samples;
+  const double gaps[] = {kNoSurface, 0.005, 0.01, 0.02, 0.04, 0.07, 0.1, 0.15, 0.2, 0.4};
+  const double climbs[] = {0.0, 1.0, -0.5};
+  const double speeds[] = {0.0, 4.0, 9.0};
+  const double socs[] = {0.9, 0.6};
+  for (double gap : gaps)
+    for (double climb : vary_motion ? std::vector<double>(std::begin(climbs), std::end(climbs)) : std::vector<double>{0.0})
+      for (double speed : vary_motion ? std::vector<double>(std::begin(speeds), std::end(speeds)) : std::vector<double>{0.0})
+        for (double soc : socs) {
+          CalibrationSample s;
+          s.ceiling_gap_m = gap;
+          s.climb_m_s = climb;
+          s.speed_m_s = speed;
+          s.soc = soc;
+          FlightCondition flight;
+          flight.climb_m_s = climb;
+          flight.speed_m_s = speed;
+          flight.soc = soc;
+          s.current_a = model.currentA(gap, 1.0, flight);
+          samples.push_back(s);
+        }
+  return samples;
+}
+
+void expectRecovered(const CalibrationResult& result, FreeParameter parameter, double expected) {
+  for (const FittedParameter& fitted : result.fitted)
+    if (fitted.parameter == parameter) {
+      EXPECT_NEAR(fitted.value, expected, 1e-3 * expected) << parameterName(parameter);
+      return;
+    }
+  ADD_FAILURE() << parameterName(parameter) << " was not fitted";
+}
+
+}  // namespace
+
+TEST(Calibration, RecoversCeilingConstantsAndHoverPowerFromSyntheticHoverData) {
+  const auto samples = synthetic(truth(false), false);
+  const auto free = identifiableParameters(paperQuadParameters(), samples);
+  ASSERT_EQ(free, (std::vector<FreeParameter>{FreeParameter::kHoverPowerW, FreeParameter::kK1, FreeParameter::kK2M}));
+  const CalibrationResult result = calibrate(paperQuadParameters(), samples, free);
+  expectRecovered(result, FreeParameter::kHoverPowerW, 150.0);
+  expectRecovered(result, FreeParameter::kK1, 6.0);
+  expectRecovered(result, FreeParameter::kK2M, 0.06);
+  EXPECT_LT(result.rmse_a, 1e-5);
+}
+
+TEST(Calibration, RecoversEfficiencyAndDragWhenClimbAndSpeedVary) {
+  const auto samples = synthetic(truth(true), true);
+  const auto free = identifiableParameters(paperQuadParameters(), samples);
+  ASSERT_EQ(free.size(), 5u);
+  const CalibrationResult result = calibrate(paperQuadParameters(), samples, free);
+  expectRecovered(result, FreeParameter::kHoverPowerW, 150.0);
+  expectRecovered(result, FreeParameter::kK1, 6.0);
+  expectRecovered(result, FreeParameter::kK2M, 0.06);
+  expectRecovered(result, FreeParameter::kMotorEfficiency, 0.72);
+  expectRecovered(result, FreeParameter::kDragAreaM2, 0.05);
+}
+
+TEST(Calibration, ReportsEachFittedValueWithItsAllowedRange) {
+  const CalibrationResult result =
+      calibrate(paperQuadParameters(), synthetic(truth(false), false), {FreeParameter::kHoverPowerW});
+  ASSERT_EQ(result.fitted.size(), 1u);
+  const FittedParameter& hover = result.fitted.front();
+  EXPECT_LE(hover.lower, hover.value);
+  EXPECT_LE(hover.value, hover.upper);
+  EXPECT_GT(result.rmse_a, 0.0);  // K1, K2 left wrong on purpose
+  EXPECT_GE(result.max_abs_error_a, result.rmse_a);
+}
+
+namespace {
+std::string refusal(const std::vector<CalibrationSample>& samples, const std::vector<FreeParameter>& free) {
+  try {
+    calibrate(paperQuadParameters(), samples, free);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+}  // namespace
+
+TEST(Calibration, RefusesAParameterWhoseColumnIsNotVaried) {
+  const auto hover_only = synthetic(truth(false), false);
+  EXPECT_NE(refusal(hover_only, {FreeParameter::kHoverPowerW, FreeParameter::kMotorEfficiency})
+                .find("cannot identify motor_efficiency"),
+            std::string::npos);
+  EXPECT_NE(refusal(hover_only, {FreeParameter::kDragAreaM2}).find("cannot identify drag_area_m2"), std::string::npos);
+  std::vector<CalibrationSample> free_air(4);
+  for (auto& s : free_air) s.current_a = 9.5;
+  EXPECT_NE(refusal(free_air, {FreeParameter::kK1}).find("cannot identify k1"), std::string::npos);
+}
+
+TEST(Calibration, RefusesAFlatDirectionNamingTheParameter) {
+  // One ceiling gap only: K1 and K2 trade against each other along a whole curve.
+  std::vector<CalibrationSample> two_gaps(4);
+  for (std::size_t i = 0; i < two_gaps.size(); ++i) {
+    two_gaps[i].ceiling_gap_m = i % 2 ? 0.05 : kNoSurface;
+    two_gaps[i].current_a = i % 2 ? 8.0 : 9.5;
+  }
+  const std::string message =
+      refusal(two_gaps, {FreeParameter::kHoverPowerW, FreeParameter::kK1, FreeParameter::kK2M});
+  EXPECT_TRUE(message.find("cannot identify k1") != std::string::npos ||
+              message.find("cannot identify k2_m") != std::string::npos)
+      << message;
+}
+
+TEST(Calibration, RefusesTooFewSamplesAndBadSamples) {
+  std::vector<CalibrationSample> one(1);
+  one[0].current_a = 9.5;
+  EXPECT_THROW(calibrate(paperQuadParameters(), one, {FreeParameter::kHoverPowerW}), std::invalid_argument);
+  std::vector<CalibrationSample> negative_gap(3);
+  for (auto& s : negative_gap) s.current_a = 9.5;
+  negative_gap[1].ceiling_gap_m = -0.1;
+  EXPECT_THROW(calibrate(paperQuadParameters(), negative_gap, {FreeParameter::kHoverPowerW}), std::invalid_argument);
+  EXPECT_THROW(parseFreeParameter("k3"), std::invalid_argument);
+  EXPECT_EQ(parseFreeParameter("k2_m"), FreeParameter::kK2M);
+}

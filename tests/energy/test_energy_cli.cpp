@@ -1,0 +1,158 @@
+// `ceilplan current` and `ceilplan calibrate` as a user runs them.
+
+#include "run_command.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+using ceilplan::testing::readWholeFile;
+using ceilplan::testing::runCeilplan;
+using ceilplan::testing::scratchDirectory;
+
+namespace {
+
+const std::string kQuad = std::string(CEILPLAN_SOURCE_DIR) + "/maps/vehicles/quad.yaml";
+const std::string kPublishedData = std::string(CEILPLAN_SOURCE_DIR) + "/maps/calibration/published-ceiling-hover.csv";
+
+nlohmann::json currentJson(const std::string& arguments, const std::string& test) {
+  const auto json_path = scratchDirectory(test) / "current.json";
+  const auto result = runCeilplan("current " + arguments + " --json " + json_path.string());
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  return nlohmann::json::parse(readWholeFile(json_path));
+}
+
+void writeFile(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+// Exit 1 with one line on stderr that contains `needle`.
+void expectOneLineError(const std::string& arguments, const std::string& needle) {
+  const auto result = runCeilplan(arguments);
+  EXPECT_EQ(result.exit_code, 1) << arguments;
+  EXPECT_NE(result.err.find(needle), std::string::npos) << arguments << "\n" << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+}
+
+// run_command.hpp names its capture files with std::rand(); ctest runs every test of this
+// program as its own process in parallel, so seed per process or they share file names.
+class CurrentCommand : public ::testing::Test {
+ protected:
+  void SetUp() override { std::srand(static_cast<unsigned>(::getpid())); }
+};
+using CalibrateCommand = CurrentCommand;
+
+}  // namespace
+
+TEST_F(CurrentCommand, ShippedVehicleFileReproducesThePapersCurrents) {
+  EXPECT_NEAR(currentJson("--vehicle " + kQuad, "free")["current_a"].get<double>(), 9.5, 1e-9);
+  EXPECT_NEAR(currentJson("--vehicle " + kQuad + " --gap-m 0.05", "ceiling")["current_a"].get<double>(), 8.0, 1e-9);
+  EXPECT_NEAR(currentJson("--gap-m 0.05", "builtin")["current_a"].get<double>(), 8.0, 1e-9);
+}
+
+TEST_F(CurrentCommand, PrintsCurrentPowerAndTheBreakdown) {
+  const auto result = runCeilplan("current --gap-m 0.05 --ground-gap-m 0.5 --speed-m-s 3 --climb-m-s 0.2 --soc 0.8");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  for (const char* key : {"current_a", "power_w", "induced_w", "profile_w", "parasitic_w", "climb_w", "avionics_w",
+                          "ceiling_factor", "ground_factor"})
+    EXPECT_NE(result.out.find(key), std::string::npos) << key;
+}
+
+TEST_F(CurrentCommand, SweepRunsFromContactToThreeRadiiAndEndsInFreeAir) {
+  const nlohmann::json report = currentJson("--sweep", "sweep");
+  const auto& rows = report["sweep"];
+  ASSERT_EQ(rows.size(), 61u);
+  EXPECT_DOUBLE_EQ(rows.front()["gap_m"].get<double>(), 0.0);
+  EXPECT_NEAR(rows.back()["gap_m"].get<double>(), 3.0 * 0.127, 1e-12);
+  EXPECT_NEAR(rows.back()["current_a"].get<double>(), report["free_air_current_a"].get<double>(), 1e-12);
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    EXPECT_GE(rows[i]["current_a"].get<double>(), rows[i - 1]["current_a"].get<double>());
+}
+
+TEST_F(CurrentCommand, RefusesBadInputWithOneLine) {
+  expectOneLineError("current --gap-m -0.1", "negative");
+  expectOneLineError("current --gap-m nan", "not a number");
+  expectOneLineError("current --speed-m-s 40", "max_speed_m_s");
+  expectOneLineError("current --soc 1.5", "outside [0, 1]");
+  expectOneLineError("current --coverage 2", "coverage");
+  expectOneLineError("current --vehicle /nonexistent/vehicle.yaml", "cannot be read");
+}
+
+TEST_F(CurrentCommand, RefusesVehicleFilesWithoutRotorsOrWithNegativeMass) {
+  const auto dir = scratchDirectory("bad_vehicles");
+  writeFile(dir / "no_rotors.yaml", "name: x\nmass_kg: 1.0\n");
+  writeFile(dir / "zero_rotors.yaml", "mass_kg: 1.0\nrotors:\n  count: 0\n  radius_m: 0.1\n");
+  writeFile(dir / "negative_mass.yaml", "mass_kg: -1.0\nrotors:\n  count: 4\n  radius_m: 0.1\n  arm_length_m: 0.2\n");
+  writeFile(dir / "typo.yaml", readWholeFile(kQuad) + "  hover_curent_a: 9\n");
+  expectOneLineError("current --vehicle " + (dir / "no_rotors.yaml").string(), "rotors.count");
+  expectOneLineError("current --vehicle " + (dir / "zero_rotors.yaml").string(), "rotors.count");
+  expectOneLineError("current --vehicle " + (dir / "negative_mass.yaml").string(), "mass_kg must be positive");
+  expectOneLineError("current --vehicle " + (dir / "typo.yaml").string(), "unknown key power.hover_curent_a");
+}
+
+TEST_F(CalibrateCommand, FitsThePublishedDataAndWritesAVehicleFileThatCurrentReads) {
+  const auto dir = scratchDirectory("calibrate_published");
+  const auto out = dir / "calibrated.yaml";
+  const auto result = runCeilplan("calibrate --data " + kPublishedData + " --vehicle " + kQuad + " --out " +
+                                  out.string() + " --json " + (dir / "fit.json").string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("rmse_a"), std::string::npos);
+  const nlohmann::json fit = nlohmann::json::parse(readWholeFile(dir / "fit.json"));
+  ASSERT_EQ(fit["fitted"].size(), 3u);
+  for (const auto& parameter : fit["fitted"]) {
+    EXPECT_LE(parameter["allowed_min"].get<double>(), parameter["value"].get<double>());
+    EXPECT_LE(parameter["value"].get<double>(), parameter["allowed_max"].get<double>());
+  }
+  // The written file keeps the geometry keys and gives the fitted model back.
+  EXPECT_NE(readWholeFile(out).find("airframe:"), std::string::npos);
+  const double free_air = currentJson("--vehicle " + out.string(), "calibrated")["current_a"].get<double>();
+  EXPECT_NEAR(free_air, 9.5, 3.0 * fit["rmse_a"].get<double>());
+}
+
+TEST_F(CalibrateCommand, RecoversTheShippedVehicleFromItsOwnPredictions) {
+  const auto dir = scratchDirectory("calibrate_roundtrip");
+  std::string csv = "gap_m,soc,current_a\n";
+  for (double gap : {-1.0, 0.0, 0.01, 0.03, 0.05, 0.08, 0.12, 0.2})
+    for (double soc : {0.9, 0.5}) {
+      const std::string gap_flag = gap < 0 ? "" : " --gap-m " + std::to_string(gap);
+      const double current = currentJson("--vehicle " + kQuad + gap_flag + " --soc " + std::to_string(soc),
+                                         "roundtrip_point")["current_a"].get<double>();
+      char row[96];
+      std::snprintf(row, sizeof row, "%s,%.3f,%.12f\n", gap < 0 ? "none" : std::to_string(gap).c_str(), soc, current);
+      csv += row;
+    }
+  writeFile(dir / "data.csv", csv);
+  EXPECT_EQ(runCeilplan("calibrate --data " + (dir / "data.csv").string() + " --fit hover_power_w,k1,k2_m --out " +
+                        (dir / "v.yaml").string() + " --json " + (dir / "fit.json").string())
+                .exit_code,
+            0);
+  const nlohmann::json fit = nlohmann::json::parse(readWholeFile(dir / "fit.json"));
+  EXPECT_LT(fit["rmse_a"].get<double>(), 1e-6);
+  for (const auto& parameter : fit["fitted"])
+    EXPECT_NEAR(parameter["value"].get<double>(), parameter["start"].get<double>(),
+                1e-3 * parameter["start"].get<double>())
+        << parameter["parameter"];
+}
+
+TEST_F(CalibrateCommand, RefusesWhatTheDataCannotIdentifyAndWritesNothing) {
+  const auto dir = scratchDirectory("calibrate_refusals");
+  writeFile(dir / "hover.csv", "gap_m,current_a\nnone,9.5\nnone,9.6\n0.05,8.0\n0.02,7.0\n");
+  const auto out = dir / "v.yaml";
+  expectOneLineError("calibrate --data " + (dir / "hover.csv").string() + " --fit motor_efficiency --out " + out.string(),
+                     "cannot identify motor_efficiency");
+  writeFile(dir / "bad.csv", "gap_m,current_a\nnone,9.5\n0.05,eight\n");
+  expectOneLineError("calibrate --data " + (dir / "bad.csv").string() + " --out " + out.string(), "line 3");
+  writeFile(dir / "unknown.csv", "gap,current_a\n0.05,8\n");
+  expectOneLineError("calibrate --data " + (dir / "unknown.csv").string() + " --out " + out.string(),
+                     "unknown column 'gap'");
+  expectOneLineError("calibrate --data " + (dir / "hover.csv").string() + " --fit k3 --out " + out.string(),
+                     "unknown calibration parameter 'k3'");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
