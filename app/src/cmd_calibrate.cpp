@@ -3,7 +3,6 @@
 #include "command_registry.hpp"
 #include "output.hpp"
 #include "vehicle_energy_file.hpp"
-#include "yaml_config.hpp"
 
 #include "ceilplan/energy/calibration.hpp"
 
@@ -156,8 +155,6 @@ const CommandRegistration registration(31, [](CLI::App& parent) {
   auto options = std::make_shared<CalibrateOptions>();
   CLI::App* command = parent.add_subcommand(
       "calibrate", "Fit the energy model's free constants to measured currents (bounded least squares)");
-  command->config_formatter(std::make_shared<YamlConfig>());
-  command->set_config("--config", "", "YAML file whose keys are this command's long flag names");
   command->add_option("--data", options->data_path,
                       "CSV with current_a and any of gap_m, coverage, ground_gap_m, speed_m_s, climb_m_s, soc")
       ->required();

@@ -3,7 +3,6 @@
 #include "command_registry.hpp"
 #include "output.hpp"
 #include "vehicle_energy_file.hpp"
-#include "yaml_config.hpp"
 
 #include "ceilplan/energy/energy_model.hpp"
 
@@ -123,8 +122,6 @@ const CommandRegistration registration(30, [](CLI::App& parent) {
   auto options = std::make_shared<CurrentOptions>();
   CLI::App* command = parent.add_subcommand(
       "current", "Predict battery current and power from ceiling gap, ground gap, speed, climb and SOC");
-  command->config_formatter(std::make_shared<YamlConfig>());
-  command->set_config("--config", "", "YAML file whose keys are this command's long flag names");
   CLI::Option* gap = command->add_option("--gap-m", options->gap_m,
                                          "rotor plane to ceiling (m); absent: no ceiling");
   command->add_option("--ground-gap-m", options->ground_gap_m, "rotor plane to ground (m); absent: no ground");

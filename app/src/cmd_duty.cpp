@@ -4,12 +4,18 @@
 #include "command_registry.hpp"
 #include "output.hpp"
 
+#include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/duty_cycle.hpp"
+#include "ceilplan/battery/lifetime.hpp"
+#include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -34,14 +40,45 @@ struct DutyArguments {
   int missions_per_day = 15;
   int days = 30;
   double dt_s = 30.0;  // the paper's step; 0 = exact
+  double years = 0.0;  // > 0 replaces days
+  std::string model = "all";
+  double temperature_c = 25.0;
+  double end_of_life_soh = 0.8;
+  std::string chemistry = "LiPo";
+  double woehler_n100 = battery::WoehlerParameters{}.cycles_at_full_depth;
+  double woehler_k = battery::WoehlerParameters{}.exponent;
   std::string json_path;
   std::string csv_dir;
+};
+
+// One ageing model's view of a case: with the fade fed back (the projection) and with the pack
+// held new over the study period (the reference's derivations).
+struct AgeingResult {
+  battery::LifetimeResult projection;
+  double cycle_wear_new_pack;
 };
 
 struct CaseResult {
   double flight_current_a;
   DutyResult run;
+  std::vector<AgeingResult> ageing;  // one per model, in the order of modelNames()
 };
+
+int studyDays(const DutyArguments& args) {
+  return args.years > 0.0 ? static_cast<int>(std::lround(365.0 * args.years)) : args.days;
+}
+
+std::vector<std::string> modelNames(const DutyArguments& args) {
+  if (args.model == "none") return {};
+  if (args.model == "all") return battery::ageingModelNames();
+  return {args.model};
+}
+
+std::string shortNumber(double value) {
+  std::ostringstream text;
+  text << std::setprecision(4) << value;
+  return text.str();
+}
 
 std::string fixed(double value, int decimals) {
   std::ostringstream text;
@@ -75,6 +112,64 @@ void printTable(const DutyArguments& args, const std::vector<CaseResult>& cases)
   row("FEC after " + std::to_string(args.days) + " days", [](const CaseResult& c) { return fixed(c.run.fecTotal(), 2); });
   row("charge put back [Ah]", [](const CaseResult& c) { return fixed(c.run.final_state.charge_ah, 1); });
   row("FEC reduction vs first [%]", [&](const CaseResult& c) { return fixed(reductionPct(cases.front(), c), 2); });
+  if (cases.front().ageing.empty()) return;
+
+  std::cout << "\nBattery ageing over " << studyDays(args) << " days at " << fixed(args.temperature_c, 1)
+            << " C, capacity fade fed back into the SOH; end of life at " << fixed(100 * args.end_of_life_soh, 0)
+            << " % SOH\n";
+  for (size_t m = 0; m < cases.front().ageing.size(); ++m) {
+    const auto& first = cases.front().ageing[m];
+    std::cout << first.projection.model << ":\n";
+    const auto wear = [m](const CaseResult& c) { return c.ageing[m].projection.cycle_wear; };
+    const auto new_pack_wear = [m](const CaseResult& c) { return c.ageing[m].cycle_wear_new_pack; };
+    row("  " + first.projection.cycle_wear_name, [&](const CaseResult& c) { return shortNumber(wear(c)); });
+    row("  capacity fade [%]", [m](const CaseResult& c) { return fixed(100 * c.ageing[m].projection.capacity_loss, 2); });
+    row("  days to end of life", [m](const CaseResult& c) {
+      const auto& days = c.ageing[m].projection.days_to_end_of_life;
+      return days ? fixed(*days, 1) : std::string("never*");
+    });
+    row("  wear reduction vs first [%]", [&](const CaseResult& c) { return fixed(100 * (1 - wear(c) / wear(cases.front())), 2); });
+    row("  ... with the pack kept new [%]",
+        [&](const CaseResult& c) { return fixed(100 * (1 - new_pack_wear(c) / new_pack_wear(cases.front())), 2); });
+  }
+  for (const CaseResult& c : cases)
+    for (const AgeingResult& a : c.ageing) {
+      if (!a.projection.stopped_because.empty())
+        std::cout << "* " << a.projection.model << ", " << fixed(c.flight_current_a, 2)
+                  << " A: " << a.projection.stopped_because << '\n';
+    }
+  for (const AgeingResult& a : cases.front().ageing)
+    for (const std::string& warning : a.projection.warnings) std::cout << "warning: " << warning << '\n';
+}
+
+nlohmann::json optionalJson(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
+nlohmann::json ageingJson(const CaseResult& first, const CaseResult& c) {
+  nlohmann::json models = nlohmann::json::array();
+  for (size_t m = 0; m < c.ageing.size(); ++m) {
+    const battery::LifetimeResult& p = c.ageing[m].projection;
+    const battery::LifetimeResult& base = first.ageing[m].projection;
+    models.push_back(
+        {{"model", p.model},
+         {"cycle_wear_name", p.cycle_wear_name},
+         {"cycle_wear", p.cycle_wear},
+         {"cycle_wear_new_pack", c.ageing[m].cycle_wear_new_pack},
+         {"capacity_fade", p.capacity_loss},
+         {"fec", p.fec},
+         {"min_soc", p.min_soc},
+         {"days_to_end_of_life", optionalJson(p.days_to_end_of_life)},
+         {"missions_to_end_of_life",
+          p.missions_to_end_of_life ? nlohmann::json(*p.missions_to_end_of_life) : nlohmann::json(nullptr)},
+         {"wear_reduction_pct", 100.0 * (1.0 - p.cycle_wear / base.cycle_wear)},
+         {"wear_reduction_new_pack_pct",
+          100.0 * (1.0 - c.ageing[m].cycle_wear_new_pack / first.ageing[m].cycle_wear_new_pack)},
+         {"fade_reduction_pct", 100.0 * (1.0 - p.capacity_loss / base.capacity_loss)},
+         {"stopped_because", p.stopped_because},
+         {"warnings", p.warnings}});
+  }
+  return models;
 }
 
 nlohmann::json toJson(const DutyArguments& args, const std::vector<CaseResult>& cases) {
@@ -83,7 +178,11 @@ nlohmann::json toJson(const DutyArguments& args, const std::vector<CaseResult>& 
                      {"flight_min", args.flight_min},           {"idle_min", args.idle_min},
                      {"charge_max_min", args.charge_max_min},   {"soc_start", args.soc_start},
                      {"missions_per_day", args.missions_per_day}, {"days", args.days},
-                     {"dt_s", args.dt_s}};
+                     {"dt_s", args.dt_s},
+                     {"study_days", studyDays(args)},
+                     {"temperature_c", args.temperature_c},
+                     {"end_of_life_soh", args.end_of_life_soh},
+                     {"chemistry", args.chemistry}};
   out["cases"] = nlohmann::json::array();
   for (const CaseResult& c : cases) {
     out["cases"].push_back({{"flight_current_a", c.flight_current_a},
@@ -94,7 +193,8 @@ nlohmann::json toJson(const DutyArguments& args, const std::vector<CaseResult>& 
                             {"fec_total", c.run.fecTotal()},
                             {"charge_ah_total", c.run.final_state.charge_ah},
                             {"discharge_ah_total", c.run.final_state.discharge_ah},
-                            {"reduction_pct", reductionPct(cases.front(), c)}});
+                            {"reduction_pct", reductionPct(cases.front(), c)},
+                            {"ageing", ageingJson(cases.front(), c)}});
   }
   return out;
 }
@@ -115,11 +215,53 @@ void writeCsvDirectory(const std::filesystem::path& dir, const std::vector<CaseR
     writeSeries(dir / (prefix + "_day.csv"), cases[i].run.first_day);
     writeSeries(dir / (prefix + "_run.csv"), cases[i].run.run);
   }
+  for (size_t i = 0; i < cases.size(); ++i) {
+    if (cases[i].ageing.empty()) continue;
+    writeTextAtomically(dir / ("case" + std::to_string(i + 1) + "_soh.csv"), [&](std::ostream& out) {
+      out << "model,day,soh\n" << std::setprecision(10);
+      for (const AgeingResult& a : cases[i].ageing)
+        for (size_t day = 0; day < a.projection.soh_by_day.size(); ++day)
+          out << a.projection.model << ',' << day + 1 << ',' << a.projection.soh_by_day[day] << '\n';
+    });
+  }
   writeTextAtomically(dir / "cases.csv", [&](std::ostream& out) {
     out << "case,prefix,flight_current_a\n";
     for (size_t i = 0; i < cases.size(); ++i)
       out << i + 1 << ",case" << i + 1 << ',' << cases[i].flight_current_a << '\n';
   });
+}
+
+std::vector<AgeingResult> projectAgeing(const DutyArguments& args, const battery::Pack& pack,
+                                       const battery::DutyCycle& duty, double flight_current_a) {
+  battery::AgeingModelOptions model_options;
+  model_options.conditions = battery::OperatingConditions::fromCelsius(args.temperature_c);
+  model_options.conditions.chemistry = args.chemistry;
+  const energy::LipoOpenCircuitVoltage ocv;  // the energy module's cell curve, for Schmalstieg
+  model_options.cell_voltage_of_soc = [ocv](double soc) { return ocv.cellVoltageV(soc); };
+  model_options.woehler.cycles_at_full_depth = args.woehler_n100;
+  model_options.woehler.exponent = args.woehler_k;
+
+  std::vector<AgeingResult> results;
+  for (const std::string& name : modelNames(args)) {
+    battery::LifetimeOptions options;
+    options.study_days = studyDays(args);
+    options.end_of_life_soh = args.end_of_life_soh;
+    options.max_projection_days = std::max(options.max_projection_days, options.study_days);
+    options.step_s = args.dt_s;
+    Progress progress("ageing (" + name + ", " + fixed(flight_current_a, 2) + " A)");
+    options.progress = [&progress](double fraction) { progress.update(fraction); };
+    const auto model = battery::makeAgeingModel(name, model_options);
+    AgeingResult result{battery::projectLifetime(pack, duty, *model, model_options.conditions, options), 0.0};
+
+    options.feed_back_fade = false;
+    options.max_projection_days = options.study_days;
+    options.progress = nullptr;
+    const auto new_pack_model = battery::makeAgeingModel(name, model_options);
+    result.cycle_wear_new_pack =
+        battery::projectLifetime(pack, duty, *new_pack_model, model_options.conditions, options).cycle_wear;
+    results.push_back(std::move(result));
+  }
+  return results;
 }
 
 void runDuty(const DutyArguments& args) {
@@ -134,7 +276,7 @@ void runDuty(const DutyArguments& args) {
     duty.mission = battery::flyIdleChargeMission(flight_current_a, 60.0 * args.flight_min, 60.0 * args.idle_min,
                                                  args.charge_current_a, 60.0 * args.charge_max_min, args.soc_start);
     duty.missions_per_day = args.missions_per_day;
-    duty.days = args.days;
+    duty.days = studyDays(args);
     duty.initial_soc = args.soc_start;
     battery::DutyOptions options;
     options.step_s = args.dt_s;
@@ -142,11 +284,12 @@ void runDuty(const DutyArguments& args) {
     Progress progress("duty " + fixed(flight_current_a, 2) + " A");
     options.progress = [&progress](double fraction) { progress.update(fraction); };
     try {
-      cases.push_back({flight_current_a, battery::simulateDuty(pack, duty, options)});
+      cases.push_back({flight_current_a, battery::simulateDuty(pack, duty, options), {}});
     } catch (const battery::DepletionError& e) {
       throw std::runtime_error("case " + fixed(flight_current_a, 2) + " A: " + e.what() +
                                "; fly less, charge longer or start fuller");
     }
+    cases.back().ageing = projectAgeing(args, pack, duty, flight_current_a);
   }
   printTable(args, cases);
   if (!args.json_path.empty())
@@ -178,6 +321,22 @@ void addDutyCommand(CLI::App& parent) {
       ->capture_default_str()->check(CLI::Range(1, 1000));
   duty->add_option("--days", args->days, "Days simulated")->capture_default_str()->check(CLI::Range(1, 100000));
   duty->add_option("--dt-s", args->dt_s, "Time step [s]; 0 = exact, event-driven")
+      ->capture_default_str()->check(nonNegativeFinite());
+  duty->add_option("--years", args->years, "Study period in years (replaces --days)")
+      ->check(nonNegativeFinite());
+  std::vector<std::string> model_choices = battery::ageingModelNames();
+  model_choices.insert(model_choices.end(), {"all", "none"});
+  duty->add_option("--model", args->model, "Ageing model: fec, xu, schmalstieg, woehler, all or none")
+      ->capture_default_str()->check(CLI::IsMember(model_choices));
+  duty->add_option("--temperature-c", args->temperature_c, "Cell temperature [C] for the ageing models")
+      ->capture_default_str()->check(finiteAtLeast(-273.15, true));
+  duty->add_option("--eol-soh", args->end_of_life_soh, "End of life: state of health at or below this")
+      ->capture_default_str()->check(CLI::Range(0.0, 1.0) & positiveFinite());
+  duty->add_option("--chemistry", args->chemistry, "Pack chemistry, checked against each model's validity range")
+      ->capture_default_str();
+  duty->add_option("--woehler-n100", args->woehler_n100, "Cycles to end of life at 100 % DoD (fec, woehler) [open]")
+      ->capture_default_str()->check(positiveFinite());
+  duty->add_option("--woehler-k", args->woehler_k, "Woehler exponent k (woehler) [open]")
       ->capture_default_str()->check(nonNegativeFinite());
   duty->add_option("--json", args->json_path, "Write the results as JSON to this file");
   duty->add_option("--csv-dir", args->csv_dir,
