@@ -66,6 +66,40 @@ TEST(CliDuty, ReadsTheSameKeysFromAYamlConfig) {
   EXPECT_NEAR(j["cases"][1]["fec_total"].get<double>(), 15 * 7.0 / 3.0 / 5.2, 1e-9);
 }
 
+TEST(CliDuty, ReportsEachAgeingModelPerCaseWithReductionsAndEndOfLife) {
+  const auto dir = scratchDirectory("duty_ageing");
+  const CommandResult r = runCeilplan("duty --dt-s 0 --json " + (dir / "duty.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* model : {"fec:", "xu:", "schmalstieg:", "woehler:"}) EXPECT_NE(r.out.find(model), std::string::npos) << model;
+  const auto j = nlohmann::json::parse(readWholeFile(dir / "duty.json"));
+  const auto& ceiling_models = j["cases"][1]["ageing"];
+  ASSERT_EQ(ceiling_models.size(), 4u);
+  const auto& xu = ceiling_models[1];
+  EXPECT_EQ(xu["model"], "xu");
+  // Reference-models.md section 5: Xu's cycle damage falls 18.2 % with the pack kept new.
+  EXPECT_NEAR(xu["wear_reduction_new_pack_pct"].get<double>(), 18.2, 0.05);
+  EXPECT_NEAR(ceiling_models[0]["wear_reduction_new_pack_pct"].get<double>(), 100 * (1 - 8.0 / 9.5), 1e-6);
+  for (const auto& model : ceiling_models) {
+    EXPECT_GT(model["capacity_fade"].get<double>(), 0.0) << model["model"];
+    EXPECT_TRUE(model["days_to_end_of_life"].is_number()) << model["model"];
+    EXPECT_GT(model["fade_reduction_pct"].get<double>(), 0.0) << model["model"];
+  }
+  EXPECT_FALSE(xu["warnings"].empty());
+}
+
+TEST(CliDuty, OneModelOverYearsWritesTheStateOfHealthSeries) {
+  const auto dir = scratchDirectory("duty_years");
+  const CommandResult r =
+      runCeilplan("duty --model xu --years 2 --temperature-c 35 --dt-s 0 --json " + (dir / "d.json").string() +
+                  " --csv-dir " + (dir / "csv").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(readWholeFile(dir / "d.json"));
+  EXPECT_EQ(j["scenario"]["study_days"].get<int>(), 730);
+  ASSERT_EQ(j["cases"][0]["ageing"].size(), 1u);
+  const std::string soh = readWholeFile(dir / "csv" / "case1_soh.csv");
+  EXPECT_EQ(soh.rfind("model,day,soh\nxu,1,", 0), 0u) << soh.substr(0, 40);
+}
+
 struct BadInput {
   const char* arguments;
   const char* says;
@@ -92,6 +126,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--charge-current-a 0", "--charge-current-a"},
                       BadInput{"--charge-max-min 10", "mission 3 of day 1"},
                       BadInput{"--unknown-flag 3", "--unknown-flag"},
+                      BadInput{"--temperature-c 298", "kelvin"}, BadInput{"--model rainbow", "--model"},
+                      BadInput{"--eol-soh 1.2", "--eol-soh"},
                       BadInput{"--config /nonexistent/study.yaml", "/nonexistent/study.yaml"}),
     [](const auto& info) {
       std::string name;
