@@ -34,9 +34,17 @@ void runMapgen(const MapgenOptions& options) {
   const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
   writeAtomically(out, [&](const std::filesystem::path& temporary) {
     std::ofstream file(temporary, std::ios::binary);
-    const bool written = full_format ? tree->write(file) : tree->writeBinary(file);
+    if (full_format) {
+      tree->write(file);
+    } else {
+      // OctoMap's own header, written here because its writeBinary prints debug chatter on
+      // stderr in Debian's build.
+      file << "# Octomap OcTree binary file\n# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
+           << "id " << tree->getTreeType() << "\nsize " << tree->size() << "\nres " << tree->getResolution() << "\ndata\n";
+      tree->writeBinaryData(file);
+    }
     file.flush();
-    if (!written || !file) throw std::runtime_error("cannot write " + out.string());
+    if (!file) throw std::runtime_error("cannot write " + out.string());
   });
   const auto& size = grid.frame().size();
   std::printf("scene %s, resolution %g m, seed %llu: %d x %d x %d voxels, %zu octree nodes -> %s (%ju bytes)\n",
