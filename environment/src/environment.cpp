@@ -110,21 +110,40 @@ SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction
   double all_covered = 0.0, all_weighted = 0.0;
   for (const Eigen::Vector2d& offset : vehicle_.rotor_positions_m) {
     const Eigen::Vector2d centre = body_m.head<2>() + offset;
-    RotorGap rotor{kInfinity, 0.0, kInfinity};
-    double covered = 0.0, weighted = 0.0;
-    const int i_end = frame.indexOf(0, centre.x() + radius), j_end = frame.indexOf(1, centre.y() + radius);
-    for (int j = frame.indexOf(1, centre.y() - radius); j <= j_end; ++j) {
-      for (int i = frame.indexOf(0, centre.x() - radius); i <= i_end; ++i) {
-        const double area = discRectangleOverlap_m2(centre, radius, {frame.faceOf(0, i), frame.faceOf(1, j)},
-                                                    {frame.faceOf(0, i + 1), frame.faceOf(1, j + 1)});
-        if (area <= 0.0) continue;
-        const double gap = columnGap(i, j, plane_z, direction);
-        rotor.nearest_gap_m = std::min(rotor.nearest_gap_m, gap);
-        if (gap <= reach) {
-          covered += area;
-          weighted += area * gap;
+    const int i_begin = frame.indexOf(0, centre.x() - radius), i_end = frame.indexOf(0, centre.x() + radius);
+    const int j_begin = frame.indexOf(1, centre.y() - radius), j_end = frame.indexOf(1, centre.y() + radius);
+    // Calls `visit(i, j, gap)` for every column the disc overlaps with positive area.
+    const auto forEachColumn = [&](auto&& visit) {
+      for (int j = j_begin; j <= j_end; ++j) {
+        const double dy = std::max({frame.faceOf(1, j) - centre.y(), 0.0, centre.y() - frame.faceOf(1, j + 1)});
+        for (int i = i_begin; i <= i_end; ++i) {
+          const double dx = std::max({frame.faceOf(0, i) - centre.x(), 0.0, centre.x() - frame.faceOf(0, i + 1)});
+          if (dx * dx + dy * dy < radius * radius) visit(i, j, columnGap(i, j, plane_z, direction));
         }
       }
+    };
+    // Usually every column under the disc gives the same gap (a flat ceiling, or none): then
+    // no area is needed. Otherwise weigh each column by its exact share of the disc.
+    double lowest = kInfinity, highest = -kInfinity;
+    forEachColumn([&](int, int, double gap) {
+      lowest = std::min(lowest, gap);
+      highest = std::max(highest, gap);
+    });
+    RotorGap rotor{lowest, 0.0, kInfinity};
+    double covered = 0.0, weighted = 0.0;
+    if (lowest == highest) {
+      if (lowest <= reach) {
+        covered = disc_area;
+        weighted = disc_area * lowest;
+      }
+    } else {
+      forEachColumn([&](int i, int j, double gap) {
+        if (gap > reach) return;
+        const double area = discRectangleOverlap_m2(centre, radius, {frame.faceOf(0, i), frame.faceOf(1, j)},
+                                                    {frame.faceOf(0, i + 1), frame.faceOf(1, j + 1)});
+        covered += area;
+        weighted += area * gap;
+      });
     }
     rotor.coverage = std::min(covered / disc_area, 1.0);
     if (covered > 0.0) rotor.mean_gap_m = weighted / covered;
