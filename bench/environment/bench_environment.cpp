@@ -2,6 +2,8 @@
 // (the naive way), and the cost of loading and indexing the largest shipped map.
 //   build/bench/environment/bench_environment
 
+#include "vehicle_geometry_file.hpp"
+
 #include "ceilplan/environment/environment.hpp"
 
 #include <benchmark/benchmark.h>
@@ -15,15 +17,8 @@ namespace {
 using namespace ceilplan::environment;
 
 VehicleGeometry quad() {
-  VehicleGeometry vehicle;  // maps/vehicles/quad.yaml
-  vehicle.rotor_positions_m = rotorPositions(RotorLayout::X, 4, 0.225);
-  vehicle.rotor_radius_m = 0.127;
-  vehicle.rotor_plane_height_m = 0.03;
-  vehicle.top_height_m = 0.06;
-  vehicle.bottom_height_m = -0.12;
-  vehicle.collision_radius_m = 0.36;
-  vehicle.margin_m = 0.10;
-  vehicle.top_margin_m = 0.02;
+  static const VehicleGeometry vehicle =
+      ceilplan::app::readVehicleGeometry(CEILPLAN_SOURCE_DIR "/maps/vehicles/quad.yaml");
   return vehicle;
 }
 
