@@ -1,0 +1,69 @@
+// `ceilplan mapgen`: writes one of the shipped inspection scenes as an OctoMap file.
+
+#include "command_registry.hpp"
+#include "output.hpp"
+#include "yaml_config.hpp"
+
+#include "ceilplan/environment/scenes.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace ceilplan::app {
+namespace {
+
+struct MapgenOptions {
+  std::string scene;
+  std::string out;
+  double resolution_m = 0.1;
+  std::uint64_t seed = 1;
+};
+
+void runMapgen(const MapgenOptions& options) {
+  using namespace environment;
+  const Scene scene = sceneFromName(options.scene);
+  const std::filesystem::path out(options.out);
+  const bool full_format = out.extension() == ".ot";
+  if (!full_format && out.extension() != ".bt")
+    throw std::invalid_argument("--out " + options.out + ": the map file must end in .bt (or .ot)");
+  const VoxelGrid grid = generateScene(scene, options.resolution_m, options.seed);
+  const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
+  writeAtomically(out, [&](const std::filesystem::path& temporary) {
+    std::ofstream file(temporary, std::ios::binary);
+    if (full_format) {
+      tree->write(file);
+    } else {
+      // OctoMap's own header, written here because its writeBinary prints debug chatter on
+      // stderr in Debian's build.
+      file << "# Octomap OcTree binary file\n# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
+           << "id " << tree->getTreeType() << "\nsize " << tree->size() << "\nres " << tree->getResolution() << "\ndata\n";
+      tree->writeBinaryData(file);
+    }
+    file.flush();
+    if (!file) throw std::runtime_error("cannot write " + out.string());
+  });
+  const auto& size = grid.frame().size();
+  std::printf("scene %s, resolution %g m, seed %llu: %d x %d x %d voxels, %zu octree nodes -> %s (%ju bytes)\n",
+              options.scene.c_str(), options.resolution_m, static_cast<unsigned long long>(options.seed), size[0],
+              size[1], size[2], tree->size(), out.string().c_str(),
+              static_cast<std::uintmax_t>(std::filesystem::file_size(out)));
+}
+
+const CommandRegistration registration(20, [](CLI::App& parent) {
+  auto options = std::make_shared<MapgenOptions>();
+  CLI::App* command = parent.add_subcommand("mapgen", "Generate a shipped inspection scene as an OctoMap (.bt)");
+  command->config_formatter(std::make_shared<YamlConfig>());
+  command->set_config("--config", "", "Read flags from a YAML file (keys are long flag names)");
+  command->add_option("--scene", options->scene, "bridge, tunnel, warehouse or open")->required();
+  command->add_option("--out", options->out, "Output file (.bt, or .ot for OctoMap's full format)")->required();
+  command->add_option("--resolution", options->resolution_m, "Voxel size in metres")->capture_default_str();
+  command->add_option("--seed", options->seed, "Seed placing the scene's clutter")->capture_default_str();
+  command->callback([options] { runMapgen(*options); });
+});
+
+}  // namespace
+}  // namespace ceilplan::app

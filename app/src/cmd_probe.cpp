@@ -1,0 +1,129 @@
+// `ceilplan probe`: what the planner and the energy model see at one body position.
+
+#include "command_registry.hpp"
+#include "output.hpp"
+#include "vehicle_geometry_file.hpp"
+#include "yaml_config.hpp"
+
+#include "ceilplan/environment/environment.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace ceilplan::app {
+namespace {
+
+struct ProbeOptions {
+  std::string map;
+  std::string at;
+  std::string vehicle;
+  std::string json;
+  bool unknown_free = false;
+  bool unknown_ceiling = false;
+};
+
+Eigen::Vector3d parsePoint(const std::string& text) {
+  std::istringstream in(text);
+  Eigen::Vector3d point;
+  char comma1 = 0, comma2 = 0;
+  if (!(in >> point.x() >> comma1 >> point.y() >> comma2 >> point.z()) || comma1 != ',' || comma2 != ',' ||
+      !(in >> std::ws).eof() || !point.allFinite())
+    throw std::invalid_argument("--at '" + text + "': expected three finite numbers x,y,z in metres");
+  return point;
+}
+
+// Infinite gaps (no surface) become JSON null.
+nlohmann::json metres(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
+
+std::string text(double value) {
+  if (!std::isfinite(value)) return "none";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.4f", value);
+  return buffer;
+}
+
+nlohmann::json gapJson(const environment::RotorGap& gap) {
+  return {{"nearest_gap_m", metres(gap.nearest_gap_m)}, {"coverage", gap.coverage}, {"mean_gap_m", metres(gap.mean_gap_m)}};
+}
+
+void runProbe(const ProbeOptions& options) {
+  using namespace environment;
+  const Eigen::Vector3d body = parsePoint(options.at);
+  const std::filesystem::path vehicle_file = options.vehicle.empty() ? defaultVehicleFile() : std::filesystem::path(options.vehicle);
+  if (options.vehicle.empty() && !std::filesystem::exists(vehicle_file))
+    throw std::invalid_argument("no --vehicle given and " + vehicle_file.string() + " is not here; pass --vehicle FILE");
+  const VehicleGeometry vehicle = readVehicleGeometry(vehicle_file);
+  EnvironmentOptions environment_options;
+  environment_options.unknown_is_occupied = !options.unknown_free;
+  environment_options.unknown_is_surface = options.unknown_ceiling;
+  const OccupancyMap map = OccupancyMap::load(options.map);
+  Progress progress("indexing " + options.map);
+  const Environment environment(map, vehicle, environment_options, [&](double f) { progress.update(f); });
+  progress.finish();
+
+  const SurfaceGaps ceiling = environment.ceiling(body);
+  const SurfaceGaps ground = environment.ground(body);
+  const double clearance = environment.clearance_m(body);
+  const std::optional<Violation> violation = environment.stateViolation(body);
+
+  std::printf("at: %.3f, %.3f, %.3f (vehicle %s)\n", body.x(), body.y(), body.z(), vehicle.name.c_str());
+  std::printf("ceiling_gap_m: %s\nceiling_coverage: %.4f\nceiling_mean_gap_m: %s\n", text(ceiling.nearest_gap_m).c_str(),
+              ceiling.coverage, text(ceiling.mean_gap_m).c_str());
+  std::printf("ground_gap_m: %s\nground_coverage: %.4f\nground_mean_gap_m: %s\n", text(ground.nearest_gap_m).c_str(),
+              ground.coverage, text(ground.mean_gap_m).c_str());
+  std::printf("clearance_m: %s\nvalid: %s\n", text(clearance).c_str(), violation ? "false" : "true");
+  if (violation) std::printf("violation: %s\n", violation->describe().c_str());
+  for (std::size_t r = 0; r < vehicle.rotor_positions_m.size(); ++r)
+    std::printf("rotor %zu: ceiling gap %s coverage %.4f | ground gap %s coverage %.4f\n", r,
+                text(ceiling.rotors[r].nearest_gap_m).c_str(), ceiling.rotors[r].coverage,
+                text(ground.rotors[r].nearest_gap_m).c_str(), ground.rotors[r].coverage);
+  if (options.json.empty()) return;
+
+  nlohmann::json rotors = nlohmann::json::array();
+  for (std::size_t r = 0; r < vehicle.rotor_positions_m.size(); ++r) {
+    const Eigen::Vector2d& offset = vehicle.rotor_positions_m[r];
+    rotors.push_back({{"offset_m", {offset.x(), offset.y()}},
+                      {"ceiling", gapJson(ceiling.rotors[r])},
+                      {"ground", gapJson(ground.rotors[r])}});
+  }
+  const nlohmann::json report = {
+      {"map", options.map},
+      {"vehicle", vehicle_file.string()},
+      {"at", {body.x(), body.y(), body.z()}},
+      {"unknown_is_occupied", environment_options.unknown_is_occupied},
+      {"unknown_is_surface", environment_options.unknown_is_surface},
+      {"ceiling_gap_m", metres(ceiling.nearest_gap_m)},
+      {"ceiling_coverage", ceiling.coverage},
+      {"ceiling_mean_gap_m", metres(ceiling.mean_gap_m)},
+      {"ground_gap_m", metres(ground.nearest_gap_m)},
+      {"ground_coverage", ground.coverage},
+      {"ground_mean_gap_m", metres(ground.mean_gap_m)},
+      {"clearance_m", metres(clearance)},
+      {"valid", !violation},
+      {"violation", violation ? nlohmann::json(violation->describe()) : nlohmann::json(nullptr)},
+      {"rotors", rotors}};
+  writeTextAtomically(options.json, [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+}
+
+const CommandRegistration registration(22, [](CLI::App& parent) {
+  auto options = std::make_shared<ProbeOptions>();
+  CLI::App* command = parent.add_subcommand("probe", "Ceiling and ground gaps, clearance and validity at one body position");
+  command->config_formatter(std::make_shared<YamlConfig>());
+  command->set_config("--config", "", "Read flags from a YAML file (keys are long flag names)");
+  command->add_option("--map", options->map, "OctoMap file (.bt or .ot)")->required();
+  command->add_option("--at", options->at, "Body centre x,y,z in metres (map frame)")->required();
+  command->add_option("--vehicle", options->vehicle, "Vehicle file (default: maps/vehicles/quad.yaml)");
+  command->add_option("--json", options->json, "Also write the answer as JSON to this file");
+  command->add_flag("--unknown-free", options->unknown_free, "Treat unknown space as free for validity and clearance");
+  command->add_flag("--unknown-ceiling", options->unknown_ceiling, "Treat unknown space as a surface for the gaps");
+  command->callback([options] { runProbe(*options); });
+});
+
+}  // namespace
+}  // namespace ceilplan::app

@@ -1,0 +1,37 @@
+#pragma once
+// An OctoMap occupancy tree loaded from a .bt or .ot file, checked before OctoMap parses it,
+// so a damaged file gives one clear error instead of a crash or a half-read tree.
+
+#include <octomap/OcTree.h>
+
+#include <filesystem>
+#include <istream>
+#include <memory>
+#include <string>
+
+namespace ceilplan::environment {
+
+class OccupancyMap {
+ public:
+  // Reads a .bt (binary) or .ot (full) OctoMap file; the format is taken from the file's
+  // first line, not its name. Throws std::invalid_argument naming the file and the problem:
+  // missing, unreadable, not an OctoMap, truncated or corrupt, a tree type other than OcTree,
+  // or a map with no known voxel.
+  static OccupancyMap load(const std::filesystem::path& file);
+
+  // Same, from bytes already in memory; `name` appears in error messages.
+  static OccupancyMap read(std::istream& in, const std::string& name);
+
+  // Wraps a tree built in memory (tests, scene generation). Throws if it has no known voxel.
+  OccupancyMap(std::unique_ptr<octomap::OcTree> tree, std::string name);
+
+  const octomap::OcTree& tree() const { return *tree_; }
+  double resolution_m() const { return tree_->getResolution(); }
+  const std::string& name() const { return name_; }
+
+ private:
+  std::shared_ptr<const octomap::OcTree> tree_;
+  std::string name_;
+};
+
+}  // namespace ceilplan::environment

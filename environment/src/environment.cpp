@@ -1,0 +1,232 @@
+#include "ceilplan/environment/environment.hpp"
+
+#include "ceilplan/environment/disc_area.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace ceilplan::environment {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kDenseStepVoxels = 0.1;  // checkPathDensely's step: finer than any planner's
+
+std::string formatPoint(const Eigen::Vector3d& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f)", p.x(), p.y(), p.z());
+  return text;
+}
+
+void validateOptions(const EnvironmentOptions& options) {
+  if (!(options.ceiling_reach_radii > 0.0) || !std::isfinite(options.ceiling_reach_radii))
+    throw std::invalid_argument("environment options: ceiling reach must be a positive number of rotor radii");
+  if (!(options.ground_reach_radii > 0.0) || !std::isfinite(options.ground_reach_radii))
+    throw std::invalid_argument("environment options: ground reach must be a positive number of rotor radii");
+  if (!(options.motion_step_voxels > 0.0) || options.motion_step_voxels > 1.0)
+    throw std::invalid_argument("environment options: motion step must lie in (0, 1] voxels");
+}
+
+VehicleGeometry validated(VehicleGeometry vehicle) {
+  vehicle.validate();
+  return vehicle;
+}
+
+}  // namespace
+
+std::string Violation::describe() const {
+  std::string where = "segment " + std::to_string(segment) + " at " + formatPoint(position_m) + ": ";
+  switch (kind) {
+    case ViolationKind::OutsideMap: return where + "the body centre lies outside the map";
+    case ViolationKind::Occupied: return where + "the vehicle (with its clearance margins) touches occupied space";
+    case ViolationKind::Unknown: return where + "the vehicle (with its clearance margins) touches unknown space";
+  }
+  return where;
+}
+
+Environment::Environment(const OccupancyMap& map, VehicleGeometry vehicle, EnvironmentOptions options,
+                         const std::function<void(double)>& progress)
+    : map_name_(map.name()),
+      vehicle_(validated(std::move(vehicle))),
+      options_((validateOptions(options), options)),
+      grid_(VoxelGrid::fromTree(map.tree(), [&](double f) { if (progress) progress(0.4 * f); })),
+      columns_((progress ? progress(0.4) : void(), grid_)),
+      distance_((progress ? progress(0.6) : void(), grid_), options_.unknown_is_occupied) {
+  const double vertical = std::max(std::abs(vehicle_.inflatedBottom_m()), std::abs(vehicle_.inflatedTop_m()));
+  bounding_sphere_m_ = std::hypot(vehicle_.inflatedRadius_m(), vertical);
+  if (progress) progress(1.0);
+}
+
+void Environment::requireInside(const Eigen::Vector3d& point_m, const char* query) const {
+  if (!point_m.allFinite())
+    throw std::invalid_argument(std::string(query) + ": the point " + formatPoint(point_m) + " is not finite");
+  if (contains(point_m)) return;
+  const Eigen::AlignedBox3d box = grid_.frame().bounds();
+  throw std::out_of_range(map_name_ + ": " + query + " at " + formatPoint(point_m) +
+                          ": the point lies outside the map, whose known voxels span " + formatPoint(box.min()) +
+                          " to " + formatPoint(box.max()));
+}
+
+double Environment::columnGap(int i, int j, double z_m, Direction direction) const {
+  const ColumnIndex::Boundary boundary = direction == Direction::Up ? columns_.above(i, j, z_m) : columns_.below(i, j, z_m);
+  const bool surface = boundary.state == CellState::Occupied ||
+                       (boundary.state == CellState::Unknown && options_.unknown_is_surface);
+  return surface ? std::abs(boundary.face_m - z_m) : kInfinity;
+}
+
+double Environment::ceilingGapAt(const Eigen::Vector3d& point_m) const {
+  requireInside(point_m, "ceiling gap");
+  const GridFrame& frame = grid_.frame();
+  return columnGap(frame.indexOf(0, point_m.x()), frame.indexOf(1, point_m.y()), point_m.z(), Direction::Up);
+}
+
+double Environment::groundGapAt(const Eigen::Vector3d& point_m) const {
+  requireInside(point_m, "ground gap");
+  const GridFrame& frame = grid_.frame();
+  return columnGap(frame.indexOf(0, point_m.x()), frame.indexOf(1, point_m.y()), point_m.z(), Direction::Down);
+}
+
+SurfaceGaps Environment::ceiling(const Eigen::Vector3d& body_m) const {
+  requireInside(body_m, "ceiling gap");
+  return gaps(body_m, Direction::Up);
+}
+
+SurfaceGaps Environment::ground(const Eigen::Vector3d& body_m) const {
+  requireInside(body_m, "ground gap");
+  return gaps(body_m, Direction::Down);
+}
+
+SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction) const {
+  const GridFrame& frame = grid_.frame();
+  const double radius = vehicle_.rotor_radius_m;
+  const double disc_area = M_PI * radius * radius;
+  const double reach =
+      radius * (direction == Direction::Up ? options_.ceiling_reach_radii : options_.ground_reach_radii);
+  const double plane_z = body_m.z() + vehicle_.rotor_plane_height_m;
+
+  SurfaceGaps result{{}, kInfinity, 0.0, kInfinity};
+  double all_covered = 0.0, all_weighted = 0.0;
+  for (const Eigen::Vector2d& offset : vehicle_.rotor_positions_m) {
+    const Eigen::Vector2d centre = body_m.head<2>() + offset;
+    const int i_begin = frame.indexOf(0, centre.x() - radius), i_end = frame.indexOf(0, centre.x() + radius);
+    const int j_begin = frame.indexOf(1, centre.y() - radius), j_end = frame.indexOf(1, centre.y() + radius);
+    // Calls `visit(i, j, gap)` for every column the disc overlaps with positive area.
+    const auto forEachColumn = [&](auto&& visit) {
+      for (int j = j_begin; j <= j_end; ++j) {
+        const double dy = std::max({frame.faceOf(1, j) - centre.y(), 0.0, centre.y() - frame.faceOf(1, j + 1)});
+        for (int i = i_begin; i <= i_end; ++i) {
+          const double dx = std::max({frame.faceOf(0, i) - centre.x(), 0.0, centre.x() - frame.faceOf(0, i + 1)});
+          if (dx * dx + dy * dy < radius * radius) visit(i, j, columnGap(i, j, plane_z, direction));
+        }
+      }
+    };
+    // Usually every column under the disc gives the same gap (a flat ceiling, or none): then
+    // no area is needed. Otherwise weigh each column by its exact share of the disc.
+    double lowest = kInfinity, highest = -kInfinity;
+    forEachColumn([&](int, int, double gap) {
+      lowest = std::min(lowest, gap);
+      highest = std::max(highest, gap);
+    });
+    RotorGap rotor{lowest, 0.0, kInfinity};
+    double covered = 0.0, weighted = 0.0;
+    if (lowest == highest) {
+      if (lowest <= reach) {
+        covered = disc_area;
+        weighted = disc_area * lowest;
+      }
+    } else {
+      forEachColumn([&](int i, int j, double gap) {
+        if (gap > reach) return;
+        const double area = discRectangleOverlap_m2(centre, radius, {frame.faceOf(0, i), frame.faceOf(1, j)},
+                                                    {frame.faceOf(0, i + 1), frame.faceOf(1, j + 1)});
+        covered += area;
+        weighted += area * gap;
+      });
+    }
+    rotor.coverage = std::min(covered / disc_area, 1.0);
+    if (covered > 0.0) rotor.mean_gap_m = weighted / covered;
+    result.nearest_gap_m = std::min(result.nearest_gap_m, rotor.nearest_gap_m);
+    result.coverage += rotor.coverage / vehicle_.rotor_positions_m.size();
+    all_covered += covered;
+    all_weighted += weighted;
+    result.rotors.push_back(rotor);
+  }
+  if (all_covered > 0.0) result.mean_gap_m = all_weighted / all_covered;
+  return result;
+}
+
+double Environment::clearance_m(const Eigen::Vector3d& body_m) const {
+  requireInside(body_m, "clearance");
+  return distance_.distance_m(body_m);
+}
+
+std::optional<Violation> Environment::exactCylinderViolation(const Eigen::Vector3d& body_m) const {
+  const GridFrame& frame = grid_.frame();
+  const double radius = vehicle_.inflatedRadius_m();
+  const double bottom = body_m.z() + vehicle_.inflatedBottom_m();
+  const double top = body_m.z() + vehicle_.inflatedTop_m();
+  const int k_begin = frame.indexOf(2, bottom), k_end = frame.indexOf(2, top);
+  const int j_end = frame.indexOf(1, body_m.y() + radius), i_end = frame.indexOf(0, body_m.x() + radius);
+  for (int j = frame.indexOf(1, body_m.y() - radius); j <= j_end; ++j) {
+    const double dy = std::max({frame.faceOf(1, j) - body_m.y(), 0.0, body_m.y() - frame.faceOf(1, j + 1)});
+    for (int i = frame.indexOf(0, body_m.x() - radius); i <= i_end; ++i) {
+      const double dx = std::max({frame.faceOf(0, i) - body_m.x(), 0.0, body_m.x() - frame.faceOf(0, i + 1)});
+      if (dx * dx + dy * dy >= radius * radius) continue;  // touching the column's side is allowed
+      for (int k = k_begin; k <= k_end; ++k) {
+        if (frame.faceOf(2, k) >= top || frame.faceOf(2, k + 1) <= bottom) continue;  // touching faces is allowed
+        const CellState state = grid_.at(i, j, k);
+        if (state == CellState::Occupied) return Violation{0, body_m, ViolationKind::Occupied};
+        if (state == CellState::Unknown && options_.unknown_is_occupied)
+          return Violation{0, body_m, ViolationKind::Unknown};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Violation> Environment::stateViolation(const Eigen::Vector3d& body_m) const {
+  if (!body_m.allFinite() || !contains(body_m)) return Violation{0, body_m, ViolationKind::OutsideMap};
+  // Fast path: nothing blocked within the sphere around the inflated cylinder.
+  if (distance_.lowerBound_m(body_m) > bounding_sphere_m_) return std::nullopt;
+  return exactCylinderViolation(body_m);
+}
+
+std::optional<Violation> Environment::segmentViolation(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
+                                                       double step_m, bool fast_path) const {
+  const double length = (to_m - from_m).norm();
+  if (!std::isfinite(length)) return Violation{0, from_m, ViolationKind::OutsideMap};
+  const long steps = std::max(1L, static_cast<long>(std::ceil(length / step_m)));
+  for (long s = 0; s <= steps; ++s) {
+    const Eigen::Vector3d state = from_m + (to_m - from_m) * (static_cast<double>(s) / steps);
+    std::optional<Violation> violation;
+    if (fast_path) {
+      violation = stateViolation(state);
+    } else if (!contains(state)) {
+      violation = Violation{0, state, ViolationKind::OutsideMap};
+    } else {
+      violation = exactCylinderViolation(state);
+    }
+    if (violation) return violation;
+  }
+  return std::nullopt;
+}
+
+std::optional<Violation> Environment::motionViolation(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
+  return segmentViolation(from_m, to_m, options_.motion_step_voxels * grid_.frame().resolution_m(), true);
+}
+
+std::optional<Violation> Environment::checkPathDensely(const std::vector<Eigen::Vector3d>& waypoints_m) const {
+  const double step = kDenseStepVoxels * grid_.frame().resolution_m();
+  if (waypoints_m.size() == 1) return segmentViolation(waypoints_m[0], waypoints_m[0], step, false);
+  for (std::size_t s = 0; s + 1 < waypoints_m.size(); ++s) {
+    if (auto violation = segmentViolation(waypoints_m[s], waypoints_m[s + 1], step, false)) {
+      violation->segment = s;
+      return violation;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace ceilplan::environment

@@ -1,0 +1,167 @@
+#include "ceilplan/environment/voxel_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace ceilplan::environment {
+namespace {
+
+constexpr int kKeyOffset = 32768;  // OctoMap key of global voxel index 0
+constexpr int kTreeDepth = 16;
+
+Index3 checkedSize(const Index3& size) {
+  std::size_t count = 1;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (size[axis] <= 0) throw std::invalid_argument("voxel grid: every dimension must be at least one voxel");
+    count *= static_cast<std::size_t>(size[axis]);
+    if (count > VoxelGrid::kMaxVoxels)
+      throw std::invalid_argument("the map's known voxels span a box of " + std::to_string(size[0]) + " x " +
+                                  std::to_string(size[1]) + " x " + std::to_string(size[2]) +
+                                  " voxels, more than ceilplan indexes (" + std::to_string(VoxelGrid::kMaxVoxels) +
+                                  "); crop the map or coarsen its resolution");
+  }
+  return size;
+}
+
+// An OcTree that lets us create the root ourselves, to build a tree top-down.
+class GeneratedTree : public octomap::OcTree {
+ public:
+  explicit GeneratedTree(double resolution_m) : OcTree(resolution_m) {}
+  octomap::OcTreeNode* createRoot() {
+    root = new octomap::OcTreeNode();
+    ++tree_size;
+    size_changed = true;
+    return root;
+  }
+};
+
+class TreeBuilder {
+ public:
+  TreeBuilder(const VoxelGrid& grid, GeneratedTree& tree) : grid_(grid), tree_(tree) {}
+
+  void build(octomap::OcTreeNode* node, const Index3& cube_min, int cube_size) {
+    const int half = cube_size / 2;
+    for (unsigned child = 0; child < 8; ++child) {
+      const Index3 child_min{cube_min[0] + ((child & 1) ? half : 0), cube_min[1] + ((child & 2) ? half : 0),
+                             cube_min[2] + ((child & 4) ? half : 0)};
+      const std::optional<CellState> state = uniformState(child_min, half);
+      if (state == CellState::Unknown) continue;
+      octomap::OcTreeNode* created = tree_.createNodeChild(node, child);
+      if (state) {
+        created->setLogOdds(*state == CellState::Occupied ? tree_.getClampingThresMaxLog()
+                                                          : tree_.getClampingThresMinLog());
+      } else {
+        build(created, child_min, half);
+      }
+    }
+  }
+
+ private:
+  // The state shared by every voxel of the cube (global indices), or nothing if they differ.
+  std::optional<CellState> uniformState(const Index3& cube_min, int cube_size) const {
+    Index3 lo, hi;
+    bool whole_cube_inside = true;
+    for (int axis = 0; axis < 3; ++axis) {
+      lo[axis] = std::max(cube_min[axis] - grid_.frame().origin()[axis], 0);
+      hi[axis] = std::min(cube_min[axis] + cube_size - grid_.frame().origin()[axis], grid_.frame().size()[axis]);
+      if (lo[axis] >= hi[axis]) return CellState::Unknown;
+      whole_cube_inside = whole_cube_inside && hi[axis] - lo[axis] == cube_size;
+    }
+    const CellState first = whole_cube_inside ? grid_.at(lo[0], lo[1], lo[2]) : CellState::Unknown;
+    for (int k = lo[2]; k < hi[2]; ++k)
+      for (int j = lo[1]; j < hi[1]; ++j)
+        for (int i = lo[0]; i < hi[0]; ++i)
+          if (grid_.at(i, j, k) != first) return std::nullopt;
+    return first;
+  }
+
+  const VoxelGrid& grid_;
+  GeneratedTree& tree_;
+};
+
+}  // namespace
+
+GridFrame::GridFrame(double resolution_m, const Index3& origin, const Index3& size)
+    : resolution_m_(resolution_m), inverse_resolution_(1.0 / resolution_m), origin_(origin), size_(checkedSize(size)) {
+  if (!(resolution_m > 0.0) || !std::isfinite(resolution_m))
+    throw std::invalid_argument("voxel grid: resolution must be a positive number of metres");
+}
+
+int GridFrame::indexOf(int axis, double coordinate_m) const {
+  // OctoMap's own rule (coordToKey): floor(coordinate * (1 / resolution)).
+  const double global = std::floor(coordinate_m * inverse_resolution_);
+  const double clamped = std::clamp(global - origin_[axis], -1e9, 1e9);  // far outside stays outside, no overflow
+  return static_cast<int>(clamped);
+}
+
+Eigen::AlignedBox3d GridFrame::bounds() const {
+  return Eigen::AlignedBox3d(Eigen::Vector3d(faceOf(0, 0), faceOf(1, 0), faceOf(2, 0)),
+                             Eigen::Vector3d(faceOf(0, size_[0]), faceOf(1, size_[1]), faceOf(2, size_[2])));
+}
+
+bool GridFrame::contains(const Eigen::Vector3d& point_m) const {
+  return inside(indexOf(0, point_m.x()), indexOf(1, point_m.y()), indexOf(2, point_m.z()));
+}
+
+VoxelGrid::VoxelGrid(const GridFrame& frame) : frame_(frame), cells_(frame.voxelCount(), CellState::Unknown) {}
+
+void VoxelGrid::fillBox(const Eigen::Vector3d& min_m, const Eigen::Vector3d& max_m, CellState state) {
+  Index3 lo, hi;
+  const double inverse_resolution = 1.0 / frame_.resolution_m();
+  for (int axis = 0; axis < 3; ++axis) {
+    // Voxels whose centre (g + 0.5) r lies in [min, max).
+    const auto first = [&](double bound) {
+      return std::clamp(std::ceil(bound * inverse_resolution - 0.5) - frame_.origin()[axis], 0.0,
+                        double(frame_.size()[axis]));
+    };
+    lo[axis] = static_cast<int>(first(min_m[axis]));
+    hi[axis] = static_cast<int>(first(max_m[axis]));
+  }
+  for (int k = lo[2]; k < hi[2]; ++k)
+    for (int j = lo[1]; j < hi[1]; ++j)
+      for (int i = lo[0]; i < hi[0]; ++i) set(i, j, k, state);
+}
+
+VoxelGrid VoxelGrid::fromTree(const octomap::OcTree& tree, const std::function<void(double)>& progress) {
+  Index3 lo{std::numeric_limits<int>::max(), std::numeric_limits<int>::max(), std::numeric_limits<int>::max()};
+  Index3 hi{std::numeric_limits<int>::min(), std::numeric_limits<int>::min(), std::numeric_limits<int>::min()};
+  std::size_t leaves = 0;
+  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
+    const octomap::OcTreeKey corner = it.getIndexKey();
+    const int width = 1 << (kTreeDepth - static_cast<int>(it.getDepth()));
+    for (int axis = 0; axis < 3; ++axis) {
+      lo[axis] = std::min(lo[axis], static_cast<int>(corner[axis]));
+      hi[axis] = std::max(hi[axis], static_cast<int>(corner[axis]) + width);
+    }
+    ++leaves;
+  }
+  if (leaves == 0) throw std::invalid_argument("the map is empty (no known voxel)");
+  VoxelGrid grid(GridFrame(tree.getResolution(), Index3{lo[0] - kKeyOffset, lo[1] - kKeyOffset, lo[2] - kKeyOffset},
+                           Index3{hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}));
+  std::size_t done = 0;
+  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
+    const octomap::OcTreeKey corner = it.getIndexKey();
+    const int width = 1 << (kTreeDepth - static_cast<int>(it.getDepth()));
+    const CellState state = tree.isNodeOccupied(*it) ? CellState::Occupied : CellState::Free;
+    const int i0 = corner[0] - lo[0], j0 = corner[1] - lo[1], k0 = corner[2] - lo[2];
+    for (int k = k0; k < k0 + width; ++k)
+      for (int j = j0; j < j0 + width; ++j)
+        for (int i = i0; i < i0 + width; ++i) grid.set(i, j, k, state);
+    if (progress && (++done % 4096 == 0)) progress(static_cast<double>(done) / leaves);
+  }
+  return grid;
+}
+
+std::unique_ptr<octomap::OcTree> toOcTree(const VoxelGrid& grid) {
+  auto tree = std::make_unique<GeneratedTree>(grid.frame().resolution_m());
+  octomap::OcTreeNode* root = tree->createRoot();
+  TreeBuilder(grid, *tree).build(root, Index3{-kKeyOffset, -kKeyOffset, -kKeyOffset}, 1 << kTreeDepth);
+  tree->updateInnerOccupancy();
+  return tree;
+}
+
+}  // namespace ceilplan::environment

@@ -1,0 +1,71 @@
+#pragma once
+// Small OctoMaps built voxel by voxel through OctoMap's own API, with surfaces on voxel faces,
+// so tests can state exact expected gaps.
+
+#include "ceilplan/environment/occupancy_map.hpp"
+#include "ceilplan/environment/vehicle_geometry.hpp"
+#include "ceilplan/environment/voxel_grid.hpp"
+
+#include <octomap/OcTree.h>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+
+namespace ceilplan::testing {
+
+using environment::CellState;
+
+// Every voxel whose centre lies in [min, max) gets `classify(centre)`; the rest stay unknown.
+inline environment::OccupancyMap analyticMap(const Eigen::Vector3d& min, const Eigen::Vector3d& max, double resolution,
+                                             const std::function<CellState(const Eigen::Vector3d&)>& classify) {
+  auto tree = std::make_unique<octomap::OcTree>(resolution);
+  for (double z = min.z() + resolution / 2; z < max.z(); z += resolution)
+    for (double y = min.y() + resolution / 2; y < max.y(); y += resolution)
+      for (double x = min.x() + resolution / 2; x < max.x(); x += resolution) {
+        const CellState state = classify(Eigen::Vector3d(x, y, z));
+        if (state == CellState::Unknown) continue;
+        tree->setNodeValue(octomap::point3d(x, y, z), state == CellState::Occupied ? tree->getClampingThresMaxLog()
+                                                                                    : tree->getClampingThresMinLog(),
+                           true);
+      }
+  tree->updateInnerOccupancy();
+  tree->prune();
+  return environment::OccupancyMap(std::move(tree), "analytic map");
+}
+
+// A 4 x 4 m room at 0.1 m: floor top at 0.2 m, ceiling underside given by `ceiling(x, y)`,
+// ceiling 0.4 m thick, free in between; unknown above the ceiling slab.
+inline environment::OccupancyMap room(const std::function<double(double x, double y)>& ceiling) {
+  return analyticMap({-2, -2, 0}, {2, 2, 4}, 0.1, [&](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2) return CellState::Occupied;
+    const double underside = ceiling(c.x(), c.y());
+    if (c.z() < underside) return CellState::Free;
+    if (c.z() < underside + 0.4) return CellState::Occupied;
+    return CellState::Unknown;
+  });
+}
+
+// The default vehicle's geometry (maps/vehicles/quad.yaml).
+inline environment::VehicleGeometry quad() {
+  environment::VehicleGeometry vehicle;
+  vehicle.name = "quad";
+  vehicle.rotor_positions_m = environment::rotorPositions(environment::RotorLayout::X, 4, 0.225);
+  vehicle.rotor_radius_m = 0.127;
+  vehicle.rotor_plane_height_m = 0.03;
+  vehicle.top_height_m = 0.06;
+  vehicle.bottom_height_m = -0.12;
+  vehicle.collision_radius_m = 0.36;
+  vehicle.margin_m = 0.10;
+  vehicle.top_margin_m = 0.02;
+  return vehicle;
+}
+
+// One rotor on the body axis: for coverage tests.
+inline environment::VehicleGeometry singleRotor() {
+  environment::VehicleGeometry vehicle = quad();
+  vehicle.rotor_positions_m = {Eigen::Vector2d(0, 0)};
+  return vehicle;
+}
+
+}  // namespace ceilplan::testing

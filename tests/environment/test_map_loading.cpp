@@ -1,0 +1,117 @@
+// Loading OctoMaps: real files load; damaged or foreign ones give one clear line.
+
+#include "analytic_maps.hpp"
+#include "run_command.hpp"
+
+#include "ceilplan/environment/environment.hpp"
+
+#include <octomap/ColorOcTree.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <vector>
+
+namespace ceilplan::environment {
+namespace {
+
+const std::filesystem::path kGeb079 = "/usr/share/doc/liboctomap-dev/examples/data/geb079.bt";
+
+std::string loadError(const std::filesystem::path& file) {
+  try {
+    OccupancyMap::load(file);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(loaded)";
+}
+
+void writeBytes(const std::filesystem::path& file, const std::string& bytes) {
+  std::ofstream(file, std::ios::binary) << bytes;
+}
+
+void expectOneLineNaming(const std::string& message, const std::filesystem::path& file, const std::string& problem) {
+  EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+  EXPECT_NE(message.find(problem), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(MapLoading, BadFilesGiveOneLineNamingTheFileAndTheProblem) {
+  const auto dir = testing::scratchDirectory("bad_maps");
+  expectOneLineNaming(loadError(dir / "missing.bt"), dir / "missing.bt", "no such map file");
+
+  writeBytes(dir / "text.bt", "hello, I am not a map\n");
+  expectOneLineNaming(loadError(dir / "text.bt"), dir / "text.bt", "not an OctoMap file");
+
+  const std::string whole = testing::readWholeFile(CEILPLAN_SOURCE_DIR "/maps/open.bt");
+  writeBytes(dir / "truncated.bt", whole.substr(0, whole.size() / 2));
+  expectOneLineNaming(loadError(dir / "truncated.bt"), dir / "truncated.bt", "truncated");
+
+  octomap::OcTree empty(0.1);
+  empty.writeBinary((dir / "empty.bt").string());
+  expectOneLineNaming(loadError(dir / "empty.bt"), dir / "empty.bt", "empty");
+
+  octomap::ColorOcTree colour(0.1);
+  colour.updateNode(octomap::point3d(0.05f, 0.05f, 0.05f), true);
+  colour.write((dir / "colour.ot").string());
+  expectOneLineNaming(loadError(dir / "colour.ot"), dir / "colour.ot", "ColorOcTree");
+
+  // A node stream deeper than OctoMap's 16 levels: OctoMap alone would recurse until the data ran out.
+  writeBytes(dir / "deep.bt", "# Octomap OcTree binary file\nid OcTree\nsize 100\nres 0.1\ndata\n" + std::string(200, '\xff'));
+  expectOneLineNaming(loadError(dir / "deep.bt"), dir / "deep.bt", "corrupt");
+}
+
+TEST(MapLoading, FullFormatAndBinaryFormatLoadTheSameTree) {
+  const auto dir = testing::scratchDirectory("formats");
+  const OccupancyMap binary = OccupancyMap::load(CEILPLAN_SOURCE_DIR "/maps/open.bt");
+  binary.tree().write((dir / "open.ot").string());
+  const OccupancyMap full = OccupancyMap::load(dir / "open.ot");
+  EXPECT_EQ(full.tree().size(), binary.tree().size());
+  EXPECT_DOUBLE_EQ(full.resolution_m(), 0.1);
+}
+
+TEST(MapLoading, AGridSurvivesTheTripThroughAnOcTree) {
+  VoxelGrid grid(GridFrame(0.1, {-7, 2, -3}, {13, 9, 11}));
+  grid.fillBox({-0.5, 0.3, -0.2}, {0.4, 0.9, 0.6}, CellState::Free);
+  grid.fillBox({-0.2, 0.4, 0.0}, {0.1, 0.6, 0.3}, CellState::Occupied);
+  const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
+  const VoxelGrid back = VoxelGrid::fromTree(*tree);
+  const Eigen::AlignedBox3d box = grid.frame().bounds();
+  for (double z = box.min().z() + 0.05; z < box.max().z(); z += 0.1)
+    for (double y = box.min().y() + 0.05; y < box.max().y(); y += 0.1)
+      for (double x = box.min().x() + 0.05; x < box.max().x(); x += 0.1) {
+        const GridFrame& a = grid.frame();
+        const GridFrame& b = back.frame();
+        EXPECT_EQ(grid.at(a.indexOf(0, x), a.indexOf(1, y), a.indexOf(2, z)),
+                  back.at(b.indexOf(0, x), b.indexOf(1, y), b.indexOf(2, z)));
+      }
+}
+
+TEST(RealScan, Geb079LoadsWithItsFloorAtZeroAndItsCeilingAboutTwoSixtyFiveUp) {
+  const OccupancyMap map = OccupancyMap::load(kGeb079);
+  EXPECT_DOUBLE_EQ(map.resolution_m(), 0.08);
+  const Environment environment(map, testing::quad());
+  // Over the corridor at 1.5 m: where the scan saw them, the floor and ceiling heights.
+  std::vector<double> floors, ceilings;
+  for (double x = 0.0; x <= 22.0; x += 0.5)
+    for (double y = -0.5; y <= 0.5; y += 0.5) {
+      const Eigen::Vector3d p(x, y, 1.5);
+      if (std::isfinite(environment.ceilingGapAt(p))) ceilings.push_back(1.5 + environment.ceilingGapAt(p));
+      if (std::isfinite(environment.groundGapAt(p))) floors.push_back(1.5 - environment.groundGapAt(p));
+    }
+  ASSERT_GT(ceilings.size(), 60u);
+  ASSERT_GT(floors.size(), 20u);
+  std::sort(ceilings.begin(), ceilings.end());
+  std::sort(floors.begin(), floors.end());
+  EXPECT_NEAR(ceilings[ceilings.size() / 2], 2.64, 0.1);
+  EXPECT_NEAR(floors[floors.size() / 2], 0.0, 0.05);
+  // Close under the ceiling the rotors see it over their whole discs.
+  const SurfaceGaps gaps = environment.ceiling({3.0, 0.0, 2.45});
+  EXPECT_GT(gaps.nearest_gap_m, 0.05);
+  EXPECT_LT(gaps.nearest_gap_m, 0.3);
+  EXPECT_GT(gaps.coverage, 0.9);
+}
+
+}  // namespace
+}  // namespace ceilplan::environment

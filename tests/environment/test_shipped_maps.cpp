@@ -1,0 +1,118 @@
+// The shipped scenes are up to date, small, and their missions' targets are reachable.
+
+#include "run_command.hpp"
+#include "vehicle_geometry_file.hpp"
+
+#include "ceilplan/environment/environment.hpp"
+#include "ceilplan/environment/scenes.hpp"
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+
+namespace ceilplan::environment {
+namespace {
+
+const std::filesystem::path kMaps = CEILPLAN_SOURCE_DIR "/maps";
+
+class ShippedScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedScene, RegeneratingItGivesTheCommittedFileByteForByte) {
+  const auto dir = testing::scratchDirectory("regenerate_" + GetParam());
+  const auto result = testing::runCeilplan("mapgen --scene " + GetParam() + " --out " + (dir / "scene.bt").string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("seed 1"), std::string::npos) << result.out;
+  const std::string committed = testing::readWholeFile(kMaps / (GetParam() + ".bt"));
+  EXPECT_LT(committed.size(), 5u * 1024 * 1024);
+  EXPECT_TRUE(committed == testing::readWholeFile(dir / "scene.bt"))
+      << "maps/" << GetParam() << ".bt is out of date: run ceilplan mapgen --scene " << GetParam()
+      << " --out maps/" << GetParam() << ".bt";
+}
+
+// True if `point` lies on a face between an occupied voxel and a free one.
+bool onOccupiedSurface(const VoxelGrid& grid, const Eigen::Vector3d& point) {
+  const GridFrame& frame = grid.frame();
+  for (int axis = 0; axis < 3; ++axis) {
+    const double steps = point[axis] / frame.resolution_m();
+    if (std::abs(steps - std::round(steps)) > 1e-6) continue;  // not on a face across this axis
+    for (const double side : {-0.5, 0.5}) {
+      Eigen::Vector3d inner = point, outer = point;
+      inner[axis] += side * frame.resolution_m();
+      outer[axis] -= side * frame.resolution_m();
+      const auto state = [&](const Eigen::Vector3d& p) {
+        return grid.at(frame.indexOf(0, p.x()), frame.indexOf(1, p.y()), frame.indexOf(2, p.z()));
+      };
+      if (state(inner) == CellState::Occupied && state(outer) == CellState::Free) return true;
+    }
+  }
+  return false;
+}
+
+// Viewpoints at the ends and middle of the standoff range, straight away from the surface
+// side or tilted up to 60 degrees around it.
+bool hasValidViewpoint(const Environment& environment, const Eigen::Vector3d& target, double near_m, double far_m) {
+  for (const double distance : {near_m, 0.5 * (near_m + far_m), far_m})
+    for (const double tilt : {0.0, 0.5, 1.0})
+      for (int azimuth = 0; azimuth < 8; ++azimuth)
+        for (const double vertical : {-1.0, 1.0}) {
+          const double a = azimuth * M_PI / 4;
+          const Eigen::Vector3d direction(std::sin(tilt) * std::cos(a), std::sin(tilt) * std::sin(a),
+                                          vertical * std::cos(tilt));
+          if (environment.isStateValid(target + distance * direction)) return true;
+        }
+  return false;
+}
+
+TEST_P(ShippedScene, EveryMissionTargetLiesOnAnOccupiedSurfaceAndCanBeViewed) {
+  const std::filesystem::path mission_file = kMaps / (GetParam() + ".yaml");
+  const YAML::Node mission = YAML::LoadFile(mission_file.string());
+  const OccupancyMap map = OccupancyMap::load(kMaps / mission["map"].as<std::string>());
+  const VehicleGeometry vehicle =
+      app::readVehicleGeometry(mission_file.parent_path() / mission["vehicle"].as<std::string>());
+  const Environment environment(map, vehicle);
+
+  const auto home = mission["home"].as<std::vector<double>>();
+  EXPECT_TRUE(environment.isStateValid({home[0], home[1], home[2]}));
+  EXPECT_GE(mission["targets"].size(), 8u);
+  EXPECT_LE(mission["targets"].size(), 20u);
+  for (const auto& target : mission["targets"]) {
+    const auto p = target["point"].as<std::vector<double>>();
+    const auto standoff = target["standoff_m"].as<std::vector<double>>();
+    const Eigen::Vector3d point(p[0], p[1], p[2]);
+    const std::string name = target["name"].as<std::string>();
+    EXPECT_TRUE(onOccupiedSurface(environment.grid(), point)) << name;
+    EXPECT_TRUE(hasValidViewpoint(environment, point, standoff[0], standoff[1])) << name;
+    EXPECT_GT(target["dwell_s"].as<double>(), 0.0) << name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Maps, ShippedScene, ::testing::Values("bridge", "tunnel", "warehouse", "open"));
+
+TEST(Scenes, DifferentSeedsMoveTheClutterAndTheSameSeedRepeatsIt) {
+  const VoxelGrid a = generateScene(Scene::Warehouse, 0.1, 3), b = generateScene(Scene::Warehouse, 0.1, 3),
+                  c = generateScene(Scene::Warehouse, 0.1, 4);
+  std::size_t same_ab = 0, same_ac = 0;
+  for (std::size_t v = 0; v < a.frame().voxelCount(); ++v) {
+    same_ab += a.atLinear(v) == b.atLinear(v);
+    same_ac += a.atLinear(v) == c.atLinear(v);
+  }
+  EXPECT_EQ(same_ab, a.frame().voxelCount());
+  EXPECT_LT(same_ac, a.frame().voxelCount());
+  EXPECT_THROW(sceneFromName("castle"), std::invalid_argument);
+}
+
+TEST(Scenes, TheBridgeDeckUndersideIsSixMetresUpAndTheOpenSceneHasNoCeiling) {
+  const VoxelGrid bridge = generateScene(Scene::Bridge, 0.1, 1);
+  const ColumnIndex columns(bridge);
+  const GridFrame& frame = bridge.frame();
+  const int i = frame.indexOf(0, 6.05), j = frame.indexOf(1, 0.05);
+  EXPECT_NEAR(columns.above(i, j, 3.0).face_m, 6.0, 1e-9);
+  EXPECT_EQ(columns.above(i, j, 3.0).state, CellState::Occupied);
+  EXPECT_NEAR(columns.below(i, j, 3.0).face_m, 0.0, 1e-9);
+  const VoxelGrid open = generateScene(Scene::Open, 0.1, 1);
+  EXPECT_EQ(ColumnIndex(open).above(i, j, 3.0).state, CellState::Unknown);
+}
+
+}  // namespace
+}  // namespace ceilplan::environment

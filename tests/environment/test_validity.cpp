@@ -1,0 +1,120 @@
+// State and motion validity: the vehicle is a vertical cylinder (radius 0.36 m, from 0.12 m
+// below to 0.06 m above the body centre) kept 0.10 m clear sideways and below, 0.02 m above.
+
+#include "analytic_maps.hpp"
+
+#include "ceilplan/environment/environment.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace ceilplan::environment {
+namespace {
+
+using testing::analyticMap;
+using testing::quad;
+
+// Floor top at 0.2 m, ceiling underside at 3.0 m, a pillar over x in [1.0, 1.4), y in [-0.2, 0.2).
+OccupancyMap pillarRoom(double unknown_beyond_x = 99.0) {
+  return analyticMap({-2, -2, 0}, {2, 2, 3.4}, 0.1, [=](const Eigen::Vector3d& c) {
+    if (c.x() > unknown_beyond_x) return CellState::Unknown;
+    if (c.z() < 0.2 || c.z() > 3.0) return CellState::Occupied;
+    if (c.x() > 1.0 && c.x() < 1.4 && std::abs(c.y()) < 0.2) return CellState::Occupied;
+    return CellState::Free;
+  });
+}
+
+constexpr double kTiny = 1e-6;
+
+TEST(StateValidity, TheVehicleMayHugTheCeilingUpToItsTopMargin) {
+  const OccupancyMap map = pillarRoom();
+  const Environment environment(map, quad());
+  const double highest = 3.0 - 0.06 - 0.02;
+  EXPECT_TRUE(environment.isStateValid({0, 0, highest - kTiny}));
+  const auto violation = environment.stateViolation({0, 0, highest + kTiny});
+  ASSERT_TRUE(violation);
+  EXPECT_EQ(violation->kind, ViolationKind::Occupied);
+  // Hugging the ceiling the rotors see it 0.05 m above: the regime the planner is after.
+  EXPECT_NEAR(environment.ceiling({0, 0, highest - kTiny}).nearest_gap_m, 0.05, 1e-5);
+}
+
+TEST(StateValidity, SidewaysAndBelowTheMarginIsTheCollisionRadiusPlusMargin) {
+  const OccupancyMap map = pillarRoom();
+  const Environment environment(map, quad());
+  const double reach = 0.36 + 0.10;
+  EXPECT_TRUE(environment.isStateValid({1.0 - reach - kTiny, 0, 1.5}));
+  EXPECT_FALSE(environment.isStateValid({1.0 - reach + kTiny, 0, 1.5}));
+  EXPECT_TRUE(environment.isStateValid({0, 0, 0.2 + 0.12 + 0.10 + kTiny}));
+  EXPECT_FALSE(environment.isStateValid({0, 0, 0.2 + 0.12 + 0.10 - kTiny}));
+  // Past the pillar's corner the cylinder's round side counts, not its bounding square.
+  const double offset = reach / std::sqrt(2.0) + 0.005;  // corner distance reach + 0.007
+  EXPECT_TRUE(environment.isStateValid({1.0 - offset, 0.2 + offset, 1.5}));
+}
+
+TEST(StateValidity, UnknownSpaceIsAnObstacleUnlessTheOptionFreesIt) {
+  const OccupancyMap map = pillarRoom(0.0);  // nothing known for x > 0
+  const Environment cautious(map, quad());
+  const auto violation = cautious.stateViolation({-0.3, -1.0, 1.5});
+  ASSERT_TRUE(violation);
+  EXPECT_EQ(violation->kind, ViolationKind::Unknown);
+  EnvironmentOptions options;
+  options.unknown_is_occupied = false;
+  const Environment bold(map, quad(), options);
+  EXPECT_TRUE(bold.isStateValid({-0.3, -1.0, 1.5}));
+}
+
+TEST(StateValidity, TheFastPathAgreesWithTheExactCylinderTest) {
+  const OccupancyMap map = pillarRoom();
+  const Environment environment(map, quad());
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> xy(-2.0, 2.0), z(0.0, 3.4);
+  int valid = 0;
+  for (int n = 0; n < 3000; ++n) {
+    const Eigen::Vector3d p(xy(random), xy(random), z(random));
+    const bool fast = environment.isStateValid(p);
+    EXPECT_EQ(fast, !environment.checkPathDensely({p})) << p.transpose();
+    valid += fast;
+  }
+  EXPECT_GT(valid, 300);
+  EXPECT_LT(valid, 2700);
+}
+
+TEST(Clearance, IsTheDistanceToTheNearestBlockedVoxelSurface) {
+  const OccupancyMap map = pillarRoom();
+  const Environment environment(map, quad());
+  EXPECT_NEAR(environment.clearance_m({0, 0, 2.5}), 0.5, 1e-9);              // ceiling
+  EXPECT_NEAR(environment.clearance_m({0.7, 0.5, 1.5}), std::hypot(0.3, 0.3), 1e-9);  // pillar edge
+  EXPECT_NEAR(environment.clearance_m({-1.8, 0, 1.5}), 0.2, 1e-9);           // unknown beyond the map
+  EXPECT_EQ(environment.clearance_m({1.2, 0, 1.5}), 0.0);                   // inside the pillar
+  EnvironmentOptions options;
+  options.unknown_is_occupied = false;
+  const Environment bold(map, quad(), options);
+  EXPECT_NEAR(bold.clearance_m({-1.8, 0, 1.5}), 1.3, 1e-9);                  // floor
+}
+
+TEST(MotionValidity, ASegmentThroughThePillarIsCaughtAndTheDenseCheckSaysWhere) {
+  const OccupancyMap map = pillarRoom();
+  const Environment environment(map, quad());
+  const std::vector<Eigen::Vector3d> path{{-1, 0, 1.5}, {0.3, 0, 1.5}, {1.7, 0.1, 1.5}};
+  EXPECT_TRUE(environment.isMotionValid(path[0], path[1]));
+  EXPECT_FALSE(environment.isMotionValid(path[1], path[2]));
+  const auto violation = environment.checkPathDensely(path);
+  ASSERT_TRUE(violation);
+  EXPECT_EQ(violation->segment, 1u);
+  EXPECT_EQ(violation->kind, ViolationKind::Occupied);
+  EXPECT_NEAR(violation->position_m.x(), 1.0 - 0.46, 0.02);
+  EXPECT_NE(violation->describe().find("segment 1"), std::string::npos);
+  EXPECT_FALSE(environment.checkPathDensely({path[0], path[1]}));
+}
+
+TEST(MotionValidity, LeavingTheMapIsAViolation) {
+  const OccupancyMap map = pillarRoom();
+  const Environment environment(map, quad());
+  const auto violation = environment.motionViolation({0, -1, 1.5}, {0, -3, 1.5});
+  ASSERT_TRUE(violation);
+  EXPECT_NE(violation->kind, ViolationKind::Occupied);
+}
+
+}  // namespace
+}  // namespace ceilplan::environment
