@@ -2,7 +2,6 @@
 
 #include "command_registry.hpp"
 #include "output.hpp"
-#include "yaml_config.hpp"
 
 #include "ceilplan/environment/scenes.hpp"
 
@@ -56,8 +55,6 @@ void runMapgen(const MapgenOptions& options) {
 const CommandRegistration registration(20, [](CLI::App& parent) {
   auto options = std::make_shared<MapgenOptions>();
   CLI::App* command = parent.add_subcommand("mapgen", "Generate a shipped inspection scene as an OctoMap (.bt)");
-  command->config_formatter(std::make_shared<YamlConfig>());
-  command->set_config("--config", "", "Read flags from a YAML file (keys are long flag names)");
   command->add_option("--scene", options->scene, "bridge, tunnel, warehouse or open")->required();
   command->add_option("--out", options->out, "Output file (.bt, or .ot for OctoMap's full format)")->required();
   command->add_option("--resolution", options->resolution_m, "Voxel size in metres")->capture_default_str();

@@ -2,7 +2,6 @@
 
 #include "command_registry.hpp"
 #include "output.hpp"
-#include "yaml_config.hpp"
 
 #include "ceilplan/environment/column_index.hpp"
 #include "ceilplan/environment/map_statistics.hpp"
@@ -55,8 +54,6 @@ void runMapinfo(const MapinfoOptions& options) {
 const CommandRegistration registration(21, [](CLI::App& parent) {
   auto options = std::make_shared<MapinfoOptions>();
   CLI::App* command = parent.add_subcommand("mapinfo", "Summarise an OctoMap (.bt or .ot)");
-  command->config_formatter(std::make_shared<YamlConfig>());
-  command->set_config("--config", "", "Read flags from a YAML file (keys are long flag names)");
   command->add_option("--map", options->map, "OctoMap file (.bt or .ot)")->required();
   command->add_option("--json", options->json, "Also write the summary as JSON to this file");
   command->callback([options] { runMapinfo(*options); });

@@ -3,7 +3,6 @@
 #include "command_registry.hpp"
 #include "output.hpp"
 #include "vehicle_geometry_file.hpp"
-#include "yaml_config.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 
@@ -114,8 +113,6 @@ void runProbe(const ProbeOptions& options) {
 const CommandRegistration registration(22, [](CLI::App& parent) {
   auto options = std::make_shared<ProbeOptions>();
   CLI::App* command = parent.add_subcommand("probe", "Ceiling and ground gaps, clearance and validity at one body position");
-  command->config_formatter(std::make_shared<YamlConfig>());
-  command->set_config("--config", "", "Read flags from a YAML file (keys are long flag names)");
   command->add_option("--map", options->map, "OctoMap file (.bt or .ot)")->required();
   command->add_option("--at", options->at, "Body centre x,y,z in metres (map frame)")->required();
   command->add_option("--vehicle", options->vehicle, "Vehicle file (default: maps/vehicles/quad.yaml)");

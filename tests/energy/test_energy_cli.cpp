@@ -41,12 +41,7 @@ void expectOneLineError(const std::string& arguments, const std::string& needle)
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
 }
 
-// run_command.hpp names its capture files with std::rand(); ctest runs every test of this
-// program as its own process in parallel, so seed per process or they share file names.
-class CurrentCommand : public ::testing::Test {
- protected:
-  void SetUp() override { std::srand(static_cast<unsigned>(::getpid())); }
-};
+class CurrentCommand : public ::testing::Test {};
 using CalibrateCommand = CurrentCommand;
 
 }  // namespace

@@ -12,10 +12,6 @@
 namespace ceilplan {
 namespace {
 
-// runCeilplan names its capture files from std::rand(): seed it per process, since ctest runs
-// this program's tests in parallel processes.
-const bool kSeeded = (std::srand(static_cast<unsigned>(::getpid())), true);
-
 const std::string kBridge = CEILPLAN_SOURCE_DIR "/maps/bridge.bt";
 const std::string kVehicle = CEILPLAN_SOURCE_DIR "/maps/vehicles/quad.yaml";
 
