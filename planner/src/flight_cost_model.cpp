@@ -57,7 +57,7 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
 }
 
 PointConditions FlightCostModel::conditionsAt(const Eigen::Vector3d& body_m) const {
-  if (environment_.clearanceLowerBound_m(body_m) > free_air_clearance_m_) {
+  if (farFromStructure(body_m)) {
     PointConditions conditions;
     conditions.rotor_count = energy_.rotorCount();
     return conditions;

@@ -1,6 +1,7 @@
 #include "ceilplan/planner/flight_objective.hpp"
 
 #include "ceilplan/planner/ompl_state.hpp"
+#include "ceilplan/planner/rejection_band_sampler.hpp"
 
 #include <ompl/base/goals/GoalRegion.h>
 
@@ -29,6 +30,11 @@ ompl::base::Cost FlightObjective::motionCost(const ompl::base::State* from, cons
 ompl::base::Cost FlightObjective::motionCostHeuristic(const ompl::base::State* from,
                                                       const ompl::base::State* to) const {
   return ompl::base::Cost(heuristic(toPosition(from), toPosition(to)));
+}
+
+ompl::base::InformedSamplerPtr FlightObjective::allocInformedStateSampler(
+    const ompl::base::ProblemDefinitionPtr& definition, unsigned int max_calls) const {
+  return std::make_shared<RejectionBandSampler>(definition, max_calls);
 }
 
 double FlightObjective::motionCost(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {

@@ -91,8 +91,8 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
                                           : "no collision-free route joins start and goal on the lattice");
     result.waypoints = found->waypoints;
   } else {
-    // The band sampler serves every planner that draws from the space's sampler; informed
-    // samplers draw from the space's default sampler (OMPL 1.5.2) and stay uniform.
+    // The band sampler serves every planner: directly, or through the objective's informed
+    // sampler (RejectionBandSampler).
     auto space = si_->getStateSpace();
     const CeilingBandOptions band{request.band_fraction, rules_.minCeilingGap_m(),
                                   model_.options().speeds.near_ceiling_gap_radii *

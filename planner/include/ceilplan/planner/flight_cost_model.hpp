@@ -93,6 +93,10 @@ class FlightCostModel {
   // says so) the gap queries are skipped: free air, and nearest_ceiling_gap_m is +inf instead of
   // a gap beyond the reach. Throws std::out_of_range outside the map.
   PointConditions conditionsAt(const Eigen::Vector3d& body_m) const;
+  // Whether conditionsAt answers without querying the map (no structure within reach).
+  bool farFromStructure(const Eigen::Vector3d& body_m) const {
+    return environment_.clearanceLowerBound_m(body_m) > free_air_clearance_m_;
+  }
   // Same, always querying the map, so nearest_ceiling_gap_m is exact (reports).
   PointConditions exactConditionsAt(const Eigen::Vector3d& body_m) const;
 

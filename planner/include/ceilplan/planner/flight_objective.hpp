@@ -25,6 +25,9 @@ class FlightObjective : public ompl::base::OptimizationObjective {
   ompl::base::Cost motionCost(const ompl::base::State* from, const ompl::base::State* to) const override;
   ompl::base::Cost motionCostHeuristic(const ompl::base::State* from, const ompl::base::State* to) const override;
   bool isSymmetric() const override { return false; }
+  // Rejection sampling from the space's sampler (so the ceiling band survives informed search).
+  ompl::base::InformedSamplerPtr allocInformedStateSampler(const ompl::base::ProblemDefinitionPtr& definition,
+                                                           unsigned int max_calls) const override;
 
   const FlightCostModel& model() const { return model_; }
   const CostWeights& weights() const { return weights_; }
