@@ -44,6 +44,20 @@ void writePathCsv(const std::filesystem::path& file, const planner::PathEvaluati
   });
 }
 
+void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanResult& plan,
+                        const planner::PathEvaluation& evaluation, const nlohmann::json& extra) {
+  nlohmann::json json = figuresJson(evaluation);
+  json["waypoints"] = waypointsJson(plan.waypoints);
+  json["planner"] = plan.planner;
+  json["cost"] = plan.cost;
+  json["search_cost"] = plan.search_cost;
+  json["search_time_s"] = plan.search_time_s;
+  json["total_time_s"] = plan.total_time_s;
+  json.update(extra);
+  writeTextAtomically(dir / "plan.json", [&](std::ostream& stream) { stream << std::setw(2) << json << '\n'; });
+  writePathCsv(dir / "path.csv", evaluation);
+}
+
 std::string figuresLine(const planner::PathEvaluation& e) {
   char line[320];
   std::snprintf(line, sizeof line,

@@ -8,6 +8,7 @@
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/ageing_rates.hpp"
+#include "ceilplan/planner/planner_factory.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -52,6 +53,32 @@ void addPlanningOptions(CLI::App* command, PlanningArguments& a, bool with_objec
   command->add_option("--temperature-c", a.temperature_c, "cell temperature for the ageing model")
       ->capture_default_str()->check(CLI::Range(-40.0, 80.0));
 }
+
+void addSearchOptions(CLI::App* command, SearchArguments& a) {
+  command->add_option("--planner", a.planner, "planner (default " + planner::defaultPlannerName() + ")")
+      ->check(CLI::IsMember(planner::plannerNames()));
+  command->add_option("--time-limit-s", a.time_limit_s, "search time per plan")->capture_default_str()->check(positiveFinite());
+  command->add_option("--seed", a.seed, "random seed (> 0)")->capture_default_str()->check(CLI::Range(1u, 4294967295u));
+  command->add_option("--band-fraction", a.band_fraction, "share of samples aimed under ceilings")
+      ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  command->add_flag("--no-refine", a.no_refine, "skip shortcutting and NLopt refinement");
+  command->add_option("--lattice-stride", a.lattice_stride, "lattice planner: spacing in voxels")
+      ->capture_default_str()->check(CLI::Range(1, 16));
+}
+
+planner::PlanRequest SearchArguments::request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const {
+  planner::PlanRequest request;
+  request.start_m = start_m;
+  request.goal_m = goal_m;
+  request.planner = planner;
+  request.time_limit_s = time_limit_s;
+  request.band_fraction = band_fraction;
+  request.refine = !no_refine;
+  request.lattice.stride_voxels = lattice_stride;
+  return request;
+}
+
+std::string SearchArguments::plannerName() const { return planner.empty() ? planner::defaultPlannerName() : planner; }
 
 namespace {
 

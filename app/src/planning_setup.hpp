@@ -9,12 +9,14 @@
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/objective_factory.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -38,6 +40,20 @@ struct PlanningArguments {
 // Registers --map, --vehicle, --battery, --objective and the model flags on `command`.
 // `with_objective` false leaves --objective out (commands that report every objective).
 void addPlanningOptions(CLI::App* command, PlanningArguments& arguments, bool with_objective = true);
+
+// The search flags shared by plan, compare and bench-planners.
+struct SearchArguments {
+  std::string planner;  // empty: the default
+  double time_limit_s = 5.0;
+  std::uint32_t seed = 1;
+  double band_fraction = 0.5;
+  bool no_refine = false;
+  int lattice_stride = 2;
+
+  planner::PlanRequest request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
+  std::string plannerName() const;
+};
+void addSearchOptions(CLI::App* command, SearchArguments& arguments);
 
 // The battery file (docs/planner.md): capacity_ah, start_soc, charge_current_a, cell_count,
 // soc_min, state_of_health at the top level or under `battery:` (so a mission file serves).

@@ -20,7 +20,8 @@ StandoffZone standoffZone(const environment::Environment& standoff, const enviro
   StandoffZone zone;
   zone.standoff = &standoff;
   zone.exempt_centres_m = {start_m, goal_m};
-  zone.exempt_radius_m = standoff_m + body_extent + 2.0 * plain.grid().frame().resolution_m();
+  // Enough to back away from a start under a deck and clear girders below it (1 m more).
+  zone.exempt_radius_m = standoff_m + body_extent + 1.0;
   return zone;
 }
 

@@ -100,3 +100,26 @@ TEST(PlanCli, NoPathHasItsOwnExitCode) {
 
 }  // namespace
 }  // namespace ceilplan::testing
+
+namespace ceilplan::testing {
+namespace {
+
+TEST(CompareCli, CeilingModeBeatsFreeModeUnderAFlatCeilingAndProjectsTheDuty) {
+  const auto dir = scratchDirectory("compare_corridor");
+  ASSERT_TRUE(corridor(flatCeiling).tree().writeBinaryConst((dir / "corridor.bt").string()));
+  const CommandResult result = runCeilplan("compare --map " + (dir / "corridor.bt").string() + kVehicle +
+                                           " --start 0.5,0,3.4 --goal 5.5,0,3.4 --planner lattice --days 2 --out " +
+                                           (dir / "out").string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json json = nlohmann::json::parse(readWholeFile(dir / "out" / "compare.json"));
+  EXPECT_GT(json["reduction_pct"]["charge"].get<double>(), 3.0);
+  EXPECT_GT(json["reduction_pct"]["fec_total"].get<double>(), 3.0);
+  EXPECT_EQ(json["ceiling"]["repeats_per_mission"], json["free"]["repeats_per_mission"]);
+  for (const char* file : {"ceiling/plan.json", "ceiling/path.csv", "free/plan.json", "free/path.csv", "map_top.csv",
+                           "map_side.csv"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / file)) << file;
+  EXPECT_NE(result.out.find("FEC over the study"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ceilplan::testing

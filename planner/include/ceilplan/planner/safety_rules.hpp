@@ -24,8 +24,9 @@ struct StandoffZone {
 // Free mode: the vehicle with its margins (sideways, below and above) grown to `standoff_m`.
 environment::VehicleGeometry withStandoff(environment::VehicleGeometry vehicle, double standoff_m);
 
-// Free mode: the standoff applies except within reach of start and goal, far enough to back
-// away from the structure they sit on to the standoff distance.
+// Free mode: the standoff applies except within reach of start and goal (the approach zone:
+// standoff + the body's largest inflated extent + 1 m), far enough to back away from the
+// structure they sit on and past the structure around it to the standoff distance.
 StandoffZone standoffZone(const environment::Environment& standoff, const environment::Environment& plain,
                           double standoff_m, const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m);
 
