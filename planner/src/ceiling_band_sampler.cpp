@@ -21,6 +21,7 @@ void CeilingBandSampler::sampleUniform(ompl::base::State* state) {
   if (!std::isfinite(gap)) return;  // nothing overhead: keep the uniform sample
   const double wanted = rng_.uniformReal(options_.min_gap_m, options_.max_gap_m);
   setPosition(state, {point.x(), point.y(), point.z() + gap - wanted});
+  space_->enforceBounds(state);
 }
 
 void CeilingBandSampler::sampleUniformNear(ompl::base::State* state, const ompl::base::State* near, double distance) {

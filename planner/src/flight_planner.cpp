@@ -70,6 +70,33 @@ void FlightPlanner::requireValidEndpoint(const Eigen::Vector3d& p, const std::st
                                 std::to_string(rules_.minCeilingGap_m()) + " m) or violates the standoff");
 }
 
+void FlightPlanner::installBandSampler(double band_fraction) const {
+  // The band sampler serves every planner: directly, or through the objective's informed
+  // sampler (RejectionBandSampler).
+  const CeilingBandOptions band{band_fraction, rules_.minCeilingGap_m(),
+                                model_.options().speeds.near_ceiling_gap_radii *
+                                    rules_.environment().vehicle().rotor_radius_m};
+  const environment::Environment& environment = rules_.environment();
+  si_->getStateSpace()->setStateSamplerAllocator([&environment, band](const ompl::base::StateSpace* space) {
+    return std::make_shared<CeilingBandSampler>(space, environment, band);
+  });
+}
+
+void FlightPlanner::clearBandSampler() const { si_->getStateSpace()->clearStateSamplerAllocator(); }
+
+std::vector<Eigen::Vector3d> FlightPlanner::postProcess(const std::vector<Eigen::Vector3d>& raw,
+                                                       const RefinementOptions& options, bool refine) const {
+  std::vector<Eigen::Vector3d> best = raw;
+  if (refine) best = refinePath(shortcutPath(best, rules_, *objective_), rules_, *objective_, options);
+  if (const auto problem = rules_.checkPathDensely(best)) {
+    if (rules_.checkPathDensely(raw))
+      throw std::runtime_error("the planned path fails the dense re-check: " + *problem +
+                               " (a bug: please report it with the map and the command)");
+    best = raw;  // post-processing slipped past the motion checks: keep the raw path
+  }
+  return best;
+}
+
 PlanResult FlightPlanner::plan(const PlanRequest& request) const {
   const auto started = std::chrono::steady_clock::now();
   if (!(std::isfinite(request.time_limit_s) && request.time_limit_s > 0.0))
@@ -91,16 +118,7 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
                                           : "no collision-free route joins start and goal on the lattice");
     result.waypoints = found->waypoints;
   } else {
-    // The band sampler serves every planner: directly, or through the objective's informed
-    // sampler (RejectionBandSampler).
-    auto space = si_->getStateSpace();
-    const CeilingBandOptions band{request.band_fraction, rules_.minCeilingGap_m(),
-                                  model_.options().speeds.near_ceiling_gap_radii *
-                                      rules_.environment().vehicle().rotor_radius_m};
-    const environment::Environment& environment = rules_.environment();
-    space->setStateSamplerAllocator([&environment, band](const ompl::base::StateSpace* s) {
-      return std::make_shared<CeilingBandSampler>(s, environment, band);
-    });
+    installBandSampler(request.band_fraction);
     auto definition = std::make_shared<ompl::base::ProblemDefinition>(si_);
     ompl::base::ScopedState<> start(si_), goal(si_);
     setPosition(start.get(), request.start_m);
@@ -111,7 +129,7 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
     planner->setProblemDefinition(definition);
     planner->setup();
     const ompl::base::PlannerStatus status = planner->solve(request.time_limit_s);
-    space->clearStateSamplerAllocator();
+    clearBandSampler();
     if (status != ompl::base::PlannerStatus::EXACT_SOLUTION || !definition->hasExactSolution())
       throw NoPathFound("no path found by " + result.planner + " within " + std::to_string(request.time_limit_s) +
                         " s (status: " + status.asString() + "); raise --time-limit-s, or try --planner lattice");
@@ -121,18 +139,7 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
   result.search_time_s = secondsSince(started);
   result.search_cost = objective_->pathCost(result.waypoints);
 
-  std::vector<Eigen::Vector3d> best = result.waypoints;
-  if (request.refine) {
-    best = shortcutPath(best, rules_, *objective_);
-    best = refinePath(best, rules_, *objective_, request.refinement);
-  }
-  if (const auto problem = rules_.checkPathDensely(best)) {
-    if (rules_.checkPathDensely(result.waypoints))
-      throw std::runtime_error("the planned path fails the dense re-check: " + *problem +
-                               " (a bug: please report it with the map and the command)");
-    best = result.waypoints;  // post-processing slipped past the motion checks: keep the raw path
-  }
-  result.waypoints = best;
+  result.waypoints = postProcess(result.waypoints, request.refinement, request.refine);
   result.cost = objective_->pathCost(result.waypoints);
   result.total_time_s = secondsSince(started);
   return result;

@@ -53,12 +53,25 @@ class FlightPlanner {
   FlightPlanner(const SafetyRules& rules, const FlightCostModel& model, const ObjectiveChoice& objective);
 
   const FlightObjective& objective() const { return *objective_; }
+  const std::shared_ptr<FlightObjective>& objectivePtr() const { return objective_; }
+  const SafetyRules& rules() const { return rules_; }
+
+  // Shortcuts and NLopt refinement (PlanRequest::refine), then the dense re-check: the
+  // post-processing plan() applies to a raw path. Throws std::runtime_error if neither the
+  // result nor the raw path passes the re-check.
+  std::vector<Eigen::Vector3d> postProcess(const std::vector<Eigen::Vector3d>& raw, const RefinementOptions& options,
+                                           bool refine = true) const;
   const ompl::base::SpaceInformationPtr& spaceInformation() const { return si_; }
 
   // Throws std::invalid_argument for a bad request (start or goal outside the map or invalid,
   // time limit <= 0, unknown planner), NoPathFound when there is no path, and
   // std::runtime_error if a path fails the dense re-check.
   PlanResult plan(const PlanRequest& request) const;
+
+  // Makes the space sample the ceiling band (share `band_fraction`) until cleared; plan() does
+  // this itself, benchmarks that drive OMPL directly call it.
+  void installBandSampler(double band_fraction) const;
+  void clearBandSampler() const;
 
   // Checks a point the way plan() checks start and goal; `what` names it in the message.
   void requireValidEndpoint(const Eigen::Vector3d& point_m, const std::string& what) const;
