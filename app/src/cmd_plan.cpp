@@ -29,7 +29,12 @@ void runPlan(const PlanArguments& a) {
   planner::seedOmpl(a.search.seed);  // before anything makes an OMPL random generator
   const PlanningSetup setup(a.planning);
   const PlanningSetup::Mode planning = setup.mode(mode, start, goal);
-  const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, setup.objective(start, goal));
+  const planner::ObjectiveChoice objective = setup.objective(start, goal);
+  const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, objective);
+  if (objective.name == "ageing")
+    std::printf("ageing objective: %s model at %.1f %% depth of discharge: %.4g per Ah, %.4g per s of capacity\n",
+                objective.ageing.model.c_str(), 100 * objective.ageing.depth_of_discharge, objective.ageing.loss_per_ah,
+                objective.ageing.loss_per_s);
   std::printf("planning %s mode, objective %s, planner %s, seed %u, %.1f s\n", a.mode.c_str(),
               a.planning.objective.c_str(), a.search.plannerName().c_str(), a.search.seed, a.search.time_limit_s);
   std::fflush(stdout);
@@ -42,7 +47,7 @@ void runPlan(const PlanArguments& a) {
   // Every figure comes from the full model with the SOC integrated along the path.
   const planner::PathEvaluation evaluation =
       planner::evaluatePath(setup.fullModel(), setup.battery().pack, setup.battery().start_soc, result.waypoints);
-  const nlohmann::json extra{{"seed", a.search.seed},
+  nlohmann::json extra{{"seed", a.search.seed},
                              {"objective", a.planning.objective},
                              {"cost_unit", flight_planner.objective().unit()},
                              {"mode", a.mode},
@@ -50,6 +55,11 @@ void runPlan(const PlanArguments& a) {
                              {"vehicle", setup.vehicleName()},
                              {"battery", setup.battery().source},
                              {"start_soc", setup.battery().start_soc}};
+  if (objective.name == "ageing")
+    extra["ageing"] = {{"model", objective.ageing.model},
+                       {"depth_of_discharge", objective.ageing.depth_of_discharge},
+                       {"loss_per_ah", objective.ageing.loss_per_ah},
+                       {"loss_per_s", objective.ageing.loss_per_s}};
   const std::filesystem::path out(a.out);
   writePlanDirectory(out, result, evaluation, extra);
   std::printf("%zu waypoints; cost %.6g %s (search %.6g) after %.2f s\n%s\nwrote %s and %s\n", result.waypoints.size(),
