@@ -42,11 +42,12 @@ class Walk {
     while (improved) improved = twoOpt() || orOpt();
   }
 
-  // Double bridge: cuts the target sequence into four parts A B C D and makes it A C B D.
+  // Double bridge: cuts the target sequence into parts A B C D (B and C not empty; home closes
+  // the tour, so A or D may be) and makes it A C B D.
   void kick(std::mt19937_64& random) {
     const int n = static_cast<int>(nodes_.size()) - 2;
-    if (n < 4) return;
-    std::uniform_int_distribution<int> cut(1, n - 1);
+    if (n < 3) return;
+    std::uniform_int_distribution<int> cut(0, n);
     int c[3];
     do {
       for (int& value : c) value = cut(random);
