@@ -11,6 +11,8 @@ namespace ceilplan::planner {
 
 namespace {
 
+constexpr double kCurrentResolutionA = 1e-3;
+
 std::string point(const Eigen::Vector3d& p) {
   char text[96];
   std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", p.x(), p.y(), p.z());
@@ -48,9 +50,9 @@ class ViewpointSearch {
                   const energy::EnergyModel& model, const ViewpointOptions& options)
       : target_(target), environment_(environment), model_(model), options_(options) {}
 
-  // Every lattice point at `step_m` spacing within `reach_m` of `centre_m`; with `raise_m` > 0
-  // each admissible point also as high as it stays admissible within `raise_m` above it.
-  void scan(const Eigen::Vector3d centre_m, double step_m, double reach_m, double raise_m = 0.0) {
+  // Every lattice point at `step_m` spacing within `reach_m` of `centre_m`. With `hug`, the top
+  // admissible point of each lattice column is also tried as high as it stays admissible.
+  void scan(const Eigen::Vector3d centre_m, double step_m, double reach_m, bool hug) {
     const int n = static_cast<int>(std::ceil(reach_m / step_m));
     for (int k = -n; k <= n; ++k)
       for (int j = -n; j <= n; ++j)
@@ -58,7 +60,8 @@ class ViewpointSearch {
           const Eigen::Vector3d body_m = ontoShell(centre_m + step_m * Eigen::Vector3d(i, j, k), step_m);
           if (!admissible(body_m)) continue;
           consider(body_m);
-          if (raise_m > 0.0) consider(raised(body_m, raise_m));
+          const Eigen::Vector3d step_up_m(0, 0, step_m);
+          if (hug && !admissible(body_m + step_up_m)) consider(raised(body_m, step_m));
         }
   }
 
@@ -86,7 +89,8 @@ class ViewpointSearch {
   }
 
   // Ceiling mode: the current keeps falling as the gap above closes, and a lattice leaves the
-  // highest admissible position up to a step below; bisect upwards for it.
+  // highest admissible position up to a step below; bisect upwards for it (admissibility is
+  // taken as lost once, upwards, within the span).
   Eigen::Vector3d raised(const Eigen::Vector3d& body_m, double span_m) const {
     double low_m = 0.0, high_m = span_m;
     for (int step = 0; step < 24; ++step) {
@@ -99,12 +103,13 @@ class ViewpointSearch {
   // Keeps an admissible position if it beats the best so far and sees the target.
   void consider(const Eigen::Vector3d& body_m) {
     const double distance_m = (body_m - target_.point_m).norm();
-    // Free mode ignores proximity effects when choosing: every position draws the same.
-    const double key =
-        options_.mode == ViewpointMode::Ceiling ? hoverCurrentA(environment_, model_, body_m, options_.soc) : 0.0;
-    const double tie = found() ? 1e-12 * std::max(1.0, std::fabs(best_key_)) : 0.0;
-    const bool better =
-        !found() || key < best_key_ - tie || (key <= best_key_ + tie && distance_m < best_distance_m_);
+    // Free mode ignores proximity effects when choosing: every position draws the same. Currents
+    // are compared to the milliampere, so that a difference no meter would show does not pull the
+    // viewpoint away from the target.
+    const double key = options_.mode == ViewpointMode::Ceiling
+                           ? std::round(hoverCurrentA(environment_, model_, body_m, options_.soc) / kCurrentResolutionA)
+                           : 0.0;
+    const bool better = !found() || key < best_key_ || (key == best_key_ && distance_m < best_distance_m_);
     if (!better || !seesPoint(environment_.grid(), body_m, target_.point_m)) return;
     best_key_ = key;
     best_distance_m_ = distance_m;
@@ -158,15 +163,18 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
     throw std::invalid_argument("target '" + target.name + "' at " + point(target.point_m) + " lies outside the map");
   ViewpointSearch search(target, environment, model, options);
   const double resolution_m = environment.grid().frame().resolution_m();
-  search.scan(target.point_m, resolution_m, target.standoff_max_m);
+  const bool hug = options.mode == ViewpointMode::Ceiling;
+  search.scan(target.point_m, resolution_m, target.standoff_max_m, hug);
   if (!search.found())
     throw std::invalid_argument("target '" + target.name + "' at " + point(target.point_m) +
                                 ": no valid viewpoint within " + number(target.standoff_min_m) + "-" +
                                 number(target.standoff_max_m) +
-                                " m that sees it; check the point lies on a surface facing free space, or widen its "
-                                "standoff range");
-  search.scan(search.best(), 0.25 * resolution_m, resolution_m,
-              options.mode == ViewpointMode::Ceiling ? resolution_m : 0.0);
+                                " m that sees it" +
+                                (options.mode == ViewpointMode::Free
+                                     ? std::string(" while keeping the conventional standoff from every structure")
+                                     : std::string()) +
+                                "; check the point lies on a surface facing free space, or widen its standoff range");
+  search.scan(search.best(), 0.25 * resolution_m, resolution_m, hug);
 
   Viewpoint viewpoint;
   viewpoint.position_m = search.best();

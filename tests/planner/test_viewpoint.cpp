@@ -134,8 +134,22 @@ TEST(Viewpoint, BridgeTargetsGetViewpointsAndDeckBaysAreHugged) {
     const Viewpoint viewpoint = chooseViewpoint(target, environment, paperQuad());
     expectUsable(viewpoint, target, environment);
     EXPECT_LT(viewpoint.position_m.z(), target.point_m.z()) << target.name;
-    EXPECT_LT(viewpoint.dwell_current_a, 9.0) << target.name << ": not under a surface";
+    EXPECT_NEAR(viewpoint.ceiling_gap_m, 0.05, 1e-6) << target.name << ": not hugging";
+    EXPECT_LT(viewpoint.dwell_current_a, 8.5) << target.name;
   }
+  // Deck bays are hugged right beside the target: the underside is flat and fully covers the rotors.
+  const Viewpoint deck = chooseViewpoint(targets[0], environment, paperQuad());
+  EXPECT_NEAR(deck.distance_m, 0.3, 0.03);
+  EXPECT_NEAR(deck.dwell_current_a, energy::kPaperCeilingCurrentA, 1e-3);
+
+  // Free mode, 1 m from every structure: under a girder's bottom flange, in free air.
+  const Environment conventional(map, withStandoff(1.0));
+  ViewpointOptions free;
+  free.mode = ViewpointMode::Free;
+  const Viewpoint girder = chooseViewpoint(targets[2], conventional, paperQuad(), free);
+  expectUsable(girder, targets[2], conventional);
+  EXPECT_NEAR(girder.distance_m, 1.06, 0.03);
+  EXPECT_NEAR(girder.dwell_current_a, energy::kPaperFreeAirCurrentA, 1e-3);
 }
 
 }  // namespace
