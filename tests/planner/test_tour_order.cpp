@@ -2,6 +2,7 @@
 // 2 % of it, and both price asymmetric costs (a reversed stretch costs what it costs).
 
 #include "ceilplan/planner/tour_order.hpp"
+#include "test_tour_random_costs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,18 +15,8 @@
 namespace ceilplan::planner {
 namespace {
 
-// Targets scattered in a 50 x 20 x 6 m box; a leg costs its length plus `climb_penalty` per
-// metre climbed, so costs are asymmetric whenever the penalty is not zero.
 CostMatrix randomCosts(int targets, std::uint64_t seed, double climb_penalty) {
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> x(0, 50), y(-10, 10), z(0, 6);
-  std::vector<Eigen::Vector3d> points(targets + 1);
-  for (auto& p : points) p = {x(random), y(random), z(random)};
-  CostMatrix costs(targets + 1, targets + 1);
-  for (int i = 0; i <= targets; ++i)
-    for (int j = 0; j <= targets; ++j)
-      costs(i, j) = (points[j] - points[i]).norm() + climb_penalty * std::max(0.0, points[j].z() - points[i].z());
-  return costs;
+  return testing::randomTourCosts(targets, seed, climb_penalty);
 }
 
 double bruteForceCost(const CostMatrix& costs) {
