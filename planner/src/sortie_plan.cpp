@@ -122,6 +122,25 @@ std::string targetList(const TourLegs& legs, const std::vector<int>& targets) {
   return text;
 }
 
+// Why a sortie ends before `next`: one sortie flying both (`merged`) would break the reserve,
+// or would wear more than the two.
+std::string splitReason(const TourLegs& legs, const SortieBattery& battery, const battery::AgeingModel& prototype,
+                        const Sortie& sortie, const Sortie& next, const Sortie& merged, bool merged_feasible) {
+  const std::string head = "split after '" + legs.names[sortie.targets.back()] + "': ";
+  if (!merged_feasible)
+    return head + "one sortie on through '" + legs.names[next.targets.back()] + "' would land at " +
+           percent(merged.lowest_soc) + " SOC, below the " + percent(battery.reserve_soc) + " reserve";
+  const double two = wearOf(prototype, sortie) + wearOf(prototype, next);
+  const double one = wearOf(prototype, merged);
+  char saving[64];
+  std::snprintf(saving, sizeof saving, "%.0f %% less", one > 0.0 ? 100.0 * (one - two) / one : 0.0);
+  char transit[64];
+  std::snprintf(transit, sizeof transit, "%.2f Ah", sortie.charge_ah + next.charge_ah - merged.charge_ah);
+  return head + "two sorties of " + percent(sortie.dod) + " and " + percent(next.dod) + " DoD wear " +
+         (two < one ? std::string(saving) : "no more") + " than one of " + percent(merged.dod) + " under " +
+         prototype.name() + ", for " + transit + " of extra transit";
+}
+
 }  // namespace
 
 void TourLegs::validate() const {
@@ -170,15 +189,14 @@ SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, cons
   legs.validate();
   battery.validate();
   const int n = static_cast<int>(order.size());
-  std::vector<int> sorted = order;
-  std::sort(sorted.begin(), sorted.end());
-  for (int k = 0; k < n; ++k)
-    if (n != legs.targetCount() || sorted[k] != k + 1)
-      throw std::invalid_argument("the visiting order must list every target 1.." + std::to_string(legs.targetCount()) +
-                                  " exactly once");
   if (n != legs.targetCount())
     throw std::invalid_argument("the visiting order lists " + std::to_string(n) + " targets, the tour has " +
                                 std::to_string(legs.targetCount()));
+  std::vector<int> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (int k = 0; k < n; ++k)
+    if (sorted[k] != k + 1)
+      throw std::invalid_argument("the visiting order must list every target 1.." + std::to_string(n) + " exactly once");
   const std::unique_ptr<battery::AgeingModel> prototype = battery::makeAgeingModel(options.ageing_model, options.ageing);
   const SortieBuilder builder(legs, battery);
   const double reserve_tolerance = 1e-12;
@@ -226,26 +244,10 @@ SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, cons
   for (std::size_t s = 0; s + 1 < starts.size(); ++s) {
     Sortie sortie = builder.build(order, starts[s], starts[s + 1] - 1);
     sortie.wear = wearOf(*prototype, sortie);
-    const std::string last_name = "'" + legs.names[sortie.targets.back()] + "'";
     if (s + 2 < starts.size()) {
       const Sortie next = builder.build(order, starts[s + 1], starts[s + 2] - 1);
       const Sortie merged = builder.build(order, starts[s], starts[s + 2] - 1);
-      if (!feasible(merged)) {
-        sortie.reason = "split after " + last_name + ": one sortie on through '" + legs.names[next.targets.back()] +
-                        "' would land at " + percent(merged.lowest_soc) + " SOC, below the " +
-                        percent(battery.reserve_soc) + " reserve";
-      } else {
-        const double two = sortie.wear + wearOf(*prototype, next);
-        const double one = wearOf(*prototype, merged);
-        char saving[64];
-        std::snprintf(saving, sizeof saving, "%.0f %% less", one > 0.0 ? 100.0 * (one - two) / one : 0.0);
-        char transit[64];
-        std::snprintf(transit, sizeof transit, "%.2f Ah", sortie.charge_ah + next.charge_ah - merged.charge_ah);
-        sortie.reason = "split after " + last_name + ": two sorties of " + percent(sortie.dod) + " and " +
-                        percent(next.dod) + " DoD wear " + (two < one ? std::string(saving) : "no more") +
-                        " than one of " + percent(merged.dod) + " under " + plan.ageing_model + ", for " + transit +
-                        " of extra transit";
-      }
+      sortie.reason = splitReason(legs, battery, *prototype, sortie, next, merged, feasible(merged));
     } else {
       sortie.reason = std::string(starts.size() == 2 ? "one sortie flies the whole tour" : "last sortie") +
                       ": lands at " + percent(sortie.lowest_soc) + " SOC, above the " +
