@@ -52,6 +52,7 @@ double hoverCurrentA(const environment::Environment& environment, const energy::
 // best) for states valid in `environment` with a clear line of sight to the point through free
 // voxels, choosing the least dwell charge under `options.mode`, ties by distance to the point.
 // Throws std::invalid_argument naming the target when it is invalid or no viewpoint exists.
+// Reads the environment and the model only: safe to run for several targets at once.
 Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Environment& environment,
                           const energy::EnergyModel& model, const ViewpointOptions& options = {});
 
