@@ -102,11 +102,12 @@ class SortieBuilder {
   const SortieBattery& battery_;
 };
 
-void feed(battery::AgeingModel& model, const Sortie& sortie) {
+// Feeds a sortie's history to `model`, its take-off at `start_s`.
+void feed(battery::AgeingModel& model, const Sortie& sortie, double start_s = 0.0) {
   std::vector<battery::AgeingSample> samples;
   samples.reserve(sortie.soc_history.size());
   for (const SocSample& s : sortie.soc_history)
-    samples.push_back({s.t_s, std::clamp(s.soc, 0.0, 1.0), s.current_a});
+    samples.push_back({start_s + s.t_s, std::clamp(s.soc, 0.0, 1.0), s.current_a});
   model.addSamples(samples);
 }
 
@@ -278,12 +279,14 @@ PlanWear planWear(const SortiePlan& plan, const std::string& model, const batter
   PlanWear wear;
   wear.model = prototype->name();
   wear.wear_name = prototype->cycleWearName();
+  const std::unique_ptr<battery::AgeingModel> pack = prototype->clone();
+  double start_s = 0.0;
   for (const Sortie& sortie : plan.sorties) {
-    std::unique_ptr<battery::AgeingModel> fresh = prototype->clone();
-    feed(*fresh, sortie);
-    wear.cycle_wear += fresh->cycleWear();
-    wear.capacity_loss += fresh->capacityLoss();
+    feed(*pack, sortie, start_s);
+    start_s += sortie.soc_history.back().t_s;
   }
+  wear.cycle_wear = pack->cycleWear();
+  wear.capacity_loss = pack->capacityLoss();
   return wear;
 }
 

@@ -112,13 +112,13 @@ SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, cons
 // and its reason empty: for pricing a sortie chosen by hand.
 Sortie flySortie(const TourLegs& legs, const std::vector<int>& targets, const SortieBattery& battery);
 
-// Wear of a plan's sorties under another model (each sortie on a fresh pack, summed), so one
-// split can be reported under every model.
+// Wear of a plan under any model, so one split can be reported under every model: one new pack
+// flies the sorties back to back, recharged to the start SOC after each.
 struct PlanWear {
   std::string model;
   std::string wear_name;
-  double cycle_wear = 0.0;     // sum of the model's cycle wear over the sorties
-  double capacity_loss = 0.0;  // sum of the capacity lost per sortie (fraction of nominal)
+  double cycle_wear = 0.0;     // the model's cycle wear (equal to the sum over the sorties)
+  double capacity_loss = 0.0;  // fraction of nominal capacity lost, calendar ageing included
 };
 PlanWear planWear(const SortiePlan& plan, const std::string& model, const battery::AgeingModelOptions& options = {});
 
