@@ -162,6 +162,11 @@ double Environment::clearance_m(const Eigen::Vector3d& body_m) const {
   return distance_.distance_m(body_m);
 }
 
+double Environment::clearanceLowerBound_m(const Eigen::Vector3d& body_m) const {
+  requireInside(body_m, "clearance");
+  return distance_.lowerBound_m(body_m);
+}
+
 std::optional<Violation> Environment::exactCylinderViolation(const Eigen::Vector3d& body_m) const {
   const GridFrame& frame = grid_.frame();
   const double radius = vehicle_.inflatedRadius_m();

@@ -88,6 +88,9 @@ class Environment {
   // Distance from the body centre to the nearest occupied (or, by policy, unknown) voxel
   // surface; 0 inside one, +inf if there is none. Throws std::out_of_range outside the map.
   double clearance_m(const Eigen::Vector3d& body_m) const;
+  // A cheap lower bound on clearance_m (from the voxel holding the point alone, a few ns): lets
+  // callers skip gap queries far from any structure. Throws std::out_of_range outside the map.
+  double clearanceLowerBound_m(const Eigen::Vector3d& body_m) const;
 
   // A state is valid when the collision cylinder inflated by the margins touches no occupied
   // (or, by policy, unknown) voxel and the body centre lies in the map.

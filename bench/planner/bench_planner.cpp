@@ -1,0 +1,101 @@
+// The planner's hot paths on the shipped scenes: map conditions at a point, the motion cost
+// of a 1 m motion under the bridge deck and in free air, one lattice A* query.
+//   build/bench/planner/bench_planner
+// The quality study (planners against the lattice reference) is bench/planner/quality-study.
+
+#include "vehicle_energy_file.hpp"
+#include "vehicle_geometry_file.hpp"
+
+#include "ceilplan/planner/flight_planner.hpp"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+using namespace ceilplan;
+
+const char* const kVehicle = CEILPLAN_SOURCE_DIR "/maps/vehicles/quad.yaml";
+
+struct Scene {
+  explicit Scene(const char* file)
+      : map(environment::OccupancyMap::load(file)),
+        environment(map, app::readVehicleGeometry(kVehicle)),
+        energy(app::readVehicleEnergyFile(kVehicle).parameters),
+        model(environment, energy, planner::CostModelOptions{}),
+        rules(environment, 0.05) {}
+  environment::OccupancyMap map;
+  environment::Environment environment;
+  energy::EnergyModel energy;
+  planner::FlightCostModel model;
+  planner::SafetyRules rules;
+};
+
+Scene& bridge() {
+  static Scene scene(CEILPLAN_SOURCE_DIR "/maps/bridge.bt");
+  return scene;
+}
+
+Scene& warehouse() {
+  static Scene scene(CEILPLAN_SOURCE_DIR "/maps/warehouse.bt");
+  return scene;
+}
+
+void BM_ConditionsUnderDeck(benchmark::State& state) {
+  const Scene& scene = bridge();
+  double x = 6.0;
+  for (auto _ : state) {
+    const planner::PointConditions conditions = scene.model.conditionsAt({x, 0.7, 5.85});
+    benchmark::DoNotOptimize(conditions);
+    x = x > 26.0 ? 6.0 : x + 0.013;
+  }
+}
+BENCHMARK(BM_ConditionsUnderDeck);
+
+void BM_MotionCost1mUnderDeck(benchmark::State& state) {
+  const Scene& scene = bridge();
+  double x = 6.0;
+  for (auto _ : state) {
+    const planner::MotionTotals totals = scene.model.integrate({x, 0.7, 5.85}, {x + 1.0, 0.7, 5.85});
+    benchmark::DoNotOptimize(totals);
+    x = x > 26.0 ? 6.0 : x + 0.013;
+  }
+}
+BENCHMARK(BM_MotionCost1mUnderDeck);
+
+void BM_MotionCost1mFreeAir(benchmark::State& state) {
+  const Scene& scene = bridge();
+  double x = 6.0;
+  for (auto _ : state) {
+    const planner::MotionTotals totals = scene.model.integrate({x, -7.0, 3.0}, {x + 1.0, -7.0, 3.0});
+    benchmark::DoNotOptimize(totals);
+    x = x > 26.0 ? 6.0 : x + 0.013;
+  }
+}
+BENCHMARK(BM_MotionCost1mFreeAir);
+
+void BM_MotionValidity1mUnderDeck(benchmark::State& state) {
+  const Scene& scene = bridge();
+  double x = 6.0;
+  for (auto _ : state) {
+    const bool valid = scene.rules.isMotionValid({x, 0.7, 5.85}, {x + 1.0, 0.7, 5.85});
+    benchmark::DoNotOptimize(valid);
+    x = x > 26.0 ? 6.0 : x + 0.013;
+  }
+}
+BENCHMARK(BM_MotionValidity1mUnderDeck);
+
+// The warehouse query of the quality study, lattice stride 2 (docs/planner.md).
+void BM_LatticeWarehouse(benchmark::State& state) {
+  const Scene& scene = warehouse();
+  planner::seedOmpl(1);
+  const planner::FlightPlanner flight_planner(scene.rules, scene.model, planner::ObjectiveChoice{});
+  for (auto _ : state) {
+    planner::LatticePlanner lattice(scene.rules, flight_planner.objective());
+    const auto result = lattice.plan({7.5, 6, 7.9}, {22.5, 14, 7.9});
+    state.counters["expansions"] = result ? static_cast<double>(result->expansions) : 0.0;
+    benchmark::DoNotOptimize(result);
+  }
+}
+BENCHMARK(BM_LatticeWarehouse)->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace

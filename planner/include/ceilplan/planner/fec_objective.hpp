@@ -1,0 +1,24 @@
+#pragma once
+// Minimises full equivalent cycles: the flight's discharge Q and the recharge that puts it back,
+// FEC = (Q + Q) / (2 C_nom) = Q / C_nom (Kocer et al. 2019, eq. 6; reference-models.md section 1),
+// with C_nom the pack's nominal capacity.
+
+#include "ceilplan/planner/flight_objective.hpp"
+
+#include <stdexcept>
+
+namespace ceilplan::planner {
+
+class FecObjective : public FlightObjective {
+ public:
+  FecObjective(const ompl::base::SpaceInformationPtr& si, const FlightCostModel& model, double nominal_capacity_ah)
+      : FlightObjective(si, model, CostWeights{0.0, 0.0, inverseCapacity(nominal_capacity_ah)}, "fec", "FEC") {}
+
+ private:
+  static double inverseCapacity(double capacity_ah) {
+    if (!(capacity_ah > 0.0)) throw std::invalid_argument("fec objective: the pack's capacity must be > 0 Ah");
+    return 1.0 / capacity_ah;
+  }
+};
+
+}  // namespace ceilplan::planner

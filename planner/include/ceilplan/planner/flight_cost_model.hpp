@@ -1,0 +1,173 @@
+#pragma once
+// What a straight motion through the map costs the vehicle: how fast it flies (speed rules),
+// how much current it draws on the way (energy model fed with the map's ceiling and ground
+// gaps), and so how long it takes and how much charge it takes out of the pack. Every planner
+// objective is a weighted sum of these totals; see docs/planner.md.
+
+#include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/environment/environment.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+
+namespace ceilplan::planner {
+
+// The speed rules (mission files' `speeds:` block, docs/missions.md).
+struct FlightSpeeds {
+  double cruise_m_s = 2.0;            // horizontal, in free air
+  double near_ceiling_m_s = 1.8;      // horizontal, when a rotor is closer than near_ceiling_gap_radii R to a ceiling (docs/planner.md: break-even)
+  double near_ceiling_gap_radii = 2.0;  // the ceiling effect fades out by about 2 R (reference-models.md section 2)
+  double climb_m_s = 1.0;             // vertical rate limits
+  double descent_m_s = 0.8;
+
+  // Throws std::invalid_argument naming the bad field (non-positive, non-finite, or a
+  // horizontal speed beyond `max_speed_m_s`, the energy model's limit).
+  void validate(double max_speed_m_s) const;
+};
+
+struct CostModelOptions {
+  FlightSpeeds speeds;
+  // SOC at which currents are predicted while planning (the final evaluation integrates it):
+  // the battery's start SOC by default, so planning currents never exceed the evaluated ones.
+  double planning_soc = 0.95;
+  // false: "free" mode, currents predicted as in free air whatever the map says.
+  bool proximity_effects = true;
+  // Samples a motion at most this far apart along every axis; 0: half the map resolution.
+  double step_m = 0.0;
+};
+
+// What the map says at one body position, as the energy model needs it.
+struct PointConditions {
+  std::array<energy::RotorCeiling, energy::EnergyModel::kMaxRotors> rotors{};
+  int rotor_count = 0;
+  double ground_gap_m = energy::kNoSurface;        // area-weighted mean gap of the ground under the discs
+  double nearest_ceiling_gap_m = energy::kNoSurface;  // rotor plane to the nearest ceiling, any rotor (speed rule)
+};
+
+// The vehicle's velocity along a motion direction at a point.
+struct Velocity {
+  double along_m_s = 0.0;       // along the path
+  double horizontal_m_s = 0.0;
+  double climb_m_s = 0.0;       // positive up
+};
+
+struct MotionTotals {
+  double length_m = 0.0;
+  double duration_s = 0.0;
+  double charge_ah = 0.0;
+
+  MotionTotals& operator+=(const MotionTotals& other) {
+    length_m += other.length_m;
+    duration_s += other.duration_s;
+    charge_ah += other.charge_ah;
+    return *this;
+  }
+};
+
+// An objective as a weighted sum of motion totals: cost = per_m L + per_s T + per_ah Q.
+struct CostWeights {
+  double per_m = 0.0;
+  double per_s = 0.0;
+  double per_ah = 0.0;
+  double of(const MotionTotals& totals) const {
+    return per_m * totals.length_m + per_s * totals.duration_s + per_ah * totals.charge_ah;
+  }
+};
+
+class FlightCostModel {
+ public:
+  // Keeps references to `environment` and `energy`: both must outlive the model.
+  // Throws std::invalid_argument on bad speeds or options.
+  FlightCostModel(const environment::Environment& environment, const energy::EnergyModel& energy,
+                  CostModelOptions options);
+
+  const environment::Environment& environment() const { return environment_; }
+  const energy::EnergyModel& energy() const { return energy_; }
+  const CostModelOptions& options() const { return options_; }
+  double step_m() const { return step_m_; }
+
+  // Gaps around a body position from the map (ceiling and ground discs); with proximity
+  // effects off, every rotor sees free air (the speed rule still sees the real ceiling).
+  // Where no structure lies within reach of any rotor disc (the distance field's lower bound
+  // says so) the gap queries are skipped: free air, and nearest_ceiling_gap_m is +inf instead of
+  // a gap beyond the reach. Throws std::out_of_range outside the map.
+  PointConditions conditionsAt(const Eigen::Vector3d& body_m) const;
+  // Whether conditionsAt answers without querying the map (no structure within reach).
+  bool farFromStructure(const Eigen::Vector3d& body_m) const {
+    return environment_.clearanceLowerBound_m(body_m) > free_air_clearance_m_;
+  }
+  // Same, always querying the map, so nearest_ceiling_gap_m is exact (reports).
+  PointConditions exactConditionsAt(const Eigen::Vector3d& body_m) const;
+
+  // Velocity along unit `direction_m` at a point: as fast as the horizontal speed rule and the
+  // climb or descent rate both allow.
+  Velocity velocityAt(const PointConditions& conditions, const Eigen::Vector3d& direction_m) const;
+
+  // Pack current at a point for a velocity and state of charge.
+  double currentA(const PointConditions& conditions, const Velocity& velocity, double soc) const;
+  // Same, with the power terms (for reports).
+  energy::CurrentBreakdown breakdown(const PointConditions& conditions, const Velocity& velocity, double soc) const;
+
+  // Whether the speed rule sees a ceiling close enough to slow down for.
+  bool nearCeiling(const PointConditions& conditions) const {
+    return conditions.nearest_ceiling_gap_m < near_ceiling_gap_m_;
+  }
+
+  // Totals of the straight motion from `from_m` to `to_m` at the planning SOC: sampled at
+  // step_m() along every axis, trapezoid rule on 1/speed and current/speed.
+  MotionTotals integrate(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
+
+  // Same, with the conditions at each sample point given by `conditions_at(point)` (a cache).
+  template <typename ConditionsAt>
+  MotionTotals integrate(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
+                         ConditionsAt&& conditions_at) const;
+
+  // Number of sample intervals integrate() uses for a motion: the axis-wise (Chebyshev) length
+  // over step_m(), so lattice motions sample a half-voxel lattice exactly.
+  int intervalCount(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
+
+  // The cheapest cost per metre under `weights` anywhere, in any direction: the current at
+  // contact with a full ceiling (gap 0, coverage 1 on every rotor, ground at 0.5 R) at the
+  // planning SOC, with every speed the rules allow. c_min x distance is an admissible cost-to-go.
+  double minCostPerMetre(const CostWeights& weights) const;
+
+ private:
+  double costPerMetre(const CostWeights& weights, double current_a, double speed_m_s) const;
+
+  const environment::Environment& environment_;
+  const energy::EnergyModel& energy_;
+  CostModelOptions options_;
+  double step_m_;
+  double near_ceiling_gap_m_;
+  double free_air_clearance_m_;  // beyond it from the body centre, no surface can affect a rotor
+};
+
+template <typename ConditionsAt>
+MotionTotals FlightCostModel::integrate(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
+                                        ConditionsAt&& conditions_at) const {
+  MotionTotals totals;
+  const Eigen::Vector3d delta = to_m - from_m;
+  totals.length_m = delta.norm();
+  if (totals.length_m == 0.0) return totals;
+  const Eigen::Vector3d direction = delta / totals.length_m;
+  const int intervals = intervalCount(from_m, to_m);
+  const double interval_m = totals.length_m / intervals;
+  double previous_s_per_m = 0.0, previous_as_per_m = 0.0;
+  for (int k = 0; k <= intervals; ++k) {
+    const Eigen::Vector3d point = k == intervals ? to_m : Eigen::Vector3d(from_m + delta * (double(k) / intervals));
+    const PointConditions& conditions = conditions_at(point);
+    const Velocity velocity = velocityAt(conditions, direction);
+    const double s_per_m = 1.0 / velocity.along_m_s;
+    const double as_per_m = currentA(conditions, velocity, options_.planning_soc) * s_per_m;
+    if (k > 0) {
+      totals.duration_s += 0.5 * (previous_s_per_m + s_per_m) * interval_m;
+      totals.charge_ah += 0.5 * (previous_as_per_m + as_per_m) * interval_m / 3600.0;
+    }
+    previous_s_per_m = s_per_m;
+    previous_as_per_m = as_per_m;
+  }
+  return totals;
+}
+
+}  // namespace ceilplan::planner

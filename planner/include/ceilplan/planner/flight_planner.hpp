@@ -1,0 +1,92 @@
+#pragma once
+// One planning query end to end: checks the request, runs the chosen planner (an OMPL planner
+// with the ceiling-band sampler, or the lattice A*), post-processes the path with the objective
+// (shortcuts, NLopt refinement) and re-checks it densely. A path that fails the dense re-check
+// is an error, never a result.
+
+#include "ceilplan/planner/flight_objective.hpp"
+#include "ceilplan/planner/lattice_planner.hpp"
+#include "ceilplan/planner/objective_factory.hpp"
+#include "ceilplan/planner/path_refinement.hpp"
+#include "ceilplan/planner/safety_rules.hpp"
+
+#include <Eigen/Core>
+#include <ompl/base/SpaceInformation.h>
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ceilplan::planner {
+
+// The query has no solution (none found in time, or none exists); the message says which.
+class NoPathFound : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct PlanRequest {
+  Eigen::Vector3d start_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d goal_m = Eigen::Vector3d::Zero();
+  std::string planner;            // empty: defaultPlannerName()
+  double time_limit_s = 5.0;      // for the search; post-processing takes up to refinement.time_limit_s more
+  double band_fraction = 0.5;     // share of samples aimed at the ceiling band (0: uniform sampling)
+  bool refine = true;             // shortcuts + NLopt refinement
+  RefinementOptions refinement;
+  LatticeOptions lattice;
+};
+
+struct PlanResult {
+  std::vector<Eigen::Vector3d> waypoints;
+  std::string planner;
+  double cost = 0.0;             // under the planning objective, after post-processing
+  double search_cost = 0.0;      // as the planner returned it
+  double search_time_s = 0.0;
+  double total_time_s = 0.0;
+};
+
+class FlightPlanner {
+ public:
+  // `rules` and `model` must outlive the planner.
+  FlightPlanner(const SafetyRules& rules, const FlightCostModel& model, const ObjectiveChoice& objective);
+
+  const FlightObjective& objective() const { return *objective_; }
+  const std::shared_ptr<FlightObjective>& objectivePtr() const { return objective_; }
+  const SafetyRules& rules() const { return rules_; }
+
+  // Shortcuts and NLopt refinement (PlanRequest::refine), then the dense re-check: the
+  // post-processing plan() applies to a raw path. Throws std::runtime_error if neither the
+  // result nor the raw path passes the re-check.
+  std::vector<Eigen::Vector3d> postProcess(const std::vector<Eigen::Vector3d>& raw, const RefinementOptions& options,
+                                           bool refine = true) const;
+  const ompl::base::SpaceInformationPtr& spaceInformation() const { return si_; }
+
+  // Throws std::invalid_argument for a bad request (start or goal outside the map or invalid,
+  // time limit <= 0, unknown planner), NoPathFound when there is no path, and
+  // std::runtime_error if a path fails the dense re-check.
+  PlanResult plan(const PlanRequest& request) const;
+
+  // Makes the space sample the ceiling band (share `band_fraction`) until cleared; plan() does
+  // this itself, benchmarks that drive OMPL directly call it.
+  void installBandSampler(double band_fraction) const;
+  void clearBandSampler() const;
+
+  // Checks a point the way plan() checks start and goal; `what` names it in the message.
+  void requireValidEndpoint(const Eigen::Vector3d& point_m, const std::string& what) const;
+
+ private:
+  const SafetyRules& rules_;
+  const FlightCostModel& model_;
+  ompl::base::SpaceInformationPtr si_;
+  std::shared_ptr<FlightObjective> objective_;
+};
+
+// Seeds OMPL's random generators. Call it once, before constructing any FlightPlanner (OMPL
+// makes generators as soon as a space is set up, and a seed set afterwards is ignored). Only
+// the first call in a process takes effect; returns false if an earlier call used another
+// seed. Throws std::invalid_argument on seed 0.
+bool seedOmpl(std::uint32_t seed);
+
+}  // namespace ceilplan::planner

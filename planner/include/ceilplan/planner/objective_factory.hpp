@@ -1,0 +1,25 @@
+#pragma once
+// The objectives by name: length, time, charge, fec, ageing.
+
+#include "ceilplan/planner/ageing_rates.hpp"
+#include "ceilplan/planner/flight_objective.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ceilplan::planner {
+
+struct ObjectiveChoice {
+  std::string name = "charge";
+  double nominal_capacity_ah = 5.2;  // fec
+  AgeingRates ageing;                // ageing (measureAgeingRates)
+};
+
+const std::vector<std::string>& objectiveNames();
+
+// Throws std::invalid_argument for an unknown name, listing the known ones.
+std::shared_ptr<FlightObjective> makeObjective(const ObjectiveChoice& choice, const ompl::base::SpaceInformationPtr& si,
+                                               const FlightCostModel& model);
+
+}  // namespace ceilplan::planner

@@ -1,0 +1,26 @@
+#pragma once
+// Informed sampling that keeps the space's own sampler (the ceiling-band one): OMPL 1.5.2's
+// RejectionInfSampler draws from the space's default sampler, which would bypass the band.
+// Rejects samples whose admissible solution-cost bound (cost-to-come heuristic + cost-to-go)
+// cannot beat the current best.
+
+#include <ompl/base/StateSampler.h>
+#include <ompl/base/samplers/InformedStateSampler.h>
+
+namespace ceilplan::planner {
+
+class RejectionBandSampler : public ompl::base::InformedSampler {
+ public:
+  RejectionBandSampler(const ompl::base::ProblemDefinitionPtr& definition, unsigned int max_calls);
+
+  bool sampleUniform(ompl::base::State* state, const ompl::base::Cost& max_cost) override;
+  bool sampleUniform(ompl::base::State* state, const ompl::base::Cost& min_cost,
+                     const ompl::base::Cost& max_cost) override;
+  bool hasInformedMeasure() const override { return false; }
+  double getInformedMeasure(const ompl::base::Cost&) const override { return space_->getMeasure(); }
+
+ private:
+  ompl::base::StateSamplerPtr base_;
+};
+
+}  // namespace ceilplan::planner

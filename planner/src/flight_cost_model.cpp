@@ -1,0 +1,162 @@
+#include "ceilplan/planner/flight_cost_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ceilplan::planner {
+namespace {
+
+void requirePositive(double value, const char* name) {
+  if (!(std::isfinite(value) && value > 0.0))
+    throw std::invalid_argument(std::string("speeds: ") + name + " must be a positive finite number, got " +
+                                std::to_string(value));
+}
+
+}  // namespace
+
+void FlightSpeeds::validate(double max_speed_m_s) const {
+  requirePositive(cruise_m_s, "cruise_m_s");
+  requirePositive(near_ceiling_m_s, "near_ceiling_m_s");
+  requirePositive(near_ceiling_gap_radii, "near_ceiling_gap_radii");
+  requirePositive(climb_m_s, "climb_m_s");
+  requirePositive(descent_m_s, "descent_m_s");
+  if (cruise_m_s > max_speed_m_s || near_ceiling_m_s > max_speed_m_s)
+    throw std::invalid_argument("speeds: horizontal speeds must not exceed the vehicle's max_speed_m_s (" +
+                                std::to_string(max_speed_m_s) + " m/s)");
+}
+
+FlightCostModel::FlightCostModel(const environment::Environment& environment, const energy::EnergyModel& energy,
+                                 CostModelOptions options)
+    : environment_(environment), energy_(energy), options_(options) {
+  options_.speeds.validate(energy_.maxSpeedM_s());
+  if (!(options_.planning_soc > 0.0 && options_.planning_soc <= 1.0))
+    throw std::invalid_argument("planning SOC must lie in (0, 1], got " + std::to_string(options_.planning_soc));
+  if (!(std::isfinite(options_.step_m) && options_.step_m >= 0.0))
+    throw std::invalid_argument("integration step must be >= 0 (0: half a voxel)");
+  if (static_cast<int>(environment_.vehicle().rotor_positions_m.size()) != energy_.rotorCount())
+    throw std::invalid_argument("the vehicle geometry has " +
+                                std::to_string(environment_.vehicle().rotor_positions_m.size()) +
+                                " rotors but the energy model " + std::to_string(energy_.rotorCount()));
+  step_m_ = options_.step_m > 0.0 ? options_.step_m : 0.5 * environment_.grid().frame().resolution_m();
+  const environment::VehicleGeometry& vehicle = environment_.vehicle();
+  near_ceiling_gap_m_ = options_.speeds.near_ceiling_gap_radii * vehicle.rotor_radius_m;
+  // A surface matters to a rotor if it lies over (under) the disc within the environment's
+  // reach of the rotor plane, or within the speed rule's gap: bound that region by a sphere.
+  double disc_reach = 0.0;
+  for (const Eigen::Vector2d& rotor : vehicle.rotor_positions_m)
+    disc_reach = std::max(disc_reach, rotor.norm() + vehicle.rotor_radius_m);
+  const environment::EnvironmentOptions& reach = environment_.options();
+  const double above = vehicle.rotor_plane_height_m +
+                       std::max(reach.ceiling_reach_radii * vehicle.rotor_radius_m, near_ceiling_gap_m_);
+  const double below = reach.ground_reach_radii * vehicle.rotor_radius_m - vehicle.rotor_plane_height_m;
+  free_air_clearance_m_ = std::hypot(disc_reach, std::max(above, below)) + environment_.grid().frame().resolution_m();
+}
+
+PointConditions FlightCostModel::conditionsAt(const Eigen::Vector3d& body_m) const {
+  if (farFromStructure(body_m)) {
+    PointConditions conditions;
+    conditions.rotor_count = energy_.rotorCount();
+    return conditions;
+  }
+  return exactConditionsAt(body_m);
+}
+
+PointConditions FlightCostModel::exactConditionsAt(const Eigen::Vector3d& body_m) const {
+  PointConditions conditions;
+  const environment::SurfaceGaps ceiling = environment_.ceiling(body_m);
+  conditions.rotor_count = static_cast<int>(ceiling.rotors.size());
+  conditions.nearest_ceiling_gap_m = ceiling.nearest_gap_m;
+  if (!options_.proximity_effects) return conditions;  // rotors default to free air
+  for (int r = 0; r < conditions.rotor_count; ++r) {
+    const environment::RotorGap& rotor = ceiling.rotors[r];
+    // Coverage 0 has an infinite mean gap: free air for that rotor.
+    conditions.rotors[r] = rotor.coverage > 0.0 ? energy::RotorCeiling{rotor.mean_gap_m, rotor.coverage}
+                                                : energy::RotorCeiling{energy::kNoSurface, 0.0};
+  }
+  conditions.ground_gap_m = environment_.ground(body_m).mean_gap_m;
+  return conditions;
+}
+
+Velocity FlightCostModel::velocityAt(const PointConditions& conditions, const Eigen::Vector3d& direction_m) const {
+  const FlightSpeeds& speeds = options_.speeds;
+  const double horizontal_limit = nearCeiling(conditions) ? speeds.near_ceiling_m_s : speeds.cruise_m_s;
+  const double horizontal = direction_m.head<2>().norm();
+  const double vertical = direction_m.z();
+  double along = std::numeric_limits<double>::infinity();
+  if (horizontal > 0.0) along = horizontal_limit / horizontal;
+  if (vertical > 0.0) along = std::min(along, speeds.climb_m_s / vertical);
+  if (vertical < 0.0) along = std::min(along, speeds.descent_m_s / -vertical);
+  // Guard the energy model's speed limit against rounding at the horizontal extreme.
+  return {along, std::min(along * horizontal, horizontal_limit), along * vertical};
+}
+
+namespace {
+energy::FlightCondition flightCondition(const PointConditions& conditions, const Velocity& velocity, double soc) {
+  energy::FlightCondition flight;
+  flight.ground_gap_m = conditions.ground_gap_m;
+  flight.speed_m_s = velocity.horizontal_m_s;
+  flight.climb_m_s = velocity.climb_m_s;
+  flight.soc = soc;
+  return flight;
+}
+}  // namespace
+
+double FlightCostModel::currentA(const PointConditions& conditions, const Velocity& velocity, double soc) const {
+  return energy_.currentA(conditions.rotors.data(), energy_.rotorCount(), flightCondition(conditions, velocity, soc));
+}
+
+energy::CurrentBreakdown FlightCostModel::breakdown(const PointConditions& conditions, const Velocity& velocity,
+                                                    double soc) const {
+  return energy_.breakdown(conditions.rotors.data(), energy_.rotorCount(), flightCondition(conditions, velocity, soc));
+}
+
+MotionTotals FlightCostModel::integrate(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
+  return integrate(from_m, to_m, [this](const Eigen::Vector3d& point) { return conditionsAt(point); });
+}
+
+int FlightCostModel::intervalCount(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
+  const double chebyshev = (to_m - from_m).cwiseAbs().maxCoeff();
+  // The small tolerance keeps a lattice edge of exactly k steps at k intervals despite rounding.
+  return std::max(1, static_cast<int>(std::ceil(chebyshev / step_m_ - 1e-9)));
+}
+
+double FlightCostModel::costPerMetre(const CostWeights& weights, double current_a, double speed_m_s) const {
+  return weights.per_m + weights.per_s / speed_m_s + weights.per_ah * current_a / (3600.0 * speed_m_s);
+}
+
+double FlightCostModel::minCostPerMetre(const CostWeights& weights) const {
+  PointConditions best;  // the most favourable conditions the energy model can see
+  best.rotor_count = energy_.rotorCount();
+  if (options_.proximity_effects) {
+    for (int r = 0; r < best.rotor_count; ++r) best.rotors[r] = energy::RotorCeiling{0.0, 1.0};
+    best.ground_gap_m = 0.5 * energy_.rotorRadiusM();  // the ground model clamps below 0.5 R
+  }
+  const FlightSpeeds& speeds = options_.speeds;
+  // Directions: a dense fan of elevation angles plus the corners where the horizontal limit and
+  // the climb or descent limit bind together (the fastest directions, where the minimum sits).
+  std::vector<double> elevations;
+  constexpr int kFan = 3600;
+  for (int k = 0; k <= kFan; ++k) elevations.push_back(-M_PI / 2 + M_PI * k / kFan);
+  for (const double horizontal : {speeds.cruise_m_s, speeds.near_ceiling_m_s}) {
+    elevations.push_back(std::atan2(speeds.climb_m_s, horizontal));
+    elevations.push_back(-std::atan2(speeds.descent_m_s, horizontal));
+  }
+  double minimum = std::numeric_limits<double>::infinity();
+  for (const double gap : {0.0, energy::kNoSurface}) {  // both sides of the speed rule
+    best.nearest_ceiling_gap_m = gap;
+    for (const double elevation : elevations) {
+      const Eigen::Vector3d direction(std::cos(elevation), 0.0, std::sin(elevation));
+      const Velocity velocity = velocityAt(best, direction);
+      minimum = std::min(minimum, costPerMetre(weights, currentA(best, velocity, options_.planning_soc),
+                                               velocity.along_m_s));
+    }
+  }
+  // Between fan directions the cost per metre is smooth; 0.5 % covers what the fan can miss.
+  return 0.995 * minimum;
+}
+
+}  // namespace ceilplan::planner

@@ -1,0 +1,148 @@
+#include "ceilplan/planner/flight_planner.hpp"
+
+#include "ceilplan/planner/ceiling_band_sampler.hpp"
+#include "ceilplan/planner/motion_validator.hpp"
+#include "ceilplan/planner/ompl_state.hpp"
+#include "ceilplan/planner/planner_factory.hpp"
+#include "ceilplan/planner/state_validity_checker.hpp"
+
+#include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <optional>
+
+namespace ceilplan::planner {
+namespace {
+
+std::string point(const Eigen::Vector3d& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", p.x(), p.y(), p.z());
+  return text;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+bool seedOmpl(std::uint32_t seed) {
+  if (seed == 0) throw std::invalid_argument("seed must be > 0 (OMPL refuses 0)");
+  static std::mutex mutex;
+  static std::optional<std::uint32_t> used;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (used) return *used == seed;
+  ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+  ompl::RNG::setSeed(seed);
+  used = seed;
+  return true;
+}
+
+FlightPlanner::FlightPlanner(const SafetyRules& rules, const FlightCostModel& model, const ObjectiveChoice& objective)
+    : rules_(rules), model_(model) {
+  ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+  si_ = std::make_shared<ompl::base::SpaceInformation>(makePositionSpace(rules_.environment()));
+  si_->setStateValidityChecker(std::make_shared<FlightStateValidityChecker>(si_, rules_));
+  si_->setMotionValidator(std::make_shared<FlightMotionValidator>(si_, rules_));
+  si_->setup();
+  objective_ = makeObjective(objective, si_, model_);
+}
+
+void FlightPlanner::requireValidEndpoint(const Eigen::Vector3d& p, const std::string& what) const {
+  if (!p.allFinite()) throw std::invalid_argument(what + " has a non-finite coordinate");
+  const environment::Environment& environment = rules_.environment();
+  if (!environment.contains(p)) {
+    const Eigen::AlignedBox3d box = environment.grid().frame().bounds();
+    throw std::invalid_argument(what + " " + point(p) + " lies outside the map " + point(box.min()) + " - " +
+                                point(box.max()));
+  }
+  if (const auto violation = environment.stateViolation(p))
+    throw std::invalid_argument(what + " " + point(p) + " is not a valid state: " + violation->describe());
+  if (!rules_.isStateValid(p))
+    throw std::invalid_argument(what + " " + point(p) + " is too close to a ceiling (rotor plane within " +
+                                std::to_string(rules_.minCeilingGap_m()) + " m) or violates the standoff");
+}
+
+void FlightPlanner::installBandSampler(double band_fraction) const {
+  // The band sampler serves every planner: directly, or through the objective's informed
+  // sampler (RejectionBandSampler).
+  const CeilingBandOptions band{band_fraction, rules_.minCeilingGap_m(),
+                                model_.options().speeds.near_ceiling_gap_radii *
+                                    rules_.environment().vehicle().rotor_radius_m};
+  const environment::Environment& environment = rules_.environment();
+  si_->getStateSpace()->setStateSamplerAllocator([&environment, band](const ompl::base::StateSpace* space) {
+    return std::make_shared<CeilingBandSampler>(space, environment, band);
+  });
+}
+
+void FlightPlanner::clearBandSampler() const { si_->getStateSpace()->clearStateSamplerAllocator(); }
+
+std::vector<Eigen::Vector3d> FlightPlanner::postProcess(const std::vector<Eigen::Vector3d>& raw,
+                                                       const RefinementOptions& options, bool refine) const {
+  std::vector<Eigen::Vector3d> best = raw;
+  if (refine) best = refinePath(shortcutPath(best, rules_, *objective_), rules_, *objective_, options);
+  if (const auto problem = rules_.checkPathDensely(best)) {
+    if (rules_.checkPathDensely(raw))
+      throw std::runtime_error("the planned path fails the dense re-check: " + *problem +
+                               " (a bug: please report it with the map and the command)");
+    best = raw;  // post-processing slipped past the motion checks: keep the raw path
+  }
+  return best;
+}
+
+PlanResult FlightPlanner::plan(const PlanRequest& request) const {
+  const auto started = std::chrono::steady_clock::now();
+  if (!(std::isfinite(request.time_limit_s) && request.time_limit_s > 0.0))
+    throw std::invalid_argument("time limit must be a positive number of seconds");
+  requireValidEndpoint(request.start_m, "start");
+  requireValidEndpoint(request.goal_m, "goal");
+  PlanResult result;
+  result.planner = request.planner.empty() ? defaultPlannerName() : request.planner;
+  if (result.planner != "lattice") makeOmplPlanner(result.planner, si_);  // rejects unknown names early
+
+  if (result.planner == "lattice") {
+    LatticeOptions options = request.lattice;
+    options.should_stop = [&] { return secondsSince(started) > request.time_limit_s; };
+    LatticePlanner lattice(rules_, *objective_, options);
+    const auto found = lattice.plan(request.start_m, request.goal_m);
+    if (!found)
+      throw NoPathFound(lattice.stopped() ? "the lattice search ran out of time (" + std::to_string(request.time_limit_s) +
+                                                " s); raise --time-limit-s or the lattice stride"
+                                          : "no collision-free route joins start and goal on the lattice");
+    result.waypoints = found->waypoints;
+  } else {
+    installBandSampler(request.band_fraction);
+    auto definition = std::make_shared<ompl::base::ProblemDefinition>(si_);
+    ompl::base::ScopedState<> start(si_), goal(si_);
+    setPosition(start.get(), request.start_m);
+    setPosition(goal.get(), request.goal_m);
+    definition->setStartAndGoalStates(start, goal, 1e-6);
+    definition->setOptimizationObjective(objective_);
+    const ompl::base::PlannerPtr planner = makeOmplPlanner(result.planner, si_);
+    planner->setProblemDefinition(definition);
+    planner->setup();
+    const ompl::base::PlannerStatus status = planner->solve(request.time_limit_s);
+    clearBandSampler();
+    if (status != ompl::base::PlannerStatus::EXACT_SOLUTION || !definition->hasExactSolution())
+      throw NoPathFound("no path found by " + result.planner + " within " + std::to_string(request.time_limit_s) +
+                        " s (status: " + status.asString() + "); raise --time-limit-s, or try --planner lattice");
+    const auto path = definition->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+    for (const ompl::base::State* state : path->getStates()) result.waypoints.push_back(toPosition(state));
+  }
+  result.search_time_s = secondsSince(started);
+  result.search_cost = objective_->pathCost(result.waypoints);
+
+  result.waypoints = postProcess(result.waypoints, request.refinement, request.refine);
+  result.cost = objective_->pathCost(result.waypoints);
+  result.total_time_s = secondsSince(started);
+  return result;
+}
+
+}  // namespace ceilplan::planner

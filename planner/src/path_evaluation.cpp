@@ -1,0 +1,70 @@
+#include "ceilplan/planner/path_evaluation.hpp"
+
+#include "ceilplan/battery/simulation.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace ceilplan::planner {
+
+PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
+                            const std::vector<Eigen::Vector3d>& waypoints_m) {
+  if (waypoints_m.size() < 2) throw std::invalid_argument("a path needs at least 2 waypoints");
+  if (!(start_soc > 0.0 && start_soc <= 1.0)) throw std::invalid_argument("start SOC must lie in (0, 1]");
+  const environment::Environment& environment = model.environment();
+  battery::Simulator battery(pack, start_soc);
+  PathEvaluation result;
+  result.min_clearance_m = std::numeric_limits<double>::infinity();
+  result.min_ceiling_gap_m = std::numeric_limits<double>::infinity();
+  double energy_j = 0.0;
+  for (std::size_t s = 0; s + 1 < waypoints_m.size(); ++s) {
+    const Eigen::Vector3d from = waypoints_m[s], delta = waypoints_m[s + 1] - from;
+    const double length = delta.norm();
+    if (length == 0.0) continue;
+    const Eigen::Vector3d direction = delta / length;
+    const int intervals = model.intervalCount(from, waypoints_m[s + 1]);
+    PathSample previous;
+    bool previous_near = false;
+    for (int k = 0; k <= intervals; ++k) {
+      PathSample sample;
+      sample.position_m = k == intervals ? waypoints_m[s + 1] : Eigen::Vector3d(from + delta * (double(k) / intervals));
+      const PointConditions conditions = model.exactConditionsAt(sample.position_m);
+      const Velocity velocity = model.velocityAt(conditions, direction);
+      sample.speed_m_s = velocity.along_m_s;
+      sample.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
+      sample.clearance_m = environment.clearance_m(sample.position_m);
+      // The current at a point sees the SOC reached just before it (explicit coulomb counting).
+      const energy::CurrentBreakdown terms = model.breakdown(conditions, velocity, battery.state().soc);
+      sample.current_a = terms.current_a;
+      sample.power_w = terms.power_w;
+      if (k > 0) {
+        // Trapezoid in distance for time; the interval draws the mean of its ends' currents.
+        const double dt = 0.5 * (1.0 / previous.speed_m_s + 1.0 / sample.speed_m_s) * (length / intervals);
+        battery.run(battery::Segment::discharge(0.5 * (previous.current_a + sample.current_a), dt));
+        energy_j += 0.5 * (previous.power_w + sample.power_w) * dt;
+        result.duration_s += dt;
+        const bool near = model.nearCeiling(conditions);
+        result.time_under_ceiling_s += (previous_near && near) ? dt : (previous_near || near) ? 0.5 * dt : 0.0;
+      }
+      sample.t_s = result.duration_s;
+      sample.soc = battery.state().soc;
+      result.min_clearance_m = std::min(result.min_clearance_m, sample.clearance_m);
+      result.min_ceiling_gap_m = std::min(result.min_ceiling_gap_m, sample.ceiling_gap_m);
+      previous_near = model.nearCeiling(conditions);
+      previous = sample;
+      result.samples.push_back(sample);
+    }
+    result.length_m += length;
+  }
+  if (result.samples.empty()) throw std::invalid_argument("the path has zero length");
+  battery.closeModeInterval();
+  result.charge_ah = battery.state().discharge_ah;
+  result.energy_wh = energy_j / 3600.0;
+  result.fec = result.charge_ah / pack.capacity_ah;
+  result.mean_current_a = result.duration_s > 0.0 ? 3600.0 * result.charge_ah / result.duration_s : 0.0;
+  result.min_soc = battery.state().min_soc;
+  return result;
+}
+
+}  // namespace ceilplan::planner

@@ -1,0 +1,116 @@
+#include "ceilplan/planner/path_refinement.hpp"
+
+#include <nlopt.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace ceilplan::planner {
+
+Waypoints shortcutPath(const Waypoints& path, const SafetyRules& rules, const FlightObjective& objective) {
+  if (path.size() < 3) return path;
+  std::vector<double> cost_to(path.size(), 0.0);  // cumulative cost along the input
+  for (std::size_t k = 1; k < path.size(); ++k) cost_to[k] = cost_to[k - 1] + objective.motionCost(path[k - 1], path[k]);
+  Waypoints result{path.front()};
+  std::size_t i = 0;
+  while (i + 1 < path.size()) {
+    std::size_t next = i + 1;
+    for (std::size_t j = path.size() - 1; j > i + 1; --j) {
+      const double along = cost_to[j] - cost_to[i];
+      // The heuristic bound rejects hopeless jumps before any map query.
+      if (objective.heuristic(path[i], path[j]) >= along) continue;
+      if (!rules.isMotionValid(path[i], path[j])) continue;
+      if (objective.motionCost(path[i], path[j]) < along) {
+        next = j;
+        break;
+      }
+    }
+    result.push_back(path[next]);
+    i = next;
+  }
+  return result;
+}
+
+Waypoints subdivide(const Waypoints& path, double max_segment_m) {
+  if (path.empty()) return path;
+  Waypoints result{path.front()};
+  for (std::size_t k = 1; k < path.size(); ++k) {
+    const int pieces = std::max(1, static_cast<int>(std::ceil((path[k] - path[k - 1]).norm() / max_segment_m)));
+    for (int p = 1; p <= pieces; ++p) result.push_back(path[k - 1] + (path[k] - path[k - 1]) * (double(p) / pieces));
+  }
+  return result;
+}
+
+namespace {
+
+double pathLength(const Waypoints& path) {
+  double length = 0.0;
+  for (std::size_t k = 1; k < path.size(); ++k) length += (path[k] - path[k - 1]).norm();
+  return length;
+}
+
+int invalidMotions(const Waypoints& path, const SafetyRules& rules) {
+  int invalid = 0;
+  for (std::size_t k = 1; k < path.size(); ++k)
+    if (!rules.isStateValid(path[k]) || !rules.isMotionValid(path[k - 1], path[k])) ++invalid;
+  return invalid;
+}
+
+}  // namespace
+
+Waypoints refinePath(const Waypoints& path, const SafetyRules& rules, const FlightObjective& objective,
+                     const RefinementOptions& options) {
+  if (path.size() < 2) return path;
+  // Enough inner waypoints to bend the path, few enough for a derivative-free local method.
+  const int segments = std::max(2, options.max_waypoints - 1);
+  const Waypoints start = subdivide(path, std::max(pathLength(path) / segments, 1e-3));
+  const std::size_t inner = start.size() - 2;
+  if (inner == 0) return path;
+  const Eigen::AlignedBox3d box = rules.environment().grid().frame().bounds();
+
+  std::vector<double> x(3 * inner), lower(3 * inner), upper(3 * inner);
+  for (std::size_t w = 0; w < inner; ++w)
+    for (int axis = 0; axis < 3; ++axis) {
+      const double value = start[w + 1][axis];
+      x[3 * w + axis] = value;
+      lower[3 * w + axis] = std::max(box.min()[axis], value - options.max_move_m);
+      upper[3 * w + axis] = std::min(box.max()[axis], value + options.max_move_m);
+      if (upper[3 * w + axis] <= lower[3 * w + axis]) upper[3 * w + axis] = lower[3 * w + axis] + 1e-6;
+    }
+  const auto toPath = [&](const double* values) {
+    Waypoints candidate = start;
+    for (std::size_t w = 0; w < inner; ++w) candidate[w + 1] = Eigen::Vector3d(values[3 * w], values[3 * w + 1], values[3 * w + 2]);
+    return candidate;
+  };
+  const auto penalised = [&](const Waypoints& candidate) {
+    for (const Eigen::Vector3d& p : candidate)
+      if (!box.contains(p)) return 1e30;
+    return objective.pathCost(candidate) * (1.0 + invalidMotions(candidate, rules));
+  };
+  const std::function<double(const double*)> evaluate = [&](const double* values) { return penalised(toPath(values)); };
+
+  nlopt::opt optimiser(nlopt::LN_BOBYQA, static_cast<unsigned>(x.size()));
+  optimiser.set_lower_bounds(lower);
+  optimiser.set_upper_bounds(upper);
+  optimiser.set_maxeval(options.max_evaluations);
+  optimiser.set_maxtime(options.time_limit_s);
+  optimiser.set_xtol_abs(0.2 * rules.environment().grid().frame().resolution_m());
+  optimiser.set_initial_step(0.25 * options.max_move_m);
+  optimiser.set_min_objective(
+      [](unsigned, const double* values, double*, void* data) {
+        return (*static_cast<const std::function<double(const double*)>*>(data))(values);
+      },
+      const_cast<std::function<double(const double*)>*>(&evaluate));
+  double best = 0.0;
+  try {
+    optimiser.optimize(x, best);
+  } catch (const std::exception&) {
+    // NLopt gives up (roundoff, forced stop): whatever x holds is re-checked below.
+  }
+  const Waypoints refined = shortcutPath(toPath(x.data()), rules, objective);
+  if (invalidMotions(refined, rules) > 0 || !rules.isStateValid(refined.front())) return path;
+  return objective.pathCost(refined) < objective.pathCost(path) ? refined : path;
+}
+
+}  // namespace ceilplan::planner

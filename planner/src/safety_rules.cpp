@@ -1,0 +1,116 @@
+#include "ceilplan/planner/safety_rules.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace ceilplan::planner {
+
+environment::VehicleGeometry withStandoff(environment::VehicleGeometry vehicle, double standoff_m) {
+  vehicle.margin_m = std::max(vehicle.margin_m, standoff_m);
+  vehicle.top_margin_m = std::max(vehicle.top_margin_m, standoff_m);
+  return vehicle;
+}
+
+StandoffZone standoffZone(const environment::Environment& standoff, const environment::Environment& plain,
+                          double standoff_m, const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) {
+  const environment::VehicleGeometry& vehicle = plain.vehicle();
+  const double body_extent = std::max({vehicle.inflatedRadius_m(), vehicle.inflatedTop_m(), -vehicle.inflatedBottom_m()});
+  StandoffZone zone;
+  zone.standoff = &standoff;
+  zone.exempt_centres_m = {start_m, goal_m};
+  // Enough to back away from a start under a deck and clear girders below it (1 m more).
+  zone.exempt_radius_m = standoff_m + body_extent + 1.0;
+  return zone;
+}
+
+SafetyRules::SafetyRules(const environment::Environment& environment, double min_ceiling_gap_m,
+                         std::optional<StandoffZone> standoff)
+    : environment_(environment), min_ceiling_gap_m_(min_ceiling_gap_m), standoff_(std::move(standoff)) {
+  if (!(std::isfinite(min_ceiling_gap_m) && min_ceiling_gap_m >= 0.0))
+    throw std::invalid_argument("minimum ceiling gap must be a finite number >= 0 m");
+  if (standoff_ && !standoff_->standoff) throw std::invalid_argument("standoff zone without an environment");
+  const environment::VehicleGeometry& vehicle = environment_.vehicle();
+  // Every rotor disc lies inside the cylinder's footprint, and the cylinder's top (with its
+  // margin) is at least the minimum gap above the rotor plane: then no valid state can have a
+  // ceiling closer than the minimum gap to any rotor, and the gap query can be skipped.
+  double disc_reach = 0.0;
+  for (const Eigen::Vector2d& rotor : vehicle.rotor_positions_m)
+    disc_reach = std::max(disc_reach, rotor.norm() + vehicle.rotor_radius_m);
+  gap_implied_by_cylinder_ = disc_reach <= vehicle.inflatedRadius_m() &&
+                             vehicle.inflatedTop_m() - vehicle.rotor_plane_height_m >= min_ceiling_gap_m_;
+  motion_step_m_ = environment_.options().motion_step_voxels * environment_.grid().frame().resolution_m();
+}
+
+bool SafetyRules::gapOk(const Eigen::Vector3d& body_m) const {
+  return gap_implied_by_cylinder_ || environment_.ceiling(body_m).nearest_gap_m >= min_ceiling_gap_m_;
+}
+
+bool SafetyRules::baseStateValid(const Eigen::Vector3d& body_m) const {
+  return environment_.isStateValid(body_m) && gapOk(body_m);
+}
+
+bool SafetyRules::exempt(const Eigen::Vector3d& body_m) const {
+  for (const Eigen::Vector3d& centre : standoff_->exempt_centres_m)
+    if ((body_m - centre).norm() <= standoff_->exempt_radius_m) return true;
+  return false;
+}
+
+bool SafetyRules::segmentNearExemptZone(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
+  const Eigen::Vector3d delta = to_m - from_m;
+  const double length2 = delta.squaredNorm();
+  for (const Eigen::Vector3d& centre : standoff_->exempt_centres_m) {
+    const double t = length2 > 0.0 ? std::clamp((centre - from_m).dot(delta) / length2, 0.0, 1.0) : 0.0;
+    if ((from_m + t * delta - centre).norm() <= standoff_->exempt_radius_m) return true;
+  }
+  return false;
+}
+
+bool SafetyRules::isStateValid(const Eigen::Vector3d& body_m) const {
+  if (!baseStateValid(body_m)) return false;
+  if (!standoff_ || exempt(body_m)) return true;
+  return standoff_->standoff->isStateValid(body_m);
+}
+
+bool SafetyRules::isMotionValid(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
+  if (standoff_ && segmentNearExemptZone(from_m, to_m)) {
+    // Mixed rules along the motion: check every state at the environment's motion step.
+    const int steps = std::max(1, static_cast<int>(std::ceil((to_m - from_m).norm() / motion_step_m_)));
+    for (int k = 0; k <= steps; ++k)
+      if (!isStateValid(from_m + (to_m - from_m) * (double(k) / steps))) return false;
+    return true;
+  }
+  const environment::Environment& rules = standoff_ ? *standoff_->standoff : environment_;
+  if (!rules.isMotionValid(from_m, to_m)) return false;
+  if (standoff_ && !environment_.isMotionValid(from_m, to_m)) return false;
+  if (gap_implied_by_cylinder_) return true;
+  const int steps = std::max(1, static_cast<int>(std::ceil((to_m - from_m).norm() / motion_step_m_)));
+  for (int k = 0; k <= steps; ++k)
+    if (!gapOk(from_m + (to_m - from_m) * (double(k) / steps))) return false;
+  return true;
+}
+
+std::optional<std::string> SafetyRules::checkPathDensely(const std::vector<Eigen::Vector3d>& waypoints_m) const {
+  if (waypoints_m.empty()) return std::string("the path has no waypoint");
+  if (const auto violation = environment_.checkPathDensely(waypoints_m)) return violation->describe();
+  const double step_m = 0.1 * environment_.grid().frame().resolution_m();
+  for (std::size_t s = 0; s + 1 < waypoints_m.size(); ++s) {
+    const Eigen::Vector3d& a = waypoints_m[s];
+    const Eigen::Vector3d& b = waypoints_m[s + 1];
+    const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step_m)));
+    for (int k = 0; k <= steps; ++k) {
+      const Eigen::Vector3d p = a + (b - a) * (double(k) / steps);
+      const double gap = environment_.ceiling(p).nearest_gap_m;
+      if (gap < min_ceiling_gap_m_) {
+        char line[200];
+        std::snprintf(line, sizeof line, "segment %zu at (%.2f, %.2f, %.2f): rotor plane %.3f m from the ceiling, under the minimum %.3f m",
+                      s, p.x(), p.y(), p.z(), gap, min_ceiling_gap_m_);
+        return std::string(line);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace ceilplan::planner

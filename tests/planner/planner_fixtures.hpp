@@ -1,0 +1,37 @@
+#pragma once
+// Analytic scenes and the default vehicle's models for planner tests.
+
+#include "analytic_maps.hpp"
+
+#include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/energy/paper_quad.hpp"
+#include "ceilplan/environment/environment.hpp"
+#include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/planner/safety_rules.hpp"
+
+#include <functional>
+#include <memory>
+
+namespace ceilplan::testing {
+
+// A 7 m corridor along x, 5 m wide, floor top at 0.2 m, ceiling underside at `ceiling(x, y)`
+// (0.4 m slab), walls beyond |y| = 2.5 m and x outside [-0.5, 6.5]: high and wide enough that
+// free mode's 1 m standoff leaves room. No ceiling: `ceiling` returns +inf (free up to 4 m).
+inline environment::OccupancyMap corridor(const std::function<double(double x, double y)>& ceiling) {
+  return analyticMap({-0.7, -2.7, 0}, {6.7, 2.7, 4.2}, 0.1, [&](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || std::abs(c.y()) > 2.5 || c.x() < -0.5 || c.x() > 6.5) return CellState::Occupied;
+    const double underside = ceiling(c.x(), c.y());
+    if (c.z() < std::min(underside, 4.0)) return CellState::Free;
+    if (c.z() < underside + 0.4) return CellState::Occupied;
+    return std::isfinite(underside) ? CellState::Unknown : CellState::Free;
+  });
+}
+
+inline double flatCeiling(double, double) { return 3.5; }
+
+inline energy::EnergyModel paperEnergy() { return energy::EnergyModel(energy::paperQuadParameters()); }
+
+// Start and goal under a ceiling at height h: the rotor plane 7 cm below it.
+inline double bodyHeightUnder(double ceiling_m) { return ceiling_m - 0.1; }
+
+}  // namespace ceilplan::testing

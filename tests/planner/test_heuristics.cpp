@@ -1,0 +1,72 @@
+// The objectives' heuristics are admissible: c_min x distance never exceeds a motion's cost.
+
+#include "planner_fixtures.hpp"
+
+#include "ceilplan/planner/flight_planner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace ceilplan::testing {
+namespace {
+
+// Beams 0.6 m deep every 1.5 m under a 3.5 m ceiling.
+double beamedCeiling(double x, double) {
+  const double phase = std::fmod(x + 0.5, 1.5);
+  return phase < 0.3 ? 2.9 : 3.5;
+}
+
+planner::ObjectiveChoice choice(const std::string& name) {
+  planner::ObjectiveChoice c;
+  c.name = name;
+  if (name == "ageing") {
+    battery::AgeingModelOptions options;
+    c.ageing = planner::measureAgeingRates("xu", options, battery::Pack{}, 0.95, 0.05, 9.0);
+  }
+  return c;
+}
+
+TEST(Heuristics, CostToGoNeverExceedsTheMotionCostOnRandomPairs) {
+  const environment::OccupancyMap map = corridor(beamedCeiling);
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const planner::SafetyRules rules(environment, 0.05);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> x(-0.4, 6.4), y(-2.4, 2.4), z(0.25, 3.45);
+  for (const bool proximity : {true, false}) {
+    planner::CostModelOptions options;
+    options.proximity_effects = proximity;
+    const planner::FlightCostModel model(environment, energy, options);
+    for (const std::string& name : planner::objectiveNames()) {
+      const planner::FlightPlanner planner(rules, model, choice(name));
+      const planner::FlightObjective& objective = planner.objective();
+      ASSERT_GT(objective.minCostPerMetre(), 0.0) << name;
+      for (int k = 0; k < 300; ++k) {
+        // Short hops near the ceiling band and long ones anywhere.
+        const Eigen::Vector3d a(x(random), y(random), z(random));
+        const Eigen::Vector3d b = k % 2 ? Eigen::Vector3d(x(random), y(random), z(random))
+                                        : Eigen::Vector3d(a + Eigen::Vector3d::Random() * 0.3);
+        if (!environment.contains(b)) continue;
+        EXPECT_LE(objective.heuristic(a, b), objective.motionCost(a, b) * (1 + 1e-12))
+            << name << (proximity ? " ceiling" : " free") << " from " << a.transpose() << " to " << b.transpose();
+      }
+    }
+  }
+}
+
+TEST(Heuristics, MinCostPerMetreIsTight) {
+  // Within a few per cent of the cheapest motion one can actually find: diving along the
+  // descent-rate corner right under a ceiling.
+  const environment::OccupancyMap map = corridor(flatCeiling);
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const planner::SafetyRules rules(environment, 0.05);
+  const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
+  const planner::FlightPlanner planner(rules, model, choice("time"));
+  const double fastest = std::hypot(2.0, 1.0);  // cruise 2 m/s and climb 1 m/s together
+  EXPECT_NEAR(planner.objective().minCostPerMetre(), 0.995 / fastest, 1e-9);
+}
+
+}  // namespace
+}  // namespace ceilplan::testing

@@ -1,0 +1,103 @@
+// The lattice A* is optimal on its lattice: it matches an exhaustive Bellman-Ford over the
+// same nodes, edges and motion costs.
+
+#include "planner_fixtures.hpp"
+
+#include "ceilplan/planner/flight_planner.hpp"
+#include "ceilplan/planner/lattice_planner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace ceilplan::testing {
+namespace {
+
+// A 3.3 x 2.4 m room, ceiling at 2.0 m with one 0.4 m deep beam across it at x in [0, 0.3).
+environment::OccupancyMap beamRoom() {
+  return analyticMap({-1.5, -1.2, 0}, {1.8, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || c.z() > 2.0) return CellState::Occupied;
+    if (c.x() >= 0.0 && c.x() < 0.3 && c.z() > 1.6) return CellState::Occupied;
+    return CellState::Free;
+  });
+}
+
+double bruteForceCost(const planner::SafetyRules& rules, const planner::FlightObjective& objective, int stride,
+                      const Eigen::Vector3d& start, const Eigen::Vector3d& goal) {
+  const environment::GridFrame& frame = rules.environment().grid().frame();
+  std::vector<Eigen::Vector3d> nodes{start, goal};
+  for (int c = 0; c * stride < frame.size()[2]; ++c)
+    for (int b = 0; b * stride < frame.size()[1]; ++b)
+      for (int a = 0; a * stride < frame.size()[0]; ++a) {
+        const Eigen::Vector3d p(frame.centreOf(0, a * stride), frame.centreOf(1, b * stride), frame.centreOf(2, c * stride));
+        if (rules.isStateValid(p)) nodes.push_back(p);
+      }
+  const double spacing = stride * frame.resolution_m();
+  struct Edge {
+    std::size_t from, to;
+    double cost;
+  };
+  std::vector<Edge> edges;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    for (std::size_t j = 0; j < nodes.size(); ++j) {
+      if (i == j || j == 0 || i == 1) continue;  // nothing enters the start or leaves the goal
+      const Eigen::Vector3d d = nodes[j] - nodes[i];
+      const bool lattice_edge = i > 1 && j > 1 && d.cwiseAbs().maxCoeff() < 1.01 * spacing;
+      const bool join = (i == 0 || j == 1) && (i == 0 && j == 1 ? true : d.norm() <= std::sqrt(3.0) * spacing);
+      if (!lattice_edge && !join) continue;
+      if (rules.isMotionValid(nodes[i], nodes[j])) edges.push_back({i, j, objective.motionCost(nodes[i], nodes[j])});
+    }
+  std::vector<double> cost(nodes.size(), std::numeric_limits<double>::infinity());
+  cost[0] = 0.0;
+  for (std::size_t round = 0; round < nodes.size(); ++round) {
+    bool changed = false;
+    for (const Edge& e : edges)
+      if (cost[e.from] + e.cost < cost[e.to]) {
+        cost[e.to] = cost[e.from] + e.cost;
+        changed = true;
+      }
+    if (!changed) break;
+  }
+  return cost[1];
+}
+
+TEST(LatticePlanner, MatchesExhaustiveSearchOnATinyLattice) {
+  const environment::OccupancyMap map = beamRoom();
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const planner::SafetyRules rules(environment, 0.05);
+  const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
+  for (const std::string objective_name : {"charge", "time"}) {
+    planner::ObjectiveChoice choice;
+    choice.name = objective_name;
+    const planner::FlightPlanner planner(rules, model, choice);
+    const Eigen::Vector3d start(-0.8, -0.3, 1.9), goal(1.0, 0.4, 1.9);  // on either side of the beam
+    planner::LatticeOptions options;
+    options.stride_voxels = 3;
+    planner::LatticePlanner lattice(rules, planner.objective(), options);
+    const auto found = lattice.plan(start, goal);
+    ASSERT_TRUE(found) << objective_name;
+    const double reference = bruteForceCost(rules, planner.objective(), options.stride_voxels, start, goal);
+    EXPECT_NEAR(found->cost, reference, 1e-9 * reference) << objective_name;
+    EXPECT_NEAR(planner.objective().pathCost(found->waypoints), found->cost, 1e-9 * reference);
+    EXPECT_FALSE(rules.checkPathDensely(found->waypoints)) << objective_name;
+  }
+}
+
+TEST(LatticePlanner, SaysNoPathWhenAWallSeparatesStartAndGoal) {
+  const environment::OccupancyMap map = analyticMap({-1.2, -1.2, 0}, {1.2, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || c.z() > 2.0 || (c.x() > -0.1 && c.x() < 0.1)) return CellState::Occupied;
+    return CellState::Free;
+  });
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const planner::SafetyRules rules(environment, 0.05);
+  const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
+  const planner::FlightPlanner planner(rules, model, planner::ObjectiveChoice{});
+  planner::LatticePlanner lattice(rules, planner.objective());
+  EXPECT_FALSE(lattice.plan({-0.6, 0.0, 1.0}, {0.6, 0.0, 1.0}));
+  EXPECT_FALSE(lattice.stopped());
+}
+
+}  // namespace
+}  // namespace ceilplan::testing

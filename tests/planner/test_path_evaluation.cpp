@@ -1,0 +1,64 @@
+// Path figures: coulomb counting consistent with battery::Simulator and the FEC definition.
+
+#include "planner_fixtures.hpp"
+
+#include "ceilplan/battery/simulation.hpp"
+#include "ceilplan/planner/path_evaluation.hpp"
+
+#include <gtest/gtest.h>
+
+namespace ceilplan::testing {
+namespace {
+
+TEST(PathEvaluation, CountsCoulombsLikeTheBatterySimulator) {
+  const environment::OccupancyMap map = corridor(flatCeiling);
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
+  battery::Pack pack;
+  pack.state_of_health = 0.9;
+  const std::vector<Eigen::Vector3d> path{{0.5, 0.0, 2.0}, {5.5, 0.0, 2.0}, {5.5, 1.0, 3.4}, {0.5, 1.0, 3.4}};
+  const planner::PathEvaluation e = planner::evaluatePath(model, pack, 0.8, path);
+
+  EXPECT_NEAR(e.length_m, 5.0 + std::hypot(1.0, 1.4) + 5.0, 1e-12);
+  EXPECT_NEAR(e.samples.back().soc, 0.8 - e.charge_ah / pack.usableCapacityAh(), 1e-12);
+  EXPECT_NEAR(e.min_soc, e.samples.back().soc, 1e-12);
+  EXPECT_NEAR(e.mean_current_a, 3600.0 * e.charge_ah / e.duration_s, 1e-12);
+  EXPECT_DOUBLE_EQ(e.samples.back().t_s, e.duration_s);
+  EXPECT_GT(e.time_under_ceiling_s, 0.5 * 5.0 / 1.8);
+  EXPECT_LT(e.min_ceiling_gap_m, 0.1);
+  // Mean terminal voltage between the pack's empty and full voltages.
+  const double volts = e.energy_wh / e.charge_ah;
+  EXPECT_GT(volts, 4 * 3.5);
+  EXPECT_LT(volts, 4 * 4.2);
+
+  // FEC: the discharge and the recharge putting it back, over twice the nominal capacity.
+  battery::Simulator cycle(pack, 0.8);
+  cycle.run(battery::Segment::discharge(e.mean_current_a, e.duration_s));
+  cycle.run(battery::Segment::charge(pack.charge_current_a, 3600.0, 0.8));
+  cycle.closeModeInterval();
+  EXPECT_NEAR(e.fec, cycle.state().fec_continuous, 1e-9);
+
+  // The SOC falls along the path, so the evaluated charge exceeds the planning estimate
+  // made at the start SOC only by the voltage sag: a little.
+  planner::MotionTotals planned;
+  for (std::size_t k = 1; k < path.size(); ++k) planned += model.integrate(path[k - 1], path[k]);
+  EXPECT_NEAR(e.duration_s, planned.duration_s, 1e-9);
+  EXPECT_GT(e.charge_ah, planned.charge_ah * 0.98);
+  EXPECT_LT(e.charge_ah, planned.charge_ah * 1.05);
+}
+
+TEST(PathEvaluation, RefusesPathsItCannotScore) {
+  const environment::OccupancyMap map = corridor(flatCeiling);
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
+  EXPECT_THROW(planner::evaluatePath(model, battery::Pack{}, 0.95, {{1, 0, 2}}), std::invalid_argument);
+  EXPECT_THROW(planner::evaluatePath(model, battery::Pack{}, 0.95, {{1, 0, 2}, {99, 0, 2}}), std::out_of_range);
+  battery::Pack almost_empty;
+  almost_empty.soc_min = 0.949;
+  EXPECT_THROW(planner::evaluatePath(model, almost_empty, 0.95, {{0.5, 0, 2}, {5.5, 0, 2}}), battery::DepletionError);
+}
+
+}  // namespace
+}  // namespace ceilplan::testing
