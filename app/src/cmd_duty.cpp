@@ -3,6 +3,7 @@
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
 #include "output.hpp"
+#include "text_format.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/duty_cycle.hpp"
@@ -74,17 +75,6 @@ std::vector<std::string> modelNames(const DutyArguments& args) {
   return {args.model};
 }
 
-std::string shortNumber(double value) {
-  std::ostringstream text;
-  text << std::setprecision(4) << value;
-  return text.str();
-}
-
-std::string fixed(double value, int decimals) {
-  std::ostringstream text;
-  text << std::fixed << std::setprecision(decimals) << value;
-  return text.str();
-}
 
 double reductionPct(const CaseResult& first, const CaseResult& other) {
   return 100.0 * (1.0 - other.run.fecTotal() / first.run.fecTotal());
@@ -122,7 +112,7 @@ void printTable(const DutyArguments& args, const std::vector<CaseResult>& cases)
     std::cout << first.projection.model << ":\n";
     const auto wear = [m](const CaseResult& c) { return c.ageing[m].projection.cycle_wear; };
     const auto new_pack_wear = [m](const CaseResult& c) { return c.ageing[m].cycle_wear_new_pack; };
-    row("  " + first.projection.cycle_wear_name, [&](const CaseResult& c) { return shortNumber(wear(c)); });
+    row("  " + first.projection.cycle_wear_name, [&](const CaseResult& c) { return shortNumber(wear(c), 4); });
     row("  capacity fade [%]", [m](const CaseResult& c) { return fixed(100 * c.ageing[m].projection.capacity_loss, 2); });
     row("  days to end of life", [m](const CaseResult& c) {
       const auto& days = c.ageing[m].projection.days_to_end_of_life;

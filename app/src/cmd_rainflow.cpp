@@ -3,6 +3,7 @@
 #include "command_registry.hpp"
 #include "csv_table.hpp"
 #include "output.hpp"
+#include "text_format.hpp"
 
 #include "ceilplan/battery/rainflow.hpp"
 
@@ -30,12 +31,6 @@ struct RainflowArguments {
   std::string column;
   std::string json_path;
 };
-
-std::string shortNumber(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
 
 // SOC must be a fraction, and time (if the file has it) must not run backwards.
 void checkSeries(const CsvTable& table, const std::string& column) {
