@@ -53,7 +53,7 @@ void runEvaluate(const EvaluateArguments& a) {
                                       setup.objective(waypoints.front(), waypoints.back()));
   const double cost = scorer.objective().weights().of(evaluation.totals());
 
-  std::printf("%zu waypoints: %s\n%s cost %.6g %s\nvalid: %s\n", waypoints.size(), figuresLine(evaluation).c_str(),
+  std::printf("%zu points: %s\n%s cost %.6g %s\nvalid: %s\n", waypoints.size(), figuresLine(evaluation).c_str(),
               a.planning.objective.c_str(), cost, scorer.objective().unit().c_str(), problem ? "false" : "true");
   if (problem) std::printf("violation: %s\n", problem->c_str());
   if (!a.json.empty()) {

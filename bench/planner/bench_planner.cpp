@@ -40,47 +40,34 @@ Scene& warehouse() {
   return scene;
 }
 
-void BM_ConditionsUnderDeck(benchmark::State& state) {
-  const Scene& scene = bridge();
+// Runs `query(x)` with x sweeping the bridge's bays in 13 mm steps.
+template <typename Query>
+void sweep(benchmark::State& state, Query&& query) {
   double x = 6.0;
   for (auto _ : state) {
-    const planner::PointConditions conditions = scene.model.conditionsAt({x, 0.7, 5.85});
-    benchmark::DoNotOptimize(conditions);
+    const auto result = query(x);
+    benchmark::DoNotOptimize(result);
     x = x > 26.0 ? 6.0 : x + 0.013;
   }
+}
+
+void BM_ConditionsUnderDeck(benchmark::State& state) {
+  sweep(state, [](double x) { return bridge().model.conditionsAt({x, 0.7, 5.85}); });
 }
 BENCHMARK(BM_ConditionsUnderDeck);
 
 void BM_MotionCost1mUnderDeck(benchmark::State& state) {
-  const Scene& scene = bridge();
-  double x = 6.0;
-  for (auto _ : state) {
-    const planner::MotionTotals totals = scene.model.integrate({x, 0.7, 5.85}, {x + 1.0, 0.7, 5.85});
-    benchmark::DoNotOptimize(totals);
-    x = x > 26.0 ? 6.0 : x + 0.013;
-  }
+  sweep(state, [](double x) { return bridge().model.integrate({x, 0.7, 5.85}, {x + 1.0, 0.7, 5.85}); });
 }
 BENCHMARK(BM_MotionCost1mUnderDeck);
 
 void BM_MotionCost1mFreeAir(benchmark::State& state) {
-  const Scene& scene = bridge();
-  double x = 6.0;
-  for (auto _ : state) {
-    const planner::MotionTotals totals = scene.model.integrate({x, -7.0, 3.0}, {x + 1.0, -7.0, 3.0});
-    benchmark::DoNotOptimize(totals);
-    x = x > 26.0 ? 6.0 : x + 0.013;
-  }
+  sweep(state, [](double x) { return bridge().model.integrate({x, -7.0, 3.0}, {x + 1.0, -7.0, 3.0}); });
 }
 BENCHMARK(BM_MotionCost1mFreeAir);
 
 void BM_MotionValidity1mUnderDeck(benchmark::State& state) {
-  const Scene& scene = bridge();
-  double x = 6.0;
-  for (auto _ : state) {
-    const bool valid = scene.rules.isMotionValid({x, 0.7, 5.85}, {x + 1.0, 0.7, 5.85});
-    benchmark::DoNotOptimize(valid);
-    x = x > 26.0 ? 6.0 : x + 0.013;
-  }
+  sweep(state, [](double x) { return bridge().rules.isMotionValid({x, 0.7, 5.85}, {x + 1.0, 0.7, 5.85}); });
 }
 BENCHMARK(BM_MotionValidity1mUnderDeck);
 

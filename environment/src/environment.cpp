@@ -222,6 +222,8 @@ std::optional<Violation> Environment::motionViolation(const Eigen::Vector3d& fro
   return segmentViolation(from_m, to_m, options_.motion_step_voxels * grid_.frame().resolution_m(), true);
 }
 
+double Environment::denseStep_m() const { return kDenseStepVoxels * grid_.frame().resolution_m(); }
+
 std::optional<Violation> Environment::checkPathDensely(const std::vector<Eigen::Vector3d>& waypoints_m) const {
   const double step = kDenseStepVoxels * grid_.frame().resolution_m();
   if (waypoints_m.size() == 1) return segmentViolation(waypoints_m[0], waypoints_m[0], step, false);

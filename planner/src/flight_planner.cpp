@@ -103,6 +103,7 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
     throw std::invalid_argument("time limit must be a positive number of seconds");
   requireValidEndpoint(request.start_m, "start");
   requireValidEndpoint(request.goal_m, "goal");
+  if ((request.goal_m - request.start_m).norm() < 1e-6) throw std::invalid_argument("start and goal coincide: nothing to plan");
   PlanResult result;
   result.planner = request.planner.empty() ? defaultPlannerName() : request.planner;
   if (result.planner != "lattice") makeOmplPlanner(result.planner, si_);  // rejects unknown names early
@@ -141,6 +142,21 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
 
   result.waypoints = postProcess(result.waypoints, request.refinement, request.refine);
   result.cost = objective_->pathCost(result.waypoints);
+  for (const std::vector<Eigen::Vector3d>& candidate : request.candidates) {
+    if (candidate.size() < 2 || (candidate.front() - request.start_m).norm() > 1e-9 ||
+        (candidate.back() - request.goal_m).norm() > 1e-9)
+      throw std::invalid_argument("a candidate route must run from the start to the goal");
+    bool valid = true;
+    for (std::size_t k = 1; k < candidate.size() && valid; ++k) valid = rules_.isMotionValid(candidate[k - 1], candidate[k]);
+    if (!valid) continue;
+    const std::vector<Eigen::Vector3d> improved = postProcess(candidate, request.refinement, request.refine);
+    const double cost = objective_->pathCost(improved);
+    if (cost < result.cost) {
+      result.waypoints = improved;
+      result.cost = cost;
+      result.from_candidate = true;
+    }
+  }
   result.total_time_s = secondsSince(started);
   return result;
 }

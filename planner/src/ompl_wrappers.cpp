@@ -49,7 +49,7 @@ bool FlightMotionValidator::checkMotion(const ompl::base::State* from, const omp
     return true;
   }
   ++invalid_;
-  const double step_m = 0.25 * rules_.environment().grid().frame().resolution_m();
+  const double step_m = rules_.environment().denseStep_m();
   const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step_m)));
   int last = 0;
   for (int k = 1; k <= steps && rules_.isStateValid(a + (b - a) * (double(k) / steps)); ++k) last = k;

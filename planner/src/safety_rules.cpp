@@ -40,7 +40,7 @@ SafetyRules::SafetyRules(const environment::Environment& environment, double min
     disc_reach = std::max(disc_reach, rotor.norm() + vehicle.rotor_radius_m);
   gap_implied_by_cylinder_ = disc_reach <= vehicle.inflatedRadius_m() &&
                              vehicle.inflatedTop_m() - vehicle.rotor_plane_height_m >= min_ceiling_gap_m_;
-  motion_step_m_ = environment_.options().motion_step_voxels * environment_.grid().frame().resolution_m();
+  dense_step_m_ = environment_.denseStep_m();
 }
 
 bool SafetyRules::gapOk(const Eigen::Vector3d& body_m) const {
@@ -57,16 +57,6 @@ bool SafetyRules::exempt(const Eigen::Vector3d& body_m) const {
   return false;
 }
 
-bool SafetyRules::segmentNearExemptZone(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
-  const Eigen::Vector3d delta = to_m - from_m;
-  const double length2 = delta.squaredNorm();
-  for (const Eigen::Vector3d& centre : standoff_->exempt_centres_m) {
-    const double t = length2 > 0.0 ? std::clamp((centre - from_m).dot(delta) / length2, 0.0, 1.0) : 0.0;
-    if ((from_m + t * delta - centre).norm() <= standoff_->exempt_radius_m) return true;
-  }
-  return false;
-}
-
 bool SafetyRules::isStateValid(const Eigen::Vector3d& body_m) const {
   if (!baseStateValid(body_m)) return false;
   if (!standoff_ || exempt(body_m)) return true;
@@ -74,31 +64,24 @@ bool SafetyRules::isStateValid(const Eigen::Vector3d& body_m) const {
 }
 
 bool SafetyRules::isMotionValid(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
-  if (standoff_ && segmentNearExemptZone(from_m, to_m)) {
-    // Mixed rules along the motion: check every state at the environment's motion step.
-    const int steps = std::max(1, static_cast<int>(std::ceil((to_m - from_m).norm() / motion_step_m_)));
-    for (int k = 0; k <= steps; ++k)
-      if (!isStateValid(from_m + (to_m - from_m) * (double(k) / steps))) return false;
-    return true;
-  }
-  const environment::Environment& rules = standoff_ ? *standoff_->standoff : environment_;
-  if (!rules.isMotionValid(from_m, to_m)) return false;
-  if (standoff_ && !environment_.isMotionValid(from_m, to_m)) return false;
-  if (gap_implied_by_cylinder_) return true;
-  const int steps = std::max(1, static_cast<int>(std::ceil((to_m - from_m).norm() / motion_step_m_)));
-  for (int k = 0; k <= steps; ++k)
-    if (!gapOk(from_m + (to_m - from_m) * (double(k) / steps))) return false;
+  // Exactly the states the dense re-check visits (Environment::denseStep_m), so an accepted
+  // motion always passes it; isStateValid's distance-field fast path keeps this cheap away
+  // from structure. A coarser step can clip a voxel corner between two checked states.
+  const double length = (to_m - from_m).norm();
+  if (!std::isfinite(length)) return false;
+  const long steps = std::max(1L, static_cast<long>(std::ceil(length / dense_step_m_)));
+  for (long s = 0; s <= steps; ++s)
+    if (!isStateValid(from_m + (to_m - from_m) * (static_cast<double>(s) / steps))) return false;
   return true;
 }
 
 std::optional<std::string> SafetyRules::checkPathDensely(const std::vector<Eigen::Vector3d>& waypoints_m) const {
   if (waypoints_m.empty()) return std::string("the path has no waypoint");
   if (const auto violation = environment_.checkPathDensely(waypoints_m)) return violation->describe();
-  const double step_m = 0.1 * environment_.grid().frame().resolution_m();
   for (std::size_t s = 0; s + 1 < waypoints_m.size(); ++s) {
     const Eigen::Vector3d& a = waypoints_m[s];
     const Eigen::Vector3d& b = waypoints_m[s + 1];
-    const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step_m)));
+    const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / dense_step_m_)));
     for (int k = 0; k <= steps; ++k) {
       const Eigen::Vector3d p = a + (b - a) * (double(k) / steps);
       const double gap = environment_.ceiling(p).nearest_gap_m;

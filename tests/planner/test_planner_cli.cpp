@@ -73,6 +73,8 @@ TEST(PlanCli, BadInputGetsOneLineAndTheRightExitCode) {
       {kUnderRoof + " --planner FastestStar", 2, "--planner"},
       {kUnderRoof + " --objective happiness", 2, "--objective"},
       {kUnderRoof + " --seed 0", 2, "--seed"},
+      {kUnderRoof + " --battery /nonexistent/pack.yaml", 1, "battery file /nonexistent/pack.yaml"},
+      {" --start 7.5,6,7.9 --goal 7.5,6,7.9", 1, "start and goal coincide"},
   };
   for (const Case& c : cases) {
     const CommandResult result = runCeilplan("plan" + kWarehouse + c.arguments + out);
@@ -98,12 +100,6 @@ TEST(PlanCli, NoPathHasItsOwnExitCode) {
   EXPECT_FALSE(std::filesystem::exists(dir / "plan.json"));
 }
 
-}  // namespace
-}  // namespace ceilplan::testing
-
-namespace ceilplan::testing {
-namespace {
-
 TEST(CompareCli, CeilingModeBeatsFreeModeUnderAFlatCeilingAndProjectsTheDuty) {
   const auto dir = scratchDirectory("compare_corridor");
   ASSERT_TRUE(corridor(flatCeiling).tree().writeBinaryConst((dir / "corridor.bt").string()));
@@ -119,6 +115,27 @@ TEST(CompareCli, CeilingModeBeatsFreeModeUnderAFlatCeilingAndProjectsTheDuty) {
                            "map_side.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / file)) << file;
   EXPECT_NE(result.out.find("FEC over the study"), std::string::npos);
+}
+
+TEST(BenchPlannersCli, TablesEachPlannerAgainstTheLatticeReference) {
+  const auto dir = scratchDirectory("bench_corridor");
+  ASSERT_TRUE(corridor(flatCeiling).tree().writeBinaryConst((dir / "corridor.bt").string()));
+  const CommandResult result =
+      runCeilplan("bench-planners --map " + (dir / "corridor.bt").string() + kVehicle +
+                  " --start 0.5,0,3.4 --goal 5.5,0,3.4 --planners BITstar,PRMstar --runs 2 --time-limit-s 0.3 --json " +
+                  (dir / "bench.json").string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("lattice reference"), std::string::npos);
+  const nlohmann::json json = nlohmann::json::parse(readWholeFile(dir / "bench.json"));
+  ASSERT_EQ(json["planners"].size(), 2u);
+  for (const auto& planner : json["planners"]) {
+    EXPECT_EQ(planner["runs"], 2);
+    EXPECT_GE(planner["median_cost_ratio"].get<double>(), 0.9);  // cannot beat the lattice by much
+  }
+  EXPECT_EQ(runCeilplan("bench-planners --map " + (dir / "corridor.bt").string() + kVehicle +
+                        " --start 0.5,0,3.4 --goal 5.5,0,3.4 --planners lattice")
+                .exit_code,
+            1);
 }
 
 }  // namespace

@@ -54,8 +54,9 @@ Comparison planBothModes(const environment::OccupancyMap& map, const Eigen::Vect
     outcome.evaluation = planner::evaluatePath(full, battery::Pack{}, 0.95, outcome.plan.waypoints);
     return outcome;
   };
-  result.ceiling = run(ceiling_rules, full);
   result.free = run(free_rules, free_model);
+  request.candidates = {result.free.plan.waypoints};  // as `ceilplan compare` does
+  result.ceiling = run(ceiling_rules, full);
   return result;
 }
 

@@ -106,6 +106,10 @@ class Environment {
   // Independent re-check of a whole path (waypoints joined by straight segments), at a tenth
   // of a voxel with the exact cylinder test everywhere: the first violation, or none.
   std::optional<Violation> checkPathDensely(const std::vector<Eigen::Vector3d>& waypoints_m) const;
+  // The spacing of checkPathDensely's states along a segment of length L: L / ceil(L / step),
+  // from the segment's start; a planner that checks the same states with isStateValid is
+  // guaranteed to pass the re-check.
+  double denseStep_m() const;
 
  private:
   enum class Direction { Up, Down };

@@ -36,6 +36,10 @@ struct PlanRequest {
   bool refine = true;             // shortcuts + NLopt refinement
   RefinementOptions refinement;
   LatticeOptions lattice;
+  // Known routes from start to goal (e.g. the free-mode plan): each that is valid under these
+  // rules is post-processed too, and returned if cheaper than what the search found, so a
+  // plan is never worse than a route it was shown.
+  std::vector<std::vector<Eigen::Vector3d>> candidates;
 };
 
 struct PlanResult {
@@ -45,6 +49,7 @@ struct PlanResult {
   double search_cost = 0.0;      // as the planner returned it
   double search_time_s = 0.0;
   double total_time_s = 0.0;
+  bool from_candidate = false;   // one of PlanRequest::candidates beat the search
 };
 
 class FlightPlanner {

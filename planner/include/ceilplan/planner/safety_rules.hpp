@@ -52,13 +52,12 @@ class SafetyRules {
   bool gapOk(const Eigen::Vector3d& body_m) const;
   bool baseStateValid(const Eigen::Vector3d& body_m) const;
   bool exempt(const Eigen::Vector3d& body_m) const;
-  bool segmentNearExemptZone(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
 
   const environment::Environment& environment_;
   double min_ceiling_gap_m_;
   bool gap_implied_by_cylinder_;  // the inflated cylinder already keeps the rotor plane that far from ceilings
   std::optional<StandoffZone> standoff_;
-  double motion_step_m_;
+  double dense_step_m_;
 };
 
 }  // namespace ceilplan::planner

@@ -1,0 +1,57 @@
+// SafetyRules: what it accepts, the dense re-check accepts; the standoff of free mode.
+
+#include "planner_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace ceilplan::testing {
+namespace {
+
+double beams(double x, double) { return std::fmod(x + 10.0, 1.5) < 0.3 ? 3.0 : 3.5; }
+
+TEST(SafetyRules, EveryAcceptedMotionPassesTheDenseRecheck) {
+  const environment::OccupancyMap map = corridor(beams);
+  const environment::Environment environment(map, quad());
+  const planner::SafetyRules rules(environment, 0.05);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> x(-0.4, 6.4), y(-2.4, 2.4), z(2.5, 3.45), step(-0.6, 0.6);
+  int accepted = 0;
+  for (int k = 0; k < 3000; ++k) {
+    // Short motions grazing the beams' corners, where a coarse check can clip a voxel.
+    const Eigen::Vector3d a(x(random), y(random), z(random));
+    const Eigen::Vector3d b = a + Eigen::Vector3d(step(random), step(random), 0.3 * step(random));
+    if (!environment.contains(b) || !rules.isMotionValid(a, b)) continue;
+    ++accepted;
+    EXPECT_FALSE(rules.checkPathDensely({a, b})) << a.transpose() << " -> " << b.transpose();
+  }
+  EXPECT_GT(accepted, 300);
+}
+
+TEST(SafetyRules, AMinimumGapLargerThanTheCylinderAllowsIsEnforced) {
+  const environment::OccupancyMap map = corridor(flatCeiling);
+  const environment::Environment environment(map, quad());
+  const planner::SafetyRules loose(environment, 0.05), strict(environment, 0.15);
+  const Eigen::Vector3d hugging(3.0, 0.0, bodyHeightUnder(3.5));  // rotor plane 7 cm under the ceiling
+  EXPECT_TRUE(loose.isStateValid(hugging));
+  EXPECT_FALSE(strict.isStateValid(hugging));
+  EXPECT_FALSE(strict.isMotionValid({3.0, 0.0, 2.5}, hugging));
+  EXPECT_TRUE(strict.checkPathDensely({{3.0, 0.0, 2.5}, hugging}));
+}
+
+TEST(SafetyRules, FreeModeKeepsTheStandoffExceptNearStartAndGoal) {
+  const environment::OccupancyMap map = corridor(flatCeiling);
+  const environment::Environment environment(map, quad());
+  const environment::Environment standoff(map, planner::withStandoff(quad(), 1.0));
+  const Eigen::Vector3d start(0.5, 0.0, bodyHeightUnder(3.5)), goal(5.5, 0.0, bodyHeightUnder(3.5));
+  const planner::SafetyRules rules(environment, 0.05, planner::standoffZone(standoff, environment, 1.0, start, goal));
+  EXPECT_TRUE(rules.isStateValid(start));
+  EXPECT_TRUE(rules.isStateValid({0.5, 0.0, 2.0}));
+  EXPECT_FALSE(rules.isStateValid({3.0, 0.0, bodyHeightUnder(3.5)}));  // mid-corridor under the ceiling
+  EXPECT_TRUE(rules.isStateValid({3.0, 0.0, 2.0}));
+  EXPECT_FALSE(rules.isMotionValid(start, goal));
+}
+
+}  // namespace
+}  // namespace ceilplan::testing
