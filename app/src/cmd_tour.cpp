@@ -4,6 +4,7 @@
 
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
+#include "map_views.hpp"
 #include "mission_file.hpp"
 #include "output.hpp"
 #include "planning_setup.hpp"
@@ -77,6 +78,11 @@ void runTour(TourArguments a) {
   if (tours.size() == 2) {
     const std::string table = comparisonTable(tours[0], tours[1]);
     std::printf("\n%s", table.c_str());
+    std::vector<Eigen::Vector3d> routes;
+    for (const TourResult& tour : tours)
+      for (const auto& samples : tour.sortie_samples)
+        for (const planner::PathSample& sample : samples) routes.push_back(sample.position_m);
+    writeMapViews(out, setup.environment(), routes);
     writeTextAtomically(out / "comparison.txt", [&](std::ostream& stream) { stream << table; });
     writeTextAtomically(out / "comparison.json",
                         [&](std::ostream& stream) { stream << std::setw(2) << comparisonJson(tours[0], tours[1]) << '\n'; });
