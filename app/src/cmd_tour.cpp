@@ -50,8 +50,8 @@ void runTour(TourArguments a) {
     a.mode = (mission.mode == "ceiling" || mission.mode == "free" || mission.mode == "both") ? mission.mode : "ceiling";
   a.options.seed = a.seed ? *a.seed : mission.seed;
   if (a.options.planner != "lattice") {
-    // OMPL draws from generators seeded once per process; with two threads the queries take
-    // them in scheduling order, so OMPL legs are reproducible only with --workers 1.
+    // OMPL's generators are seeded once per process from the tour seed; the queries draw from
+    // them in scheduling order and stop at a wall-clock limit, so legs are not bit-reproducible.
     if (a.options.seed == 0 || a.options.seed > 0xffffffffULL)
       throw std::invalid_argument("--seed must lie in [1, 4294967295] for an OMPL planner");
     planner::seedOmpl(static_cast<std::uint32_t>(a.options.seed));
@@ -101,10 +101,10 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
       ->check(CLI::IsMember({"ceiling", "free", "both"}));
   command->add_option("--seed", a->seed, "seed of the order heuristic (default: the mission's)")
       ->check(CLI::Range(1u, 4294967295u));
-  command->add_option("--planner", a->options.planner, "leg planner (lattice: deterministic A*)")
+  command->add_option("--planner", a->options.planner, "leg planner (lattice: deterministic A*, reproducible legs, slow on large maps)")
       ->capture_default_str()
       ->check(CLI::IsMember(planner::plannerNames()));
-  command->add_option("--time-limit-s", a->options.time_limit_s, "search time per leg")
+  command->add_option("--time-limit-s", a->options.time_limit_s, "search time per leg (refinement may take as long again)")
       ->capture_default_str()->check(positiveFinite());
   command->add_option("--lattice-stride", a->options.lattice_stride, "lattice planner: spacing in voxels")
       ->capture_default_str()->check(CLI::Range(1, 16));

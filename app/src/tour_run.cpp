@@ -23,6 +23,11 @@ std::string pointText(const Eigen::Vector3d& p) {
 // minimum gap, so the leg's end passes the dense re-check with its rounding.
 constexpr double kViewpointGapMarginM = 0.01;
 
+// A leg the chosen planner misses is searched again this many times longer, then by the lattice
+// planner for up to kLatticeFallbackTimeS.
+constexpr double kRetryTimeFactor = 4.0;
+constexpr double kLatticeFallbackTimeS = 60.0;
+
 std::vector<TourStop> chooseStops(const MissionFile& mission, const PlanningSetup& setup, PlanningMode mode,
                                   const TourOptions& options) {
   planner::ViewpointOptions viewpoint_options;
@@ -162,16 +167,29 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
     request.goal_m = b;
     request.planner = options.planner;
     request.time_limit_s = options.time_limit_s;
+    request.refinement.time_limit_s = options.time_limit_s;
     request.lattice.stride_voxels = options.lattice_stride;
-    try {
-      return flight_planner.plan(request).waypoints;
-    } catch (const planner::NoPathFound& e) {
-      throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] + ": " +
-                        e.what());
-    } catch (const std::exception& e) {
-      throw std::runtime_error(tour.mode + " mode: leg " + tour.names[from] + " -> " + tour.names[to] + ": " +
-                               e.what());
+    // An anytime planner may miss a narrow passage in a short search: retry with a longer one,
+    // then with the lattice planner, which is complete over its lattice.
+    std::string failures;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      if (attempt == 1 && options.planner == "lattice") break;
+      if (attempt == 1) request.time_limit_s = kRetryTimeFactor * options.time_limit_s;
+      if (attempt == 2) {
+        request.planner = "lattice";
+        request.time_limit_s = kLatticeFallbackTimeS;
+      }
+      try {
+        return flight_planner.plan(request).waypoints;
+      } catch (const planner::NoPathFound& e) {
+        failures += std::string(failures.empty() ? "" : "; ") + e.what();
+      } catch (const std::exception& e) {
+        throw std::runtime_error(tour.mode + " mode: leg " + tour.names[from] + " -> " + tour.names[to] + ": " +
+                                 e.what());
+      }
     }
+    throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] + ": " +
+                      failures);
   };
   const battery::Pack& pack = mission.battery.pack;
   const LegScorer score = [&](const std::vector<Eigen::Vector3d>& waypoints) {
