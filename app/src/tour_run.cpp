@@ -25,7 +25,7 @@ constexpr double kViewpointGapMarginM = 0.01;
 
 // A leg the chosen planner misses is searched again this many times longer, then by the lattice
 // planner for up to kLatticeFallbackTimeS.
-constexpr double kRetryTimeFactor = 4.0;
+constexpr double kRetryTimeFactor = 10.0;
 constexpr double kLatticeFallbackTimeS = 60.0;
 
 std::vector<TourStop> chooseStops(const MissionFile& mission, const PlanningSetup& setup, PlanningMode mode,
