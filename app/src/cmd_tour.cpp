@@ -43,7 +43,11 @@ void runTour(TourArguments a) {
   const MissionFile mission = readMissionFile(a.mission);
   std::optional<Autopilot> autopilot;
   if (!a.no_export) {
-    mission.requireOrigin();  // fail before planning, not after
+    try {
+      mission.requireOrigin();  // fail before planning, not after
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string(e.what()) + "; or pass --no-export");
+    }
     autopilot = a.autopilot == "ardupilot" ? Autopilot::ArduPilot : Autopilot::PX4;
   }
   if (a.mode.empty())
