@@ -3,7 +3,9 @@
 
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
+#include "duty_projection.hpp"
 #include "errors.hpp"
+#include "map_views.hpp"
 #include "output.hpp"
 #include "plan_output.hpp"
 #include "planning_setup.hpp"
@@ -41,26 +43,6 @@ struct ModeResult {
   int repeats = 1;
   battery::DutyResult duty;
 };
-
-// The plan's current profile as discharge segments of at most a second each (coulomb counting
-// is linear, so merging keeps charge and FEC exact), repeated to fill the mission's flight time.
-battery::LoadProfile flightProfile(const planner::PathEvaluation& evaluation, int repeats) {
-  battery::LoadProfile once;
-  double bin_s = 0.0, bin_as = 0.0;
-  for (std::size_t k = 1; k < evaluation.samples.size(); ++k) {
-    const planner::PathSample &a = evaluation.samples[k - 1], &b = evaluation.samples[k];
-    const double dt = b.t_s - a.t_s;
-    bin_s += dt;
-    bin_as += 0.5 * (a.current_a + b.current_a) * dt;
-    if (bin_s >= 1.0 || k + 1 == evaluation.samples.size()) {
-      if (bin_s > 0.0) once.push_back(battery::Segment::discharge(bin_as / bin_s, bin_s));
-      bin_s = bin_as = 0.0;
-    }
-  }
-  battery::LoadProfile profile;
-  for (int r = 0; r < repeats; ++r) profile.insert(profile.end(), once.begin(), once.end());
-  return profile;
-}
 
 ModeResult planMode(const CompareArguments& a, const PlanningSetup& setup, PlanningMode mode,
                     const Eigen::Vector3d& start, const Eigen::Vector3d& goal,
@@ -102,45 +84,6 @@ void projectDuty(const CompareArguments& a, const BatteryChoice& battery, ModeRe
     throw std::runtime_error(result.name + " mode: flying the plan " + std::to_string(result.repeats) +
                              " times per mission depletes the pack (" + e.what() + "); lower --flight-min");
   }
-}
-
-// For scripts/plot-compare: seen from above, the height of the structure over the paths; from
-// the side, occupied voxels within 1 m of the paths' y band.
-void writeMapViews(const std::filesystem::path& dir, const environment::Environment& environment,
-                   const std::vector<ModeResult>& modes) {
-  Eigen::AlignedBox3d band;
-  for (const ModeResult& m : modes)
-    for (const Eigen::Vector3d& p : m.plan.waypoints) band.extend(p);
-  band.min().array() -= 1.0;
-  band.max().array() += 1.0;
-  const environment::VoxelGrid& grid = environment.grid();
-  const environment::GridFrame& frame = grid.frame();
-  const auto inBand = [&](int axis, int index) {
-    const double c = frame.centreOf(axis, index);
-    return c >= band.min()[axis] && c <= band.max()[axis];
-  };
-  // Top: the height of the first structure above the lowest path point, per column.
-  const double reference_z = band.min().z() + 1.0;
-  writeTextAtomically(dir / "map_top.csv", [&](std::ostream& out) {
-    out << "x_m,y_m,ceiling_m\n";
-    for (int j = 0; j < frame.size()[1]; ++j)
-      for (int i = 0; i < frame.size()[0]; ++i) {
-        if (!inBand(0, i) || !inBand(1, j)) continue;
-        const environment::ColumnIndex::Boundary above = environment.columns().above(i, j, reference_z);
-        if (above.state == environment::CellState::Occupied)
-          out << frame.centreOf(0, i) << ',' << frame.centreOf(1, j) << ',' << above.face_m << '\n';
-      }
-  });
-  writeTextAtomically(dir / "map_side.csv", [&](std::ostream& out) {
-    out << "x_m,z_m\n";
-    for (int k = 0; k < frame.size()[2]; ++k)
-      for (int i = 0; i < frame.size()[0]; ++i)
-        for (int j = 0; j < frame.size()[1]; ++j)
-          if (inBand(0, i) && inBand(1, j) && inBand(2, k) && grid.at(i, j, k) == environment::CellState::Occupied) {
-            out << frame.centreOf(0, i) << ',' << frame.centreOf(2, k) << '\n';
-            break;
-          }
-  });
 }
 
 std::string cell(double value, int decimals) {
@@ -211,7 +154,9 @@ void runCompare(const CompareArguments& a) {
                            {"fec_total", reduction(ceiling.duty.fecTotal(), free.duty.fecTotal())}};
   const std::filesystem::path out(a.out);
   writeTextAtomically(out / "compare.json", [&](std::ostream& stream) { stream << std::setw(2) << json << '\n'; });
-  writeMapViews(out, setup.environment(), modes);
+  std::vector<Eigen::Vector3d> routes;
+  for (const ModeResult& m : modes) routes.insert(routes.end(), m.plan.waypoints.begin(), m.plan.waypoints.end());
+  writeMapViews(out, setup.environment(), routes);
   std::printf("\nwrote %s/{compare.json, ceiling/, free/, map_top.csv, map_side.csv}; figures: scripts/plot-compare %s\n",
               out.c_str(), out.c_str());
 }

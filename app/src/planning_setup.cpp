@@ -178,6 +178,13 @@ PlanningSetup::Mode PlanningSetup::mode(PlanningMode mode, const Eigen::Vector3d
   }
   options.proximity_effects = false;
   result.model = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, options);
+  const planner::StandoffZone zone =
+      planner::standoffZone(standoffEnvironment(), *environment_, arguments_.standoff_m, start_m, goal_m);
+  result.rules = std::make_unique<planner::SafetyRules>(*environment_, arguments_.min_ceiling_gap_m, zone);
+  return result;
+}
+
+const environment::Environment& PlanningSetup::standoffEnvironment() const {
   if (!standoff_environment_) {
     Progress progress("indexing with the " + std::to_string(arguments_.standoff_m) + " m standoff");
     standoff_environment_ = std::make_unique<environment::Environment>(
@@ -185,10 +192,7 @@ PlanningSetup::Mode PlanningSetup::mode(PlanningMode mode, const Eigen::Vector3d
         [&](double f) { progress.update(f); });
     progress.finish();
   }
-  const planner::StandoffZone zone =
-      planner::standoffZone(*standoff_environment_, *environment_, arguments_.standoff_m, start_m, goal_m);
-  result.rules = std::make_unique<planner::SafetyRules>(*environment_, arguments_.min_ceiling_gap_m, zone);
-  return result;
+  return *standoff_environment_;
 }
 
 planner::ObjectiveChoice PlanningSetup::objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const {

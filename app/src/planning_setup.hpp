@@ -93,6 +93,9 @@ class PlanningSetup {
     std::unique_ptr<planner::SafetyRules> rules;
   };
   Mode mode(PlanningMode mode, const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
+  // The map indexed with the conventional standoff as the vehicle's margins (free mode), built
+  // on first use; call it once before sharing the setup between threads.
+  const environment::Environment& standoffEnvironment() const;
 
   // The objective, with ageing rates measured for the route's expected depth of discharge.
   planner::ObjectiveChoice objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;

@@ -1,0 +1,73 @@
+#pragma once
+// One inspection tour in one mode, end to end: viewpoints, legs between every pair of places
+// (home and the viewpoints), the visiting order, the sorties, the flown samples, the wear under
+// every ageing model and the founding paper's month-long duty projection. docs/tours.md.
+
+#include "mission_file.hpp"
+#include "planning_setup.hpp"
+#include "tour_legs.hpp"
+
+#include "ceilplan/battery/duty_cycle.hpp"
+#include "ceilplan/planner/sortie_plan.hpp"
+#include "ceilplan/planner/tour_order.hpp"
+#include "ceilplan/planner/viewpoint.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ceilplan::app {
+
+struct TourOptions {
+  std::uint64_t seed = 1;               // the order heuristic's; OMPL's when an OMPL planner plans the legs
+  // The leg planner. OMPL's anytime planners stop at a wall-clock limit, so their legs vary a
+  // little from run to run (and with thread scheduling); "lattice" (deterministic A*) gives
+  // reproducible legs but takes minutes on the shipped maps (docs/tours.md).
+  std::string planner = "BITstar";
+  double time_limit_s = 0.5;            // search time per leg, and as much again for refinement
+  int lattice_stride = 4;               // voxels between lattice nodes
+  std::string ageing_model = "xu";      // the split minimises this model's wear
+  double free_standoff_max_m = 3.0;     // free mode: farthest viewpoint (a conventional planner zooms)
+  int workers = 2;                      // threads planning legs
+  double temperature_c = 25.0;          // cell temperature for the ageing models
+  // Duty projection, the founding paper's month: the whole tour is one mission.
+  int missions_per_day = 15;
+  int days = 30;
+  double idle_min = 5.0;
+  double charge_max_min = 60.0;  // per sortie, back to the start SOC
+};
+
+struct TourStop {
+  planner::InspectionTarget target;  // its standoff range as searched in this mode
+  planner::Viewpoint viewpoint;
+};
+
+struct TourResult {
+  std::string mode;
+  TourOptions options;
+  std::vector<std::string> names;             // places: 0 home, k the target of stops[k - 1]
+  std::vector<Eigen::Vector3d> places_m;
+  std::vector<TourStop> stops;
+  std::vector<std::vector<TourLeg>> legs;     // legs[i][j], i != j
+  planner::TourOrder order;
+  planner::SortiePlan plan;
+  // Per sortie, the flown samples from take-off (dwells included, as hovering samples), the
+  // SOC counted from the start SOC over the sortie's own samples.
+  std::vector<std::vector<planner::PathSample>> sortie_samples;
+  std::vector<planner::PlanWear> wear;        // fec, xu, woehler, schmalstieg
+  battery::DutyResult duty;
+  double start_soc = 0.0;
+  double reserve_soc = 0.0;
+};
+
+// The planning flags a mission file stands for: its map, vehicle, battery and speeds.
+PlanningArguments planningArguments(const MissionFile& mission);
+
+// Throws std::invalid_argument for invalid home or a target without a viewpoint (named),
+// NoPathError for a leg without a path (naming both places), std::invalid_argument from
+// planSorties for a target no single sortie can reach and return from, std::runtime_error if a
+// leg fails the dense re-check.
+TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, PlanningMode mode,
+                    const TourOptions& options);
+
+}  // namespace ceilplan::app

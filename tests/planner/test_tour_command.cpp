@@ -1,0 +1,264 @@
+// `ceilplan tour` end to end on a small analytic scene: a hall whose right part has a deck
+// (a slab 3 m up) and a pier, four targets, home on the left. Each test writes the map and a
+// mission file, runs the real executable and reads what it wrote.
+
+#include "autopilot_export.hpp"
+#include "run_command.hpp"
+#include "vehicle_geometry_file.hpp"
+
+#include "ceilplan/environment/environment.hpp"
+#include "ceilplan/environment/occupancy_map.hpp"
+#include "ceilplan/planner/safety_rules.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <octomap/OcTree.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace ceilplan {
+namespace {
+
+using testing::readWholeFile;
+using testing::runCeilplan;
+using testing::scratchDirectory;
+
+const std::filesystem::path kVehicle = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/vehicles/quad.yaml";
+
+bool occupied(double x, double y, double z) {
+  if (z < 0.2) return true;                                        // floor
+  if (x >= 2.0 && z >= 3.0) return true;                          // deck slab, 3 m up, over x >= 2
+  return x >= 4.2 && x < 5.8 && y >= -0.8 && y < 0.8;             // pier under the deck
+}
+
+// The hall at 0.1 m: x [-1, 9), y [-4, 4), z [0, 3.4); every voxel known.
+void writeHall(const std::filesystem::path& file) {
+  const double resolution = 0.1;
+  octomap::OcTree tree(resolution);
+  for (double z = 0.05; z < 3.4; z += resolution)
+    for (double y = -3.95; y < 4.0; y += resolution)
+      for (double x = -0.95; x < 9.0; x += resolution) {
+        const bool occ = occupied(x, y, z);
+        tree.setNodeValue(octomap::point3d(x, y, z), occ ? tree.getClampingThresMaxLog() : tree.getClampingThresMinLog(),
+                          true);
+      }
+  tree.updateInnerOccupancy();
+  tree.prune();
+  ASSERT_TRUE(tree.writeBinary(file.string()));
+}
+
+struct MissionText {
+  std::string battery = "{capacity_ah: 5.2, start_soc: 0.95, reserve_soc: 0.25, charge_current_a: 10.4}";
+  std::string origin = "origin: {lat: 52.218, lon: 0.0923, alt: 12.0}\n";
+  std::string extra_targets;
+};
+
+// DIR/hall.bt and DIR/mission.yaml.
+std::filesystem::path writeMission(const std::filesystem::path& dir, const MissionText& text = {}) {
+  writeHall(dir / "hall.bt");
+  std::ofstream out(dir / "mission.yaml");
+  out << "map: hall.bt\nvehicle: " << kVehicle.string() << "\nbattery: " << text.battery
+      << "\nhome: [0.0, 0.0, 0.5]\n"
+      << text.origin << "seed: 3\ntargets:\n"
+      << "  - {name: deck_a, point: [3.0, -1.5, 3.0], dwell_s: 10, standoff_m: [0.3, 1.5]}\n"
+      << "  - {name: deck_b, point: [7.0, 1.5, 3.0], dwell_s: 12, standoff_m: [0.3, 1.5]}\n"
+      << "  - {name: deck_c, point: [8.0, -2.0, 3.0], dwell_s: 8, standoff_m: [0.3, 1.5]}\n"
+      << "  - {name: pier_face, point: [5.0, -0.8, 1.5], dwell_s: 15, standoff_m: [0.3, 1.5]}\n"
+      << text.extra_targets;
+  return dir / "mission.yaml";
+}
+
+nlohmann::json readJson(const std::filesystem::path& file) { return nlohmann::json::parse(readWholeFile(file)); }
+
+std::vector<Eigen::Vector3d> points(const nlohmann::json& list) {
+  std::vector<Eigen::Vector3d> result;
+  for (const auto& p : list) result.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+  return result;
+}
+
+// The lattice planner: reproducible legs, and fast on a map this small.
+const std::string kFast = " --planner lattice --lattice-stride 4 --time-limit-s 20";
+
+// What one run of both modes wrote, checked by the specifications below (one run: planning is
+// the slow part, and ctest runs every test in its own process).
+struct BothModesRun {
+  std::filesystem::path dir;
+  testing::CommandResult result;
+};
+
+void visitsEveryTargetWithItsDwellAboveTheReserve(const BothModesRun& run) {
+  SCOPED_TRACE("VisitsEveryTargetWithItsDwellAboveTheReserve");
+  for (const std::string mode : {"ceiling", "free"}) {
+    const nlohmann::json tour = readJson(run.dir / "out" / mode / "tour.json");
+    EXPECT_EQ(tour["mode"], mode);
+    EXPECT_EQ(tour["targets_total"], 4);
+    EXPECT_EQ(tour["targets_visited"], 4);
+    std::map<std::string, int> visits;
+    for (const auto& sortie : tour["sorties"]) {
+      EXPECT_GE(sortie["min_soc"].get<double>(), tour["reserve_soc"].get<double>()) << mode;
+      EXPECT_FALSE(sortie["reason"].get<std::string>().empty());
+      for (const auto& name : sortie["targets"]) ++visits[name.get<std::string>()];
+    }
+    for (const std::string name : {"deck_a", "deck_b", "deck_c", "pier_face"}) EXPECT_EQ(visits[name], 1) << mode << name;
+    EXPECT_GE(tour["min_soc"].get<double>(), tour["reserve_soc"].get<double>());
+    for (const char* key : {"fec", "xu", "woehler", "schmalstieg"}) EXPECT_GT(tour["wear"][key]["cycle_wear"], 0.0) << key;
+
+    // path.csv hovers at each viewpoint for the target's dwell.
+    std::map<std::string, double> dwell_of;
+    for (const auto& target : tour["targets"]) dwell_of[target["name"]] = target["dwell_s"];
+    std::ifstream csv(run.dir / "out" / mode / "path.csv");
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line, "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie");
+    std::vector<std::vector<double>> rows;
+    while (std::getline(csv, line)) {
+      std::vector<double> row;
+      std::stringstream fields(line);
+      std::string field;
+      while (std::getline(fields, field, ',')) row.push_back(field.empty() ? NAN : std::stod(field));
+      rows.push_back(row);
+    }
+    for (const auto& target : tour["targets"]) {
+      const Eigen::Vector3d viewpoint = points(nlohmann::json::array({target["viewpoint"]}))[0];
+      double hovered_s = 0.0;
+      for (std::size_t k = 1; k < rows.size(); ++k)
+        if (rows[k][4] == 0.0 && rows[k - 1][4] == 0.0 &&
+            (Eigen::Vector3d(rows[k][1], rows[k][2], rows[k][3]) - viewpoint).norm() < 1e-6)
+          hovered_s += rows[k][0] - rows[k - 1][0];
+      EXPECT_NEAR(hovered_s, target["dwell_s"].get<double>(), 1e-6) << mode << " " << target["name"];
+    }
+  }
+}
+
+void everyLegPassesTheDenseRecheck(const BothModesRun& run) {
+  SCOPED_TRACE("EveryLegPassesTheDenseRecheck");
+  const environment::OccupancyMap map = environment::OccupancyMap::load(run.dir / "hall.bt");
+  const environment::Environment environment(map, app::readVehicleGeometry(kVehicle));
+  const planner::SafetyRules rules(environment, 0.05);
+  int legs = 0;
+  for (const std::string mode : {"ceiling", "free"}) {
+    const nlohmann::json tour = readJson(run.dir / "out" / mode / "tour.json");
+    for (const auto& sortie : tour["sorties"])
+      for (const auto& leg : sortie["legs"]) {
+        const auto violation = rules.checkPathDensely(points(leg["waypoints"]));
+        EXPECT_FALSE(violation) << mode << " " << leg["from"] << " -> " << leg["to"] << ": " << *violation;
+        ++legs;
+      }
+  }
+  EXPECT_GE(legs, 10);
+}
+
+void ceilingModeWearsLessThanFreeModeUnderEveryModel(const BothModesRun& run) {
+  SCOPED_TRACE("CeilingModeWearsLessThanFreeModeUnderEveryModel");
+  const nlohmann::json comparison = readJson(run.dir / "out" / "comparison.json");
+  for (const char* model : {"fec", "xu", "woehler", "schmalstieg"}) {
+    EXPECT_LT(comparison["ceiling"]["wear"][model]["cycle_wear"].get<double>(),
+              comparison["free"]["wear"][model]["cycle_wear"].get<double>())
+        << model;
+    EXPECT_GT(comparison["reduction_pct"][std::string("wear_") + model].get<double>(), 0.0) << model;
+  }
+  EXPECT_NE(run.result.out.find("reduction %"), std::string::npos) << run.result.out;
+  EXPECT_TRUE(std::filesystem::exists(run.dir / "out" / "comparison.txt"));
+}
+
+void planFileIsCompleteAndReproducesTheRouteWithinACentimetre(const BothModesRun& run) {
+  SCOPED_TRACE("PlanFileIsCompleteAndReproducesTheRouteWithinACentimetre");
+  const nlohmann::json tour = readJson(run.dir / "out" / "ceiling" / "tour.json");
+  ASSERT_EQ(tour["sorties"].size(), 1u);
+  const nlohmann::json plan = readJson(run.dir / "out" / "ceiling" / "mission.plan");
+  for (const char* key : {"fileType", "version", "groundStation", "mission", "geoFence", "rallyPoints"})
+    EXPECT_TRUE(plan.contains(key)) << key;
+  EXPECT_EQ(plan["fileType"], "Plan");
+  const nlohmann::json& mission = plan["mission"];
+  for (const char* key : {"version", "firmwareType", "vehicleType", "cruiseSpeed", "hoverSpeed", "plannedHomePosition", "items"})
+    EXPECT_TRUE(mission.contains(key)) << key;
+
+  // The route as the tour flies it: each leg's waypoints after its first, a hold at each target.
+  std::vector<Eigen::Vector3d> route;
+  std::vector<double> holds;
+  std::map<std::string, double> dwell_of;
+  for (const auto& target : tour["targets"]) dwell_of[target["name"]] = target["dwell_s"];
+  for (const auto& leg : tour["sorties"][0]["legs"]) {
+    const std::vector<Eigen::Vector3d> waypoints = points(leg["waypoints"]);
+    for (std::size_t i = 1; i < waypoints.size(); ++i) {
+      route.push_back(waypoints[i]);
+      holds.push_back(0.0);
+    }
+    if (leg["to"] != "home") holds.back() = dwell_of[leg["to"]];
+  }
+  const app::GeodeticOrigin origin{52.218, 0.0923, 12.0};
+  const double home_amsl_m = mission["plannedHomePosition"][2].get<double>();
+  const nlohmann::json& items = mission["items"];
+  ASSERT_EQ(items.size(), route.size());
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const nlohmann::json& item = items[k];
+    for (const char* key : {"type", "command", "frame", "autoContinue", "doJumpId", "params"})
+      ASSERT_TRUE(item.contains(key)) << key;
+    EXPECT_EQ(item["command"], 16);
+    EXPECT_EQ(item["frame"], 3);
+    ASSERT_EQ(item["params"].size(), 7u);
+    const auto& params = item["params"];
+    EXPECT_NEAR(params[0].get<double>(), holds[k], 1e-9) << k;
+    const Eigen::Vector3d local = app::toLocal(
+        origin, {params[4].get<double>(), params[5].get<double>(), params[6].get<double>() + home_amsl_m});
+    EXPECT_LT((local - route[k]).norm(), 0.01) << k;
+  }
+  const std::string wpl = readWholeFile(run.dir / "out" / "ceiling" / "mission.waypoints");
+  EXPECT_EQ(wpl.rfind("QGC WPL 110\n", 0), 0u);
+}
+
+TEST(TourCommand, BothModesOnTheHall) {
+  BothModesRun run{scratchDirectory("tour_both"), {}};
+  const std::filesystem::path mission = writeMission(run.dir);
+  run.result = runCeilplan("tour --mission " + mission.string() + " --mode both --out " + (run.dir / "out").string() + kFast);
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
+  visitsEveryTargetWithItsDwellAboveTheReserve(run);
+  everyLegPassesTheDenseRecheck(run);
+  ceilingModeWearsLessThanFreeModeUnderEveryModel(run);
+  planFileIsCompleteAndReproducesTheRouteWithinACentimetre(run);
+}
+
+// Bad input: one clear line naming the problem, a non-zero exit, no tour written.
+void expectFailure(const std::string& name, const MissionText& text, const std::string& flags, int exit_code,
+                   const std::string& expected) {
+  const std::filesystem::path dir = scratchDirectory("tour_bad_" + name);
+  const std::filesystem::path mission = writeMission(dir, text);
+  const testing::CommandResult result =
+      runCeilplan("tour --mission " + mission.string() + " --out " + (dir / "out").string() + kFast + flags);
+  EXPECT_EQ(result.exit_code, exit_code) << name << ": " << result.err;
+  EXPECT_NE(result.err.find(expected), std::string::npos) << name << ": " << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << name << ": " << result.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "tour.json")) << name;
+}
+
+TEST(TourCommand, TargetInsideAnObstacleIsNamed) {
+  MissionText text;
+  text.extra_targets = "  - {name: buried, point: [5.0, 0.0, 1.5], dwell_s: 5, standoff_m: [0.3, 0.6]}\n";
+  expectFailure("buried", text, "", 1, "target 'buried'");
+}
+
+TEST(TourCommand, ReserveAboveStartSocIsRejected) {
+  MissionText text;
+  text.battery = "{capacity_ah: 5.2, start_soc: 0.5, reserve_soc: 0.6, charge_current_a: 10.4}";
+  expectFailure("reserve", text, "", 1, "reserve");
+}
+
+TEST(TourCommand, TargetNoSortieCanReachAndReturnFromIsNamed) {
+  MissionText text;
+  text.battery = "{capacity_ah: 0.6, start_soc: 0.95, reserve_soc: 0.25, charge_current_a: 1.2}";
+  text.extra_targets = "  - {name: long_look, point: [7.0, -1.0, 3.0], dwell_s: 200, standoff_m: [0.3, 1.5]}\n";
+  expectFailure("long_look", text, " --mode ceiling", 1, "long_look");
+}
+
+TEST(TourCommand, MissingGeodeticOriginFailsWhenExporting) {
+  MissionText text;
+  text.origin = "";
+  expectFailure("origin", text, "", 1, "origin");
+}
+
+}  // namespace
+}  // namespace ceilplan
