@@ -6,8 +6,10 @@
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
+#include "ceilplan/planner/path_refinement.hpp"
 
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 
 namespace ceilplan::app {
@@ -23,10 +25,10 @@ std::string pointText(const Eigen::Vector3d& p) {
 // minimum gap, so the leg's end passes the dense re-check with its rounding.
 constexpr double kViewpointGapMarginM = 0.01;
 
-// A leg the chosen planner misses is searched again this many times longer, then by the lattice
-// planner for up to kLatticeFallbackTimeS.
-constexpr double kRetryTimeFactor = 10.0;
-constexpr double kLatticeFallbackTimeS = 60.0;
+// A leg an OMPL planner misses is searched again this many times longer, twice: BIT* finds the
+// free-mode bridge's long legs through the standoff environment in a few seconds, but not
+// always in 0.5 s.
+constexpr double kRetryTimeFactors[] = {10.0, 40.0};
 
 std::vector<TourStop> chooseStops(const MissionFile& mission, const PlanningSetup& setup, PlanningMode mode,
                                   const TourOptions& options) {
@@ -169,16 +171,18 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
     request.time_limit_s = options.time_limit_s;
     request.refinement.time_limit_s = options.time_limit_s;
     request.lattice.stride_voxels = options.lattice_stride;
-    // An anytime planner may miss a narrow passage in a short search: retry with a longer one,
-    // then with the lattice planner, which is complete over its lattice.
+    // A clear straight line needs no search: the refinement bends it where that saves charge
+    // (up towards a ceiling), and the dense re-check still applies.
+    if (options.straight_when_clear && planning.rules->isMotionValid(a, b)) {
+      const double pieces = static_cast<double>(request.refinement.max_waypoints - 1);
+      return flight_planner.postProcess(planner::subdivide({a, b}, (b - a).norm() / pieces + 1e-9),
+                                        request.refinement);
+    }
+    // An anytime planner may miss a narrow passage in a short search: search again, longer.
     std::string failures;
-    for (int attempt = 0; attempt < 3; ++attempt) {
-      if (attempt == 1 && options.planner == "lattice") break;
-      if (attempt == 1) request.time_limit_s = kRetryTimeFactor * options.time_limit_s;
-      if (attempt == 2) {
-        request.planner = "lattice";
-        request.time_limit_s = kLatticeFallbackTimeS;
-      }
+    const int attempts = options.planner == "lattice" ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
+    for (int attempt = 0; attempt < attempts; ++attempt) {
+      if (attempt > 0) request.time_limit_s = kRetryTimeFactors[attempt - 1] * options.time_limit_s;
       try {
         return flight_planner.plan(request).waypoints;
       } catch (const planner::NoPathFound& e) {

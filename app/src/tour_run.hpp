@@ -26,6 +26,7 @@ struct TourOptions {
   std::string planner = "BITstar";
   double time_limit_s = 0.5;            // search time per leg, and as much again for refinement
   int lattice_stride = 4;               // voxels between lattice nodes
+  bool straight_when_clear = true;      // a pair joined by a valid straight motion skips the search
   std::string ageing_model = "xu";      // the split minimises this model's wear
   double free_standoff_max_m = 3.0;     // free mode: farthest viewpoint (a conventional planner zooms)
   int workers = 2;                      // threads planning legs
