@@ -5,14 +5,30 @@
 #include "ceilplan/planner/state_validity_checker.hpp"
 
 #include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/RealVectorStateProjections.h>
 
 #include <algorithm>
 #include <cmath>
 
 namespace ceilplan::planner {
+namespace {
+
+// Projects onto the position itself. OMPL's default projection of a 3-D real vector space is a
+// random matrix (ProjectionMatrix::ComputeRandom) that Debian's libompl 1.5.2 frees in a way
+// AddressSanitizer reports as a bad free, which stopped every planning command under ASan; the
+// identity needs no random draw and suits projection-based planners as well.
+class PositionStateSpace : public ompl::base::RealVectorStateSpace {
+ public:
+  PositionStateSpace() : RealVectorStateSpace(3) {}
+  void registerProjections() override {
+    registerDefaultProjection(std::make_shared<ompl::base::RealVectorIdentityProjectionEvaluator>(this));
+  }
+};
+
+}  // namespace
 
 std::shared_ptr<ompl::base::RealVectorStateSpace> makePositionSpace(const environment::Environment& environment) {
-  auto space = std::make_shared<ompl::base::RealVectorStateSpace>(3);
+  auto space = std::make_shared<PositionStateSpace>();
   const Eigen::AlignedBox3d box = environment.grid().frame().bounds();
   ompl::base::RealVectorBounds bounds(3);
   for (int axis = 0; axis < 3; ++axis) {
