@@ -1,6 +1,7 @@
 // `ceilplan probe`: what the planner and the energy model see at one body position.
 
 #include "command_registry.hpp"
+#include "json_values.hpp"
 #include "output.hpp"
 #include "vehicle_geometry_file.hpp"
 
@@ -37,8 +38,6 @@ Eigen::Vector3d parsePoint(const std::string& text) {
   return point;
 }
 
-// Infinite gaps (no surface) become JSON null.
-nlohmann::json metres(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
 std::string text(double value) {
   if (!std::isfinite(value)) return "none";
@@ -48,7 +47,7 @@ std::string text(double value) {
 }
 
 nlohmann::json gapJson(const environment::RotorGap& gap) {
-  return {{"nearest_gap_m", metres(gap.nearest_gap_m)}, {"coverage", gap.coverage}, {"mean_gap_m", metres(gap.mean_gap_m)}};
+  return {{"nearest_gap_m", finiteOrNull(gap.nearest_gap_m)}, {"coverage", gap.coverage}, {"mean_gap_m", finiteOrNull(gap.mean_gap_m)}};
 }
 
 void runProbe(const ProbeOptions& options) {
@@ -97,13 +96,13 @@ void runProbe(const ProbeOptions& options) {
       {"at", {body.x(), body.y(), body.z()}},
       {"unknown_is_occupied", environment_options.unknown_is_occupied},
       {"unknown_is_surface", environment_options.unknown_is_surface},
-      {"ceiling_gap_m", metres(ceiling.nearest_gap_m)},
+      {"ceiling_gap_m", finiteOrNull(ceiling.nearest_gap_m)},
       {"ceiling_coverage", ceiling.coverage},
-      {"ceiling_mean_gap_m", metres(ceiling.mean_gap_m)},
-      {"ground_gap_m", metres(ground.nearest_gap_m)},
+      {"ceiling_mean_gap_m", finiteOrNull(ceiling.mean_gap_m)},
+      {"ground_gap_m", finiteOrNull(ground.nearest_gap_m)},
       {"ground_coverage", ground.coverage},
-      {"ground_mean_gap_m", metres(ground.mean_gap_m)},
-      {"clearance_m", metres(clearance)},
+      {"ground_mean_gap_m", finiteOrNull(ground.mean_gap_m)},
+      {"clearance_m", finiteOrNull(clearance)},
       {"valid", !violation},
       {"violation", violation ? nlohmann::json(violation->describe()) : nlohmann::json(nullptr)},
       {"rotors", rotors}};

@@ -1,5 +1,6 @@
 #include "plan_output.hpp"
 
+#include "json_values.hpp"
 #include "output.hpp"
 
 #include <cmath>
@@ -7,11 +8,6 @@
 #include <iomanip>
 
 namespace ceilplan::app {
-namespace {
-
-nlohmann::json finiteOrNull(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
-
-}  // namespace
 
 nlohmann::json figuresJson(const planner::PathEvaluation& e) {
   return {{"length_m", e.length_m},
