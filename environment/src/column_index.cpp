@@ -76,4 +76,16 @@ ColumnIndex::Boundary ColumnIndex::below(int i, int j, double z_m) const {
   return {face(run->hi), run->state};
 }
 
+std::optional<CellState> ColumnIndex::firstBlocking(int i, int j, double bottom_m, double top_m,
+                                                  bool unknown_blocks) const {
+  if (!(bottom_m < top_m)) return std::nullopt;
+  if (!inside(i, j)) return unknown_blocks ? std::optional<CellState>(CellState::Unknown) : std::nullopt;
+  for (const Run* run = beginRuns(i, j); run != endRuns(i, j); ++run) {
+    if (face(run->lo) >= top_m) break;  // this run and every later one lie above
+    if (face(run->hi) <= bottom_m) continue;
+    if (run->state == CellState::Occupied || unknown_blocks) return run->state;
+  }
+  return std::nullopt;
+}
+
 }  // namespace ceilplan::environment

@@ -53,7 +53,8 @@ Environment::Environment(const OccupancyMap& map, VehicleGeometry vehicle, Envir
       options_((validateOptions(options), options)),
       grid_(VoxelGrid::fromTree(map.tree(), [&](double f) { if (progress) progress(0.4 * f); })),
       columns_((progress ? progress(0.4) : void(), grid_)),
-      distance_((progress ? progress(0.6) : void(), grid_), options_.unknown_is_occupied) {
+      distance_((progress ? progress(0.6) : void(), grid_), options_.unknown_is_occupied),
+      footprint_((progress ? progress(0.9) : void(), grid_), vehicle_.inflatedRadius_m(), options_.unknown_is_occupied) {
   const double vertical = std::max(std::abs(vehicle_.inflatedBottom_m()), std::abs(vehicle_.inflatedTop_m()));
   bounding_sphere_m_ = std::hypot(vehicle_.inflatedRadius_m(), vertical);
   if (progress) progress(1.0);
@@ -172,20 +173,14 @@ std::optional<Violation> Environment::exactCylinderViolation(const Eigen::Vector
   const double radius = vehicle_.inflatedRadius_m();
   const double bottom = body_m.z() + vehicle_.inflatedBottom_m();
   const double top = body_m.z() + vehicle_.inflatedTop_m();
-  const int k_begin = frame.indexOf(2, bottom), k_end = frame.indexOf(2, top);
   const int j_end = frame.indexOf(1, body_m.y() + radius), i_end = frame.indexOf(0, body_m.x() + radius);
   for (int j = frame.indexOf(1, body_m.y() - radius); j <= j_end; ++j) {
     const double dy = std::max({frame.faceOf(1, j) - body_m.y(), 0.0, body_m.y() - frame.faceOf(1, j + 1)});
     for (int i = frame.indexOf(0, body_m.x() - radius); i <= i_end; ++i) {
       const double dx = std::max({frame.faceOf(0, i) - body_m.x(), 0.0, body_m.x() - frame.faceOf(0, i + 1)});
       if (dx * dx + dy * dy >= radius * radius) continue;  // touching the column's side is allowed
-      for (int k = k_begin; k <= k_end; ++k) {
-        if (frame.faceOf(2, k) >= top || frame.faceOf(2, k + 1) <= bottom) continue;  // touching faces is allowed
-        const CellState state = grid_.at(i, j, k);
-        if (state == CellState::Occupied) return Violation{0, body_m, ViolationKind::Occupied};
-        if (state == CellState::Unknown && options_.unknown_is_occupied)
-          return Violation{0, body_m, ViolationKind::Unknown};
-      }
+      if (const auto state = columns_.firstBlocking(i, j, bottom, top, options_.unknown_is_occupied))
+        return Violation{0, body_m, *state == CellState::Occupied ? ViolationKind::Occupied : ViolationKind::Unknown};
     }
   }
   return std::nullopt;
@@ -195,6 +190,11 @@ std::optional<Violation> Environment::stateViolation(const Eigen::Vector3d& body
   if (!body_m.allFinite() || !contains(body_m)) return Violation{0, body_m, ViolationKind::OutsideMap};
   // Fast path: nothing blocked within the sphere around the inflated cylinder.
   if (distance_.lowerBound_m(body_m) > bounding_sphere_m_) return std::nullopt;
+  // Second fast path: nothing blocking within the footprint's reach at the cylinder's heights.
+  const GridFrame& frame = grid_.frame();
+  if (!footprint_.mayBlock(frame.indexOf(0, body_m.x()), frame.indexOf(1, body_m.y()),
+                           body_m.z() + vehicle_.inflatedBottom_m(), body_m.z() + vehicle_.inflatedTop_m()))
+    return std::nullopt;
   return exactCylinderViolation(body_m);
 }
 

@@ -6,6 +6,7 @@
 
 #include "ceilplan/environment/column_index.hpp"
 #include "ceilplan/environment/distance_field.hpp"
+#include "ceilplan/environment/footprint_masks.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
 #include "ceilplan/environment/vehicle_geometry.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
@@ -126,6 +127,7 @@ class Environment {
   VoxelGrid grid_;
   ColumnIndex columns_;
   DistanceField distance_;
+  FootprintMasks footprint_;
   double bounding_sphere_m_;  // around the body centre, holding the inflated cylinder
 };
 

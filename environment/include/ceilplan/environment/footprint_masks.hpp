@@ -1,0 +1,32 @@
+#pragma once
+// A conservative, constant-time "surely valid" test for the vehicle's cylinder near structure,
+// where the distance-field fast path cannot decide. Per column of the grid, the voxels that
+// block (occupied; unknown when unknown space blocks) as bits over height, OR-ed over every
+// column whose centre lies within the cylinder's radius + sqrt(2) voxels: a superset of the
+// columns the cylinder can overlap from a body centre anywhere in the column. A state whose
+// height range meets none of those bits is valid; the others take the exact test.
+// Memory: a bit per voxel of the grid (two while building).
+
+#include "ceilplan/environment/voxel_grid.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace ceilplan::environment {
+
+class FootprintMasks {
+ public:
+  FootprintMasks(const VoxelGrid& grid, double footprint_radius_m, bool unknown_blocks);
+
+  // False only if no blocking voxel overlapping the heights (bottom_m, top_m) lies in the reach
+  // of a cylinder of the footprint radius centred anywhere in column (i, j) (inside the grid).
+  bool mayBlock(int i, int j, double bottom_m, double top_m) const;
+
+ private:
+  GridFrame frame_;
+  bool unknown_blocks_;
+  int words_;                        // 64-bit words per column
+  std::vector<std::uint64_t> reach_;  // words_ per column, column (i, j) at (j * size_x + i) * words_
+};
+
+}  // namespace ceilplan::environment
