@@ -1,6 +1,9 @@
 #include "ceilplan/planner/lattice_planner.hpp"
 
+#include "lattice_grid.hpp"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -67,16 +70,9 @@ LatticePlanner::LatticePlanner(const SafetyRules& rules, const FlightObjective& 
 
 std::optional<LatticeResult> LatticePlanner::plan(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) {
   stopped_ = false;
-  const environment::GridFrame& frame = rules_.environment().grid().frame();
-  const int stride = options_.stride_voxels;
-  const double spacing = stride * frame.resolution_m();
-  int size[3];
-  for (int axis = 0; axis < 3; ++axis) size[axis] = (frame.size()[axis] + stride - 1) / stride;
-  const std::size_t node_count = static_cast<std::size_t>(size[0]) * size[1] * size[2];
-  const auto position = [&](int a, int b, int c) {
-    return Eigen::Vector3d(frame.centreOf(0, a * stride), frame.centreOf(1, b * stride), frame.centreOf(2, c * stride));
-  };
-  const auto linear = [&](int a, int b, int c) { return (static_cast<std::size_t>(c) * size[1] + b) * size[0] + a; };
+  const detail::LatticeGrid lattice(rules_.environment().grid().frame(), options_.stride_voxels);
+  const detail::LatticeDirections directions;
+  const std::size_t node_count = lattice.nodeCount();
 
   // Node ids: lattice nodes, then the goal, then the start.
   const std::size_t goal_id = node_count, start_id = node_count + 1;
@@ -87,9 +83,7 @@ std::optional<LatticeResult> LatticePlanner::plan(const Eigen::Vector3d& start_m
   const auto nodeAt = [&](std::size_t id) {
     if (id == goal_id) return goal_m;
     if (id == start_id) return start_m;
-    const int a = static_cast<int>(id % size[0]), b = static_cast<int>((id / size[0]) % size[1]);
-    const int c = static_cast<int>(id / (static_cast<std::size_t>(size[0]) * size[1]));
-    return position(a, b, c);
+    return lattice.position(id);
   };
   const auto nodeValid = [&](std::size_t id) {
     if (!(flags[id] & (kValid | kInvalid))) flags[id] |= rules_.isStateValid(nodeAt(id)) ? kValid : kInvalid;
@@ -110,28 +104,14 @@ std::optional<LatticeResult> LatticePlanner::plan(const Eigen::Vector3d& start_m
       open.emplace(g + objective_.heuristic(nodeAt(to), goal_m), to);
     }
   };
-  // Lattice nodes within reach of a free point, for joining the start and the goal.
-  const double join_radius = std::sqrt(3.0) * spacing;
-  const auto nodesNear = [&](const Eigen::Vector3d& point, const std::function<void(std::size_t)>& visit) {
-    int lo[3], hi[3];
-    for (int axis = 0; axis < 3; ++axis) {
-      const double index = (point[axis] - frame.centreOf(axis, 0)) / spacing;
-      lo[axis] = std::max(0, static_cast<int>(std::floor(index)) - 1);
-      hi[axis] = std::min(size[axis] - 1, static_cast<int>(std::ceil(index)) + 1);
-    }
-    for (int c = lo[2]; c <= hi[2]; ++c)
-      for (int b = lo[1]; b <= hi[1]; ++b)
-        for (int a = lo[0]; a <= hi[0]; ++a)
-          if ((position(a, b, c) - point).norm() <= join_radius) visit(linear(a, b, c));
-  };
   std::vector<char> joins_goal(node_count, 0);
-  nodesNear(goal_m, [&](std::size_t id) {
+  lattice.forEachNodeNear(goal_m, [&](std::size_t id) {
     if (nodeValid(id) && rules_.isMotionValid(nodeAt(id), goal_m)) joins_goal[id] = 1;
   });
 
   cost_to[start_id] = 0.0;
   if (rules_.isMotionValid(start_m, goal_m)) relax(start_id, goal_id, edgeCost(start_m, goal_m));
-  nodesNear(start_m, [&](std::size_t id) {
+  lattice.forEachNodeNear(start_m, [&](std::size_t id) {
     if (nodeValid(id) && rules_.isMotionValid(start_m, nodeAt(id))) relax(start_id, id, edgeCost(start_m, nodeAt(id)));
   });
 
@@ -150,22 +130,18 @@ std::optional<LatticeResult> LatticePlanner::plan(const Eigen::Vector3d& start_m
     const Eigen::Vector3d here = nodeAt(id);
     const double g = cost_to[id];
     if (joins_goal[id]) relax(id, goal_id, g + edgeCost(here, goal_m));
-    const int a = static_cast<int>(id % size[0]), b = static_cast<int>((id / size[0]) % size[1]);
-    const int c = static_cast<int>(id / (static_cast<std::size_t>(size[0]) * size[1]));
-    for (int dc = -1; dc <= 1; ++dc)
-      for (int db = -1; db <= 1; ++db)
-        for (int da = -1; da <= 1; ++da) {
-          const int na = a + da, nb = b + db, nc = c + dc;
-          if ((da | db | dc) == 0 || na < 0 || nb < 0 || nc < 0 || na >= size[0] || nb >= size[1] || nc >= size[2])
-            continue;
-          const std::size_t next = linear(na, nb, nc);
-          if ((flags[next] & kClosed) || !nodeValid(next)) continue;
-          const Eigen::Vector3d there = position(na, nb, nc);
-          // The lower bound g + c_min d rules out most edges before any motion check.
-          if (g + objective_.heuristic(here, there) >= cost_to[next]) continue;
-          if (!rules_.isMotionValid(here, there)) continue;
-          relax(id, next, g + edgeCost(here, there));
-        }
+    const std::array<int, 3> at = lattice.indices(id);
+    for (const std::array<int, 3>& offset : directions.offsets) {
+      const int na = at[0] + offset[0], nb = at[1] + offset[1], nc = at[2] + offset[2];
+      if (!lattice.inside(na, nb, nc)) continue;
+      const std::size_t next = lattice.id(na, nb, nc);
+      if ((flags[next] & kClosed) || !nodeValid(next)) continue;
+      const Eigen::Vector3d there = lattice.position(na, nb, nc);
+      // The lower bound g + c_min d rules out most edges before any motion check.
+      if (g + objective_.heuristic(here, there) >= cost_to[next]) continue;
+      if (!rules_.isMotionValid(here, there)) continue;
+      relax(id, next, g + edgeCost(here, there));
+    }
   }
   if (!std::isfinite(cost_to[goal_id])) return std::nullopt;
   LatticeResult result;

@@ -57,6 +57,12 @@ bool SafetyRules::exempt(const Eigen::Vector3d& body_m) const {
   return false;
 }
 
+SafetyRules SafetyRules::withExemptions(std::vector<Eigen::Vector3d> centres_m) const {
+  SafetyRules rules = *this;
+  if (rules.standoff_) rules.standoff_->exempt_centres_m = std::move(centres_m);
+  return rules;
+}
+
 bool SafetyRules::isStateValid(const Eigen::Vector3d& body_m) const {
   if (!baseStateValid(body_m)) return false;
   if (!standoff_ || exempt(body_m)) return true;

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <utility>
 
 namespace ceilplan::planner {
 
@@ -123,6 +124,12 @@ class FlightCostModel {
   MotionTotals integrate(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
                          ConditionsAt&& conditions_at) const;
 
+  // Both directions of one straight motion (first from -> to, second to -> from), querying the
+  // conditions once per sample: what a roadmap needs for its directed edges.
+  template <typename ConditionsAt>
+  std::pair<MotionTotals, MotionTotals> integrateBothWays(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
+                                                          ConditionsAt&& conditions_at) const;
+
   // Number of sample intervals integrate() uses for a motion: the axis-wise (Chebyshev) length
   // over step_m(), so lattice motions sample a half-voxel lattice exactly.
   int intervalCount(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
@@ -135,6 +142,45 @@ class FlightCostModel {
  private:
   double costPerMetre(const CostWeights& weights, double current_a, double speed_m_s) const;
 
+  // One direction's totals over the samples of a motion, by the trapezoid rule on 1/speed and
+  // current/speed; samples may come in either order.
+  class Trapezoid {
+   public:
+    Trapezoid(const FlightCostModel& model, const Eigen::Vector3d& direction, double length_m, int intervals)
+        : model_(model), direction_(direction), interval_m_(length_m / intervals) {
+      totals_.length_m = length_m;
+    }
+    void add(const PointConditions& conditions) {
+      const Velocity velocity = model_.velocityAt(conditions, direction_);
+      const double s_per_m = 1.0 / velocity.along_m_s;
+      const double as_per_m = model_.currentA(conditions, velocity, model_.options_.planning_soc) * s_per_m;
+      if (started_) {
+        totals_.duration_s += 0.5 * (previous_s_per_m_ + s_per_m) * interval_m_;
+        totals_.charge_ah += 0.5 * (previous_as_per_m_ + as_per_m) * interval_m_ / 3600.0;
+      }
+      started_ = true;
+      previous_s_per_m_ = s_per_m;
+      previous_as_per_m_ = as_per_m;
+    }
+    const MotionTotals& totals() const { return totals_; }
+
+   private:
+    const FlightCostModel& model_;
+    Eigen::Vector3d direction_;
+    double interval_m_;
+    MotionTotals totals_;
+    bool started_ = false;
+    double previous_s_per_m_ = 0.0, previous_as_per_m_ = 0.0;
+  };
+
+  // Visits the sample points of a motion in order, from_m first and to_m last.
+  template <typename Visit>
+  void forEachSample(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m, int intervals, Visit&& visit) const {
+    const Eigen::Vector3d delta = to_m - from_m;
+    for (int k = 0; k <= intervals; ++k)
+      visit(k == intervals ? to_m : Eigen::Vector3d(from_m + delta * (double(k) / intervals)));
+  }
+
   const environment::Environment& environment_;
   const energy::EnergyModel& energy_;
   CostModelOptions options_;
@@ -146,28 +192,29 @@ class FlightCostModel {
 template <typename ConditionsAt>
 MotionTotals FlightCostModel::integrate(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
                                         ConditionsAt&& conditions_at) const {
-  MotionTotals totals;
-  const Eigen::Vector3d delta = to_m - from_m;
-  totals.length_m = delta.norm();
-  if (totals.length_m == 0.0) return totals;
-  const Eigen::Vector3d direction = delta / totals.length_m;
+  const double length_m = (to_m - from_m).norm();
+  if (length_m == 0.0) return {};
   const int intervals = intervalCount(from_m, to_m);
-  const double interval_m = totals.length_m / intervals;
-  double previous_s_per_m = 0.0, previous_as_per_m = 0.0;
-  for (int k = 0; k <= intervals; ++k) {
-    const Eigen::Vector3d point = k == intervals ? to_m : Eigen::Vector3d(from_m + delta * (double(k) / intervals));
+  Trapezoid forward(*this, (to_m - from_m) / length_m, length_m, intervals);
+  forEachSample(from_m, to_m, intervals, [&](const Eigen::Vector3d& point) { forward.add(conditions_at(point)); });
+  return forward.totals();
+}
+
+template <typename ConditionsAt>
+std::pair<MotionTotals, MotionTotals> FlightCostModel::integrateBothWays(const Eigen::Vector3d& from_m,
+                                                                         const Eigen::Vector3d& to_m,
+                                                                         ConditionsAt&& conditions_at) const {
+  const double length_m = (to_m - from_m).norm();
+  if (length_m == 0.0) return {};
+  const int intervals = intervalCount(from_m, to_m);
+  const Eigen::Vector3d direction = (to_m - from_m) / length_m;
+  Trapezoid forward(*this, direction, length_m, intervals), backward(*this, -direction, length_m, intervals);
+  forEachSample(from_m, to_m, intervals, [&](const Eigen::Vector3d& point) {
     const PointConditions& conditions = conditions_at(point);
-    const Velocity velocity = velocityAt(conditions, direction);
-    const double s_per_m = 1.0 / velocity.along_m_s;
-    const double as_per_m = currentA(conditions, velocity, options_.planning_soc) * s_per_m;
-    if (k > 0) {
-      totals.duration_s += 0.5 * (previous_s_per_m + s_per_m) * interval_m;
-      totals.charge_ah += 0.5 * (previous_as_per_m + as_per_m) * interval_m / 3600.0;
-    }
-    previous_s_per_m = s_per_m;
-    previous_as_per_m = as_per_m;
-  }
-  return totals;
+    forward.add(conditions);
+    backward.add(conditions);
+  });
+  return {forward.totals(), backward.totals()};
 }
 
 }  // namespace ceilplan::planner

@@ -40,6 +40,13 @@ class SafetyRules {
   const environment::Environment& environment() const { return environment_; }
   double minCeilingGap_m() const { return min_ceiling_gap_m_; }
 
+  // The same rules with the standoff's exemption around other centres (free mode: the rules of
+  // a query between other places). Without a standoff, a copy.
+  SafetyRules withExemptions(std::vector<Eigen::Vector3d> centres_m) const;
+  // Radius of the exemption around each centre; 0 without a standoff.
+  double exemptRadius_m() const { return standoff_ ? standoff_->exempt_radius_m : 0.0; }
+  bool hasStandoff() const { return standoff_.has_value(); }
+
   bool isStateValid(const Eigen::Vector3d& body_m) const;
   bool isMotionValid(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
 
