@@ -1,57 +1,63 @@
 #include "tour_legs.hpp"
 
-#include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <exception>
-#include <mutex>
-#include <thread>
-#include <utility>
+#include "ceilplan/planner/parallel_for.hpp"
 
 namespace ceilplan::app {
 
-std::vector<std::vector<TourLeg>> planTourLegs(int place_count, const LegPathPlanner& plan, const LegScorer& score,
-                                               int workers, Progress& progress) {
+TourLegs planLegsByPair(int place_count, const PairPlanner& plan, const LegScorer& score, int workers,
+                        Progress& progress) {
   std::vector<std::pair<int, int>> pairs;
   for (int i = 0; i < place_count; ++i)
     for (int j = i + 1; j < place_count; ++j) pairs.emplace_back(i, j);
-  std::vector<std::vector<TourLeg>> legs(place_count, std::vector<TourLeg>(place_count));
-  std::vector<std::exception_ptr> failures(pairs.size());
-  std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0};
-  std::atomic<bool> failed{false};
-
-  const auto work = [&] {
-    for (std::size_t k = next++; k < pairs.size() && !failed; k = next++) {
-      const auto [i, j] = pairs[k];
-      try {
-        TourLeg there;
-        there.waypoints = plan(i, j);
+  TourLegs legs(place_count, std::vector<TourLeg>(place_count));
+  planner::parallelFor(
+      pairs.size(), workers,
+      [&](std::size_t k) {
+        const auto [i, j] = pairs[k];
+        TourLeg there{plan(i, j), {}, true};
         there.evaluation = score(there.waypoints);
-        TourLeg back;
-        back.waypoints.assign(there.waypoints.rbegin(), there.waypoints.rend());
+        TourLeg back{{there.waypoints.rbegin(), there.waypoints.rend()}, {}, true};
         back.evaluation = score(back.waypoints);
-        legs[i][j] = std::move(there);  // each pair's cells are written by one thread only
+        legs[i][j] = std::move(there);  // each pair's cells are written by one task only
         legs[j][i] = std::move(back);
-      } catch (...) {
-        failures[k] = std::current_exception();
-        failed = true;
-      }
-      ++done;
-    }
-  };
-  std::vector<std::thread> threads;
-  const int count = std::max(1, std::min<int>(workers, static_cast<int>(pairs.size())));
-  for (int t = 0; t < count; ++t) threads.emplace_back(work);
-  while (done < pairs.size() && !failed) {
-    progress.update(pairs.empty() ? 1.0 : static_cast<double>(done) / pairs.size());
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  for (std::thread& thread : threads) thread.join();
+      },
+      [&](double share) { progress.update(share); });
   progress.finish();
-  for (const std::exception_ptr& failure : failures)
-    if (failure) std::rethrow_exception(failure);
   return legs;
+}
+
+TourLegs planLegsByPlace(int place_count, const RoutesFrom& routes_from, const LegScorer& score, int workers,
+                         Progress& progress) {
+  TourLegs legs(place_count, std::vector<TourLeg>(place_count));
+  planner::parallelFor(
+      static_cast<std::size_t>(place_count), workers,
+      [&](std::size_t from) {
+        std::vector<std::vector<Eigen::Vector3d>> routes = routes_from(static_cast<int>(from));
+        for (int to = 0; to < place_count; ++to) {
+          if (to == static_cast<int>(from)) continue;
+          TourLeg& leg = legs[from][to];  // row `from` is written by this task only
+          leg.waypoints = std::move(routes[to]);
+          leg.evaluation = score(leg.waypoints);
+        }
+      },
+      [&](double share) { progress.update(share); });
+  progress.finish();
+  return legs;
+}
+
+void refineLegs(TourLegs& legs, const std::vector<std::pair<int, int>>& which, const LegRefiner& refine,
+                const LegScorer& score, int workers, Progress& progress) {
+  planner::parallelFor(
+      which.size(), workers,
+      [&](std::size_t k) {
+        const auto [from, to] = which[k];
+        TourLeg& leg = legs[from][to];  // `which` names each leg once
+        leg.waypoints = refine(from, to, leg.waypoints);
+        leg.evaluation = score(leg.waypoints);
+        leg.refined = true;
+      },
+      [&](double share) { progress.update(share); });
+  progress.finish();
 }
 
 }  // namespace ceilplan::app

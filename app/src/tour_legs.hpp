@@ -1,8 +1,9 @@
 #pragma once
-// The legs of an inspection tour: a path between every pair of places (home and the targets'
-// viewpoints), planned once per unordered pair on several threads and flown both ways, since
-// climbing costs more charge than descending. The map index, energy model and cost models are
-// shared read-only; each query builds its own planner objects.
+// The legs of an inspection tour: a path between every ordered pair of places (home and the
+// targets' viewpoints), found on several threads in one of two ways: one search per place over
+// a shared roadmap (every leg its own route, raw until a plan flies it), or one search per
+// unordered pair (the path flown both ways, post-processed at once). The map index, energy
+// model and cost models are shared read-only.
 
 #include "output.hpp"
 
@@ -11,7 +12,8 @@
 #include <Eigen/Core>
 
 #include <functional>
-#include <string>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace ceilplan::app {
@@ -19,18 +21,28 @@ namespace ceilplan::app {
 struct TourLeg {
   std::vector<Eigen::Vector3d> waypoints;  // from the leg's first place to its second
   planner::PathEvaluation evaluation;      // flown at the start SOC with the full model
+  bool refined = false;                    // post-processed (shortcuts and NLopt refinement)
 };
+using TourLegs = std::vector<std::vector<TourLeg>>;  // legs[i][j] for i != j; legs[i][i] stays empty
 
-// Plans a path between places `from` and `to` (indices, from < to); throws naming the places.
-using LegPathPlanner = std::function<std::vector<Eigen::Vector3d>(int from, int to)>;
-// Scores a path, either direction.
+// Scores a path.
 using LegScorer = std::function<planner::PathEvaluation(const std::vector<Eigen::Vector3d>&)>;
 
-// legs[i][j] for i != j over `place_count` places; legs[i][i] stays empty. Runs `workers`
-// threads over the pairs (in a fixed order, so the result does not depend on scheduling when
-// the planner is deterministic). The first failure, by pair order, is rethrown after the others
-// stop. `progress` is updated from the calling thread only.
-std::vector<std::vector<TourLeg>> planTourLegs(int place_count, const LegPathPlanner& plan, const LegScorer& score,
-                                               int workers, Progress& progress);
+// One search per unordered pair: `plan(i, j)` (i < j) gives the post-processed path, flown
+// back reversed. Throws the first failure by pair order.
+using PairPlanner = std::function<std::vector<Eigen::Vector3d>(int from, int to)>;
+TourLegs planLegsByPair(int place_count, const PairPlanner& plan, const LegScorer& score, int workers,
+                        Progress& progress);
+
+// One search per place: `routes_from(i)` gives raw paths from place i to every place (entry i
+// unused). Throws the first failure by place order.
+using RoutesFrom = std::function<std::vector<std::vector<Eigen::Vector3d>>(int from)>;
+TourLegs planLegsByPlace(int place_count, const RoutesFrom& routes_from, const LegScorer& score, int workers,
+                         Progress& progress);
+
+// Post-processes the legs `which` (ordered pairs) with `refine` and scores them again.
+using LegRefiner = std::function<std::vector<Eigen::Vector3d>(int from, int to, const std::vector<Eigen::Vector3d>&)>;
+void refineLegs(TourLegs& legs, const std::vector<std::pair<int, int>>& which, const LegRefiner& refine,
+                const LegScorer& score, int workers, Progress& progress);
 
 }  // namespace ceilplan::app

@@ -6,9 +6,12 @@
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
+#include "ceilplan/planner/lattice_roadmap.hpp"
 #include "ceilplan/planner/path_refinement.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <iterator>
 #include <stdexcept>
 
@@ -121,6 +124,133 @@ battery::DutyResult projectDuty(const TourResult& tour, const planner::SortieBat
   return battery::simulateDuty(battery.pack, duty, duty_options);
 }
 
+
+// The leg planner that searches one roadmap from each place (docs/tours.md).
+const std::string kRoadmapPlanner = "roadmap";
+
+// Refinement of roadmap legs stops at its evaluation budget; this time limit only guards
+// against a pathological case, so refined legs do not depend on the machine's speed.
+constexpr double kRefinementTimeGuardS = 30.0;
+
+// The rules, cost model and planner for the legs between two places (in free mode the rules
+// exempt the two from the standoff).
+struct LegPlanner {
+  PlanningSetup::Mode planning;
+  std::unique_ptr<planner::FlightPlanner> planner;
+};
+
+LegPlanner legPlanner(const PlanningSetup& setup, PlanningMode mode, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  LegPlanner leg{setup.mode(mode, a, b), nullptr};
+  leg.planner = std::make_unique<planner::FlightPlanner>(*leg.planning.rules, *leg.planning.model, setup.objective(a, b));
+  return leg;
+}
+
+// One search between two places with a pairwise planner (OMPL's or the lattice A*), the path
+// post-processed.
+std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner& leg, const TourOptions& options,
+                                       int from, int to) {
+  const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
+  planner::PlanRequest request;
+  request.start_m = a;
+  request.goal_m = b;
+  request.planner = options.planner;
+  request.time_limit_s = options.time_limit_s;
+  request.refinement.time_limit_s = options.time_limit_s;
+  request.lattice.stride_voxels = options.lattice_stride;
+  // A clear straight line needs no search: the refinement bends it where that saves charge
+  // (up towards a ceiling), and the dense re-check still applies.
+  if (options.straight_when_clear && leg.planning.rules->isMotionValid(a, b)) {
+    const double pieces = static_cast<double>(request.refinement.max_waypoints - 1);
+    return leg.planner->postProcess(planner::subdivide({a, b}, (b - a).norm() / pieces + 1e-9), request.refinement);
+  }
+  // An anytime planner may miss a narrow passage in a short search: search again, longer.
+  std::string failures;
+  const int attempts = options.planner == "lattice" ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
+  for (int attempt = 0; attempt < attempts; ++attempt) {
+    if (attempt > 0) request.time_limit_s = kRetryTimeFactors[attempt - 1] * options.time_limit_s;
+    try {
+      return leg.planner->plan(request).waypoints;
+    } catch (const planner::NoPathFound& e) {
+      failures += std::string(failures.empty() ? "" : "; ") + e.what();
+    } catch (const std::exception& e) {
+      throw std::runtime_error(tour.mode + " mode: leg " + tour.names[from] + " -> " + tour.names[to] + ": " + e.what());
+    }
+  }
+  throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] + ": " +
+                    failures);
+}
+
+// Every leg from one roadmap over the map: the roadmap's route from each place to every other,
+// shortcut under the pair's rules, or the straight line where that is valid and cheaper. Raw:
+// the legs a plan flies are refined later.
+TourLegs roadmapLegs(const TourResult& tour, const PlanningSetup& setup, PlanningMode mode, const TourOptions& options,
+                     const LegScorer& score) {
+  const Eigen::Vector3d& home = tour.places_m.front();
+  const LegPlanner roadmap_planner = legPlanner(setup, mode, home, home);
+  const planner::SafetyRules& rules = *roadmap_planner.planning.rules;
+  const planner::FlightObjective& objective = roadmap_planner.planner->objective();
+  Progress build_progress(tour.mode + " mode: building the roadmap");
+  planner::RoadmapOptions roadmap_options;
+  roadmap_options.stride_voxels = options.lattice_stride;
+  roadmap_options.workers = options.workers;
+  roadmap_options.progress = [&](double share) { build_progress.update(share); };
+  const planner::LatticeRoadmap roadmap(rules, objective, tour.places_m, roadmap_options);
+  build_progress.finish();
+
+  const int places = static_cast<int>(tour.places_m.size());
+  const RoutesFrom routes_from = [&](int from) {
+    const std::vector<std::optional<planner::RoadmapRoute>> routes = roadmap.routesFrom(from);
+    std::vector<std::vector<Eigen::Vector3d>> paths(places);
+    for (int to = 0; to < places; ++to) {
+      if (to == from) continue;
+      const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
+      const planner::SafetyRules pair_rules = rules.withExemptions({a, b});
+      std::optional<std::vector<Eigen::Vector3d>> best;
+      if (routes[to]) best = planner::shortcutPath(routes[to]->waypoints, pair_rules, objective);
+      if (options.straight_when_clear && pair_rules.isMotionValid(a, b) &&
+          (!best || objective.motionCost(a, b) < objective.pathCost(*best)))
+        best = std::vector<Eigen::Vector3d>{a, b};
+      if (!best)
+        throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] +
+                          " on the roadmap (every " + std::to_string(options.lattice_stride) +
+                          " voxels); if one exists through a narrower gap, try a smaller --lattice-stride");
+      paths[to] = std::move(*best);
+    }
+    return paths;
+  };
+  Progress progress(tour.mode + " mode: routing legs");
+  return planLegsByPlace(places, routes_from, score, options.workers, progress);
+}
+
+// The visiting order and the sorties for the legs as they are.
+void orderAndSplit(TourResult& tour, const MissionFile& mission, const TourOptions& options) {
+  planner::TourLegs legs;
+  legs.names = tour.names;
+  const int places = static_cast<int>(tour.places_m.size());
+  planner::CostMatrix costs = planner::CostMatrix::Zero(places, places);
+  legs.legs.assign(places, std::vector<planner::LegCost>(places));
+  legs.dwells.assign(places, {});
+  for (int i = 0; i < places; ++i)
+    for (int j = 0; j < places; ++j) {
+      if (i == j) continue;
+      legs.legs[i][j] = legCost(tour.legs[i][j].evaluation);
+      costs(i, j) = legs.legs[i][j].charge_ah;
+    }
+  for (int k = 1; k < places; ++k) {
+    const TourStop& stop = tour.stops[k - 1];
+    legs.dwells[k] = {stop.target.dwell_s, stop.viewpoint.dwell_current_a};
+    // The charge matrix orders by what a visit costs: the leg into a target and its dwell.
+    for (int i = 0; i < places; ++i)
+      if (i != k) costs(i, k) += stop.viewpoint.dwell_charge_ah;
+  }
+  planner::TourOrderOptions order_options;
+  order_options.seed = options.seed;
+  tour.order = planner::orderTour(costs, order_options);
+  planner::SortieOptions sortie_options;
+  sortie_options.ageing_model = options.ageing_model;
+  sortie_options.ageing = ageingOptions(options);
+  tour.plan = planner::planSorties(legs, tour.order.targets, mission.battery, sortie_options);
+}
 }  // namespace
 
 PlanningArguments planningArguments(const MissionFile& mission) {
@@ -160,88 +290,71 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
     tour.places_m.push_back(stop.viewpoint.position_m);
   }
 
-  const LegPathPlanner plan_leg = [&](int from, int to) {
-    const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
-    const PlanningSetup::Mode planning = setup.mode(mode, a, b);
-    const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, setup.objective(a, b));
-    planner::PlanRequest request;
-    request.start_m = a;
-    request.goal_m = b;
-    request.planner = options.planner;
-    request.time_limit_s = options.time_limit_s;
-    request.refinement.time_limit_s = options.time_limit_s;
-    request.lattice.stride_voxels = options.lattice_stride;
-    // A clear straight line needs no search: the refinement bends it where that saves charge
-    // (up towards a ceiling), and the dense re-check still applies.
-    if (options.straight_when_clear && planning.rules->isMotionValid(a, b)) {
-      const double pieces = static_cast<double>(request.refinement.max_waypoints - 1);
-      return flight_planner.postProcess(planner::subdivide({a, b}, (b - a).norm() / pieces + 1e-9),
-                                        request.refinement);
-    }
-    // An anytime planner may miss a narrow passage in a short search: search again, longer.
-    std::string failures;
-    const int attempts = options.planner == "lattice" ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
-    for (int attempt = 0; attempt < attempts; ++attempt) {
-      if (attempt > 0) request.time_limit_s = kRetryTimeFactors[attempt - 1] * options.time_limit_s;
-      try {
-        return flight_planner.plan(request).waypoints;
-      } catch (const planner::NoPathFound& e) {
-        failures += std::string(failures.empty() ? "" : "; ") + e.what();
-      } catch (const std::exception& e) {
-        throw std::runtime_error(tour.mode + " mode: leg " + tour.names[from] + " -> " + tour.names[to] + ": " +
-                                 e.what());
-      }
-    }
-    throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] + ": " +
-                      failures);
-  };
   const battery::Pack& pack = mission.battery.pack;
   const LegScorer score = [&](const std::vector<Eigen::Vector3d>& waypoints) {
     return planner::evaluatePath(setup.fullModel(), pack, tour.start_soc, waypoints);
   };
-  Progress progress(tour.mode + " mode: planning legs");
-  tour.legs = planTourLegs(static_cast<int>(tour.places_m.size()), plan_leg, score, options.workers, progress);
-
-  // The independent re-check of every leg (the planner checked them too).
-  for (std::size_t i = 0; i < tour.legs.size(); ++i)
-    for (std::size_t j = 0; j < tour.legs.size(); ++j) {
-      if (i == j) continue;
-      if (const auto violation = setup.baseRules().checkPathDensely(tour.legs[i][j].waypoints))
-        throw std::runtime_error(tour.mode + " mode: leg " + tour.names[i] + " -> " + tour.names[j] +
-                                 " fails the dense re-check: " + *violation);
-    }
-
-  planner::TourLegs legs;
-  legs.names = tour.names;
+  const auto legName = [&](int from, int to) { return tour.names[from] + " -> " + tour.names[to]; };
+  const auto legPlannerFor = [&](int from, int to) {
+    return legPlanner(setup, mode, tour.places_m[from], tour.places_m[to]);
+  };
   const int places = static_cast<int>(tour.places_m.size());
-  planner::CostMatrix costs = planner::CostMatrix::Zero(places, places);
-  legs.legs.assign(places, std::vector<planner::LegCost>(places));
-  legs.dwells.assign(places, {});
-  for (int i = 0; i < places; ++i)
-    for (int j = 0; j < places; ++j) {
-      if (i == j) continue;
-      legs.legs[i][j] = legCost(tour.legs[i][j].evaluation);
-      costs(i, j) = legs.legs[i][j].charge_ah;
-    }
-  for (int k = 1; k < places; ++k) {
-    const TourStop& stop = tour.stops[k - 1];
-    legs.dwells[k] = {stop.target.dwell_s, stop.viewpoint.dwell_current_a};
-    // The charge matrix orders by what a visit costs: the leg into a target and its dwell.
-    for (int i = 0; i < places; ++i)
-      if (i != k) costs(i, k) += stop.viewpoint.dwell_charge_ah;
+  planner::RefinementOptions refinement;
+  if (options.planner == kRoadmapPlanner) {
+    tour.legs = roadmapLegs(tour, setup, mode, options, score);
+    refinement.time_limit_s = kRefinementTimeGuardS;
+  } else {
+    refinement.time_limit_s = options.time_limit_s;
+    const PairPlanner plan_pair = [&](int from, int to) { return searchLeg(tour, legPlannerFor(from, to), options, from, to); };
+    Progress progress(tour.mode + " mode: planning legs");
+    tour.legs = planLegsByPair(places, plan_pair, score, options.workers, progress);
   }
 
-  planner::TourOrderOptions order_options;
-  order_options.seed = options.seed;
-  tour.order = planner::orderTour(costs, order_options);
-  planner::SortieOptions sortie_options;
-  sortie_options.ageing_model = options.ageing_model;
-  sortie_options.ageing = ageingOptions(options);
-  tour.plan = planner::planSorties(legs, tour.order.targets, mission.battery, sortie_options);
+  // Order and split with the legs as they are, post-process the raw legs the plan flies, and
+  // again until the plan flies post-processed legs only (each round refines at least one leg).
+  const LegRefiner refine = [&](int from, int to, const std::vector<Eigen::Vector3d>& raw) {
+    try {
+      return legPlannerFor(from, to).planner->postProcess(raw, refinement);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(tour.mode + " mode: leg " + legName(from, to) + ": " + e.what());
+    }
+  };
+  const auto unrefined = [&](const std::vector<std::pair<int, int>>& candidates) {
+    std::vector<std::pair<int, int>> raw;
+    for (const auto& [from, to] : candidates)
+      if (!tour.legs[from][to].refined) raw.emplace_back(from, to);
+    std::sort(raw.begin(), raw.end());
+    raw.erase(std::unique(raw.begin(), raw.end()), raw.end());
+    return raw;
+  };
+  for (;;) {
+    std::vector<std::pair<int, int>> flown;
+    try {
+      orderAndSplit(tour, mission, options);
+      for (const planner::Sortie& sortie : tour.plan.sorties)
+        for (const planner::SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
+    } catch (const std::invalid_argument&) {
+      // A target no sortie can reach and return from, perhaps only on raw legs: refine the
+      // legs out of home and back, then decide.
+      for (int k = 1; k < places; ++k) flown.insert(flown.end(), {{0, k}, {k, 0}});
+      if (unrefined(flown).empty()) throw;
+    }
+    const std::vector<std::pair<int, int>> raw_legs = unrefined(flown);
+    if (raw_legs.empty()) break;
+    Progress progress(tour.mode + " mode: refining " + std::to_string(raw_legs.size()) + " legs");
+    refineLegs(tour.legs, raw_legs, refine, score, options.workers, progress);
+  }
+
+  // The independent re-check of every leg flown (the planner checked them too).
+  for (const planner::Sortie& sortie : tour.plan.sorties)
+    for (const planner::SortieLeg& leg : sortie.legs)
+      if (const auto violation = setup.baseRules().checkPathDensely(tour.legs[leg.from][leg.to].waypoints))
+        throw std::runtime_error(tour.mode + " mode: leg " + legName(leg.from, leg.to) +
+                                 " fails the dense re-check: " + *violation);
 
   for (const planner::Sortie& sortie : tour.plan.sorties) tour.sortie_samples.push_back(flownSamples(tour, sortie, pack));
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
-    tour.wear.push_back(planner::planWear(tour.plan, model, sortie_options.ageing));
+    tour.wear.push_back(planner::planWear(tour.plan, model, ageingOptions(options)));
   tour.duty = projectDuty(tour, mission.battery, options);
   return tour;
 }

@@ -20,12 +20,11 @@ namespace ceilplan::app {
 
 struct TourOptions {
   std::uint64_t seed = 1;               // the order heuristic's; OMPL's when an OMPL planner plans the legs
-  // The leg planner. OMPL's anytime planners stop at a wall-clock limit, so their legs vary a
-  // little from run to run (and with thread scheduling); "lattice" (deterministic A*) gives
-  // reproducible legs but takes minutes on the shipped maps (docs/tours.md).
-  std::string planner = "BITstar";
-  double time_limit_s = 0.5;            // search time per leg, and as much again for refinement
-  int lattice_stride = 4;               // voxels between lattice nodes
+  // The leg planner: "roadmap" (the default) searches one lattice roadmap from each place,
+  // deterministic; OMPL's planners and "lattice" (A*) search each pair of places.
+  std::string planner = "roadmap";
+  double time_limit_s = 0.5;            // pairwise planners: search time per leg, and as much again for refinement
+  int lattice_stride = 4;               // roadmap and lattice: voxels between lattice nodes
   bool straight_when_clear = true;      // a pair joined by a valid straight motion skips the search
   std::string ageing_model = "xu";      // the split minimises this model's wear
   double free_standoff_max_m = 3.0;     // free mode: farthest viewpoint (a conventional planner zooms)

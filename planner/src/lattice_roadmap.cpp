@@ -1,15 +1,13 @@
 #include "ceilplan/planner/lattice_roadmap.hpp"
 
-#include "lattice_grid.hpp"
-
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <queue>
 #include <stdexcept>
-#include <thread>
+
+#include "ceilplan/planner/parallel_for.hpp"
+#include "lattice_grid.hpp"
 
 namespace ceilplan::planner {
 namespace {
@@ -20,30 +18,6 @@ constexpr int kDirections = 26;
 // Directions 13..25 point "forwards" (lexicographically after the node): each undirected edge
 // is visited once, from its first node, and costed both ways.
 constexpr int kFirstForwardDirection = 13;
-
-// Runs body(i) for i in [0, count) on `workers` threads, in blocks taken in turn; the calling
-// thread reports progress (share of blocks done) while it waits.
-template <typename Body>
-void parallelFor(std::size_t count, int workers, const std::function<void(double)>& progress, Body&& body) {
-  constexpr std::size_t kBlock = 256;
-  const std::size_t blocks = (count + kBlock - 1) / kBlock;
-  std::atomic<std::size_t> next{0}, done{0};
-  const auto work = [&] {
-    for (std::size_t block = next++; block < blocks; block = next++) {
-      const std::size_t end = std::min(count, (block + 1) * kBlock);
-      for (std::size_t i = block * kBlock; i < end; ++i) body(i);
-      ++done;
-    }
-  };
-  std::vector<std::thread> threads;
-  const std::size_t thread_count = std::min<std::size_t>(static_cast<std::size_t>(workers), std::max<std::size_t>(blocks, 1));
-  for (std::size_t t = 0; t < thread_count; ++t) threads.emplace_back(work);
-  while (progress && done < blocks) {
-    progress(static_cast<double>(done) / blocks);
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  for (std::thread& thread : threads) thread.join();
-}
 
 std::array<int, 3> neighbour(const std::array<int, 3>& at, const std::array<int, 3>& offset) {
   return {at[0] + offset[0], at[1] + offset[1], at[2] + offset[2]};
@@ -82,7 +56,8 @@ LatticeRoadmap::LatticeRoadmap(const SafetyRules& rules, const FlightObjective& 
       throw std::invalid_argument("a roadmap place lies outside the map");
   zone_radius_m_ = rules_.exemptRadius_m();
   node_count_ = detail::LatticeGrid(rules_.environment().grid().frame(), options_.stride_voxels).nodeCount();
-  if (node_count_ >= kNoSlot) throw std::invalid_argument("the map has too many lattice nodes: raise the roadmap stride");
+  if (node_count_ >= kNoSlot)
+    throw std::invalid_argument("the map has too many lattice nodes: raise the roadmap stride");
   // Shares of the build time, roughly as on the shipped bridge: nodes 10 %, edges 80 %, places 10 %.
   const auto report = [this](double share) {
     if (options_.progress) options_.progress(share);
@@ -98,7 +73,8 @@ void LatticeRoadmap::buildNodes() {
   const detail::LatticeGrid lattice(rules_.environment().grid().frame(), options_.stride_voxels);
   const SafetyRules core = rules_.withExemptions({});
   std::vector<char> valid(node_count_, 0);
-  parallelFor(node_count_, options_.workers, {}, [&](std::size_t id) { valid[id] = core.isStateValid(lattice.position(id)); });
+  parallelFor(node_count_, options_.workers,
+              [&](std::size_t id) { valid[id] = core.isStateValid(lattice.position(id)); });
   slot_.assign(node_count_, kNoSlot);
   for (std::size_t id = 0; id < node_count_; ++id)
     if (valid[id]) {
@@ -114,24 +90,27 @@ void LatticeRoadmap::buildEdges(const std::function<void(double)>& progress) {
   const FlightCostModel& model = objective_.model();
   core_costs_.assign(valid_nodes_.size() * kDirections, kNoEdge);
   // Each (node, direction) cell is written by the one task that owns its edge's first node.
-  parallelFor(valid_nodes_.size(), options_.workers, progress, [&](std::size_t row) {
-    const std::uint32_t id = valid_nodes_[row];
-    const std::array<int, 3> at = lattice.indices(id);
-    const Eigen::Vector3d here = lattice.position(id);
-    for (int d = kFirstForwardDirection; d < kDirections; ++d) {
-      const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
-      if (!lattice.inside(to[0], to[1], to[2])) continue;
-      const std::uint32_t other = slot_[lattice.id(to[0], to[1], to[2])];
-      if (other == kNoSlot) continue;
-      const Eigen::Vector3d there = lattice.position(to[0], to[1], to[2]);
-      if (!core.isMotionValid(here, there)) continue;
-      const auto [forth, back] =
-          model.integrateBothWays(here, there, [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
-      core_costs_[row * kDirections + d] = static_cast<float>(objective_.weights().of(forth));
-      core_costs_[static_cast<std::size_t>(other) * kDirections + directions.opposite[d]] =
-          static_cast<float>(objective_.weights().of(back));
-    }
-  });
+  parallelFor(
+      valid_nodes_.size(), options_.workers,
+      [&](std::size_t row) {
+        const std::uint32_t id = valid_nodes_[row];
+        const std::array<int, 3> at = lattice.indices(id);
+        const Eigen::Vector3d here = lattice.position(id);
+        for (int d = kFirstForwardDirection; d < kDirections; ++d) {
+          const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
+          if (!lattice.inside(to[0], to[1], to[2])) continue;
+          const std::uint32_t other = slot_[lattice.id(to[0], to[1], to[2])];
+          if (other == kNoSlot) continue;
+          const Eigen::Vector3d there = lattice.position(to[0], to[1], to[2]);
+          if (!core.isMotionValid(here, there)) continue;
+          const auto [forth, back] = model.integrateBothWays(
+              here, there, [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
+          core_costs_[row * kDirections + d] = static_cast<float>(objective_.weights().of(forth));
+          core_costs_[static_cast<std::size_t>(other) * kDirections + directions.opposite[d]] =
+              static_cast<float>(objective_.weights().of(back));
+        }
+      },
+      progress);
 }
 
 float LatticeRoadmap::coreCost(std::uint32_t node, int direction) const {
@@ -151,7 +130,7 @@ void LatticeRoadmap::buildPlaces() {
   const auto conditions = [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
   const auto cost = [&](const MotionTotals& totals) { return objective_.weights().of(totals); };
 
-  parallelFor(places, options_.workers, {}, [&](std::size_t place) {
+  parallelFor(places, options_.workers, [&](std::size_t place) {
     const Eigen::Vector3d& centre = places_m_[place];
     // What a route starting or ending here may do (free mode: come close to the structure).
     const SafetyRules near = rules_.withExemptions({centre});
@@ -160,9 +139,11 @@ void LatticeRoadmap::buildPlaces() {
       int lo[3], hi[3];
       for (int axis = 0; axis < 3; ++axis) {
         const double origin = lattice.position(0, 0, 0)[axis];
-        lo[axis] = std::max(0, static_cast<int>(std::floor((centre[axis] - zone_radius_m_ - origin) / lattice.spacing_m())));
-        hi[axis] = std::min(lattice.size(axis) - 1,
-                            static_cast<int>(std::ceil((centre[axis] + zone_radius_m_ - origin) / lattice.spacing_m())));
+        lo[axis] =
+            std::max(0, static_cast<int>(std::floor((centre[axis] - zone_radius_m_ - origin) / lattice.spacing_m())));
+        hi[axis] =
+            std::min(lattice.size(axis) - 1,
+                     static_cast<int>(std::ceil((centre[axis] + zone_radius_m_ - origin) / lattice.spacing_m())));
       }
       for (int c = lo[2]; c <= hi[2]; ++c)
         for (int b = lo[1]; b <= hi[1]; ++b)
@@ -216,8 +197,10 @@ std::size_t LatticeRoadmap::edgeCount() const {
 std::size_t LatticeRoadmap::memoryBytes() const {
   std::size_t bytes = slot_.size() * sizeof(std::uint32_t) + valid_nodes_.size() * sizeof(std::uint32_t) +
                       core_costs_.size() * sizeof(float);
-  for (const Zone& zone : zones_) bytes += zone.nodes.size() * sizeof(std::uint32_t) + zone.costs.size() * sizeof(float);
-  for (std::size_t p = 0; p < joins_out_.size(); ++p) bytes += (joins_out_[p].size() + joins_in_[p].size()) * sizeof(Join);
+  for (const Zone& zone : zones_)
+    bytes += zone.nodes.size() * sizeof(std::uint32_t) + zone.costs.size() * sizeof(float);
+  for (std::size_t p = 0; p < joins_out_.size(); ++p)
+    bytes += (joins_out_[p].size() + joins_in_[p].size()) * sizeof(Join);
   return bytes;
 }
 
@@ -254,7 +237,8 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::routesFrom(int from) co
   };
   const auto nodeOf = [&](std::size_t state) -> std::uint32_t {
     if (state < lattice_states) return static_cast<std::uint32_t>(state);
-    const int p = static_cast<int>(std::upper_bound(zone_offset.begin(), zone_offset.end(), state) - zone_offset.begin()) - 1;
+    const int p =
+        static_cast<int>(std::upper_bound(zone_offset.begin(), zone_offset.end(), state) - zone_offset.begin()) - 1;
     return zones_[p].nodes[state - zone_offset[p]];
   };
   const auto arrive = [&](int goal, std::uint32_t node, std::size_t state, double g) {
@@ -296,14 +280,16 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::routesFrom(int from) co
       }
     } else {
       // The final approach to one goal, inside its zone.
-      const int goal = static_cast<int>(std::upper_bound(zone_offset.begin(), zone_offset.end(), state) - zone_offset.begin()) - 1;
+      const int goal =
+          static_cast<int>(std::upper_bound(zone_offset.begin(), zone_offset.end(), state) - zone_offset.begin()) - 1;
       const Zone& zone = zones_[goal];
       const std::size_t slot = state - zone_offset[goal];
       for (int d = 0; d < kDirections; ++d) {
         const float c = zone.costs[slot * kDirections + d];
         if (c == kNoEdge) continue;
         const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
-        relax(zone_offset[goal] + *zone.slotOf(static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]))), state, g + c);
+        relax(zone_offset[goal] + *zone.slotOf(static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]))), state,
+              g + c);
       }
       arrive(goal, node, state, g);
     }

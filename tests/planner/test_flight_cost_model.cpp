@@ -30,6 +30,21 @@ TEST(FlightCostModel, LevelFlightInFreeAirTakesLengthOverCruiseSpeed) {
   EXPECT_NEAR(totals.charge_ah, free_air_a * 2.0 / 3600.0, 1e-9);
 }
 
+TEST(FlightCostModel, BothWaysAtOnceIsEachWayOnItsOwn) {
+  CorridorModels scene;
+  const FlightCostModel model(scene.environment, scene.energy, CostModelOptions{});
+  // Climbing towards the ceiling: the two directions differ in speed and current.
+  const Eigen::Vector3d a(1.0, 0.3, 1.2), b(2.3, -0.4, 3.3);
+  const auto [forth, back] = model.integrateBothWays(a, b, [&](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
+  const planner::MotionTotals up = model.integrate(a, b), down = model.integrate(b, a);
+  EXPECT_NE(up.charge_ah, down.charge_ah);
+  EXPECT_NEAR(forth.charge_ah, up.charge_ah, 1e-12 * up.charge_ah);
+  EXPECT_NEAR(forth.duration_s, up.duration_s, 1e-12 * up.duration_s);
+  EXPECT_NEAR(back.charge_ah, down.charge_ah, 1e-12 * down.charge_ah);
+  EXPECT_NEAR(back.duration_s, down.duration_s, 1e-12 * down.duration_s);
+  EXPECT_DOUBLE_EQ(back.length_m, up.length_m);
+}
+
 TEST(FlightCostModel, VerticalMotionsFollowClimbAndDescentRates) {
   CorridorModels scene;
   const FlightCostModel model(scene.environment, scene.energy, CostModelOptions{});

@@ -29,20 +29,23 @@ using testing::scratchDirectory;
 
 const std::filesystem::path kVehicle = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/vehicles/quad.yaml";
 
-bool occupied(double x, double y, double z) {
+bool occupied(double x, double y, double z, bool closet) {
   if (z < 0.2) return true;                                        // floor
   if (x >= 2.0 && z >= 3.0) return true;                          // deck slab, 3 m up, over x >= 2
+  // A closed closet under the deck: walls round x [6.6, 8.4), y [2.2, 4.0), the hall's edge beyond.
+  if (closet && y >= 2.0 && ((x >= 6.4 && x < 6.6) || (x >= 8.4 && x < 8.6) || (y < 2.2 && x >= 6.4 && x < 8.6)))
+    return true;
   return x >= 4.2 && x < 5.8 && y >= -0.8 && y < 0.8;             // pier under the deck
 }
 
 // The hall at 0.1 m: x [-1, 9), y [-4, 4), z [0, 3.4); every voxel known.
-void writeHall(const std::filesystem::path& file) {
+void writeHall(const std::filesystem::path& file, bool closet) {
   const double resolution = 0.1;
   octomap::OcTree tree(resolution);
   for (double z = 0.05; z < 3.4; z += resolution)
     for (double y = -3.95; y < 4.0; y += resolution)
       for (double x = -0.95; x < 9.0; x += resolution) {
-        const bool occ = occupied(x, y, z);
+        const bool occ = occupied(x, y, z, closet);
         tree.setNodeValue(octomap::point3d(x, y, z), occ ? tree.getClampingThresMaxLog() : tree.getClampingThresMinLog(),
                           true);
       }
@@ -55,11 +58,12 @@ struct MissionText {
   std::string battery = "{capacity_ah: 5.2, start_soc: 0.95, reserve_soc: 0.25, charge_current_a: 10.4}";
   std::string origin = "origin: {lat: 52.218, lon: 0.0923, alt: 12.0}\n";
   std::string extra_targets;
+  bool closet = false;  // the hall with a closed closet under the deck
 };
 
 // DIR/hall.bt and DIR/mission.yaml.
 std::filesystem::path writeMission(const std::filesystem::path& dir, const MissionText& text = {}) {
-  writeHall(dir / "hall.bt");
+  writeHall(dir / "hall.bt", text.closet);
   std::ofstream out(dir / "mission.yaml");
   out << "map: hall.bt\nvehicle: " << kVehicle.string() << "\nbattery: " << text.battery
       << "\nhome: [0.0, 0.0, 0.5]\n"
@@ -80,8 +84,8 @@ std::vector<Eigen::Vector3d> points(const nlohmann::json& list) {
   return result;
 }
 
-// The lattice planner: reproducible legs, and fast on a map this small.
-const std::string kFast = " --planner lattice --lattice-stride 4 --time-limit-s 20";
+// The default leg planner (the roadmap), with nothing but the workers set.
+const std::string kFast = " --workers 2";
 
 // What one run of both modes wrote, checked by the specifications below (one run: planning is
 // the slow part, and ctest runs every test in its own process).
@@ -252,6 +256,37 @@ TEST(TourCommand, TargetNoSortieCanReachAndReturnFromIsNamed) {
   text.battery = "{capacity_ah: 0.6, start_soc: 0.95, reserve_soc: 0.25, charge_current_a: 1.2}";
   text.extra_targets = "  - {name: long_look, point: [7.0, -1.0, 3.0], dwell_s: 200, standoff_m: [0.3, 1.5]}\n";
   expectFailure("long_look", text, " --mode ceiling", 1, "long_look");
+}
+
+TEST(TourCommand, TargetWithAViewpointButNoWayInIsNamedWithExitCode3) {
+  MissionText text;
+  text.closet = true;
+  text.extra_targets = "  - {name: closet_ceiling, point: [7.5, 3.1, 3.0], dwell_s: 5, standoff_m: [0.3, 1.5]}\n";
+  expectFailure("closet", text, " --mode ceiling", 3, "closet_ceiling");
+}
+
+TEST(TourCommand, RoadmapToursAreReproducibleWhateverTheThreadCount) {
+  const std::filesystem::path dir = scratchDirectory("tour_reproducible");
+  const std::filesystem::path mission = writeMission(dir);
+  for (const char* workers : {"1", "2"}) {
+    const testing::CommandResult result = runCeilplan("tour --mission " + mission.string() + " --mode both --workers " +
+                                                      workers + " --out " + (dir / workers).string());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+  }
+  for (const char* file : {"ceiling/tour.json", "free/tour.json", "ceiling/path.csv", "comparison.json"})
+    EXPECT_EQ(readWholeFile(dir / "1" / file), readWholeFile(dir / "2" / file)) << file;
+}
+
+TEST(TourCommand, PairwisePlannersStillPlanEveryLeg) {
+  const std::filesystem::path dir = scratchDirectory("tour_pairwise");
+  const std::filesystem::path mission = writeMission(dir);
+  const testing::CommandResult result =
+      runCeilplan("tour --mission " + mission.string() + " --mode ceiling --planner lattice --lattice-stride 4 "
+                  "--time-limit-s 20 --out " + (dir / "out").string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json tour = readJson(dir / "out" / "tour.json");
+  EXPECT_EQ(tour["planner"], "lattice");
+  EXPECT_EQ(tour["targets_visited"], 4);
 }
 
 TEST(TourCommand, MissingGeodeticOriginFailsWhenExporting) {

@@ -1,0 +1,163 @@
+// LatticeRoadmap: one roadmap, one Dijkstra search per place. Its routes cost what the lattice
+// A* finds between the same places, they do not depend on the thread count, and in free mode a
+// route comes close to the structure only near its own start and goal.
+
+#include "planner_fixtures.hpp"
+
+#include "ceilplan/planner/flight_planner.hpp"
+#include "ceilplan/planner/lattice_planner.hpp"
+#include "ceilplan/planner/lattice_roadmap.hpp"
+#include "ceilplan/planner/parallel_for.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <stdexcept>
+
+namespace ceilplan::testing {
+namespace {
+
+// A 3.3 x 2.4 m room, ceiling at 2.0 m with one 0.4 m deep beam across it at x in [0, 0.3).
+environment::OccupancyMap beamRoom() {
+  return analyticMap({-1.5, -1.2, 0}, {1.8, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || c.z() > 2.0) return CellState::Occupied;
+    if (c.x() >= 0.0 && c.x() < 0.3 && c.z() > 1.6) return CellState::Occupied;
+    return CellState::Free;
+  });
+}
+
+struct BeamRoom {
+  environment::OccupancyMap map = beamRoom();
+  environment::Environment environment{map, quad()};
+  energy::EnergyModel energy = paperEnergy();
+  planner::SafetyRules rules{environment, 0.05};
+  planner::FlightCostModel model{environment, energy, planner::CostModelOptions{}};
+  planner::FlightPlanner planner{rules, model, planner::ObjectiveChoice{}};
+  // Under the ceiling on either side of the beam, and low on the near side.
+  std::vector<Eigen::Vector3d> places{{-0.8, -0.3, 1.9}, {1.0, 0.4, 1.9}, {-0.9, 0.5, 0.8}};
+};
+
+TEST(LatticeRoadmap, RoutesAcrossTheBeamCostWhatTheLatticeAStarFinds) {
+  BeamRoom room;
+  planner::RoadmapOptions options;
+  options.stride_voxels = 3;
+  const planner::LatticeRoadmap roadmap(room.rules, room.planner.objective(), room.places, options);
+  planner::LatticeOptions lattice_options;
+  lattice_options.stride_voxels = 3;
+  for (const auto& [from, to] : std::vector<std::pair<int, int>>{{0, 1}, {1, 0}, {2, 1}, {1, 2}}) {
+    const auto routes = roadmap.routesFrom(from);
+    ASSERT_TRUE(routes[to]) << from << " -> " << to;
+    planner::LatticePlanner lattice(room.rules, room.planner.objective(), lattice_options);
+    const auto found = lattice.plan(room.places[from], room.places[to]);
+    ASSERT_TRUE(found);
+    // Edge costs are stored in single precision.
+    EXPECT_NEAR(routes[to]->cost, found->cost, 1e-5 * found->cost) << from << " -> " << to;
+    EXPECT_NEAR(room.planner.objective().pathCost(routes[to]->waypoints), routes[to]->cost, 1e-5 * found->cost);
+    EXPECT_EQ(routes[to]->waypoints.front(), room.places[from]);
+    EXPECT_EQ(routes[to]->waypoints.back(), room.places[to]);
+    EXPECT_FALSE(room.rules.checkPathDensely(routes[to]->waypoints)) << from << " -> " << to;
+  }
+  EXPECT_FALSE(roadmap.routesFrom(0)[0]);  // no route from a place to itself
+}
+
+TEST(LatticeRoadmap, IsTheSameBuiltOnOneThreadOrThree) {
+  BeamRoom room;
+  planner::RoadmapOptions one, three;
+  one.stride_voxels = three.stride_voxels = 2;
+  one.workers = 1;
+  three.workers = 3;
+  const planner::LatticeRoadmap a(room.rules, room.planner.objective(), room.places, one);
+  const planner::LatticeRoadmap b(room.rules, room.planner.objective(), room.places, three);
+  EXPECT_EQ(a.edgeCount(), b.edgeCount());
+  for (int from = 0; from < 3; ++from) {
+    const auto routes_a = a.routesFrom(from), routes_b = b.routesFrom(from);
+    for (int to = 0; to < 3; ++to) {
+      ASSERT_EQ(routes_a[to].has_value(), routes_b[to].has_value());
+      if (!routes_a[to]) continue;
+      EXPECT_EQ(routes_a[to]->cost, routes_b[to]->cost);
+      EXPECT_EQ(routes_a[to]->waypoints, routes_b[to]->waypoints);
+    }
+  }
+}
+
+TEST(LatticeRoadmap, SaysNothingOfAPlaceBehindAWall) {
+  const environment::OccupancyMap map = analyticMap({-1.2, -1.2, 0}, {1.6, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || c.z() > 2.0 || (c.x() > 0.2 && c.x() < 0.4)) return CellState::Occupied;
+    return CellState::Free;
+  });
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const planner::SafetyRules rules(environment, 0.05);
+  const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
+  const planner::FlightPlanner planner(rules, model, planner::ObjectiveChoice{});
+  planner::RoadmapOptions options;
+  options.stride_voxels = 2;  // right of the wall the vehicle fits in a strip 0.3 m wide
+  const planner::LatticeRoadmap roadmap(rules, planner.objective(), {{-0.6, 0.0, 1.0}, {1.0, 0.0, 1.0}, {-0.5, 0.5, 1.2}},
+                                        options);
+  const auto routes = roadmap.routesFrom(0);
+  EXPECT_FALSE(routes[1]);
+  EXPECT_TRUE(routes[2]);
+}
+
+TEST(LatticeRoadmap, RefusesBadOptionsAndPlacesOutsideTheMap) {
+  BeamRoom room;
+  planner::RoadmapOptions options;
+  options.stride_voxels = 0;
+  EXPECT_THROW(planner::LatticeRoadmap(room.rules, room.planner.objective(), room.places, options), std::invalid_argument);
+  EXPECT_THROW(planner::LatticeRoadmap(room.rules, room.planner.objective(), {{9.0, 0.0, 1.0}}), std::invalid_argument);
+  const planner::LatticeRoadmap roadmap(room.rules, room.planner.objective(), room.places);
+  EXPECT_THROW(roadmap.routesFrom(3), std::out_of_range);
+}
+
+// A 12 m corridor under a flat ceiling at 3.5 m; three places hugging the ceiling, 5.5 m apart.
+// With a 1 m standoff, the route from the first to the last may hug the ceiling near its own
+// ends only: past the middle place it must drop to the standoff band.
+TEST(LatticeRoadmap, InFreeModeARouteUsesOnlyItsOwnEndsApproachZones) {
+  const environment::OccupancyMap map = analyticMap({-0.7, -2.7, 0}, {12.7, 2.7, 4.2}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || std::abs(c.y()) > 2.5 || c.x() < -0.5 || c.x() > 12.5) return CellState::Occupied;
+    if (c.z() < 3.5) return CellState::Free;
+    return c.z() < 3.9 ? CellState::Occupied : CellState::Unknown;
+  });
+  const environment::Environment plain(map, quad());
+  const environment::Environment standoff(map, planner::withStandoff(quad(), 1.0));
+  const energy::EnergyModel energy = paperEnergy();
+  const std::vector<Eigen::Vector3d> places{{0.5, 0.0, 3.35}, {6.0, 0.0, 3.35}, {11.5, 0.0, 3.35}};
+  const planner::SafetyRules rules(plain, 0.05, planner::standoffZone(standoff, plain, 1.0, places[0], places[0]));
+  planner::CostModelOptions free_air;
+  free_air.proximity_effects = false;
+  const planner::FlightCostModel model(plain, energy, free_air);
+  const planner::FlightPlanner planner(rules, model, planner::ObjectiveChoice{});
+  planner::RoadmapOptions options;
+  options.stride_voxels = 3;
+  const planner::LatticeRoadmap roadmap(rules, planner.objective(), places, options);
+  for (const auto& [from, to] : std::vector<std::pair<int, int>>{{0, 2}, {2, 0}, {0, 1}}) {
+    const auto routes = roadmap.routesFrom(from);
+    ASSERT_TRUE(routes[to]) << from << " -> " << to;
+    const planner::SafetyRules pair_rules = rules.withExemptions({places[from], places[to]});
+    const std::vector<Eigen::Vector3d>& route = routes[to]->waypoints;
+    for (std::size_t k = 1; k < route.size(); ++k)
+      EXPECT_TRUE(pair_rules.isMotionValid(route[k - 1], route[k])) << from << " -> " << to << ", segment " << k;
+    if (from + to == 2) {  // past the middle place
+      double lowest = route.front().z();
+      for (const Eigen::Vector3d& p : route) lowest = std::min(lowest, p.z());
+      EXPECT_LT(lowest, 3.5 - 1.0 - 0.06) << "the route should drop below the ceiling's standoff";
+    }
+  }
+}
+
+TEST(ParallelFor, RunsEveryIndexOnceAndRethrowsTheFailure) {
+  std::vector<std::atomic<int>> runs(100);
+  planner::parallelFor(runs.size(), 3, [&](std::size_t i) { ++runs[i]; });
+  for (const std::atomic<int>& count : runs) EXPECT_EQ(count.load(), 1);
+  try {
+    planner::parallelFor(10, 2, [](std::size_t i) {
+      if (i == 4) throw std::runtime_error("task 4 failed");
+    });
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "task 4 failed");
+  }
+}
+
+}  // namespace
+}  // namespace ceilplan::testing
