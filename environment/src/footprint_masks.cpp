@@ -56,7 +56,8 @@ bool FootprintMasks::mayBlock(int i, int j, double bottom_m, double top_m) const
   const std::uint64_t* bits = reach_.data() + (static_cast<std::size_t>(j) * frame_.size()[0] + i) * words_;
   for (int w = k_lo / 64; w <= k_hi / 64; ++w) {
     const int lo = std::max(k_lo - 64 * w, 0), hi = std::min(k_hi - 64 * w, 63);
-    const std::uint64_t range = (hi == 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << (hi + 1)) - 1) & ~((std::uint64_t{1} << lo) - 1);
+    const std::uint64_t range =
+        (hi == 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << (hi + 1)) - 1) & ~((std::uint64_t{1} << lo) - 1);
     if (bits[w] & range) return true;
   }
   return false;
