@@ -106,9 +106,10 @@ std::optional<ViolationKind> scanCylinder(const Environment& environment, const 
 TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {
   // Occupied slabs and pillars with unknown pockets next to them, and unknown beyond x = 1.5,
   // under both unknown-space policies, states close to everything (and poking out of the map).
-  const OccupancyMap map = analyticMap({-2, -2, 0}, {2, 2, 3.4}, 0.1, [](const Eigen::Vector3d& c) {
+  // 70 voxels high: the masks' bits span two words, the slab at 6.4 m straddles them.
+  const OccupancyMap map = analyticMap({-2, -2, 0}, {2, 2, 7.0}, 0.1, [](const Eigen::Vector3d& c) {
     if (c.x() > 1.5) return CellState::Unknown;
-    if (c.z() < 0.2 || c.z() > 3.0) return CellState::Occupied;
+    if (c.z() < 0.2 || c.z() > 6.6 || (c.z() > 6.2 && c.z() < 6.5 && c.y() < 0.0)) return CellState::Occupied;
     if (c.x() > 0.3 && c.x() < 0.7 && c.z() > 1.0 && c.z() < 1.3) return CellState::Unknown;
     if (c.x() > 0.7 && c.x() < 1.0 && std::abs(c.y()) < 0.5) return CellState::Occupied;
     if (c.y() > 1.0 && c.z() > 2.0 && c.z() < 2.2) return CellState::Occupied;
@@ -119,9 +120,9 @@ TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {
     options.unknown_is_occupied = unknown_blocks;
     const Environment environment(map, quad(), options);
     std::mt19937 random(11);
-    std::uniform_real_distribution<double> xy(-1.95, 1.95), z(0.05, 3.35);
+    std::uniform_real_distribution<double> xy(-1.95, 1.95), z(0.05, 6.95);
     int blocked = 0, unknown = 0;
-    for (int n = 0; n < 20000; ++n) {
+    for (int n = 0; n < 40000; ++n) {
       const Eigen::Vector3d p(xy(random), xy(random), z(random));
       if (!environment.contains(p)) continue;  // the map ends where the known voxels end, at x = 1.5
       const std::optional<ViolationKind> expected = scanCylinder(environment, p, unknown_blocks);
