@@ -7,10 +7,12 @@
 #include "ceilplan/energy/paper_quad.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
 
 #include <functional>
 #include <memory>
+#include <utility>
 
 namespace ceilplan::testing {
 
@@ -29,9 +31,30 @@ inline environment::OccupancyMap corridor(const std::function<double(double x, d
 
 inline double flatCeiling(double, double) { return 3.5; }
 
+// A 3.3 x 2.4 m room, ceiling at 2.0 m with one 0.4 m deep beam across it at x in [0, 0.3).
+inline environment::OccupancyMap beamRoom() {
+  return analyticMap({-1.5, -1.2, 0}, {1.8, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || c.z() > 2.0) return CellState::Occupied;
+    if (c.x() >= 0.0 && c.x() < 0.3 && c.z() > 1.6) return CellState::Occupied;
+    return CellState::Free;
+  });
+}
+
 inline energy::EnergyModel paperEnergy() { return energy::EnergyModel(energy::paperQuadParameters()); }
 
 // Start and goal under a ceiling at height h: the rotor plane 7 cm below it.
 inline double bodyHeightUnder(double ceiling_m) { return ceiling_m - 0.1; }
+
+// A map with the default vehicle, the paper's energy model, ceiling-mode rules (5 cm minimum
+// rotor gap) and a planner under the charge objective.
+struct CeilingScene {
+  explicit CeilingScene(environment::OccupancyMap scene_map) : map(std::move(scene_map)) {}
+  environment::OccupancyMap map;
+  environment::Environment environment{map, quad()};
+  energy::EnergyModel energy = paperEnergy();
+  planner::SafetyRules rules{environment, 0.05};
+  planner::FlightCostModel model{environment, energy, planner::CostModelOptions{}};
+  planner::FlightPlanner planner{rules, model, planner::ObjectiveChoice{}};
+};
 
 }  // namespace ceilplan::testing

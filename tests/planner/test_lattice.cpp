@@ -13,15 +13,6 @@
 namespace ceilplan::testing {
 namespace {
 
-// A 3.3 x 2.4 m room, ceiling at 2.0 m with one 0.4 m deep beam across it at x in [0, 0.3).
-environment::OccupancyMap beamRoom() {
-  return analyticMap({-1.5, -1.2, 0}, {1.8, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
-    if (c.z() < 0.2 || c.z() > 2.0) return CellState::Occupied;
-    if (c.x() >= 0.0 && c.x() < 0.3 && c.z() > 1.6) return CellState::Occupied;
-    return CellState::Free;
-  });
-}
-
 double bruteForceCost(const planner::SafetyRules& rules, const planner::FlightObjective& objective, int stride,
                       const Eigen::Vector3d& start, const Eigen::Vector3d& goal) {
   const environment::GridFrame& frame = rules.environment().grid().frame();
@@ -85,16 +76,11 @@ TEST(LatticePlanner, MatchesExhaustiveSearchOnATinyLattice) {
 }
 
 TEST(LatticePlanner, SaysNoPathWhenAWallSeparatesStartAndGoal) {
-  const environment::OccupancyMap map = analyticMap({-1.2, -1.2, 0}, {1.2, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
+  const CeilingScene scene(analyticMap({-1.2, -1.2, 0}, {1.2, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
     if (c.z() < 0.2 || c.z() > 2.0 || (c.x() > -0.1 && c.x() < 0.1)) return CellState::Occupied;
     return CellState::Free;
-  });
-  const environment::Environment environment(map, quad());
-  const energy::EnergyModel energy = paperEnergy();
-  const planner::SafetyRules rules(environment, 0.05);
-  const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
-  const planner::FlightPlanner planner(rules, model, planner::ObjectiveChoice{});
-  planner::LatticePlanner lattice(rules, planner.objective());
+  }));
+  planner::LatticePlanner lattice(scene.rules, scene.planner.objective());
   EXPECT_FALSE(lattice.plan({-0.6, 0.0, 1.0}, {0.6, 0.0, 1.0}));
   EXPECT_FALSE(lattice.stopped());
 }

@@ -17,22 +17,8 @@
 namespace ceilplan::testing {
 namespace {
 
-// A 3.3 x 2.4 m room, ceiling at 2.0 m with one 0.4 m deep beam across it at x in [0, 0.3).
-environment::OccupancyMap beamRoom() {
-  return analyticMap({-1.5, -1.2, 0}, {1.8, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
-    if (c.z() < 0.2 || c.z() > 2.0) return CellState::Occupied;
-    if (c.x() >= 0.0 && c.x() < 0.3 && c.z() > 1.6) return CellState::Occupied;
-    return CellState::Free;
-  });
-}
-
-struct BeamRoom {
-  environment::OccupancyMap map = beamRoom();
-  environment::Environment environment{map, quad()};
-  energy::EnergyModel energy = paperEnergy();
-  planner::SafetyRules rules{environment, 0.05};
-  planner::FlightCostModel model{environment, energy, planner::CostModelOptions{}};
-  planner::FlightPlanner planner{rules, model, planner::ObjectiveChoice{}};
+struct BeamRoom : CeilingScene {
+  BeamRoom() : CeilingScene(beamRoom()) {}
   // Under the ceiling on either side of the beam, and low on the near side.
   std::vector<Eigen::Vector3d> places{{-0.8, -0.3, 1.9}, {1.0, 0.4, 1.9}, {-0.9, 0.5, 0.8}};
 };
@@ -81,19 +67,14 @@ TEST(LatticeRoadmap, IsTheSameBuiltOnOneThreadOrThree) {
 }
 
 TEST(LatticeRoadmap, SaysNothingOfAPlaceBehindAWall) {
-  const environment::OccupancyMap map = analyticMap({-1.2, -1.2, 0}, {1.6, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
+  const CeilingScene scene(analyticMap({-1.2, -1.2, 0}, {1.6, 1.2, 2.4}, 0.1, [](const Eigen::Vector3d& c) {
     if (c.z() < 0.2 || c.z() > 2.0 || (c.x() > 0.2 && c.x() < 0.4)) return CellState::Occupied;
     return CellState::Free;
-  });
-  const environment::Environment environment(map, quad());
-  const energy::EnergyModel energy = paperEnergy();
-  const planner::SafetyRules rules(environment, 0.05);
-  const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
-  const planner::FlightPlanner planner(rules, model, planner::ObjectiveChoice{});
+  }));
   planner::RoadmapOptions options;
   options.stride_voxels = 2;  // right of the wall the vehicle fits in a strip 0.3 m wide
-  const planner::LatticeRoadmap roadmap(rules, planner.objective(), {{-0.6, 0.0, 1.0}, {1.0, 0.0, 1.0}, {-0.5, 0.5, 1.2}},
-                                        options);
+  const planner::LatticeRoadmap roadmap(scene.rules, scene.planner.objective(),
+                                        {{-0.6, 0.0, 1.0}, {1.0, 0.0, 1.0}, {-0.5, 0.5, 1.2}}, options);
   const auto routes = roadmap.routesFrom(0);
   EXPECT_FALSE(routes[1]);
   EXPECT_TRUE(routes[2]);
