@@ -65,19 +65,26 @@ PointConditions FlightCostModel::conditionsAt(const Eigen::Vector3d& body_m) con
   return exactConditionsAt(body_m);
 }
 
-PointConditions FlightCostModel::exactConditionsAt(const Eigen::Vector3d& body_m) const {
+PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const environment::SurfaceGaps& ground) {
   PointConditions conditions;
-  const environment::SurfaceGaps ceiling = environment_.ceiling(body_m);
-  conditions.rotor_count = static_cast<int>(ceiling.rotors.size());
+  conditions.rotor_count = static_cast<int>(std::min(ceiling.rotors.size(), conditions.rotors.size()));
   conditions.nearest_ceiling_gap_m = ceiling.nearest_gap_m;
-  if (!options_.proximity_effects) return conditions;  // rotors default to free air
   for (int r = 0; r < conditions.rotor_count; ++r) {
     const environment::RotorGap& rotor = ceiling.rotors[r];
     // Coverage 0 has an infinite mean gap: free air for that rotor.
     conditions.rotors[r] = rotor.coverage > 0.0 ? energy::RotorCeiling{rotor.mean_gap_m, rotor.coverage}
                                                 : energy::RotorCeiling{energy::kNoSurface, 0.0};
   }
-  conditions.ground_gap_m = environment_.ground(body_m).mean_gap_m;
+  conditions.ground_gap_m = ground.coverage > 0.0 ? ground.mean_gap_m : energy::kNoSurface;
+  return conditions;
+}
+
+PointConditions FlightCostModel::exactConditionsAt(const Eigen::Vector3d& body_m) const {
+  const environment::SurfaceGaps ceiling = environment_.ceiling(body_m);
+  if (options_.proximity_effects) return surfaceConditions(ceiling, environment_.ground(body_m));
+  PointConditions conditions;  // rotors and ground default to free air; the speed rule sees the ceiling
+  conditions.rotor_count = static_cast<int>(ceiling.rotors.size());
+  conditions.nearest_ceiling_gap_m = ceiling.nearest_gap_m;
   return conditions;
 }
 

@@ -1,7 +1,8 @@
 #include "ceilplan/planner/viewpoint.hpp"
 
+#include "ceilplan/planner/flight_cost_model.hpp"
+
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -24,9 +25,6 @@ std::string number(double value) {
   std::snprintf(text, sizeof text, "%g", value);
   return text;
 }
-
-// A surface gap as the energy model takes it: +inf when nothing is within reach.
-double modelGap(double coverage, double mean_gap_m) { return coverage > 0.0 ? mean_gap_m : energy::kNoSurface; }
 
 // Whether the segment from the body to the target point crosses only free voxels (stopping
 // half a voxel short of the point, which lies on an occupied voxel's face).
@@ -147,13 +145,11 @@ double hoverCurrentA(const environment::Environment& environment, const energy::
     throw std::invalid_argument("the map's vehicle has " + std::to_string(above.rotors.size()) +
                                 " rotors, the energy model " + std::to_string(model.rotorCount()) +
                                 ": use one vehicle file for both");
-  std::array<energy::RotorCeiling, energy::EnergyModel::kMaxRotors> rotors;
-  for (std::size_t r = 0; r < above.rotors.size(); ++r)
-    rotors[r] = {modelGap(above.rotors[r].coverage, above.rotors[r].mean_gap_m), above.rotors[r].coverage};
+  const PointConditions conditions = surfaceConditions(above, below);
   energy::FlightCondition hover;
-  hover.ground_gap_m = modelGap(below.coverage, below.mean_gap_m);
+  hover.ground_gap_m = conditions.ground_gap_m;
   hover.soc = soc;
-  return model.currentA(rotors.data(), model.rotorCount(), hover);
+  return model.currentA(conditions.rotors.data(), model.rotorCount(), hover);
 }
 
 Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Environment& environment,

@@ -46,6 +46,11 @@ struct PointConditions {
   double nearest_ceiling_gap_m = energy::kNoSurface;  // rotor plane to the nearest ceiling, any rotor (speed rule)
 };
 
+// The map's gaps at a body position as the energy model takes them: each rotor's mean gap and
+// coverage above (free air where nothing covers it), the area-weighted mean gap below, and the
+// nearest rotor-plane gap above. The one mapping from environment to energy model.
+PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const environment::SurfaceGaps& ground);
+
 // The vehicle's velocity along a motion direction at a point.
 struct Velocity {
   double along_m_s = 0.0;       // along the path
