@@ -130,7 +130,8 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
   command->add_option("--autopilot", a->autopilot, "mission files for px4 or ardupilot")
       ->capture_default_str()->check(CLI::IsMember({"px4", "ardupilot"}));
   command->add_flag("--search-every-leg", [a](std::int64_t) { a->options.straight_when_clear = false; },
-                    "search even legs whose straight line is clear (default: refine the straight line)");
+                    "never take a clear straight line in place of the searched route (default: take it where it is valid and "
+                    "cheaper)");
   command->add_flag("--no-export", a->no_export, "skip mission.plan / mission.waypoints (no geodetic origin needed)");
   command->callback([a] { runTour(*a); });
 });
