@@ -11,8 +11,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <memory>
 #include <iterator>
+#include <memory>
 #include <stdexcept>
 
 namespace ceilplan::app {
@@ -124,13 +124,14 @@ battery::DutyResult projectDuty(const TourResult& tour, const planner::SortieBat
   return battery::simulateDuty(battery.pack, duty, duty_options);
 }
 
-
 // The leg planner that searches one roadmap from each place (docs/tours.md).
 const std::string kRoadmapPlanner = "roadmap";
 
 // Refinement of roadmap legs stops at its evaluation budget; this time limit only guards
 // against a pathological case, so refined legs do not depend on the machine's speed.
 constexpr double kRefinementTimeGuardS = 30.0;
+
+std::string legName(const TourResult& tour, int from, int to) { return tour.names[from] + " -> " + tour.names[to]; }
 
 // The rules, cost model and planner for the legs between two places (in free mode the rules
 // exempt the two from the standoff).
@@ -173,7 +174,7 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
     } catch (const planner::NoPathFound& e) {
       failures += std::string(failures.empty() ? "" : "; ") + e.what();
     } catch (const std::exception& e) {
-      throw std::runtime_error(tour.mode + " mode: leg " + tour.names[from] + " -> " + tour.names[to] + ": " + e.what());
+      throw std::runtime_error(tour.mode + " mode: leg " + legName(tour, from, to) + ": " + e.what());
     }
   }
   throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] + ": " +
@@ -251,6 +252,7 @@ void orderAndSplit(TourResult& tour, const MissionFile& mission, const TourOptio
   sortie_options.ageing = ageingOptions(options);
   tour.plan = planner::planSorties(legs, tour.order.targets, mission.battery, sortie_options);
 }
+
 }  // namespace
 
 PlanningArguments planningArguments(const MissionFile& mission) {
@@ -294,7 +296,6 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
   const LegScorer score = [&](const std::vector<Eigen::Vector3d>& waypoints) {
     return planner::evaluatePath(setup.fullModel(), pack, tour.start_soc, waypoints);
   };
-  const auto legName = [&](int from, int to) { return tour.names[from] + " -> " + tour.names[to]; };
   const auto legPlannerFor = [&](int from, int to) {
     return legPlanner(setup, mode, tour.places_m[from], tour.places_m[to]);
   };
@@ -316,7 +317,7 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
     try {
       return legPlannerFor(from, to).planner->postProcess(raw, refinement);
     } catch (const std::exception& e) {
-      throw std::runtime_error(tour.mode + " mode: leg " + legName(from, to) + ": " + e.what());
+      throw std::runtime_error(tour.mode + " mode: leg " + legName(tour, from, to) + ": " + e.what());
     }
   };
   const auto unrefined = [&](const std::vector<std::pair<int, int>>& candidates) {
@@ -349,7 +350,7 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
   for (const planner::Sortie& sortie : tour.plan.sorties)
     for (const planner::SortieLeg& leg : sortie.legs)
       if (const auto violation = setup.baseRules().checkPathDensely(tour.legs[leg.from][leg.to].waypoints))
-        throw std::runtime_error(tour.mode + " mode: leg " + legName(leg.from, leg.to) +
+        throw std::runtime_error(tour.mode + " mode: leg " + legName(tour, leg.from, leg.to) +
                                  " fails the dense re-check: " + *violation);
 
   for (const planner::Sortie& sortie : tour.plan.sorties) tour.sortie_samples.push_back(flownSamples(tour, sortie, pack));

@@ -48,7 +48,11 @@ std::optional<std::uint32_t> LatticeRoadmap::Zone::slotOf(std::uint32_t node) co
 
 LatticeRoadmap::LatticeRoadmap(const SafetyRules& rules, const FlightObjective& objective,
                                std::vector<Eigen::Vector3d> places_m, RoadmapOptions options)
-    : rules_(rules), objective_(objective), places_m_(std::move(places_m)), options_(std::move(options)) {
+    : rules_(rules),
+      core_rules_(rules.withExemptions({})),
+      objective_(objective),
+      places_m_(std::move(places_m)),
+      options_(std::move(options)) {
   if (options_.stride_voxels < 1) throw std::invalid_argument("roadmap stride must be at least 1 voxel");
   if (options_.workers < 1) throw std::invalid_argument("roadmap needs at least one worker thread");
   for (const Eigen::Vector3d& place : places_m_)
@@ -71,10 +75,9 @@ LatticeRoadmap::LatticeRoadmap(const SafetyRules& rules, const FlightObjective& 
 
 void LatticeRoadmap::buildNodes() {
   const detail::LatticeGrid lattice(rules_.environment().grid().frame(), options_.stride_voxels);
-  const SafetyRules core = rules_.withExemptions({});
   std::vector<char> valid(node_count_, 0);
   parallelFor(node_count_, options_.workers,
-              [&](std::size_t id) { valid[id] = core.isStateValid(lattice.position(id)); });
+              [&](std::size_t id) { valid[id] = core_rules_.isStateValid(lattice.position(id)); });
   slot_.assign(node_count_, kNoSlot);
   for (std::size_t id = 0; id < node_count_; ++id)
     if (valid[id]) {
@@ -86,7 +89,6 @@ void LatticeRoadmap::buildNodes() {
 void LatticeRoadmap::buildEdges(const std::function<void(double)>& progress) {
   const detail::LatticeGrid lattice(rules_.environment().grid().frame(), options_.stride_voxels);
   const detail::LatticeDirections directions;
-  const SafetyRules core = rules_.withExemptions({});
   const FlightCostModel& model = objective_.model();
   core_costs_.assign(valid_nodes_.size() * kDirections, kNoEdge);
   // Each (node, direction) cell is written by the one task that owns its edge's first node.
@@ -102,7 +104,7 @@ void LatticeRoadmap::buildEdges(const std::function<void(double)>& progress) {
           const std::uint32_t other = slot_[lattice.id(to[0], to[1], to[2])];
           if (other == kNoSlot) continue;
           const Eigen::Vector3d there = lattice.position(to[0], to[1], to[2]);
-          if (!core.isMotionValid(here, there)) continue;
+          if (!core_rules_.isMotionValid(here, there)) continue;
           const auto [forth, back] = model.integrateBothWays(
               here, there, [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
           core_costs_[row * kDirections + d] = static_cast<float>(objective_.weights().of(forth));

@@ -74,6 +74,7 @@ class LatticeRoadmap {
   float coreCost(std::uint32_t node, int direction) const;
 
   const SafetyRules& rules_;
+  SafetyRules core_rules_;  // without any exemption: what holds along the way
   const FlightObjective& objective_;
   std::vector<Eigen::Vector3d> places_m_;
   RoadmapOptions options_;
