@@ -8,21 +8,15 @@
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/lattice_roadmap.hpp"
 #include "ceilplan/planner/path_refinement.hpp"
+#include "ceilplan/planner/point_text.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <iterator>
 #include <memory>
 #include <stdexcept>
 
 namespace ceilplan::app {
 namespace {
-
-std::string pointText(const Eigen::Vector3d& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", p.x(), p.y(), p.z());
-  return text;
-}
 
 // The rotors stay this much farther from the surface at a viewpoint than the planner's
 // minimum gap, so the leg's end passes the dense re-check with its rounding.
@@ -280,7 +274,7 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
   // it from the standoff, so a home near the ground is accepted.
   const PlanningSetup::Mode home_mode = setup.mode(mode, mission.home_m, mission.home_m);
   if (!home_mode.rules->isStateValid(mission.home_m))
-    throw std::invalid_argument(mission.file.string() + ": home " + pointText(mission.home_m) +
+    throw std::invalid_argument(mission.file.string() + ": home " + planner::pointText(mission.home_m) +
                                 " is not a valid position for the vehicle (inside or too close to a structure, or "
                                 "outside the map); move it into free space");
 

@@ -4,6 +4,7 @@
 #include "ceilplan/planner/motion_validator.hpp"
 #include "ceilplan/planner/ompl_state.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
+#include "ceilplan/planner/point_text.hpp"
 #include "ceilplan/planner/state_validity_checker.hpp"
 
 #include <ompl/base/PlannerTerminationCondition.h>
@@ -14,18 +15,11 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <mutex>
 #include <optional>
 
 namespace ceilplan::planner {
 namespace {
-
-std::string point(const Eigen::Vector3d& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", p.x(), p.y(), p.z());
-  return text;
-}
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -60,13 +54,13 @@ void FlightPlanner::requireValidEndpoint(const Eigen::Vector3d& p, const std::st
   const environment::Environment& environment = rules_.environment();
   if (!environment.contains(p)) {
     const Eigen::AlignedBox3d box = environment.grid().frame().bounds();
-    throw std::invalid_argument(what + " " + point(p) + " lies outside the map " + point(box.min()) + " - " +
-                                point(box.max()));
+    throw std::invalid_argument(what + " " + pointText(p) + " lies outside the map " + pointText(box.min()) + " - " +
+                                pointText(box.max()));
   }
   if (const auto violation = environment.stateViolation(p))
-    throw std::invalid_argument(what + " " + point(p) + " is not a valid state: " + violation->describe());
+    throw std::invalid_argument(what + " " + pointText(p) + " is not a valid state: " + violation->describe());
   if (!rules_.isStateValid(p))
-    throw std::invalid_argument(what + " " + point(p) + " is too close to a ceiling (rotor plane within " +
+    throw std::invalid_argument(what + " " + pointText(p) + " is too close to a ceiling (rotor plane within " +
                                 std::to_string(rules_.minCeilingGap_m()) + " m) or violates the standoff");
 }
 

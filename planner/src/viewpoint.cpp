@@ -1,6 +1,7 @@
 #include "ceilplan/planner/viewpoint.hpp"
 
 #include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/planner/point_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,12 +14,6 @@ namespace ceilplan::planner {
 namespace {
 
 constexpr double kCurrentResolutionA = 1e-3;
-
-std::string point(const Eigen::Vector3d& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", p.x(), p.y(), p.z());
-  return text;
-}
 
 std::string number(double value) {
   char text[32];
@@ -128,7 +123,7 @@ class ViewpointSearch {
 void InspectionTarget::validate() const {
   const std::string what = "target '" + name + "'";
   if (name.empty()) throw std::invalid_argument("a target needs a name");
-  if (!point_m.allFinite()) throw std::invalid_argument(what + ": point must be finite, got " + point(point_m));
+  if (!point_m.allFinite()) throw std::invalid_argument(what + ": point must be finite, got " + pointText(point_m));
   if (!(std::isfinite(standoff_min_m) && std::isfinite(standoff_max_m) && standoff_min_m >= 0.0 &&
         standoff_max_m > 0.0 && standoff_min_m <= standoff_max_m))
     throw std::invalid_argument(what + ": standoff range must be 0 <= min <= max, max > 0, got [" +
@@ -156,13 +151,13 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
                           const energy::EnergyModel& model, const ViewpointOptions& options) {
   target.validate();
   if (!environment.contains(target.point_m))
-    throw std::invalid_argument("target '" + target.name + "' at " + point(target.point_m) + " lies outside the map");
+    throw std::invalid_argument("target '" + target.name + "' at " + pointText(target.point_m) + " lies outside the map");
   ViewpointSearch search(target, environment, model, options);
   const double resolution_m = environment.grid().frame().resolution_m();
   const bool hug = options.mode == ViewpointMode::Ceiling;
   search.scan(target.point_m, resolution_m, target.standoff_max_m, hug);
   if (!search.found())
-    throw std::invalid_argument("target '" + target.name + "' at " + point(target.point_m) +
+    throw std::invalid_argument("target '" + target.name + "' at " + pointText(target.point_m) +
                                 ": no valid viewpoint within " + number(target.standoff_min_m) + "-" +
                                 number(target.standoff_max_m) +
                                 " m that sees it" +
