@@ -1,3 +1,5 @@
+#include "ceilplan/core/error.hpp"
+
 #include "autopilot_export.hpp"
 
 #include "output.hpp"
@@ -27,29 +29,29 @@ std::string number(double value) {
 }
 
 void requireFinite(const Eigen::Vector3d& value, const std::string& what) {
-  if (!value.allFinite()) throw std::invalid_argument(what + " must be finite, got (" + number(value.x()) + ", " +
+  if (!value.allFinite()) throw ceilplan::InputError(what + " must be finite, got (" + number(value.x()) + ", " +
                                                       number(value.y()) + ", " + number(value.z()) + ")");
 }
 
 void requireNonNegative(double value, const std::string& what) {
   if (!std::isfinite(value) || value < 0.0)
-    throw std::invalid_argument(what + " must be finite and non-negative, got " + number(value));
+    throw ceilplan::InputError(what + " must be finite and non-negative, got " + number(value));
 }
 
 const GeodeticOrigin& checkedOrigin(const AutopilotMission& mission) {
   if (!mission.origin)
-    throw std::invalid_argument(
+    throw ceilplan::InputError(
         "cannot export to an autopilot without the map's geodetic origin: add origin: {lat, lon, alt} to the mission file");
   mission.origin->validate();
   requireFinite(mission.home_m, "home");
-  if (mission.waypoints.empty()) throw std::invalid_argument("cannot export a mission without waypoints");
+  if (mission.waypoints.empty()) throw ceilplan::InputError("cannot export a mission without waypoints");
   for (std::size_t k = 0; k < mission.waypoints.size(); ++k) {
     const ExportWaypoint& waypoint = mission.waypoints[k];
     const std::string what = "waypoint " + std::to_string(k + 1);
     requireFinite(waypoint.position_m, what);
     requireNonNegative(waypoint.hold_s, what + " hold time (s)");
     if (waypoint.yaw_deg && !std::isfinite(*waypoint.yaw_deg))
-      throw std::invalid_argument(what + " yaw must be finite, got " + number(*waypoint.yaw_deg));
+      throw ceilplan::InputError(what + " yaw must be finite, got " + number(*waypoint.yaw_deg));
   }
   requireNonNegative(mission.cruise_speed_m_s, "cruise speed (m/s)");
   requireNonNegative(mission.hover_speed_m_s, "hover speed (m/s)");
@@ -88,10 +90,10 @@ GlobalMission toGlobal(const AutopilotMission& mission) {
 
 void GeodeticOrigin::validate() const {
   if (!(latitude_deg >= -90.0 && latitude_deg <= 90.0))
-    throw std::invalid_argument("origin latitude must be in [-90, 90] degrees, got " + number(latitude_deg));
+    throw ceilplan::InputError("origin latitude must be in [-90, 90] degrees, got " + number(latitude_deg));
   if (!(longitude_deg >= -180.0 && longitude_deg <= 180.0))
-    throw std::invalid_argument("origin longitude must be in [-180, 180] degrees, got " + number(longitude_deg));
-  if (!std::isfinite(altitude_m)) throw std::invalid_argument("origin altitude must be finite, got " + number(altitude_m));
+    throw ceilplan::InputError("origin longitude must be in [-180, 180] degrees, got " + number(longitude_deg));
+  if (!std::isfinite(altitude_m)) throw ceilplan::InputError("origin altitude must be finite, got " + number(altitude_m));
 }
 
 Eigen::Vector3d toGeodetic(const GeodeticOrigin& origin, const Eigen::Vector3d& local_m) {
@@ -169,7 +171,7 @@ void writeQgcWpl(const std::filesystem::path& file, const AutopilotMission& miss
 
 std::filesystem::path sortieFileName(const std::filesystem::path& file, int sortie, int sortie_count) {
   if (sortie < 1 || sortie > sortie_count)
-    throw std::invalid_argument("sortie " + std::to_string(sortie) + " is not in 1.." + std::to_string(sortie_count));
+    throw ceilplan::InputError("sortie " + std::to_string(sortie) + " is not in 1.." + std::to_string(sortie_count));
   if (sortie_count == 1) return file;
   return file.parent_path() / (file.stem().string() + "_sortie" + std::to_string(sortie) + file.extension().string());
 }

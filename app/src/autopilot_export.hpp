@@ -3,6 +3,8 @@
 // origin) as mission files autopilots and ground stations read: a QGroundControl .plan (JSON)
 // and a QGC WPL 110 text file. Altitudes are relative to home, as the vehicle arms there.
 
+#include "ceilplan/core/error.hpp"
+
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
@@ -20,7 +22,7 @@ struct GeodeticOrigin {
   double longitude_deg = 0.0;
   double altitude_m = 0.0;
 
-  // Throws std::invalid_argument for a latitude outside [-90, 90], a longitude outside
+  // Throws ceilplan::InputError for a latitude outside [-90, 90], a longitude outside
   // [-180, 180] or a non-finite altitude.
   void validate() const;
 };
@@ -52,7 +54,7 @@ Eigen::Vector3d toLocal(const GeodeticOrigin& origin, const Eigen::Vector3d& geo
 
 // The QGroundControl plan (fileType "Plan", version 1, mission version 2, one SimpleItem
 // NAV_WAYPOINT (16) per waypoint, frame 3 = altitude relative to home). Throws
-// std::invalid_argument naming the problem: missing origin, bad numbers, no waypoints.
+// ceilplan::InputError naming the problem: missing origin, bad numbers, no waypoints.
 nlohmann::json qgcPlan(const AutopilotMission& mission);
 // "QGC WPL 110", then row 0 = home (absolute altitude), then one row per waypoint, 12
 // TAB-separated fields each.

@@ -10,6 +10,7 @@
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/ompl_state.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -62,7 +63,7 @@ std::vector<std::string> splitNames(const std::string& list) {
   std::stringstream in(list);
   for (std::string name; std::getline(in, name, ',');)
     if (!name.empty()) names.push_back(name);
-  if (names.empty()) throw std::invalid_argument("--planners: give at least one planner name");
+  if (names.empty()) throw ceilplan::InputError("--planners: give at least one planner name");
   return names;
 }
 
@@ -80,7 +81,7 @@ void runBench(const BenchArguments& a) {
   for (const std::string& name : names)
     if (name == "lattice" || std::find(planner::plannerNames().begin(), planner::plannerNames().end(), name) ==
                                  planner::plannerNames().end())
-      throw std::invalid_argument("--planners: '" + name + "' is not an OMPL planner ceilplan knows");
+      throw ceilplan::InputError("--planners: '" + name + "' is not an OMPL planner ceilplan knows");
   planner::seedOmpl(a.search.seed);
   const PlanningSetup setup(a.planning);
   const PlanningSetup::Mode planning = setup.mode(modeFromName(a.mode), start, goal);
@@ -96,7 +97,7 @@ void runBench(const BenchArguments& a) {
   planner::PlanResult reference;
   try {
     reference = flight_planner.plan(reference_request);
-  } catch (const planner::NoPathFound& e) {
+  } catch (const ceilplan::NoPathError& e) {
     throw NoPathError(std::string("lattice reference: ") + e.what());
   }
   std::printf("lattice reference (stride %d): %.6g raw, %.6g post-processed, %.1f s\n", a.search.lattice_stride,

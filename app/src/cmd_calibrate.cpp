@@ -5,6 +5,7 @@
 #include "vehicle_energy_file.hpp"
 
 #include "ceilplan/energy/calibration.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -62,7 +63,7 @@ const std::map<std::string, double energy::CalibrationSample::*>& columns() {
 // Reads samples; '#' lines are comments. In the gap columns an empty cell or "none" means no surface.
 std::vector<energy::CalibrationSample> readSamples(const std::string& path, double default_soc) {
   std::ifstream in(path);
-  if (!in) throw std::invalid_argument("cannot read calibration data " + path + " (missing or unreadable)");
+  if (!in) throw ceilplan::InputError("cannot read calibration data " + path + " (missing or unreadable)");
   std::vector<double energy::CalibrationSample::*> header;
   std::vector<std::string> names;
   std::vector<energy::CalibrationSample> samples;
@@ -76,20 +77,20 @@ std::vector<energy::CalibrationSample> readSamples(const std::string& path, doub
       for (const std::string& name : cells) {
         const auto known = columns().find(name);
         if (known == columns().end())
-          throw std::invalid_argument(where + "unknown column '" + name +
+          throw ceilplan::InputError(where + "unknown column '" + name +
                                       "' (known: gap_m, coverage, ground_gap_m, speed_m_s, climb_m_s, soc, current_a)");
         for (const std::string& seen : names)
-          if (seen == name) throw std::invalid_argument(where + "column " + name + " appears twice");
+          if (seen == name) throw ceilplan::InputError(where + "column " + name + " appears twice");
         header.push_back(known->second);
         names.push_back(name);
       }
       bool has_current = false;
       for (const std::string& name : names) has_current |= name == "current_a";
-      if (!has_current) throw std::invalid_argument(where + "the header has no current_a column");
+      if (!has_current) throw ceilplan::InputError(where + "the header has no current_a column");
       continue;
     }
     if (cells.size() != header.size())
-      throw std::invalid_argument(where + std::to_string(cells.size()) + " cells, the header has " +
+      throw ceilplan::InputError(where + std::to_string(cells.size()) + " cells, the header has " +
                                   std::to_string(header.size()));
     energy::CalibrationSample sample;
     sample.soc = default_soc;
@@ -103,12 +104,12 @@ std::vector<energy::CalibrationSample> readSamples(const std::string& path, doub
       errno = 0;
       const double value = std::strtod(cells[c].c_str(), &end);
       if (cells[c].empty() || *end != '\0' || errno == ERANGE || !std::isfinite(value))
-        throw std::invalid_argument(where + "column " + names[c] + ": '" + cells[c] + "' is not a finite number");
+        throw ceilplan::InputError(where + "column " + names[c] + ": '" + cells[c] + "' is not a finite number");
       sample.*header[c] = value;
     }
     samples.push_back(sample);
   }
-  if (samples.empty()) throw std::invalid_argument("calibration data " + path + " holds no samples");
+  if (samples.empty()) throw ceilplan::InputError("calibration data " + path + " holds no samples");
   return samples;
 }
 

@@ -13,6 +13,7 @@
 #include "ceilplan/battery/duty_cycle.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -55,7 +56,7 @@ ModeResult planMode(const CompareArguments& a, const PlanningSetup& setup, Plann
     planner::PlanRequest request = a.search.request(start, goal);
     request.candidates = candidates;
     result.plan = flight_planner.plan(request);
-  } catch (const planner::NoPathFound& e) {
+  } catch (const ceilplan::NoPathError& e) {
     throw NoPathError(result.name + " mode: " + e.what());
   }
   const BatteryChoice& battery = setup.battery();

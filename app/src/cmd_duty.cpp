@@ -3,12 +3,12 @@
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
 #include "output.hpp"
-#include "text_format.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/duty_cycle.hpp"
 #include "ceilplan/battery/lifetime.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -82,11 +82,11 @@ double reductionPct(const CaseResult& first, const CaseResult& other) {
 
 void printTable(const DutyArguments& args, const std::vector<CaseResult>& cases) {
   std::cout << "Duty cycle: " << args.missions_per_day << " missions a day for " << args.days
-            << " days; each flies " << fixed(args.flight_min, 1) << " min, idles " << fixed(args.idle_min, 1)
-            << " min, charges at " << fixed(args.charge_current_a, 2) << " A for at most "
-            << fixed(args.charge_max_min, 1) << " min back to " << fixed(100 * args.soc_start, 1) << " % SOC; "
-            << fixed(args.capacity_ah, 2) << " Ah pack; "
-            << (args.dt_s > 0 ? fixed(args.dt_s, 1) + " s steps" : std::string("exact, event-driven")) << "\n\n";
+            << " days; each flies " << formatFixed(args.flight_min, 1) << " min, idles " << formatFixed(args.idle_min, 1)
+            << " min, charges at " << formatFixed(args.charge_current_a, 2) << " A for at most "
+            << formatFixed(args.charge_max_min, 1) << " min back to " << formatFixed(100 * args.soc_start, 1) << " % SOC; "
+            << formatFixed(args.capacity_ah, 2) << " Ah pack; "
+            << (args.dt_s > 0 ? formatFixed(args.dt_s, 1) + " s steps" : std::string("exact, event-driven")) << "\n\n";
   const auto row = [&](const std::string& label, const auto& cell) {
     std::cout << std::left << std::setw(32) << label;
     for (const CaseResult& c : cases) std::cout << std::right << std::setw(12) << cell(c);
@@ -94,38 +94,38 @@ void printTable(const DutyArguments& args, const std::vector<CaseResult>& cases)
   };
   for (size_t i = 0; i < cases.size(); ++i) std::cout << (i == 0 ? std::string(32, ' ') : "") << std::right << std::setw(12) << "case " + std::to_string(i + 1);
   std::cout << '\n';
-  row("flight current [A]", [](const CaseResult& c) { return fixed(c.flight_current_a, 2); });
-  row("lowest SOC [%]", [](const CaseResult& c) { return fixed(100 * c.run.minSoc(), 1); });
-  row("charge complete [min]", [](const CaseResult& c) { return fixed(c.run.missions.back().charge_end_s / 60, 2); });
-  row("FEC per mission", [](const CaseResult& c) { return fixed(c.run.fecPerMission(), 4); });
-  row("FEC per day", [](const CaseResult& c) { return fixed(c.run.fecPerDay(), 3); });
-  row("FEC after " + std::to_string(args.days) + " days", [](const CaseResult& c) { return fixed(c.run.fecTotal(), 2); });
-  row("charge put back [Ah]", [](const CaseResult& c) { return fixed(c.run.final_state.charge_ah, 1); });
-  row("FEC reduction vs first [%]", [&](const CaseResult& c) { return fixed(reductionPct(cases.front(), c), 2); });
+  row("flight current [A]", [](const CaseResult& c) { return formatFixed(c.flight_current_a, 2); });
+  row("lowest SOC [%]", [](const CaseResult& c) { return formatFixed(100 * c.run.minSoc(), 1); });
+  row("charge complete [min]", [](const CaseResult& c) { return formatFixed(c.run.missions.back().charge_end_s / 60, 2); });
+  row("FEC per mission", [](const CaseResult& c) { return formatFixed(c.run.fecPerMission(), 4); });
+  row("FEC per day", [](const CaseResult& c) { return formatFixed(c.run.fecPerDay(), 3); });
+  row("FEC after " + std::to_string(args.days) + " days", [](const CaseResult& c) { return formatFixed(c.run.fecTotal(), 2); });
+  row("charge put back [Ah]", [](const CaseResult& c) { return formatFixed(c.run.final_state.charge_ah, 1); });
+  row("FEC reduction vs first [%]", [&](const CaseResult& c) { return formatFixed(reductionPct(cases.front(), c), 2); });
   if (cases.front().ageing.empty()) return;
 
-  std::cout << "\nBattery ageing over " << studyDays(args) << " days at " << fixed(args.temperature_c, 1)
-            << " C, capacity fade fed back into the SOH; end of life at " << fixed(100 * args.end_of_life_soh, 0)
+  std::cout << "\nBattery ageing over " << studyDays(args) << " days at " << formatFixed(args.temperature_c, 1)
+            << " C, capacity fade fed back into the SOH; end of life at " << formatFixed(100 * args.end_of_life_soh, 0)
             << " % SOH\n";
   for (size_t m = 0; m < cases.front().ageing.size(); ++m) {
     const auto& first = cases.front().ageing[m];
     std::cout << first.projection.model << ":\n";
     const auto wear = [m](const CaseResult& c) { return c.ageing[m].projection.cycle_wear; };
     const auto new_pack_wear = [m](const CaseResult& c) { return c.ageing[m].cycle_wear_new_pack; };
-    row("  " + first.projection.cycle_wear_name, [&](const CaseResult& c) { return shortNumber(wear(c), 4); });
-    row("  capacity fade [%]", [m](const CaseResult& c) { return fixed(100 * c.ageing[m].projection.capacity_loss, 2); });
+    row("  " + first.projection.cycle_wear_name, [&](const CaseResult& c) { return formatNumber(wear(c), 4); });
+    row("  capacity fade [%]", [m](const CaseResult& c) { return formatFixed(100 * c.ageing[m].projection.capacity_loss, 2); });
     row("  days to end of life", [m](const CaseResult& c) {
       const auto& days = c.ageing[m].projection.days_to_end_of_life;
-      return days ? fixed(*days, 1) : std::string("never*");
+      return days ? formatFixed(*days, 1) : std::string("never*");
     });
-    row("  wear reduction vs first [%]", [&](const CaseResult& c) { return fixed(100 * (1 - wear(c) / wear(cases.front())), 2); });
+    row("  wear reduction vs first [%]", [&](const CaseResult& c) { return formatFixed(100 * (1 - wear(c) / wear(cases.front())), 2); });
     row("  ... with the pack kept new [%]",
-        [&](const CaseResult& c) { return fixed(100 * (1 - new_pack_wear(c) / new_pack_wear(cases.front())), 2); });
+        [&](const CaseResult& c) { return formatFixed(100 * (1 - new_pack_wear(c) / new_pack_wear(cases.front())), 2); });
   }
   for (const CaseResult& c : cases)
     for (const AgeingResult& a : c.ageing) {
       if (!a.projection.stopped_because.empty())
-        std::cout << "* " << a.projection.model << ", " << fixed(c.flight_current_a, 2)
+        std::cout << "* " << a.projection.model << ", " << formatFixed(c.flight_current_a, 2)
                   << " A: " << a.projection.stopped_because << '\n';
     }
   for (const AgeingResult& a : cases.front().ageing)
@@ -238,7 +238,7 @@ std::vector<AgeingResult> projectAgeing(const DutyArguments& args, const battery
     options.end_of_life_soh = args.end_of_life_soh;
     options.max_projection_days = std::max(options.max_projection_days, options.study_days);
     options.step_s = args.dt_s;
-    Progress progress("ageing (" + name + ", " + fixed(flight_current_a, 2) + " A)");
+    Progress progress("ageing (" + name + ", " + formatFixed(flight_current_a, 2) + " A)");
     options.progress = [&progress](double fraction) { progress.update(fraction); };
     const auto model = battery::makeAgeingModel(name, model_options);
     AgeingResult result{battery::projectLifetime(pack, duty, *model, model_options.conditions, options), 0.0};
@@ -271,12 +271,12 @@ void runDuty(const DutyArguments& args) {
     battery::DutyOptions options;
     options.step_s = args.dt_s;
     options.record_run = !args.csv_dir.empty();
-    Progress progress("duty " + fixed(flight_current_a, 2) + " A");
+    Progress progress("duty " + formatFixed(flight_current_a, 2) + " A");
     options.progress = [&progress](double fraction) { progress.update(fraction); };
     try {
       cases.push_back({flight_current_a, battery::simulateDuty(pack, duty, options), {}});
     } catch (const battery::DepletionError& e) {
-      throw std::runtime_error("case " + fixed(flight_current_a, 2) + " A: " + e.what() +
+      throw std::runtime_error("case " + formatFixed(flight_current_a, 2) + " A: " + e.what() +
                                "; fly less, charge longer or start fuller");
     }
     cases.back().ageing = projectAgeing(args, pack, duty, flight_current_a);

@@ -9,6 +9,7 @@
 
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -36,7 +37,7 @@ std::vector<Eigen::Vector3d> readWaypoints(const std::string& file) {
     const Eigen::Vector3d p(x[row], y[row], z[row]);
     if (waypoints.empty() || (p - waypoints.back()).norm() > 1e-9) waypoints.push_back(p);
   }
-  if (waypoints.size() < 2) throw std::invalid_argument(file + ": a path needs at least 2 distinct points");
+  if (waypoints.size() < 2) throw ceilplan::InputError(file + ": a path needs at least 2 distinct points");
   return waypoints;
 }
 
@@ -45,7 +46,7 @@ void runEvaluate(const EvaluateArguments& a) {
   const PlanningSetup setup(a.planning);
   for (std::size_t k = 0; k < waypoints.size(); ++k)
     if (!setup.environment().contains(waypoints[k]))
-      throw std::invalid_argument(a.path + ": point " + std::to_string(k + 1) + " lies outside the map");
+      throw ceilplan::InputError(a.path + ": point " + std::to_string(k + 1) + " lies outside the map");
   const std::optional<std::string> problem = setup.baseRules().checkPathDensely(waypoints);
   const planner::PathEvaluation evaluation =
       planner::evaluatePath(setup.fullModel(), setup.battery().pack, setup.battery().start_soc, waypoints);

@@ -4,6 +4,7 @@
 #include "output.hpp"
 
 #include "ceilplan/environment/scenes.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -28,7 +29,7 @@ void runMapgen(const MapgenOptions& options) {
   const std::filesystem::path out(options.out);
   const bool full_format = out.extension() == ".ot";
   if (!full_format && out.extension() != ".bt")
-    throw std::invalid_argument("--out " + options.out + ": the map file must end in .bt (or .ot)");
+    throw ceilplan::InputError("--out " + options.out + ": the map file must end in .bt (or .ot)");
   const VoxelGrid grid = generateScene(scene, options.resolution_m, options.seed);
   const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
   writeAtomically(out, [&](const std::filesystem::path& temporary) {

@@ -7,6 +7,7 @@
 
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -41,7 +42,7 @@ void runPlan(const PlanArguments& a) {
   planner::PlanResult result;
   try {
     result = flight_planner.plan(a.search.request(start, goal));
-  } catch (const planner::NoPathFound& e) {
+  } catch (const ceilplan::NoPathError& e) {
     throw NoPathError(e.what());
   }
   // Every figure comes from the full model with the SOC integrated along the path.

@@ -6,6 +6,7 @@
 #include "vehicle_geometry_file.hpp"
 
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -34,7 +35,7 @@ Eigen::Vector3d parsePoint(const std::string& text) {
   char comma1 = 0, comma2 = 0;
   if (!(in >> point.x() >> comma1 >> point.y() >> comma2 >> point.z()) || comma1 != ',' || comma2 != ',' ||
       !(in >> std::ws).eof() || !point.allFinite())
-    throw std::invalid_argument("--at '" + text + "': expected three finite numbers x,y,z in metres");
+    throw ceilplan::InputError("--at '" + text + "': expected three finite numbers x,y,z in metres");
   return point;
 }
 
@@ -55,7 +56,7 @@ void runProbe(const ProbeOptions& options) {
   const Eigen::Vector3d body = parsePoint(options.at);
   const std::filesystem::path vehicle_file = options.vehicle.empty() ? defaultVehicleFile() : std::filesystem::path(options.vehicle);
   if (options.vehicle.empty() && !std::filesystem::exists(vehicle_file))
-    throw std::invalid_argument("no --vehicle given and " + vehicle_file.string() + " is not here; pass --vehicle FILE");
+    throw ceilplan::InputError("no --vehicle given and " + vehicle_file.string() + " is not here; pass --vehicle FILE");
   const VehicleGeometry vehicle = readVehicleGeometry(vehicle_file);
   EnvironmentOptions environment_options;
   environment_options.unknown_is_occupied = !options.unknown_free;

@@ -3,9 +3,9 @@
 #include "command_registry.hpp"
 #include "csv_table.hpp"
 #include "output.hpp"
-#include "text_format.hpp"
 
 #include "ceilplan/battery/rainflow.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -38,7 +38,7 @@ void checkSeries(const CsvTable& table, const std::string& column) {
   for (std::size_t row = 0; row < soc.size(); ++row) {
     if (soc[row] < 0.0 || soc[row] > 1.0)
       throw std::runtime_error(table.source() + " line " + std::to_string(table.lineOfRow(row)) +
-                               ", column '" + column + "': SOC " + shortNumber(soc[row]) +
+                               ", column '" + column + "': SOC " + formatNumber(soc[row]) +
                                " is outside [0, 1]; give SOC as a fraction");
   }
   if (!table.hasColumn(kTimeColumn)) return;
@@ -47,7 +47,7 @@ void checkSeries(const CsvTable& table, const std::string& column) {
     if (time_s[row] < time_s[row - 1])
       throw std::runtime_error(table.source() + " line " + std::to_string(table.lineOfRow(row)) +
                                ", column '" + kTimeColumn + "': time goes backwards (" +
-                               shortNumber(time_s[row - 1]) + " s to " + shortNumber(time_s[row]) +
+                               formatNumber(time_s[row - 1]) + " s to " + formatNumber(time_s[row]) +
                                " s)");
   }
 }

@@ -14,6 +14,7 @@
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -45,8 +46,8 @@ void runTour(TourArguments a) {
   if (!a.no_export) {
     try {
       mission.requireOrigin();  // fail before planning, not after
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string(e.what()) + "; or pass --no-export");
+    } catch (const ceilplan::InputError& e) {
+      throw ceilplan::InputError(std::string(e.what()) + "; or pass --no-export");
     }
     autopilot = a.autopilot == "ardupilot" ? Autopilot::ArduPilot : Autopilot::PX4;
   }
@@ -57,7 +58,7 @@ void runTour(TourArguments a) {
     // OMPL's generators are seeded once per process from the tour seed; the queries draw from
     // them in scheduling order and stop at a wall-clock limit, so legs are not bit-reproducible.
     if (a.options.seed == 0 || a.options.seed > 0xffffffffULL)
-      throw std::invalid_argument("--seed must lie in [1, 4294967295] for an OMPL planner");
+      throw ceilplan::InputError("--seed must lie in [1, 4294967295] for an OMPL planner");
     planner::seedOmpl(static_cast<std::uint32_t>(a.options.seed));
   }
   PlanningArguments planning = planningArguments(mission);

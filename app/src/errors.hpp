@@ -10,10 +10,4 @@ inline constexpr int kExitInputError = 1;  // bad input or a failed computation,
 inline constexpr int kExitUsage = 2;       // unknown flag, missing argument, malformed config file
 inline constexpr int kExitNoPath = 3;      // the planner proved or gave up on finding a path
 
-// Thrown when a planning query has no solution; the message says why.
-class NoPathError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 }  // namespace ceilplan::app

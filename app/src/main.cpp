@@ -1,5 +1,7 @@
 #include "command_registry.hpp"
 #include "errors.hpp"
+
+#include "ceilplan/core/error.hpp"
 #include "yaml_config.hpp"
 
 #include <CLI/CLI.hpp>
@@ -23,7 +25,7 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
     std::cerr << "ceilplan: error: " << e.what() << " (see 'ceilplan --help')\n";
     return kExitUsage;
-  } catch (const NoPathError& e) {
+  } catch (const ceilplan::NoPathError& e) {
     std::cerr << "ceilplan: no path: " << e.what() << '\n';
     return kExitNoPath;
   } catch (const std::exception& e) {

@@ -1,4 +1,7 @@
+#include "ceilplan/core/error.hpp"
+
 #include "mission_file.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -9,12 +12,6 @@
 
 namespace ceilplan::app {
 namespace {
-
-std::string number(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
 
 // Reads keys of one mission file; every error is "FILE: ..." naming the key.
 class MissionReader {
@@ -54,19 +51,19 @@ class MissionReader {
 
   double finite(const YAML::Node& node, const std::string& path) const {
     const double value = as<double>(node, path, "a number");
-    if (!std::isfinite(value)) fail("'" + path + "' must be a finite number, got " + number(value));
+    if (!std::isfinite(value)) fail("'" + path + "' must be a finite number, got " + formatNumber(value));
     return value;
   }
 
   double positive(const YAML::Node& node, const std::string& path) const {
     const double value = finite(node, path);
-    if (value <= 0.0) fail("'" + path + "' must be positive, got " + number(value));
+    if (value <= 0.0) fail("'" + path + "' must be positive, got " + formatNumber(value));
     return value;
   }
 
   double soc(const YAML::Node& node, const std::string& path) const {
     const double value = finite(node, path);
-    if (value < 0.0 || value > 1.0) fail("'" + path + "' must be a state of charge in [0, 1], got " + number(value));
+    if (value < 0.0 || value > 1.0) fail("'" + path + "' must be a state of charge in [0, 1], got " + formatNumber(value));
     return value;
   }
 
@@ -83,7 +80,7 @@ class MissionReader {
     return path;
   }
 
-  [[noreturn]] void fail(const std::string& problem) const { throw std::invalid_argument(file_.string() + ": " + problem); }
+  [[noreturn]] void fail(const std::string& problem) const { throw ceilplan::InputError(file_.string() + ": " + problem); }
 
  private:
   std::filesystem::path file_;
@@ -99,8 +96,8 @@ planner::SortieBattery readBattery(const MissionReader& reader) {
   battery.start_soc = reader.soc(reader.required(section, "start_soc", "battery.start_soc"), "battery.start_soc");
   battery.reserve_soc = reader.soc(reader.required(section, "reserve_soc", "battery.reserve_soc"), "battery.reserve_soc");
   if (battery.reserve_soc >= battery.start_soc)
-    reader.fail("'battery.reserve_soc' " + number(battery.reserve_soc) + " is not below 'battery.start_soc' " +
-                number(battery.start_soc) + ": no sortie could fly");
+    reader.fail("'battery.reserve_soc' " + formatNumber(battery.reserve_soc) + " is not below 'battery.start_soc' " +
+                formatNumber(battery.start_soc) + ": no sortie could fly");
   return battery;
 }
 
@@ -112,7 +109,7 @@ GeodeticOrigin readOrigin(const MissionReader& reader, const YAML::Node& node) {
   origin.altitude_m = reader.finite(reader.required(node, "alt", "origin.alt"), "origin.alt");
   try {
     origin.validate();
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     reader.fail(e.what());
   }
   return origin;
@@ -146,14 +143,14 @@ std::vector<planner::InspectionTarget> readTargets(const MissionReader& reader) 
     if (!names.insert(target.name).second) reader.fail("duplicate target name '" + target.name + "' at '" + path + "'");
     target.point_m = reader.vector3(reader.required(node, "point", path + ".point"), path + ".point");
     target.dwell_s = reader.finite(reader.required(node, "dwell_s", path + ".dwell_s"), path + ".dwell_s");
-    if (target.dwell_s < 0.0) reader.fail("'" + path + ".dwell_s' must be non-negative, got " + number(target.dwell_s));
+    if (target.dwell_s < 0.0) reader.fail("'" + path + ".dwell_s' must be non-negative, got " + formatNumber(target.dwell_s));
     const YAML::Node standoff = reader.required(node, "standoff_m", path + ".standoff_m");
     if (!standoff.IsSequence() || standoff.size() != 2) reader.fail("'" + path + ".standoff_m' must be [min, max] in metres");
     target.standoff_min_m = reader.finite(standoff[0], path + ".standoff_m[0]");
     target.standoff_max_m = reader.finite(standoff[1], path + ".standoff_m[1]");
     try {
       target.validate();
-    } catch (const std::invalid_argument& e) {
+    } catch (const ceilplan::InputError& e) {
       reader.fail(std::string("'") + path + "': " + e.what());
     }
     targets.push_back(std::move(target));
@@ -165,7 +162,7 @@ std::vector<planner::InspectionTarget> readTargets(const MissionReader& reader) 
 
 const GeodeticOrigin& MissionFile::requireOrigin() const {
   if (!origin)
-    throw std::invalid_argument(file.string() +
+    throw ceilplan::InputError(file.string() +
                                 ": missing key 'origin' ({lat, lon, alt} of the map frame): needed to export to an autopilot");
   return *origin;
 }

@@ -7,6 +7,7 @@
 
 #include "ceilplan/planner/sortie_plan.hpp"
 #include "ceilplan/planner/viewpoint.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -37,11 +38,11 @@ struct MissionFile {
   std::uint64_t seed = 1;         // key `seed` (optional)
   std::vector<planner::InspectionTarget> targets;
 
-  // The origin, or std::invalid_argument naming the file and the missing key.
+  // The origin, or ceilplan::InputError naming the file and the missing key.
   const GeodeticOrigin& requireOrigin() const;
 };
 
-// Throws std::invalid_argument with one line "FILE: ..." naming the key: a missing file or key,
+// Throws ceilplan::InputError with one line "FILE: ..." naming the key: a missing file or key,
 // malformed YAML, a wrong type, NaN or infinity, a non-positive capacity or charge current, an
 // SOC outside [0, 1], a reserve at or above the start SOC, a bad standoff range or dwell,
 // duplicate or empty target names, a map or vehicle file that does not exist.

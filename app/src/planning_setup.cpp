@@ -9,6 +9,7 @@
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/ageing_rates.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -86,10 +87,10 @@ double numberAt(const YAML::Node& node, const std::string& key, double fallback,
   if (!node[key]) return fallback;
   try {
     const double value = node[key].as<double>();
-    if (!std::isfinite(value)) throw std::invalid_argument("not finite");
+    if (!std::isfinite(value)) throw ceilplan::InputError("not finite");
     return value;
   } catch (const std::exception&) {
-    throw std::invalid_argument(file + ": '" + key + "' must be a finite number");
+    throw ceilplan::InputError(file + ": '" + key + "' must be a finite number");
   }
 }
 
@@ -102,10 +103,10 @@ BatteryChoice readBatteryFile(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
     root = YAML::LoadFile(path.string());
   } catch (const std::exception& e) {
-    throw std::invalid_argument("battery file " + path.string() + ": " + e.what());
+    throw ceilplan::InputError("battery file " + path.string() + ": " + e.what());
   }
   const YAML::Node node = root["battery"] ? root["battery"] : root;
-  if (!node.IsMap()) throw std::invalid_argument("battery file " + path.string() + ": expected a map of keys");
+  if (!node.IsMap()) throw ceilplan::InputError("battery file " + path.string() + ": expected a map of keys");
   const std::string file = "battery file " + path.string();
   battery::Pack& pack = choice.pack;
   pack.capacity_ah = numberAt(node, "capacity_ah", pack.capacity_ah, file);
@@ -117,10 +118,10 @@ BatteryChoice readBatteryFile(const std::filesystem::path& path) {
   try {
     pack.validate();
   } catch (const std::exception& e) {
-    throw std::invalid_argument(file + ": " + e.what());
+    throw ceilplan::InputError(file + ": " + e.what());
   }
   if (!(choice.start_soc > pack.soc_min && choice.start_soc <= pack.soc_max))
-    throw std::invalid_argument(file + ": start_soc must lie in (soc_min, soc_max]");
+    throw ceilplan::InputError(file + ": start_soc must lie in (soc_min, soc_max]");
   choice.source = path.string();
   return choice;
 }
@@ -131,14 +132,14 @@ Eigen::Vector3d parsePoint(const std::string& text, const std::string& flag) {
   char comma1 = 0, comma2 = 0;
   if (!(in >> point.x() >> comma1 >> point.y() >> comma2 >> point.z()) || comma1 != ',' || comma2 != ',' ||
       !(in >> std::ws).eof() || !point.allFinite())
-    throw std::invalid_argument(flag + " '" + text + "': expected three finite numbers x,y,z in metres");
+    throw ceilplan::InputError(flag + " '" + text + "': expected three finite numbers x,y,z in metres");
   return point;
 }
 
 PlanningMode modeFromName(const std::string& name) {
   if (name == "ceiling") return PlanningMode::Ceiling;
   if (name == "free") return PlanningMode::Free;
-  throw std::invalid_argument("unknown mode '" + name + "': choose ceiling or free");
+  throw ceilplan::InputError("unknown mode '" + name + "': choose ceiling or free");
 }
 
 std::string modeName(PlanningMode mode) { return mode == PlanningMode::Ceiling ? "ceiling" : "free"; }
@@ -147,7 +148,7 @@ PlanningSetup::PlanningSetup(const PlanningArguments& arguments) : arguments_(ar
   const std::filesystem::path vehicle_file =
       arguments_.vehicle.empty() ? defaultVehicleFile() : std::filesystem::path(arguments_.vehicle);
   if (arguments_.vehicle.empty() && !std::filesystem::exists(vehicle_file))
-    throw std::invalid_argument("no --vehicle given and " + vehicle_file.string() + " is not here; pass --vehicle FILE");
+    throw ceilplan::InputError("no --vehicle given and " + vehicle_file.string() + " is not here; pass --vehicle FILE");
   const environment::VehicleGeometry geometry = readVehicleGeometry(vehicle_file);
   const VehicleEnergyFile energy_file = readVehicleEnergyFile(vehicle_file);
   vehicle_name_ = geometry.name;

@@ -2,6 +2,8 @@
 // What `ceilplan tour` writes for one mode (tour.json, path.csv, the autopilot missions) and,
 // for both modes, the comparison table. docs/tours.md describes every file.
 
+#include "ceilplan/core/error.hpp"
+
 #include "autopilot_export.hpp"
 #include "mission_file.hpp"
 #include "tour_run.hpp"
@@ -22,7 +24,7 @@ nlohmann::json tourJson(const TourResult& tour);
 void writeTourPathCsv(const std::filesystem::path& file, const TourResult& tour);
 
 // One autopilot mission per sortie: every leg's waypoints after home, a hold of the target's
-// dwell at each viewpoint, home last. Throws std::invalid_argument without a geodetic origin.
+// dwell at each viewpoint, home last. Throws ceilplan::InputError without a geodetic origin.
 std::vector<AutopilotMission> autopilotMissions(const TourResult& tour, const MissionFile& mission, Autopilot autopilot);
 
 // DIR/tour.json, DIR/path.csv, DIR/map_top.csv, DIR/map_side.csv and, with `autopilot`,

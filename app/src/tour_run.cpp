@@ -8,7 +8,8 @@
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/lattice_roadmap.hpp"
 #include "ceilplan/planner/path_refinement.hpp"
-#include "ceilplan/planner/point_text.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <algorithm>
 #include <iterator>
@@ -165,7 +166,7 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
     if (attempt > 0) request.time_limit_s = kRetryTimeFactors[attempt - 1] * options.time_limit_s;
     try {
       return leg.planner->plan(request).waypoints;
-    } catch (const planner::NoPathFound& e) {
+    } catch (const ceilplan::NoPathError& e) {
       failures += std::string(failures.empty() ? "" : "; ") + e.what();
     } catch (const std::exception& e) {
       throw std::runtime_error(tour.mode + " mode: leg " + legName(tour, from, to) + ": " + e.what());
@@ -274,7 +275,7 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
   // it from the standoff, so a home near the ground is accepted.
   const PlanningSetup::Mode home_mode = setup.mode(mode, mission.home_m, mission.home_m);
   if (!home_mode.rules->isStateValid(mission.home_m))
-    throw std::invalid_argument(mission.file.string() + ": home " + planner::pointText(mission.home_m) +
+    throw ceilplan::InputError(mission.file.string() + ": home " + formatPoint(mission.home_m) +
                                 " is not a valid position for the vehicle (inside or too close to a structure, or "
                                 "outside the map); move it into free space");
 
@@ -328,7 +329,7 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
       orderAndSplit(tour, mission, options);
       for (const planner::Sortie& sortie : tour.plan.sorties)
         for (const planner::SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
-    } catch (const std::invalid_argument&) {
+    } catch (const ceilplan::InputError&) {
       // A target no sortie can reach and return from, perhaps only on raw legs: refine the
       // legs out of home and back, then decide.
       for (int k = 1; k < places; ++k) flown.insert(flown.end(), {{0, k}, {k, 0}});

@@ -11,6 +11,7 @@
 #include "ceilplan/planner/sortie_plan.hpp"
 #include "ceilplan/planner/tour_order.hpp"
 #include "ceilplan/planner/viewpoint.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <cstdint>
 #include <string>
@@ -63,8 +64,8 @@ struct TourResult {
 // The planning flags a mission file stands for: its map, vehicle, battery and speeds.
 PlanningArguments planningArguments(const MissionFile& mission);
 
-// Throws std::invalid_argument for invalid home or a target without a viewpoint (named),
-// NoPathError for a leg without a path (naming both places), std::invalid_argument from
+// Throws ceilplan::InputError for invalid home or a target without a viewpoint (named),
+// NoPathError for a leg without a path (naming both places), ceilplan::InputError from
 // planSorties for a target no single sortie can reach and return from, std::runtime_error if a
 // leg fails the dense re-check.
 TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, PlanningMode mode,

@@ -4,6 +4,7 @@
 
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/energy/paper_quad.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +26,7 @@ class Reader {
   explicit Reader(std::string file) : file_(std::move(file)) {}
 
   [[noreturn]] void fail(const std::string& message) const {
-    throw std::invalid_argument("vehicle file " + file_ + ": " + message);
+    throw ceilplan::InputError("vehicle file " + file_ + ": " + message);
   }
 
   double number(const YAML::Node& node, const std::string& key) const {
@@ -237,7 +238,7 @@ VehicleEnergyFile readVehicleEnergyFile(const std::filesystem::path& path) {
     const energy::EnergyModel check(vehicle.parameters);  // every remaining rule
   } catch (const YAML::Exception& e) {
     reader.fail(e.msg);
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     const std::string message = e.what();
     if (message.rfind("vehicle file ", 0) == 0) throw;
     reader.fail(message);

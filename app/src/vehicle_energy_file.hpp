@@ -4,6 +4,7 @@
 // rest of the vehicle file; everything energy-only lives under `power:` and `max_speed_m_s`.
 
 #include "ceilplan/energy/energy_parameters.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -18,7 +19,7 @@ struct VehicleEnergyFile {
   YAML::Node document;  // the whole file, to be rewritten with calibrated values
 };
 
-// Throws std::invalid_argument with one line naming the file and the bad key.
+// Throws ceilplan::InputError with one line naming the file and the bad key.
 VehicleEnergyFile readVehicleEnergyFile(const std::filesystem::path& path);
 
 // The founding paper's quadrotor (energy::paperQuadParameters) when no file is given.

@@ -1,3 +1,5 @@
+#include "ceilplan/core/error.hpp"
+
 #include "vehicle_geometry_file.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -40,7 +42,7 @@ class VehicleReader {
   const YAML::Node& root() const { return root_; }
 
   [[noreturn]] void fail(const std::string& problem) const {
-    throw std::invalid_argument(file_.string() + ": " + problem);
+    throw ceilplan::InputError(file_.string() + ": " + problem);
   }
 
  private:
@@ -72,7 +74,7 @@ environment::VehicleGeometry readVehicleGeometry(const std::filesystem::path& fi
           environment::rotorPositions(layout == "x" ? RotorLayout::X : RotorLayout::Plus,
                                       reader.value<int>(rotors, "rotors", "count"),
                                       reader.value<double>(rotors, "rotors", "arm_length_m"));
-    } catch (const std::invalid_argument& e) {
+    } catch (const ceilplan::InputError& e) {
       reader.fail(e.what());
     }
   }
@@ -91,7 +93,7 @@ environment::VehicleGeometry readVehicleGeometry(const std::filesystem::path& fi
   vehicle.top_margin_m = reader.value<double>(clearance, "clearance", "top_margin_m");
   try {
     vehicle.validate();
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     reader.fail(e.what());
   }
   return vehicle;

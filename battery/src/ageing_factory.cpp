@@ -1,4 +1,5 @@
 #include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <stdexcept>
 
@@ -19,7 +20,7 @@ std::unique_ptr<AgeingModel> makeAgeingModel(const std::string& name,
   if (name == "woehler") return std::make_unique<WoehlerAgeingModel>(options.woehler);
   std::string known;
   for (const auto& n : ageingModelNames()) known += (known.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown ageing model '" + name + "'; choose one of " + known);
+  throw ceilplan::InputError("unknown ageing model '" + name + "'; choose one of " + known);
 }
 
 }  // namespace ceilplan::battery

@@ -1,6 +1,6 @@
 #include "ceilplan/battery/ageing_model.hpp"
-
-#include "format.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -9,8 +9,6 @@
 
 namespace ceilplan::battery {
 namespace {
-
-using detail::number;
 
 constexpr double kCelsiusToKelvin = 273.15;
 constexpr double kLargestPlausibleCelsius = 150.0;  // above this a value is kelvin given as Celsius
@@ -36,13 +34,13 @@ std::string sampleError(std::size_t index, const std::string& what) {
 
 OperatingConditions OperatingConditions::fromCelsius(double temperature_c) {
   if (!std::isfinite(temperature_c))
-    throw std::invalid_argument("temperature must be a finite number of degrees Celsius");
+    throw ceilplan::InputError("temperature must be a finite number of degrees Celsius");
   if (temperature_c > kLargestPlausibleCelsius)
-    throw std::invalid_argument("temperature " + number(temperature_c) +
+    throw ceilplan::InputError("temperature " + formatNumber(temperature_c) +
                                 " C is over 150 C and looks like kelvin; give it in Celsius (" +
-                                number(temperature_c - kCelsiusToKelvin) + " C)");
+                                formatNumber(temperature_c - kCelsiusToKelvin) + " C)");
   if (temperature_c <= -kCelsiusToKelvin)
-    throw std::invalid_argument("temperature " + number(temperature_c) +
+    throw ceilplan::InputError("temperature " + formatNumber(temperature_c) +
                                 " C is at or below absolute zero; give it in Celsius");
   OperatingConditions conditions;
   conditions.temperature_k = temperature_c + kCelsiusToKelvin;
@@ -51,7 +49,7 @@ OperatingConditions OperatingConditions::fromCelsius(double temperature_c) {
 
 void OperatingConditions::validate() const {
   if (!std::isfinite(temperature_k) || temperature_k <= 0.0)
-    throw std::invalid_argument("temperature " + number(temperature_k) +
+    throw ceilplan::InputError("temperature " + formatNumber(temperature_k) +
                                 " K must be a finite number of kelvin above 0");
 }
 
@@ -61,14 +59,14 @@ void AgeingModel::validate(const AgeingSample* samples, std::size_t count) const
     const AgeingSample& s = samples[i];
     const std::size_t index = samples_seen_ + i;
     if (!std::isfinite(s.t_s) || !std::isfinite(s.soc) || !std::isfinite(s.current_a))
-      throw std::invalid_argument(sampleError(index, "time, SOC or current is not a finite number"));
+      throw ceilplan::InputError(sampleError(index, "time, SOC or current is not a finite number"));
     if (s.soc < 0.0 || s.soc > 1.0)
-      throw std::invalid_argument(
-          sampleError(index, "SOC " + number(s.soc) + " is outside [0, 1]; give SOC as a fraction"));
+      throw ceilplan::InputError(
+          sampleError(index, "SOC " + formatNumber(s.soc) + " is outside [0, 1]; give SOC as a fraction"));
     if (s.t_s < previous_time_s)
-      throw std::invalid_argument(sampleError(index, "time goes backwards (" +
-                                                         number(previous_time_s) + " s to " +
-                                                         number(s.t_s) + " s)"));
+      throw ceilplan::InputError(sampleError(index, "time goes backwards (" +
+                                                         formatNumber(previous_time_s) + " s to " +
+                                                         formatNumber(s.t_s) + " s)"));
     previous_time_s = s.t_s;
   }
 }
@@ -93,7 +91,7 @@ double AgeingModel::capacityLoss() const { return std::min(1.0, modelCapacityLos
 
 ObservedCRates AgeingModel::observedCRates(double nominal_capacity_ah) const {
   if (!(nominal_capacity_ah > 0.0) || !std::isfinite(nominal_capacity_ah))
-    throw std::invalid_argument("nominal capacity " + number(nominal_capacity_ah) +
+    throw ceilplan::InputError("nominal capacity " + formatNumber(nominal_capacity_ah) +
                                 " Ah must be a positive number");
   return {peak_charge_current_a_ / nominal_capacity_ah,
           peak_discharge_current_a_ / nominal_capacity_ah};
@@ -111,15 +109,15 @@ std::vector<std::string> validityWarnings(const std::string& model_name, const V
   const double t_c = conditions.temperature_k - kCelsiusToKelvin;
   if (conditions.temperature_k < range.min_temperature_k ||
       conditions.temperature_k > range.max_temperature_k)
-    warnings.push_back(model_name + ": temperature " + number(t_c) + " C is outside the fitted " +
-                       number(range.min_temperature_k - kCelsiusToKelvin) + ".." +
-                       number(range.max_temperature_k - kCelsiusToKelvin) + " C");
+    warnings.push_back(model_name + ": temperature " + formatNumber(t_c) + " C is outside the fitted " +
+                       formatNumber(range.min_temperature_k - kCelsiusToKelvin) + ".." +
+                       formatNumber(range.max_temperature_k - kCelsiusToKelvin) + " C");
   if (observed.charge > range.max_charge_c_rate)
-    warnings.push_back(model_name + ": charge rate " + number(observed.charge) +
-                       "C exceeds the fitted " + number(range.max_charge_c_rate) + "C");
+    warnings.push_back(model_name + ": charge rate " + formatNumber(observed.charge) +
+                       "C exceeds the fitted " + formatNumber(range.max_charge_c_rate) + "C");
   if (observed.discharge > range.max_discharge_c_rate)
-    warnings.push_back(model_name + ": discharge rate " + number(observed.discharge) +
-                       "C exceeds the fitted " + number(range.max_discharge_c_rate) + "C");
+    warnings.push_back(model_name + ": discharge rate " + formatNumber(observed.discharge) +
+                       "C exceeds the fitted " + formatNumber(range.max_discharge_c_rate) + "C");
   return warnings;
 }
 

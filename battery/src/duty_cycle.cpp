@@ -1,6 +1,7 @@
 #include "ceilplan/battery/duty_cycle.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
-#include "format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,13 +21,13 @@ double totalDurationS(const LoadProfile& segments) {
 double MissionTemplate::periodS() const { return period_s > 0.0 ? period_s : totalDurationS(segments); }
 
 void MissionTemplate::validate() const {
-  if (segments.empty()) throw std::invalid_argument("a mission needs at least one segment");
+  if (segments.empty()) throw ceilplan::InputError("a mission needs at least one segment");
   for (const Segment& segment : segments) segment.validate();
   if (!(std::isfinite(period_s) && period_s >= 0.0))
-    throw std::invalid_argument("mission period must be >= 0 s, got " + detail::number(period_s));
+    throw ceilplan::InputError("mission period must be >= 0 s, got " + formatNumber(period_s));
   if (period_s > 0.0 && period_s < totalDurationS(segments))
-    throw std::invalid_argument("mission period of " + detail::number(period_s) +
-                                " s is shorter than its segments' " + detail::number(totalDurationS(segments)) + " s");
+    throw ceilplan::InputError("mission period of " + formatNumber(period_s) +
+                                " s is shorter than its segments' " + formatNumber(totalDurationS(segments)) + " s");
 }
 
 MissionTemplate flyIdleChargeMission(double flight_current_a, double flight_s, double idle_s,
@@ -40,13 +41,13 @@ MissionTemplate flyIdleChargeMission(double flight_current_a, double flight_s, d
 void DutyCycle::validate() const {
   mission.validate();
   if (missions_per_day < 1)
-    throw std::invalid_argument("missions per day must be at least 1, got " + std::to_string(missions_per_day));
-  if (days < 1) throw std::invalid_argument("days must be at least 1, got " + std::to_string(days));
+    throw ceilplan::InputError("missions per day must be at least 1, got " + std::to_string(missions_per_day));
+  if (days < 1) throw ceilplan::InputError("days must be at least 1, got " + std::to_string(days));
   if (!(initial_soc > 0.0 && initial_soc <= 1.0))
-    throw std::invalid_argument("start SOC must be in (0, 1], got " + detail::number(initial_soc));
+    throw ceilplan::InputError("start SOC must be in (0, 1], got " + formatNumber(initial_soc));
   if (missions_per_day * mission.periodS() > day_s)
-    throw std::invalid_argument(std::to_string(missions_per_day) + " missions of " +
-                                detail::number(mission.periodS() / 60.0) + " min do not fit in a day");
+    throw ceilplan::InputError(std::to_string(missions_per_day) + " missions of " +
+                                formatNumber(mission.periodS() / 60.0) + " min do not fit in a day");
 }
 
 double DutyResult::fecPerMission() const { return missions.empty() ? 0.0 : fecTotal() / missions.size(); }

@@ -1,6 +1,7 @@
 #include "ceilplan/battery/lifetime.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
-#include "format.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,11 +9,11 @@
 namespace ceilplan::battery {
 
 void LifetimeOptions::validate() const {
-  if (study_days < 1) throw std::invalid_argument("the study needs at least one day, got " + std::to_string(study_days));
+  if (study_days < 1) throw ceilplan::InputError("the study needs at least one day, got " + std::to_string(study_days));
   if (!(end_of_life_soh > 0.0 && end_of_life_soh < 1.0))
-    throw std::invalid_argument("end-of-life state of health must be in (0, 1), got " + detail::number(end_of_life_soh));
+    throw ceilplan::InputError("end-of-life state of health must be in (0, 1), got " + formatNumber(end_of_life_soh));
   if (max_projection_days < study_days)
-    throw std::invalid_argument("the projection limit of " + std::to_string(max_projection_days) +
+    throw ceilplan::InputError("the projection limit of " + std::to_string(max_projection_days) +
                                 " days is shorter than the " + std::to_string(study_days) + "-day study");
 }
 

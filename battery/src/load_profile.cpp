@@ -1,6 +1,7 @@
 #include "ceilplan/battery/load_profile.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
-#include "format.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -38,15 +39,15 @@ double Segment::signedCurrentA() const {
 void Segment::validate() const {
   const std::string what = toString(mode) + " segment";
   if (!(std::isfinite(current_a) && current_a >= 0.0))
-    throw std::invalid_argument(what + ": current must be a finite number >= 0 A, got " + detail::number(current_a));
+    throw ceilplan::InputError(what + ": current must be a finite number >= 0 A, got " + formatNumber(current_a));
   if (!(std::isfinite(duration_s) && duration_s >= 0.0))
-    throw std::invalid_argument(what + ": duration must be a finite number >= 0 s, got " + detail::number(duration_s));
+    throw ceilplan::InputError(what + ": duration must be a finite number >= 0 s, got " + formatNumber(duration_s));
   if (mode == Mode::Charge && current_a == 0.0 && duration_s > 0.0)
-    throw std::invalid_argument(what + ": charge current is 0 A, so the battery can never charge; set a charge current > 0");
+    throw ceilplan::InputError(what + ": charge current is 0 A, so the battery can never charge; set a charge current > 0");
   if (mode == Mode::Idle && current_a != 0.0)
-    throw std::invalid_argument(what + ": an idle segment carries no current");
+    throw ceilplan::InputError(what + ": an idle segment carries no current");
   if (stop_soc && !(*stop_soc > 0.0 && *stop_soc <= 1.0))
-    throw std::invalid_argument(what + ": stop SOC must be in (0, 1], got " + detail::number(*stop_soc));
+    throw ceilplan::InputError(what + ": stop SOC must be in (0, 1], got " + formatNumber(*stop_soc));
 }
 
 }  // namespace ceilplan::battery

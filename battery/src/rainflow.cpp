@@ -1,4 +1,5 @@
 #include "ceilplan/battery/rainflow.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -40,7 +41,7 @@ void RainflowCounter::pushTurningPoint(std::vector<TurningPoint>& stack, Turning
 
 void RainflowCounter::add(double value, std::vector<RainflowCycle>& closed) {
   if (!std::isfinite(value))
-    throw std::invalid_argument("rainflow: sample " + std::to_string(samples_seen_) +
+    throw ceilplan::InputError("rainflow: sample " + std::to_string(samples_seen_) +
                                 " is not a finite number; remove or fill it");
   const std::size_t index = samples_seen_++;
   if (index == 0) {

@@ -1,6 +1,7 @@
 #include "ceilplan/battery/schmalstieg_ageing.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
-#include "format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -49,7 +50,7 @@ SchmalstiegAgeingModel::SchmalstiegAgeingModel(const OperatingConditions& condit
       parameters_(parameters) {
   conditions_.validate();
   if (!cell_voltage_of_soc_)
-    throw std::invalid_argument(
+    throw ceilplan::InputError(
         "the Schmalstieg model needs a cell voltage of SOC (the pack's per-cell OCV table)");
 }
 
@@ -66,8 +67,8 @@ std::unique_ptr<AgeingModel> SchmalstiegAgeingModel::clone() const {
 double SchmalstiegAgeingModel::cellVoltage(double soc) const {
   const double v = cell_voltage_of_soc_(soc);
   if (!std::isfinite(v) || v <= 0.0 || v > kLargestCellVoltage_v)
-    throw std::invalid_argument("cell voltage " + detail::number(v) + " V at SOC " +
-                                detail::number(soc) +
+    throw ceilplan::InputError("cell voltage " + formatNumber(v) + " V at SOC " +
+                                formatNumber(soc) +
                                 " is not a single cell's (0..5 V); give one cell's voltage");
   return v;
 }

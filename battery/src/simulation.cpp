@@ -1,6 +1,7 @@
 #include "ceilplan/battery/simulation.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
-#include "format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,22 +21,22 @@ std::optional<double> stopSoc(const Segment& segment, const Pack& pack) {
 }  // namespace
 
 DepletionError::DepletionError(const std::string& message, double reached_soc, double floor_soc)
-    : std::runtime_error(message), reached_soc_(reached_soc), floor_soc_(floor_soc) {}
+    : ceilplan::InfeasibleError(message), reached_soc_(reached_soc), floor_soc_(floor_soc) {}
 
 Simulator::Simulator(const Pack& pack, double initial_soc, double step_s)
     : pack_(pack), step_s_(step_s) {
   pack_.validate();
   if (!(std::isfinite(step_s) && step_s >= 0.0))
-    throw std::invalid_argument("time step must be >= 0 s (0 = exact), got " + detail::number(step_s));
+    throw ceilplan::InputError("time step must be >= 0 s (0 = exact), got " + formatNumber(step_s));
   if (!(initial_soc > 0.0 && initial_soc <= 1.0))
-    throw std::invalid_argument("initial SOC must be in (0, 1], got " + detail::number(initial_soc));
+    throw ceilplan::InputError("initial SOC must be in (0, 1], got " + formatNumber(initial_soc));
   state_.soc = initial_soc;
   state_.min_soc = initial_soc;
 }
 
 void Simulator::setStateOfHealth(double state_of_health) {
   if (!(state_of_health > 0.0 && state_of_health <= 1.0))
-    throw std::invalid_argument("state of health must be in (0, 1], got " + detail::number(state_of_health));
+    throw ceilplan::InputError("state of health must be in (0, 1], got " + formatNumber(state_of_health));
   pack_.state_of_health = state_of_health;
 }
 
@@ -86,9 +87,9 @@ double Simulator::run(const Segment& segment, std::vector<Sample>* record) {
   // Refuse a segment that would cross the floor before changing any state.
   const Advance whole = plan(segment, state_.soc, segment.duration_s);
   if (whole.soc_after < pack_.soc_min - 1e-12) {
-    throw DepletionError("would take the battery to " + detail::number(100.0 * whole.soc_after) +
-                             " % SOC, " + detail::number(100.0 * (pack_.soc_min - whole.soc_after)) +
-                             " points below its " + detail::number(100.0 * pack_.soc_min) + " % floor",
+    throw DepletionError("would take the battery to " + formatNumber(100.0 * whole.soc_after) +
+                             " % SOC, " + formatNumber(100.0 * (pack_.soc_min - whole.soc_after)) +
+                             " points below its " + formatNumber(100.0 * pack_.soc_min) + " % floor",
                          whole.soc_after, pack_.soc_min);
   }
   enterMode(segment.mode);

@@ -1,6 +1,7 @@
 #include "ceilplan/battery/woehler_ageing.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
-#include "format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,13 +23,13 @@ ValidityRange dataSheetValidity(std::string notes) {
 
 void WoehlerParameters::validate() const {
   if (!(cycles_at_full_depth > 0.0) || !std::isfinite(cycles_at_full_depth))
-    throw std::invalid_argument("Woehler N100 (cycles to end of life at DoD 1) must be positive, got " +
-                                detail::number(cycles_at_full_depth));
+    throw ceilplan::InputError("Woehler N100 (cycles to end of life at DoD 1) must be positive, got " +
+                                formatNumber(cycles_at_full_depth));
   if (!(exponent >= 0.0) || !std::isfinite(exponent))
-    throw std::invalid_argument("Woehler exponent k must be >= 0, got " + detail::number(exponent));
+    throw ceilplan::InputError("Woehler exponent k must be >= 0, got " + formatNumber(exponent));
   if (!(end_of_life_capacity_loss > 0.0 && end_of_life_capacity_loss <= 1.0))
-    throw std::invalid_argument("end-of-life capacity loss must be in (0, 1], got " +
-                                detail::number(end_of_life_capacity_loss));
+    throw ceilplan::InputError("end-of-life capacity loss must be in (0, 1], got " +
+                                formatNumber(end_of_life_capacity_loss));
 }
 
 double woehlerCyclesToEndOfLife(double depth, const WoehlerParameters& parameters) {

@@ -1,4 +1,5 @@
 #include "ceilplan/energy/calibration.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Dense>
 #include <nlopt.hpp>
@@ -248,7 +249,7 @@ void checkIdentifiable(const Problem& problem, const std::vector<FreeParameter>&
     // RMS current change per 100 % change of the parameter (x is log-spaced over the range).
     const double sensitivity_a = j.col(c).norm() / std::sqrt(rows) / problem.logSpan(static_cast<std::size_t>(c));
     if (sensitivity_a < kMinSensitivityA)
-      throw std::invalid_argument("cannot identify " + parameterName(free[static_cast<std::size_t>(c)]) +
+      throw ceilplan::InputError("cannot identify " + parameterName(free[static_cast<std::size_t>(c)]) +
                                   ": the measured currents do not depend on it; fix it instead of fitting it");
     normalised.col(c) /= j.col(c).norm();
   }
@@ -263,7 +264,7 @@ void checkIdentifiable(const Problem& problem, const std::vector<FreeParameter>&
                         ": the data leave it interchangeable with " +
                         parameterName(free[static_cast<std::size_t>(order[1])]) +
                         "; vary more columns in the measurements or fit fewer parameters (--fit)";
-  throw std::invalid_argument(message);
+  throw ceilplan::InputError(message);
 }
 
 }  // namespace
@@ -286,7 +287,7 @@ FreeParameter parseFreeParameter(const std::string& name) {
     if (parameterName(parameter) == name) return parameter;
     known += (known.empty() ? "" : ", ") + parameterName(parameter);
   }
-  throw std::invalid_argument("unknown calibration parameter '" + name + "'; known: " + known);
+  throw ceilplan::InputError("unknown calibration parameter '" + name + "'; known: " + known);
 }
 
 std::vector<FreeParameter> identifiableParameters(const EnergyParameters& start,
@@ -301,26 +302,26 @@ std::vector<FreeParameter> identifiableParameters(const EnergyParameters& start,
 
 CalibrationResult calibrate(const EnergyParameters& start, const std::vector<CalibrationSample>& samples,
                             const std::vector<FreeParameter>& free) {
-  if (free.empty()) throw std::invalid_argument("nothing to fit: name at least one parameter");
+  if (free.empty()) throw ceilplan::InputError("nothing to fit: name at least one parameter");
   for (std::size_t a = 0; a < free.size(); ++a)
     for (std::size_t b = a + 1; b < free.size(); ++b)
-      if (free[a] == free[b]) throw std::invalid_argument(parameterName(free[a]) + " is listed twice");
+      if (free[a] == free[b]) throw ceilplan::InputError(parameterName(free[a]) + " is listed twice");
   if (samples.size() <= free.size())
-    throw std::invalid_argument(std::to_string(samples.size()) + " samples cannot identify " +
+    throw ceilplan::InputError(std::to_string(samples.size()) + " samples cannot identify " +
                                 std::to_string(free.size()) + " parameters: give more samples than parameters");
   for (FreeParameter parameter : free) {
     const std::string why = missingVariation(parameter, start, samples);
-    if (!why.empty()) throw std::invalid_argument("cannot identify " + parameterName(parameter) + ": " + why);
+    if (!why.empty()) throw ceilplan::InputError("cannot identify " + parameterName(parameter) + ": " + why);
   }
   {
     const EnergyModel start_model(start);  // every sample must be valid input to begin with
     for (std::size_t i = 0; i < samples.size(); ++i) {
       if (!std::isfinite(samples[i].current_a) || samples[i].current_a < 0.0)
-        throw std::invalid_argument("sample " + std::to_string(i + 1) + ": current_a must be a finite, non-negative number");
+        throw ceilplan::InputError("sample " + std::to_string(i + 1) + ": current_a must be a finite, non-negative number");
       try {
         evaluate(start_model, samples[i]);
       } catch (const std::exception& e) {
-        throw std::invalid_argument("sample " + std::to_string(i + 1) + ": " + e.what());
+        throw ceilplan::InputError("sample " + std::to_string(i + 1) + ": " + e.what());
       }
     }
   }
@@ -341,7 +342,7 @@ CalibrationResult calibrate(const EnergyParameters& start, const std::vector<Cal
   } catch (const nlopt::roundoff_limited&) {
     // Converged as far as floating point allows: x holds the best point found.
   } catch (const std::exception& e) {
-    throw std::runtime_error(std::string("the least-squares fit failed: ") + e.what());
+    throw ceilplan::Error(std::string("the least-squares fit failed: ") + e.what());
   }
 
   checkIdentifiable(problem, free, problem.jacobian(x));

@@ -1,6 +1,7 @@
 #include "ceilplan/energy/energy_model.hpp"
 
 #include "ceilplan/energy/thrust_to_power.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,7 @@ constexpr double kPi = 3.14159265358979323846;
 [[noreturn]] void refuse(const char* what, double value, const char* rule) {
   std::ostringstream message;
   message << what << ' ' << value << ' ' << rule;
-  throw std::invalid_argument(message.str());
+  throw ceilplan::InputError(message.str());
 }
 
 const EnergyParameters& checked(const EnergyParameters& p) {
@@ -24,7 +25,7 @@ const EnergyParameters& checked(const EnergyParameters& p) {
   if (!(v.mass_kg > 0.0) || !std::isfinite(v.mass_kg))
     refuse("vehicle mass_kg", v.mass_kg, "must be positive");
   if (v.rotor_count < 1 || v.rotor_count > EnergyModel::kMaxRotors)
-    throw std::invalid_argument("vehicle rotor count " + std::to_string(v.rotor_count) + " must be between 1 and " +
+    throw ceilplan::InputError("vehicle rotor count " + std::to_string(v.rotor_count) + " must be between 1 and " +
                                 std::to_string(EnergyModel::kMaxRotors));
   if (!(v.rotor_radius_m > 0.0) || !std::isfinite(v.rotor_radius_m))
     refuse("rotor radius_m", v.rotor_radius_m, "must be positive");
@@ -72,7 +73,7 @@ void EnergyModel::checkFlight(const FlightCondition& flight) const {
     std::ostringstream message;
     message << "speed " << flight.speed_m_s << " m/s is beyond the vehicle's max_speed_m_s ("
             << parameters_.vehicle.max_speed_m_s << " m/s)";
-    throw std::invalid_argument(message.str());
+    throw ceilplan::InputError(message.str());
   }
   if (!std::isfinite(flight.climb_m_s)) refuse("climb rate", flight.climb_m_s, "m/s must be finite");
   if (!(flight.soc >= 0.0 && flight.soc <= 1.0)) refuse("state of charge", flight.soc, "is outside [0, 1]");
@@ -99,7 +100,7 @@ CurrentBreakdown EnergyModel::breakdown(double ceiling_gap_m, double coverage, c
 CurrentBreakdown EnergyModel::breakdown(const RotorCeiling* rotors, int rotor_count,
                                         const FlightCondition& flight) const {
   if (rotor_count != parameters_.vehicle.rotor_count)
-    throw std::invalid_argument("got ceiling gaps for " + std::to_string(rotor_count) + " rotors, the vehicle has " +
+    throw ceilplan::InputError("got ceiling gaps for " + std::to_string(rotor_count) + " rotors, the vehicle has " +
                                 std::to_string(parameters_.vehicle.rotor_count));
   checkFlight(flight);
   const double ground_factor = ground_.thrustRatio(flight.ground_gap_m);

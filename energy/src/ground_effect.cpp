@@ -1,4 +1,5 @@
 #include "ceilplan/energy/ground_effect.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,14 +15,14 @@ GroundEffect::GroundEffect(const GroundEffectParameters& p, const VehicleGeometr
       opposite_squared_m2_(vehicle.opposite_rotor_spacing_m * vehicle.opposite_rotor_spacing_m),
       body_lift_factor_(p.body_lift_factor) {
   if (!(p.min_gap_radii > 0.25) || !std::isfinite(p.min_gap_radii))
-    throw std::invalid_argument("ground min_gap_radii must exceed 0.25, where Cheeseman-Bennett is singular");
+    throw ceilplan::InputError("ground min_gap_radii must exceed 0.25, where Cheeseman-Bennett is singular");
   if (model_ != GroundEffectModel::kMultirotor) return;
   if (vehicle.rotor_count < 2 || !(vehicle.adjacent_rotor_spacing_m > 0.0) ||
       !(vehicle.opposite_rotor_spacing_m > 0.0))
-    throw std::invalid_argument(
+    throw ceilplan::InputError(
         "the multirotor ground-effect form needs at least two rotors with positive spacing; use cheeseman-bennett");
   if (!(p.body_lift_factor >= 0.0) || !std::isfinite(p.body_lift_factor))
-    throw std::invalid_argument("ground body_lift_factor must be >= 0");
+    throw ceilplan::InputError("ground body_lift_factor must be >= 0");
   // The interaction terms peak at gaps of the order of the rotor spacing: scan up to well past
   // it and refuse a geometry whose denominator comes near zero anywhere.
   const double scan_end_m = 4.0 * std::sqrt(opposite_squared_m2_) + 10.0 * std::sqrt(radius_squared_m2_);
@@ -29,7 +30,7 @@ GroundEffect::GroundEffect(const GroundEffectParameters& p, const VehicleGeometr
   for (int i = 0; i <= kScanSteps; ++i) {
     const double z = min_gap_m_ + (scan_end_m - min_gap_m_) * i / kScanSteps;
     if (denominator(z) < 0.1)
-      throw std::invalid_argument(
+      throw ceilplan::InputError(
           "the multirotor ground-effect form is singular for these rotor spacings (rotors too close "
           "together for their radius); use cheeseman-bennett or check rotor positions");
   }

@@ -1,4 +1,5 @@
 #include "ceilplan/energy/pack_electrics.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -9,11 +10,11 @@ namespace ceilplan::energy {
 PackElectrics::PackElectrics(const PackParameters& p)
     : cell_count_(p.cell_count), resistance_ohm_(p.resistance_ohm), avionics_current_a_(p.avionics_current_a) {
   if (p.cell_count < 1 || p.cell_count > 24)
-    throw std::invalid_argument("pack cell_count must be between 1 and 24 (got " + std::to_string(p.cell_count) + ")");
+    throw ceilplan::InputError("pack cell_count must be between 1 and 24 (got " + std::to_string(p.cell_count) + ")");
   if (!(p.resistance_ohm >= 0.0) || !std::isfinite(p.resistance_ohm))
-    throw std::invalid_argument("pack resistance_ohm must be >= 0 and finite");
+    throw ceilplan::InputError("pack resistance_ohm must be >= 0 and finite");
   if (!(p.avionics_current_a >= 0.0) || !std::isfinite(p.avionics_current_a))
-    throw std::invalid_argument("avionics_current_a must be >= 0 and finite");
+    throw ceilplan::InputError("avionics_current_a must be >= 0 and finite");
 }
 
 PackOperatingPoint PackElectrics::operatingPoint(double propulsion_power_w, double soc) const {
@@ -21,7 +22,7 @@ PackOperatingPoint PackElectrics::operatingPoint(double propulsion_power_w, doub
   const double a = open_circuit_v - resistance_ohm_ * avionics_current_a_;
   const double discriminant = a * a - 4.0 * resistance_ohm_ * propulsion_power_w;
   if (!(discriminant >= 0.0) || !(a > 0.0))
-    throw std::runtime_error("the pack cannot deliver " + std::to_string(propulsion_power_w) + " W at SOC " +
+    throw ceilplan::Error("the pack cannot deliver " + std::to_string(propulsion_power_w) + " W at SOC " +
                              std::to_string(soc) + " (beyond its maximum power): lower the demand or check the pack");
   const double propulsion_current_a = 2.0 * propulsion_power_w / (a + std::sqrt(discriminant));
   const double current_a = propulsion_current_a + avionics_current_a_;

@@ -2,6 +2,7 @@
 
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/energy/thrust_to_power.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -10,10 +11,10 @@
 namespace ceilplan::energy {
 
 double hoverPowerForCurrentW(const EnergyParameters& parameters, double current_a, double soc) {
-  if (!(soc >= 0.0 && soc <= 1.0)) throw std::invalid_argument("hover SOC must be in [0, 1]");
+  if (!(soc >= 0.0 && soc <= 1.0)) throw ceilplan::InputError("hover SOC must be in [0, 1]");
   const double power_w = PackElectrics(parameters.pack).propulsionPowerForCurrentW(current_a, soc);
   if (!(power_w > 0.0) || !std::isfinite(power_w))
-    throw std::invalid_argument("hover current " + std::to_string(current_a) +
+    throw ceilplan::InputError("hover current " + std::to_string(current_a) +
                                 " A leaves no propulsion power after the avionics current and pack losses");
   return power_w;
 }
@@ -23,7 +24,7 @@ CeilingEffectParameters ceilingThroughAnchor(const EnergyParameters& parameters,
   const double radius_m = parameters.vehicle.rotor_radius_m;
   CeilingEffectParameters result = parameters.ceiling;
   if (!(gap_m > 0.0 && gap_m < result.taper_start_radii * radius_m))
-    throw std::invalid_argument("ceiling anchor gap " + std::to_string(gap_m) +
+    throw ceilplan::InputError("ceiling anchor gap " + std::to_string(gap_m) +
                                 " m must lie above 0 and below the taper start (" +
                                 std::to_string(result.taper_start_radii * radius_m) + " m)");
   // The free-air model (its ceiling constants are not used on this path).
@@ -35,13 +36,13 @@ CeilingEffectParameters ceilingThroughAnchor(const EnergyParameters& parameters,
   const RotaryWingPower& rotor = model.rotaryWingPower();
   const double induced_ratio = (shaft_w - rotor.hoverProfilePowerW()) / rotor.hoverInducedPowerW();
   if (!(induced_ratio > 0.0 && induced_ratio < 1.0))
-    throw std::invalid_argument("ceiling anchor current " + std::to_string(current_a) +
+    throw ceilplan::InputError("ceiling anchor current " + std::to_string(current_a) +
                                 " A must lie between the free-air hover current and the profile-power floor");
   const double kappa = thrustRatioForInducedPowerRatio(induced_ratio, parameters.rotor.convention);
   const double excess_at_gap = 1.0 - 1.0 / kappa;
   const double excess_at_contact = 1.0 - 1.0 / contact_thrust_ratio;
   if (!(excess_at_contact > excess_at_gap))
-    throw std::invalid_argument("the contact thrust ratio " + std::to_string(contact_thrust_ratio) +
+    throw ceilplan::InputError("the contact thrust ratio " + std::to_string(contact_thrust_ratio) +
                                 " must exceed the anchor's thrust ratio " + std::to_string(kappa));
   const double r = std::sqrt(excess_at_gap / excess_at_contact);  // = K2 / (gap + K2)
   result.k2_m = gap_m * r / (1.0 - r);

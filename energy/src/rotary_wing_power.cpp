@@ -1,4 +1,5 @@
 #include "ceilplan/energy/rotary_wing_power.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -15,7 +16,7 @@ RotaryWingPower::RotaryWingPower(double profile_power_w, double induced_power_w,
       parasitic_coefficient_kg_m_(parasitic_coefficient_kg_m) {
   if (!(tip_speed_m_s > 0.0) || !(hover_induced_velocity_m_s > 0.0) || !(parasitic_coefficient_kg_m >= 0.0) ||
       !(profile_power_w >= 0.0) || !(induced_power_w > 0.0))
-    throw std::invalid_argument(
+    throw ceilplan::InputError(
         "rotary-wing power needs positive tip speed, induced velocity and induced power, and non-negative "
         "profile power and drag");
 }
@@ -35,7 +36,7 @@ RotaryWingPower RotaryWingPower::scaledToHover(double hover_shaft_power_w, doubl
   const double induced = (1.0 + k) * std::pow(weight_n, 1.5) / std::sqrt(2.0 * rho * area_m2);
   const double profile = hover_shaft_power_w - induced;
   if (profile < 0.0)
-    throw std::invalid_argument("hover shaft power " + std::to_string(hover_shaft_power_w) +
+    throw ceilplan::InputError("hover shaft power " + std::to_string(hover_shaft_power_w) +
                                 " W is below the momentum-theory induced power " + std::to_string(induced) +
                                 " W for this mass and rotor disc: raise hover_power_w or motor_efficiency");
   const double v0 = std::sqrt(weight_n / (2.0 * rho * area_m2));

@@ -1,4 +1,5 @@
 #include "ceilplan/environment/column_index.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -36,7 +37,7 @@ ColumnIndex::ColumnIndex(const VoxelGrid& grid)
     offsets_[c] = static_cast<std::uint32_t>(total);
     total += cursor[c];
     if (total > std::numeric_limits<std::uint32_t>::max())
-      throw std::invalid_argument("the map has too many voxel runs to index; crop it or coarsen its resolution");
+      throw ceilplan::InputError("the map has too many voxel runs to index; crop it or coarsen its resolution");
     cursor[c] = offsets_[c];
   }
   offsets_[columns] = static_cast<std::uint32_t>(total);

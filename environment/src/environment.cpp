@@ -1,6 +1,8 @@
 #include "ceilplan/environment/environment.hpp"
 
 #include "ceilplan/environment/disc_area.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,19 +16,13 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kDenseStepVoxels = 0.1;  // checkPathDensely's step: finer than any planner's
 
-std::string formatPoint(const Eigen::Vector3d& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f)", p.x(), p.y(), p.z());
-  return text;
-}
-
 void validateOptions(const EnvironmentOptions& options) {
   if (!(options.ceiling_reach_radii > 0.0) || !std::isfinite(options.ceiling_reach_radii))
-    throw std::invalid_argument("environment options: ceiling reach must be a positive number of rotor radii");
+    throw ceilplan::InputError("environment options: ceiling reach must be a positive number of rotor radii");
   if (!(options.ground_reach_radii > 0.0) || !std::isfinite(options.ground_reach_radii))
-    throw std::invalid_argument("environment options: ground reach must be a positive number of rotor radii");
+    throw ceilplan::InputError("environment options: ground reach must be a positive number of rotor radii");
   if (!(options.motion_step_voxels > 0.0) || options.motion_step_voxels > 1.0)
-    throw std::invalid_argument("environment options: motion step must lie in (0, 1] voxels");
+    throw ceilplan::InputError("environment options: motion step must lie in (0, 1] voxels");
 }
 
 VehicleGeometry validated(VehicleGeometry vehicle) {
@@ -37,7 +33,7 @@ VehicleGeometry validated(VehicleGeometry vehicle) {
 }  // namespace
 
 std::string Violation::describe() const {
-  std::string where = "segment " + std::to_string(segment) + " at " + formatPoint(position_m) + ": ";
+  std::string where = "segment " + std::to_string(segment) + " at " + formatPoint(position_m, 3) + ": ";
   switch (kind) {
     case ViolationKind::OutsideMap: return where + "the body centre lies outside the map";
     case ViolationKind::Occupied: return where + "the vehicle (with its clearance margins) touches occupied space";
@@ -62,12 +58,12 @@ Environment::Environment(const OccupancyMap& map, VehicleGeometry vehicle, Envir
 
 void Environment::requireInside(const Eigen::Vector3d& point_m, const char* query) const {
   if (!point_m.allFinite())
-    throw std::invalid_argument(std::string(query) + ": the point " + formatPoint(point_m) + " is not finite");
+    throw ceilplan::InputError(std::string(query) + ": the point " + formatPoint(point_m, 3) + " is not finite");
   if (contains(point_m)) return;
   const Eigen::AlignedBox3d box = grid_.frame().bounds();
-  throw std::out_of_range(map_name_ + ": " + query + " at " + formatPoint(point_m) +
-                          ": the point lies outside the map, whose known voxels span " + formatPoint(box.min()) +
-                          " to " + formatPoint(box.max()));
+  throw ceilplan::InputError(map_name_ + ": " + query + " at " + formatPoint(point_m, 3) +
+                          ": the point lies outside the map, whose known voxels span " + formatPoint(box.min(), 3) +
+                          " to " + formatPoint(box.max(), 3));
 }
 
 double Environment::columnGap(int i, int j, double z_m, Direction direction) const {

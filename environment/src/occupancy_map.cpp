@@ -1,4 +1,5 @@
 #include "ceilplan/environment/occupancy_map.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <octomap/AbstractOcTree.h>
 
@@ -29,7 +30,7 @@ struct Header {
 };
 
 [[noreturn]] void fail(const std::string& name, const std::string& problem) {
-  throw std::invalid_argument(name + ": " + problem);
+  throw ceilplan::InputError(name + ": " + problem);
 }
 
 // Mirrors AbstractOcTree::readHeader (token-based, '#' comments, up to the "data" line) but

@@ -1,4 +1,5 @@
 #include "ceilplan/environment/scenes.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <cmath>
 #include <random>
@@ -152,12 +153,12 @@ Scene sceneFromName(const std::string& name) {
   if (name == "tunnel") return Scene::Tunnel;
   if (name == "warehouse") return Scene::Warehouse;
   if (name == "open") return Scene::Open;
-  throw std::invalid_argument("unknown scene '" + name + "'; choose bridge, tunnel, warehouse or open");
+  throw ceilplan::InputError("unknown scene '" + name + "'; choose bridge, tunnel, warehouse or open");
 }
 
 VoxelGrid generateScene(Scene scene, double resolution_m, std::uint64_t seed) {
   if (!(resolution_m >= 0.02 && resolution_m <= 1.0))
-    throw std::invalid_argument("scene resolution must lie between 0.02 and 1 m, got " + std::to_string(resolution_m));
+    throw ceilplan::InputError("scene resolution must lie between 0.02 and 1 m, got " + std::to_string(resolution_m));
   SceneRandom random(seed);
   switch (scene) {
     case Scene::Bridge: return bridge(resolution_m, random);
@@ -165,7 +166,7 @@ VoxelGrid generateScene(Scene scene, double resolution_m, std::uint64_t seed) {
     case Scene::Warehouse: return warehouse(resolution_m, random);
     case Scene::Open: return open(resolution_m, random);
   }
-  throw std::invalid_argument("unknown scene");
+  throw ceilplan::InputError("unknown scene");
 }
 
 }  // namespace ceilplan::environment

@@ -1,4 +1,5 @@
 #include "ceilplan/environment/vehicle_geometry.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -8,27 +9,27 @@ namespace {
 
 void requireFinite(double value, const char* field) {
   if (!std::isfinite(value))
-    throw std::invalid_argument(std::string("vehicle geometry: ") + field + " must be a finite number");
+    throw ceilplan::InputError(std::string("vehicle geometry: ") + field + " must be a finite number");
 }
 
 void requirePositive(double value, const char* field) {
   requireFinite(value, field);
   if (value <= 0.0)
-    throw std::invalid_argument(std::string("vehicle geometry: ") + field + " must be positive, got " +
+    throw ceilplan::InputError(std::string("vehicle geometry: ") + field + " must be positive, got " +
                                 std::to_string(value));
 }
 
 void requireNonNegative(double value, const char* field) {
   requireFinite(value, field);
   if (value < 0.0)
-    throw std::invalid_argument(std::string("vehicle geometry: ") + field + " must not be negative, got " +
+    throw ceilplan::InputError(std::string("vehicle geometry: ") + field + " must not be negative, got " +
                                 std::to_string(value));
 }
 
 }  // namespace
 
 void VehicleGeometry::validate() const {
-  if (rotor_positions_m.empty()) throw std::invalid_argument("vehicle geometry: needs at least one rotor");
+  if (rotor_positions_m.empty()) throw ceilplan::InputError("vehicle geometry: needs at least one rotor");
   for (const auto& rotor : rotor_positions_m) {
     requireFinite(rotor.x(), "rotor position x");
     requireFinite(rotor.y(), "rotor position y");
@@ -38,7 +39,7 @@ void VehicleGeometry::validate() const {
   requireFinite(top_height_m, "airframe.top_height_m");
   requireFinite(bottom_height_m, "airframe.bottom_height_m");
   if (bottom_height_m > top_height_m)
-    throw std::invalid_argument("vehicle geometry: airframe.bottom_height_m lies above airframe.top_height_m");
+    throw ceilplan::InputError("vehicle geometry: airframe.bottom_height_m lies above airframe.top_height_m");
   requirePositive(collision_radius_m, "airframe.collision_radius_m");
   requireNonNegative(margin_m, "clearance.margin_m");
   requireNonNegative(top_margin_m, "clearance.top_margin_m");
@@ -46,7 +47,7 @@ void VehicleGeometry::validate() const {
 
 std::vector<Eigen::Vector2d> rotorPositions(RotorLayout layout, int count, double arm_length_m) {
   if (count < 1 || count > 16)
-    throw std::invalid_argument("vehicle geometry: rotors.count must be between 1 and 16, got " +
+    throw ceilplan::InputError("vehicle geometry: rotors.count must be between 1 and 16, got " +
                                 std::to_string(count));
   requirePositive(arm_length_m, "rotors.arm_length_m");
   const double step = 2.0 * M_PI / count;

@@ -1,4 +1,5 @@
 #include "ceilplan/environment/voxel_grid.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,10 +17,10 @@ constexpr int kTreeDepth = 16;
 Index3 checkedSize(const Index3& size) {
   std::size_t count = 1;
   for (int axis = 0; axis < 3; ++axis) {
-    if (size[axis] <= 0) throw std::invalid_argument("voxel grid: every dimension must be at least one voxel");
+    if (size[axis] <= 0) throw ceilplan::InputError("voxel grid: every dimension must be at least one voxel");
     count *= static_cast<std::size_t>(size[axis]);
     if (count > VoxelGrid::kMaxVoxels)
-      throw std::invalid_argument("the map's known voxels span a box of " + std::to_string(size[0]) + " x " +
+      throw ceilplan::InputError("the map's known voxels span a box of " + std::to_string(size[0]) + " x " +
                                   std::to_string(size[1]) + " x " + std::to_string(size[2]) +
                                   " voxels, more than ceilplan indexes (" + std::to_string(VoxelGrid::kMaxVoxels) +
                                   "); crop the map or coarsen its resolution");
@@ -88,7 +89,7 @@ class TreeBuilder {
 GridFrame::GridFrame(double resolution_m, const Index3& origin, const Index3& size)
     : resolution_m_(resolution_m), inverse_resolution_(1.0 / resolution_m), origin_(origin), size_(checkedSize(size)) {
   if (!(resolution_m > 0.0) || !std::isfinite(resolution_m))
-    throw std::invalid_argument("voxel grid: resolution must be a positive number of metres");
+    throw ceilplan::InputError("voxel grid: resolution must be a positive number of metres");
 }
 
 int GridFrame::indexOf(int axis, double coordinate_m) const {
@@ -139,7 +140,7 @@ VoxelGrid VoxelGrid::fromTree(const octomap::OcTree& tree, const std::function<v
     }
     ++leaves;
   }
-  if (leaves == 0) throw std::invalid_argument("the map is empty (no known voxel)");
+  if (leaves == 0) throw ceilplan::InputError("the map is empty (no known voxel)");
   VoxelGrid grid(GridFrame(tree.getResolution(), Index3{lo[0] - kKeyOffset, lo[1] - kKeyOffset, lo[2] - kKeyOffset},
                            Index3{hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}));
   std::size_t done = 0;

@@ -1,4 +1,5 @@
 #include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,7 @@ namespace {
 
 void requirePositive(double value, const char* name) {
   if (!(std::isfinite(value) && value > 0.0))
-    throw std::invalid_argument(std::string("speeds: ") + name + " must be a positive finite number, got " +
+    throw ceilplan::InputError(std::string("speeds: ") + name + " must be a positive finite number, got " +
                                 std::to_string(value));
 }
 
@@ -25,7 +26,7 @@ void FlightSpeeds::validate(double max_speed_m_s) const {
   requirePositive(climb_m_s, "climb_m_s");
   requirePositive(descent_m_s, "descent_m_s");
   if (cruise_m_s > max_speed_m_s || near_ceiling_m_s > max_speed_m_s)
-    throw std::invalid_argument("speeds: horizontal speeds must not exceed the vehicle's max_speed_m_s (" +
+    throw ceilplan::InputError("speeds: horizontal speeds must not exceed the vehicle's max_speed_m_s (" +
                                 std::to_string(max_speed_m_s) + " m/s)");
 }
 
@@ -34,11 +35,11 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
     : environment_(environment), energy_(energy), options_(options) {
   options_.speeds.validate(energy_.maxSpeedM_s());
   if (!(options_.planning_soc > 0.0 && options_.planning_soc <= 1.0))
-    throw std::invalid_argument("planning SOC must lie in (0, 1], got " + std::to_string(options_.planning_soc));
+    throw ceilplan::InputError("planning SOC must lie in (0, 1], got " + std::to_string(options_.planning_soc));
   if (!(std::isfinite(options_.step_m) && options_.step_m >= 0.0))
-    throw std::invalid_argument("integration step must be >= 0 (0: half a voxel)");
+    throw ceilplan::InputError("integration step must be >= 0 (0: half a voxel)");
   if (static_cast<int>(environment_.vehicle().rotor_positions_m.size()) != energy_.rotorCount())
-    throw std::invalid_argument("the vehicle geometry has " +
+    throw ceilplan::InputError("the vehicle geometry has " +
                                 std::to_string(environment_.vehicle().rotor_positions_m.size()) +
                                 " rotors but the energy model " + std::to_string(energy_.rotorCount()));
   step_m_ = options_.step_m > 0.0 ? options_.step_m : 0.5 * environment_.grid().frame().resolution_m();

@@ -4,8 +4,9 @@
 #include "ceilplan/planner/motion_validator.hpp"
 #include "ceilplan/planner/ompl_state.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
-#include "ceilplan/planner/point_text.hpp"
 #include "ceilplan/planner/state_validity_checker.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/ProblemDefinition.h>
@@ -28,7 +29,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 bool seedOmpl(std::uint32_t seed) {
-  if (seed == 0) throw std::invalid_argument("seed must be > 0 (OMPL refuses 0)");
+  if (seed == 0) throw ceilplan::InputError("seed must be > 0 (OMPL refuses 0)");
   static std::mutex mutex;
   static std::optional<std::uint32_t> used;
   std::lock_guard<std::mutex> lock(mutex);
@@ -50,17 +51,17 @@ FlightPlanner::FlightPlanner(const SafetyRules& rules, const FlightCostModel& mo
 }
 
 void FlightPlanner::requireValidEndpoint(const Eigen::Vector3d& p, const std::string& what) const {
-  if (!p.allFinite()) throw std::invalid_argument(what + " has a non-finite coordinate");
+  if (!p.allFinite()) throw ceilplan::InputError(what + " has a non-finite coordinate");
   const environment::Environment& environment = rules_.environment();
   if (!environment.contains(p)) {
     const Eigen::AlignedBox3d box = environment.grid().frame().bounds();
-    throw std::invalid_argument(what + " " + pointText(p) + " lies outside the map " + pointText(box.min()) + " - " +
-                                pointText(box.max()));
+    throw ceilplan::InputError(what + " " + formatPoint(p) + " lies outside the map " + formatPoint(box.min()) + " - " +
+                                formatPoint(box.max()));
   }
   if (const auto violation = environment.stateViolation(p))
-    throw std::invalid_argument(what + " " + pointText(p) + " is not a valid state: " + violation->describe());
+    throw ceilplan::InputError(what + " " + formatPoint(p) + " is not a valid state: " + violation->describe());
   if (!rules_.isStateValid(p))
-    throw std::invalid_argument(what + " " + pointText(p) + " is too close to a ceiling (rotor plane within " +
+    throw ceilplan::InputError(what + " " + formatPoint(p) + " is too close to a ceiling (rotor plane within " +
                                 std::to_string(rules_.minCeilingGap_m()) + " m) or violates the standoff");
 }
 
@@ -84,7 +85,7 @@ std::vector<Eigen::Vector3d> FlightPlanner::postProcess(const std::vector<Eigen:
   if (refine) best = refinePath(shortcutPath(best, rules_, *objective_), rules_, *objective_, options);
   if (const auto problem = rules_.checkPathDensely(best)) {
     if (rules_.checkPathDensely(raw))
-      throw std::runtime_error("the planned path fails the dense re-check: " + *problem +
+      throw ceilplan::Error("the planned path fails the dense re-check: " + *problem +
                                " (a bug: please report it with the map and the command)");
     best = raw;  // post-processing slipped past the motion checks: keep the raw path
   }
@@ -94,10 +95,10 @@ std::vector<Eigen::Vector3d> FlightPlanner::postProcess(const std::vector<Eigen:
 PlanResult FlightPlanner::plan(const PlanRequest& request) const {
   const auto started = std::chrono::steady_clock::now();
   if (!(std::isfinite(request.time_limit_s) && request.time_limit_s > 0.0))
-    throw std::invalid_argument("time limit must be a positive number of seconds");
+    throw ceilplan::InputError("time limit must be a positive number of seconds");
   requireValidEndpoint(request.start_m, "start");
   requireValidEndpoint(request.goal_m, "goal");
-  if ((request.goal_m - request.start_m).norm() < 1e-6) throw std::invalid_argument("start and goal coincide: nothing to plan");
+  if ((request.goal_m - request.start_m).norm() < 1e-6) throw ceilplan::InputError("start and goal coincide: nothing to plan");
   PlanResult result;
   result.planner = request.planner.empty() ? defaultPlannerName() : request.planner;
   if (result.planner != "lattice") makeOmplPlanner(result.planner, si_);  // rejects unknown names early
@@ -108,7 +109,7 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
     LatticePlanner lattice(rules_, *objective_, options);
     const auto found = lattice.plan(request.start_m, request.goal_m);
     if (!found)
-      throw NoPathFound(lattice.stopped() ? "the lattice search ran out of time (" + std::to_string(request.time_limit_s) +
+      throw ceilplan::NoPathError(lattice.stopped() ? "the lattice search ran out of time (" + std::to_string(request.time_limit_s) +
                                                 " s); raise --time-limit-s or the lattice stride"
                                           : "no collision-free route joins start and goal on the lattice");
     result.waypoints = found->waypoints;
@@ -126,7 +127,7 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
     const ompl::base::PlannerStatus status = planner->solve(request.time_limit_s);
     clearBandSampler();
     if (status != ompl::base::PlannerStatus::EXACT_SOLUTION || !definition->hasExactSolution())
-      throw NoPathFound("no path found by " + result.planner + " within " + std::to_string(request.time_limit_s) +
+      throw ceilplan::NoPathError("no path found by " + result.planner + " within " + std::to_string(request.time_limit_s) +
                         " s (status: " + status.asString() + "); raise --time-limit-s, or try --planner lattice");
     const auto path = definition->getSolutionPath()->as<ompl::geometric::PathGeometric>();
     for (const ompl::base::State* state : path->getStates()) result.waypoints.push_back(toPosition(state));
@@ -139,7 +140,7 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
   for (const std::vector<Eigen::Vector3d>& candidate : request.candidates) {
     if (candidate.size() < 2 || (candidate.front() - request.start_m).norm() > 1e-9 ||
         (candidate.back() - request.goal_m).norm() > 1e-9)
-      throw std::invalid_argument("a candidate route must run from the start to the goal");
+      throw ceilplan::InputError("a candidate route must run from the start to the goal");
     bool valid = true;
     for (std::size_t k = 1; k < candidate.size() && valid; ++k) valid = rules_.isMotionValid(candidate[k - 1], candidate[k]);
     if (!valid) continue;

@@ -1,4 +1,5 @@
 #include "ceilplan/planner/lattice_planner.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include "lattice_grid.hpp"
 
@@ -65,7 +66,7 @@ class ConditionsCache {
 
 LatticePlanner::LatticePlanner(const SafetyRules& rules, const FlightObjective& objective, LatticeOptions options)
     : rules_(rules), objective_(objective), options_(std::move(options)) {
-  if (options_.stride_voxels < 1) throw std::invalid_argument("lattice stride must be at least 1 voxel");
+  if (options_.stride_voxels < 1) throw ceilplan::InputError("lattice stride must be at least 1 voxel");
 }
 
 std::optional<LatticeResult> LatticePlanner::plan(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) {

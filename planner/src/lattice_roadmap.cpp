@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "ceilplan/planner/parallel_for.hpp"
+#include "ceilplan/core/error.hpp"
 #include "lattice_grid.hpp"
 
 namespace ceilplan::planner {
@@ -53,15 +54,15 @@ LatticeRoadmap::LatticeRoadmap(const SafetyRules& rules, const FlightObjective& 
       objective_(objective),
       places_m_(std::move(places_m)),
       options_(std::move(options)) {
-  if (options_.stride_voxels < 1) throw std::invalid_argument("roadmap stride must be at least 1 voxel");
-  if (options_.workers < 1) throw std::invalid_argument("roadmap needs at least one worker thread");
+  if (options_.stride_voxels < 1) throw ceilplan::InputError("roadmap stride must be at least 1 voxel");
+  if (options_.workers < 1) throw ceilplan::InputError("roadmap needs at least one worker thread");
   for (const Eigen::Vector3d& place : places_m_)
     if (!place.allFinite() || !rules_.environment().contains(place))
-      throw std::invalid_argument("a roadmap place lies outside the map");
+      throw ceilplan::InputError("a roadmap place lies outside the map");
   zone_radius_m_ = rules_.exemptRadius_m();
   node_count_ = detail::LatticeGrid(rules_.environment().grid().frame(), options_.stride_voxels).nodeCount();
   if (node_count_ >= kNoSlot)
-    throw std::invalid_argument("the map has too many lattice nodes: raise the roadmap stride");
+    throw ceilplan::InputError("the map has too many lattice nodes: raise the roadmap stride");
   // Shares of the build time, roughly as on the shipped bridge: nodes 10 %, edges 80 %, places 10 %.
   const auto report = [this](double share) {
     if (options_.progress) options_.progress(share);
@@ -208,7 +209,7 @@ std::size_t LatticeRoadmap::memoryBytes() const {
 
 std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::routesFrom(int from) const {
   const int places = static_cast<int>(places_m_.size());
-  if (from < 0 || from >= places) throw std::out_of_range("roadmap place index out of range");
+  if (from < 0 || from >= places) throw ceilplan::InputError("roadmap place index out of range");
   const detail::LatticeGrid lattice(rules_.environment().grid().frame(), options_.stride_voxels);
   const detail::LatticeDirections directions;
   const bool zoned = !zones_.empty();

@@ -5,6 +5,7 @@
 #include "ceilplan/planner/fec_objective.hpp"
 #include "ceilplan/planner/length_objective.hpp"
 #include "ceilplan/planner/time_objective.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <stdexcept>
 
@@ -22,7 +23,7 @@ std::shared_ptr<FlightObjective> makeObjective(const ObjectiveChoice& choice, co
   if (choice.name == "charge") return std::make_shared<ChargeObjective>(si, model);
   if (choice.name == "fec") return std::make_shared<FecObjective>(si, model, choice.nominal_capacity_ah);
   if (choice.name == "ageing") return std::make_shared<AgeingObjective>(si, model, choice.ageing);
-  throw std::invalid_argument("unknown objective '" + choice.name + "': choose length, time, charge, fec or ageing");
+  throw ceilplan::InputError("unknown objective '" + choice.name + "': choose length, time, charge, fec or ageing");
 }
 
 }  // namespace ceilplan::planner

@@ -1,6 +1,7 @@
 #include "ceilplan/planner/path_evaluation.hpp"
 
 #include "ceilplan/battery/simulation.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -10,8 +11,8 @@ namespace ceilplan::planner {
 
 PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
                             const std::vector<Eigen::Vector3d>& waypoints_m) {
-  if (waypoints_m.size() < 2) throw std::invalid_argument("a path needs at least 2 waypoints");
-  if (!(start_soc > 0.0 && start_soc <= 1.0)) throw std::invalid_argument("start SOC must lie in (0, 1]");
+  if (waypoints_m.size() < 2) throw ceilplan::InputError("a path needs at least 2 waypoints");
+  if (!(start_soc > 0.0 && start_soc <= 1.0)) throw ceilplan::InputError("start SOC must lie in (0, 1]");
   const environment::Environment& environment = model.environment();
   battery::Simulator battery(pack, start_soc);
   PathEvaluation result;
@@ -57,7 +58,7 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     }
     result.length_m += length;
   }
-  if (result.samples.empty()) throw std::invalid_argument("the path has zero length");
+  if (result.samples.empty()) throw ceilplan::InputError("the path has zero length");
   battery.closeModeInterval();
   result.charge_ah = battery.state().discharge_ah;
   result.energy_wh = energy_j / 3600.0;

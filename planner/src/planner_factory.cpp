@@ -1,4 +1,5 @@
 #include "ceilplan/planner/planner_factory.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <ompl/geometric/planners/informedtrees/AITstar.h>
 #include <ompl/geometric/planners/informedtrees/BITstar.h>
@@ -31,7 +32,7 @@ ompl::base::PlannerPtr makeOmplPlanner(const std::string& name, const ompl::base
   if (name == "LazyPRMstar") return std::make_shared<og::LazyPRMstar>(si);
   std::string known;
   for (const std::string& n : plannerNames()) known += (known.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown planner '" + name + "': choose one of " + known);
+  throw ceilplan::InputError("unknown planner '" + name + "': choose one of " + known);
 }
 
 }  // namespace ceilplan::planner

@@ -1,4 +1,5 @@
 #include "ceilplan/planner/safety_rules.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,8 +30,8 @@ SafetyRules::SafetyRules(const environment::Environment& environment, double min
                          std::optional<StandoffZone> standoff)
     : environment_(environment), min_ceiling_gap_m_(min_ceiling_gap_m), standoff_(std::move(standoff)) {
   if (!(std::isfinite(min_ceiling_gap_m) && min_ceiling_gap_m >= 0.0))
-    throw std::invalid_argument("minimum ceiling gap must be a finite number >= 0 m");
-  if (standoff_ && !standoff_->standoff) throw std::invalid_argument("standoff zone without an environment");
+    throw ceilplan::InputError("minimum ceiling gap must be a finite number >= 0 m");
+  if (standoff_ && !standoff_->standoff) throw ceilplan::InputError("standoff zone without an environment");
   const environment::VehicleGeometry& vehicle = environment_.vehicle();
   // Every rotor disc lies inside the cylinder's footprint, and the cylinder's top (with its
   // margin) is at least the minimum gap above the rotor plane: then no valid state can have a

@@ -1,4 +1,6 @@
 #include "ceilplan/planner/sortie_plan.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,12 +16,6 @@ namespace {
 
 constexpr double kSecondsPerHour = 3600.0;
 
-std::string number(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
-
 std::string percent(double fraction) {
   char text[32];
   std::snprintf(text, sizeof text, "%.0f %%", 100.0 * fraction);
@@ -28,7 +24,7 @@ std::string percent(double fraction) {
 
 void requireFiniteNonNegative(double value, const std::string& what) {
   if (!std::isfinite(value) || value < 0.0)
-    throw std::invalid_argument(what + " must be finite and non-negative, got " + number(value));
+    throw ceilplan::InputError(what + " must be finite and non-negative, got " + formatNumber(value));
 }
 
 // Builds a sortie's flight and recharge history and its figures; the wear comes later.
@@ -146,13 +142,13 @@ std::string splitReason(const TourLegs& legs, const SortieBattery& battery, cons
 
 void TourLegs::validate() const {
   const std::size_t n = names.size();
-  if (n < 1) throw std::invalid_argument("a tour needs home at index 0");
+  if (n < 1) throw ceilplan::InputError("a tour needs home at index 0");
   if (legs.size() != n || dwells.size() != n)
-    throw std::invalid_argument("a tour of " + std::to_string(n) + " places needs " + std::to_string(n) + " x " +
+    throw ceilplan::InputError("a tour of " + std::to_string(n) + " places needs " + std::to_string(n) + " x " +
                                 std::to_string(n) + " legs and " + std::to_string(n) + " dwells");
   for (std::size_t i = 0; i < n; ++i) {
     if (legs[i].size() != n)
-      throw std::invalid_argument("legs from '" + names[i] + "' list " + std::to_string(legs[i].size()) +
+      throw ceilplan::InputError("legs from '" + names[i] + "' list " + std::to_string(legs[i].size()) +
                                   " destinations, expected " + std::to_string(n));
     for (std::size_t j = 0; j < n; ++j) {
       if (i == j) continue;
@@ -164,7 +160,7 @@ void TourLegs::validate() const {
       for (std::size_t k = 0; k < profile.size(); ++k) {
         requireFiniteNonNegative(profile[k].current_a, what + " profile current (A)");
         if (!std::isfinite(profile[k].t_s) || (k > 0 && profile[k].t_s < profile[k - 1].t_s))
-          throw std::invalid_argument(what + " profile times must be finite and increasing");
+          throw ceilplan::InputError(what + " profile times must be finite and increasing");
       }
     }
     if (i > 0) {
@@ -177,12 +173,12 @@ void TourLegs::validate() const {
 void SortieBattery::validate() const {
   pack.validate();
   if (!(start_soc > 0.0 && start_soc <= 1.0))
-    throw std::invalid_argument("start SOC must be in (0, 1], got " + number(start_soc));
+    throw ceilplan::InputError("start SOC must be in (0, 1], got " + formatNumber(start_soc));
   if (!(reserve_soc >= 0.0 && reserve_soc <= 1.0))
-    throw std::invalid_argument("reserve SOC must be in [0, 1], got " + number(reserve_soc));
+    throw ceilplan::InputError("reserve SOC must be in [0, 1], got " + formatNumber(reserve_soc));
   if (reserve_soc >= start_soc)
-    throw std::invalid_argument("reserve SOC " + number(reserve_soc) + " is not below the start SOC " +
-                                number(start_soc) + ": no sortie could fly; lower the reserve or raise the start SOC");
+    throw ceilplan::InputError("reserve SOC " + formatNumber(reserve_soc) + " is not below the start SOC " +
+                                formatNumber(start_soc) + ": no sortie could fly; lower the reserve or raise the start SOC");
 }
 
 SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, const SortieBattery& battery,
@@ -191,13 +187,13 @@ SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, cons
   battery.validate();
   const int n = static_cast<int>(order.size());
   if (n != legs.targetCount())
-    throw std::invalid_argument("the visiting order lists " + std::to_string(n) + " targets, the tour has " +
+    throw ceilplan::InputError("the visiting order lists " + std::to_string(n) + " targets, the tour has " +
                                 std::to_string(legs.targetCount()));
   std::vector<int> sorted = order;
   std::sort(sorted.begin(), sorted.end());
   for (int k = 0; k < n; ++k)
     if (sorted[k] != k + 1)
-      throw std::invalid_argument("the visiting order must list every target 1.." + std::to_string(n) + " exactly once");
+      throw ceilplan::InputError("the visiting order must list every target 1.." + std::to_string(n) + " exactly once");
   const std::unique_ptr<battery::AgeingModel> prototype = battery::makeAgeingModel(options.ageing_model, options.ageing);
   const SortieBuilder builder(legs, battery);
   const double reserve_tolerance = 1e-12;
@@ -208,7 +204,7 @@ SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, cons
     if (!feasible(builder.build(order, k, k))) unreachable.push_back(order[k]);
   if (!unreachable.empty()) {
     const Sortie alone = builder.build(unreachable, 0, 0);
-    throw std::invalid_argument("no single sortie can reach, inspect and return from " + targetList(legs, unreachable) +
+    throw ceilplan::InputError("no single sortie can reach, inspect and return from " + targetList(legs, unreachable) +
                                 " above the " + percent(battery.reserve_soc) + " reserve (home -> '" +
                                 legs.names[unreachable.front()] + "' -> home lands at " + percent(alone.lowest_soc) +
                                 "); move home closer or use a larger pack");
@@ -269,7 +265,7 @@ Sortie flySortie(const TourLegs& legs, const std::vector<int>& targets, const So
   battery.validate();
   for (int target : targets)
     if (target < 1 || target > legs.targetCount())
-      throw std::invalid_argument("target index " + std::to_string(target) + " is not in 1.." +
+      throw ceilplan::InputError("target index " + std::to_string(target) + " is not in 1.." +
                                   std::to_string(legs.targetCount()));
   return SortieBuilder(legs, battery).build(targets, 0, static_cast<int>(targets.size()) - 1);
 }

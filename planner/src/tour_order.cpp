@@ -1,4 +1,5 @@
 #include "ceilplan/planner/tour_order.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -159,12 +160,12 @@ std::vector<int> nearestNeighbour(const CostMatrix& costs) {
 
 void validateCostMatrix(const CostMatrix& costs) {
   if (costs.rows() < 1 || costs.rows() != costs.cols())
-    throw std::invalid_argument("the tour's cost matrix must be square with home at index 0, got " +
+    throw ceilplan::InputError("the tour's cost matrix must be square with home at index 0, got " +
                                 std::to_string(costs.rows()) + " x " + std::to_string(costs.cols()));
   for (Eigen::Index i = 0; i < costs.rows(); ++i)
     for (Eigen::Index j = 0; j < costs.cols(); ++j)
       if (!std::isfinite(costs(i, j)) || costs(i, j) < 0.0)
-        throw std::invalid_argument("tour cost from " + std::to_string(i) + " to " + std::to_string(j) +
+        throw ceilplan::InputError("tour cost from " + std::to_string(i) + " to " + std::to_string(j) +
                                     " must be finite and non-negative, got " + std::to_string(costs(i, j)));
 }
 
@@ -182,7 +183,7 @@ TourOrder heldKarpTour(const CostMatrix& costs) {
   validateCostMatrix(costs);
   const int n = targetCount(costs);
   if (n > kHeldKarpMaxTargets)
-    throw std::invalid_argument("exact tour ordering (Held-Karp) takes at most " + std::to_string(kHeldKarpMaxTargets) +
+    throw ceilplan::InputError("exact tour ordering (Held-Karp) takes at most " + std::to_string(kHeldKarpMaxTargets) +
                                 " targets, got " + std::to_string(n) + ": use the heuristic");
   TourOrder result;
   result.method = "held-karp";
@@ -237,7 +238,7 @@ TourOrder heldKarpTour(const CostMatrix& costs) {
 
 TourOrder heuristicTour(const CostMatrix& costs, std::uint64_t seed, int restarts) {
   validateCostMatrix(costs);
-  if (restarts < 0) throw std::invalid_argument("the heuristic's restart count must be >= 0, got " + std::to_string(restarts));
+  if (restarts < 0) throw ceilplan::InputError("the heuristic's restart count must be >= 0, got " + std::to_string(restarts));
   Walk best(costs, nearestNeighbour(costs));
   best.improve();
   std::mt19937_64 random(seed);
@@ -258,7 +259,7 @@ TourOrder heuristicTour(const CostMatrix& costs, std::uint64_t seed, int restart
 TourOrder orderTour(const CostMatrix& costs, const TourOrderOptions& options) {
   validateCostMatrix(costs);
   if (options.exact_max_targets > kHeldKarpMaxTargets)
-    throw std::invalid_argument("exact tour ordering (Held-Karp) takes at most " + std::to_string(kHeldKarpMaxTargets) +
+    throw ceilplan::InputError("exact tour ordering (Held-Karp) takes at most " + std::to_string(kHeldKarpMaxTargets) +
                                 " targets, asked for up to " + std::to_string(options.exact_max_targets));
   if (targetCount(costs) <= options.exact_max_targets) return heldKarpTour(costs);
   return heuristicTour(costs, options.seed, options.restarts);

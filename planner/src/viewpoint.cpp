@@ -1,7 +1,8 @@
 #include "ceilplan/planner/viewpoint.hpp"
 
 #include "ceilplan/planner/flight_cost_model.hpp"
-#include "ceilplan/planner/point_text.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -122,14 +123,14 @@ class ViewpointSearch {
 
 void InspectionTarget::validate() const {
   const std::string what = "target '" + name + "'";
-  if (name.empty()) throw std::invalid_argument("a target needs a name");
-  if (!point_m.allFinite()) throw std::invalid_argument(what + ": point must be finite, got " + pointText(point_m));
+  if (name.empty()) throw ceilplan::InputError("a target needs a name");
+  if (!point_m.allFinite()) throw ceilplan::InputError(what + ": point must be finite, got " + formatPoint(point_m));
   if (!(std::isfinite(standoff_min_m) && std::isfinite(standoff_max_m) && standoff_min_m >= 0.0 &&
         standoff_max_m > 0.0 && standoff_min_m <= standoff_max_m))
-    throw std::invalid_argument(what + ": standoff range must be 0 <= min <= max, max > 0, got [" +
+    throw ceilplan::InputError(what + ": standoff range must be 0 <= min <= max, max > 0, got [" +
                                 number(standoff_min_m) + ", " + number(standoff_max_m) + "] m");
   if (!std::isfinite(dwell_s) || dwell_s < 0.0)
-    throw std::invalid_argument(what + ": dwell time must be finite and non-negative, got " + number(dwell_s) + " s");
+    throw ceilplan::InputError(what + ": dwell time must be finite and non-negative, got " + number(dwell_s) + " s");
 }
 
 double hoverCurrentA(const environment::Environment& environment, const energy::EnergyModel& model,
@@ -137,7 +138,7 @@ double hoverCurrentA(const environment::Environment& environment, const energy::
   const environment::SurfaceGaps above = environment.ceiling(body_m);
   const environment::SurfaceGaps below = environment.ground(body_m);
   if (static_cast<int>(above.rotors.size()) != model.rotorCount() || model.rotorCount() > energy::EnergyModel::kMaxRotors)
-    throw std::invalid_argument("the map's vehicle has " + std::to_string(above.rotors.size()) +
+    throw ceilplan::InputError("the map's vehicle has " + std::to_string(above.rotors.size()) +
                                 " rotors, the energy model " + std::to_string(model.rotorCount()) +
                                 ": use one vehicle file for both");
   const PointConditions conditions = surfaceConditions(above, below);
@@ -151,13 +152,13 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
                           const energy::EnergyModel& model, const ViewpointOptions& options) {
   target.validate();
   if (!environment.contains(target.point_m))
-    throw std::invalid_argument("target '" + target.name + "' at " + pointText(target.point_m) + " lies outside the map");
+    throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) + " lies outside the map");
   ViewpointSearch search(target, environment, model, options);
   const double resolution_m = environment.grid().frame().resolution_m();
   const bool hug = options.mode == ViewpointMode::Ceiling;
   search.scan(target.point_m, resolution_m, target.standoff_max_m, hug);
   if (!search.found())
-    throw std::invalid_argument("target '" + target.name + "' at " + pointText(target.point_m) +
+    throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
                                 ": no valid viewpoint within " + number(target.standoff_min_m) + "-" +
                                 number(target.standoff_max_m) +
                                 " m that sees it" +

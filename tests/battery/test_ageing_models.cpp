@@ -1,6 +1,7 @@
 // The ageing models against the reference's derived values and hand-computed cases
 // (reference-models.md section 5).
 #include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -178,10 +179,10 @@ TEST(SchmalstiegModel, RejectsAPackVoltageGivenForACell) {
   try {
     model.addSamples(restingDays(2, 0.5));
     FAIL() << "pack voltage accepted";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("single cell"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(cb::SchmalstiegAgeingModel(cb::OperatingConditions{}, nullptr), std::invalid_argument);
+  EXPECT_THROW(cb::SchmalstiegAgeingModel(cb::OperatingConditions{}, nullptr), ceilplan::InputError);
 }
 
 // ---- Woehler + Miner, FEC baseline -------------------------------------------------------------
@@ -201,10 +202,10 @@ TEST(WoehlerModel, MinersRuleOverRainflowCycles) {
 TEST(WoehlerModel, RejectsNonsenseParameters) {
   cb::WoehlerParameters p;
   p.cycles_at_full_depth = 0.0;
-  EXPECT_THROW(cb::WoehlerAgeingModel{p}, std::invalid_argument);
+  EXPECT_THROW(cb::WoehlerAgeingModel{p}, ceilplan::InputError);
   p = {};
   p.exponent = -1.0;
-  EXPECT_THROW(cb::FecAgeingModel{p}, std::invalid_argument);
+  EXPECT_THROW(cb::FecAgeingModel{p}, ceilplan::InputError);
 }
 
 TEST(FecModel, LossIsProportionalToFullEquivalentCycles) {
@@ -252,14 +253,14 @@ TEST(AgeingModels, BadSamplesAreRejectedBeforeAnyIsUsed) {
     const auto model = cb::makeAgeingModel(name, defaultOptions());
     model->addSamples({{0.0, 0.9, 1.0}, {10.0, 0.5, 1.0}});
     const double before = model->capacityLoss();
-    EXPECT_THROW(model->addSamples({{20.0, 0.4, 1.0}, {30.0, 1.2, 1.0}}), std::invalid_argument);
-    EXPECT_THROW(model->addSamples({{20.0, 0.4, 1.0}, {30.0, -0.1, 1.0}}), std::invalid_argument);
-    EXPECT_THROW(model->addSamples({{20.0, std::nan(""), 1.0}}), std::invalid_argument);
-    EXPECT_THROW(model->addSamples({{20.0, 0.4, INFINITY}}), std::invalid_argument);
+    EXPECT_THROW(model->addSamples({{20.0, 0.4, 1.0}, {30.0, 1.2, 1.0}}), ceilplan::InputError);
+    EXPECT_THROW(model->addSamples({{20.0, 0.4, 1.0}, {30.0, -0.1, 1.0}}), ceilplan::InputError);
+    EXPECT_THROW(model->addSamples({{20.0, std::nan(""), 1.0}}), ceilplan::InputError);
+    EXPECT_THROW(model->addSamples({{20.0, 0.4, INFINITY}}), ceilplan::InputError);
     try {
       model->addSamples({{5.0, 0.4, 1.0}});
       FAIL() << name << ": time going backwards accepted";
-    } catch (const std::invalid_argument& e) {
+    } catch (const ceilplan::InputError& e) {
       EXPECT_NE(std::string(e.what()).find("backwards"), std::string::npos) << e.what();
     }
     EXPECT_EQ(model->samplesSeen(), 2u) << name;
@@ -285,10 +286,10 @@ TEST(AgeingModels, FactoryKnowsEachModelByName) {
   try {
     cb::makeAgeingModel("wang", defaultOptions());
     FAIL() << "unknown model accepted";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("fec, xu, schmalstieg, woehler"), std::string::npos);
   }
-  EXPECT_THROW(cb::makeAgeingModel("schmalstieg", cb::AgeingModelOptions{}), std::invalid_argument);
+  EXPECT_THROW(cb::makeAgeingModel("schmalstieg", cb::AgeingModelOptions{}), ceilplan::InputError);
 }
 
 TEST(OperatingConditions, CelsiusOverOneHundredFiftyLooksLikeKelvin) {
@@ -296,12 +297,12 @@ TEST(OperatingConditions, CelsiusOverOneHundredFiftyLooksLikeKelvin) {
   try {
     cb::OperatingConditions::fromCelsius(298.15);
     FAIL() << "kelvin accepted as Celsius";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("kelvin"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(cb::OperatingConditions::fromCelsius(-300.0), std::invalid_argument);
-  EXPECT_THROW(cb::OperatingConditions::fromCelsius(std::nan("")), std::invalid_argument);
-  EXPECT_THROW(cb::XuAgeingModel(cb::OperatingConditions{-5.0, ""}), std::invalid_argument);
+  EXPECT_THROW(cb::OperatingConditions::fromCelsius(-300.0), ceilplan::InputError);
+  EXPECT_THROW(cb::OperatingConditions::fromCelsius(std::nan("")), ceilplan::InputError);
+  EXPECT_THROW(cb::XuAgeingModel(cb::OperatingConditions{-5.0, ""}), ceilplan::InputError);
 }
 
 TEST(OperatingConditions, StudiesOutsideAModelsRangeCarryWarnings) {

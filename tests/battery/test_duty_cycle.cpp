@@ -1,6 +1,7 @@
 // Duty cycles: missions in fixed slots, overnight rest, SOC carried over, capacity fade fed back.
 
 #include "ceilplan/battery/duty_cycle.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -82,9 +83,9 @@ TEST(DutyCycle, RecordsMissionDayAndRunSeriesOnRequest) {
 TEST(DutyCycle, RefusesMissionsThatDoNotFitInADay) {
   DutyCycle duty = paperDuty(9.5, 1200.0);
   duty.missions_per_day = 33;  // 33 x 45 min > 24 h
-  EXPECT_THROW(simulateDuty(Pack{}, duty), std::invalid_argument);
+  EXPECT_THROW(simulateDuty(Pack{}, duty), ceilplan::InputError);
   duty.missions_per_day = 0;
-  EXPECT_THROW(simulateDuty(Pack{}, duty), std::invalid_argument);
+  EXPECT_THROW(simulateDuty(Pack{}, duty), ceilplan::InputError);
 }
 
 }  // namespace

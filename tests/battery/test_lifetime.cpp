@@ -3,6 +3,7 @@
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/lifetime.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -105,10 +106,10 @@ TEST(Lifetime, RefusesNonsenseOptions) {
   auto model = makeAgeingModel("fec", {});
   LifetimeOptions options;
   options.end_of_life_soh = 1.0;
-  EXPECT_THROW(projectLifetime(Pack{}, paperDuty(9.5), *model, {}, options), std::invalid_argument);
+  EXPECT_THROW(projectLifetime(Pack{}, paperDuty(9.5), *model, {}, options), ceilplan::InputError);
   options = {};
   options.study_days = 0;
-  EXPECT_THROW(projectLifetime(Pack{}, paperDuty(9.5), *model, {}, options), std::invalid_argument);
+  EXPECT_THROW(projectLifetime(Pack{}, paperDuty(9.5), *model, {}, options), ceilplan::InputError);
 }
 
 }  // namespace

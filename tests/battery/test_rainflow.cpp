@@ -1,5 +1,6 @@
 // Rainflow counting per ASTM E1049-85, streaming (reference-models.md section 5).
 #include "ceilplan/battery/rainflow.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -169,9 +170,9 @@ TEST(Rainflow, RejectsNonFiniteSamplesNamingTheirIndex) {
   try {
     counter.add(std::nan(""), closed);
     FAIL() << "NaN accepted";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("sample 1"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(counter.add(INFINITY, closed), std::invalid_argument);
+  EXPECT_THROW(counter.add(INFINITY, closed), ceilplan::InputError);
   EXPECT_EQ(counter.samplesSeen(), 1u);
 }

@@ -2,6 +2,7 @@
 // stop conditions in both schemes, and the refusals.
 
 #include "ceilplan/battery/simulation.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -103,31 +104,31 @@ TEST(Simulator, RefusesToDischargeBelowTheFloorAndSaysByHowMuch) {
 
 TEST(Simulator, RefusesInvalidSegments) {
   Simulator simulator(Pack{}, 0.5);
-  EXPECT_THROW(simulator.run(Segment::discharge(-1.0, 10.0)), std::invalid_argument);
-  EXPECT_THROW(simulator.run(Segment::discharge(kNaN, 10.0)), std::invalid_argument);
-  EXPECT_THROW(simulator.run(Segment::discharge(1.0, kNaN)), std::invalid_argument);
-  EXPECT_THROW(simulator.run(Segment::idle(-5.0)), std::invalid_argument);
-  EXPECT_THROW(simulator.run(Segment::charge(0.0, 600.0, 0.95)), std::invalid_argument);
-  EXPECT_THROW(simulator.run(Segment::charge(10.4, 600.0, 1.2)), std::invalid_argument);
-  EXPECT_THROW(simulator.run(Segment::charge(10.4, 600.0, 0.0)), std::invalid_argument);
+  EXPECT_THROW(simulator.run(Segment::discharge(-1.0, 10.0)), ceilplan::InputError);
+  EXPECT_THROW(simulator.run(Segment::discharge(kNaN, 10.0)), ceilplan::InputError);
+  EXPECT_THROW(simulator.run(Segment::discharge(1.0, kNaN)), ceilplan::InputError);
+  EXPECT_THROW(simulator.run(Segment::idle(-5.0)), ceilplan::InputError);
+  EXPECT_THROW(simulator.run(Segment::charge(0.0, 600.0, 0.95)), ceilplan::InputError);
+  EXPECT_THROW(simulator.run(Segment::charge(10.4, 600.0, 1.2)), ceilplan::InputError);
+  EXPECT_THROW(simulator.run(Segment::charge(10.4, 600.0, 0.0)), ceilplan::InputError);
 }
 
 TEST(Simulator, RefusesInvalidPacksAndStartStates) {
   Pack no_capacity;
   no_capacity.capacity_ah = 0.0;
-  EXPECT_THROW(Simulator(no_capacity, 0.5), std::invalid_argument);
+  EXPECT_THROW(Simulator(no_capacity, 0.5), ceilplan::InputError);
   Pack negative;
   negative.capacity_ah = -5.2;
-  EXPECT_THROW(Simulator(negative, 0.5), std::invalid_argument);
+  EXPECT_THROW(Simulator(negative, 0.5), ceilplan::InputError);
   Pack nan_capacity;
   nan_capacity.capacity_ah = kNaN;
-  EXPECT_THROW(Simulator(nan_capacity, 0.5), std::invalid_argument);
-  EXPECT_THROW(Simulator(Pack{}, 0.0), std::invalid_argument);
-  EXPECT_THROW(Simulator(Pack{}, 1.01), std::invalid_argument);
-  EXPECT_THROW(Simulator(Pack{}, kNaN), std::invalid_argument);
-  EXPECT_THROW(Simulator(Pack{}, 0.5, -30.0), std::invalid_argument);
+  EXPECT_THROW(Simulator(nan_capacity, 0.5), ceilplan::InputError);
+  EXPECT_THROW(Simulator(Pack{}, 0.0), ceilplan::InputError);
+  EXPECT_THROW(Simulator(Pack{}, 1.01), ceilplan::InputError);
+  EXPECT_THROW(Simulator(Pack{}, kNaN), ceilplan::InputError);
+  EXPECT_THROW(Simulator(Pack{}, 0.5, -30.0), ceilplan::InputError);
   Simulator simulator(Pack{}, 0.5);
-  EXPECT_THROW(simulator.setStateOfHealth(0.0), std::invalid_argument);
+  EXPECT_THROW(simulator.setStateOfHealth(0.0), ceilplan::InputError);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "ceilplan/energy/calibration.hpp"
 #include "ceilplan/energy/paper_quad.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -99,7 +100,7 @@ namespace {
 std::string refusal(const std::vector<CalibrationSample>& samples, const std::vector<FreeParameter>& free) {
   try {
     calibrate(paperQuadParameters(), samples, free);
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     return e.what();
   }
   return "(accepted)";
@@ -134,11 +135,11 @@ TEST(Calibration, RefusesAFlatDirectionNamingTheParameter) {
 TEST(Calibration, RefusesTooFewSamplesAndBadSamples) {
   std::vector<CalibrationSample> one(1);
   one[0].current_a = 9.5;
-  EXPECT_THROW(calibrate(paperQuadParameters(), one, {FreeParameter::kHoverPowerW}), std::invalid_argument);
+  EXPECT_THROW(calibrate(paperQuadParameters(), one, {FreeParameter::kHoverPowerW}), ceilplan::InputError);
   std::vector<CalibrationSample> negative_gap(3);
   for (auto& s : negative_gap) s.current_a = 9.5;
   negative_gap[1].ceiling_gap_m = -0.1;
-  EXPECT_THROW(calibrate(paperQuadParameters(), negative_gap, {FreeParameter::kHoverPowerW}), std::invalid_argument);
-  EXPECT_THROW(parseFreeParameter("k3"), std::invalid_argument);
+  EXPECT_THROW(calibrate(paperQuadParameters(), negative_gap, {FreeParameter::kHoverPowerW}), ceilplan::InputError);
+  EXPECT_THROW(parseFreeParameter("k3"), ceilplan::InputError);
   EXPECT_EQ(parseFreeParameter("k2_m"), FreeParameter::kK2M);
 }

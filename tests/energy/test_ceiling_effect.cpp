@@ -1,5 +1,6 @@
 #include "ceilplan/energy/ceiling_effect.hpp"
 #include "ceilplan/energy/paper_quad.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -56,8 +57,8 @@ TEST(CeilingEffect, ScalesTheExcessWithCoverage) {
 }
 
 TEST(CeilingEffect, RefusesConstantsThatAreSingularAtContact) {
-  EXPECT_THROW(CeilingEffect({1.0, 0.1, 1.5, 2.5}, kRadiusM), std::invalid_argument);  // R^2/(K1 K2^2) > 1
-  EXPECT_THROW(CeilingEffect({5.0, 0.0, 1.5, 2.5}, kRadiusM), std::invalid_argument);
-  EXPECT_THROW(CeilingEffect({-5.0, 0.05, 1.5, 2.5}, kRadiusM), std::invalid_argument);
-  EXPECT_THROW(CeilingEffect({5.0, 0.05, 2.5, 1.5}, kRadiusM), std::invalid_argument);
+  EXPECT_THROW(CeilingEffect({1.0, 0.1, 1.5, 2.5}, kRadiusM), ceilplan::InputError);  // R^2/(K1 K2^2) > 1
+  EXPECT_THROW(CeilingEffect({5.0, 0.0, 1.5, 2.5}, kRadiusM), ceilplan::InputError);
+  EXPECT_THROW(CeilingEffect({-5.0, 0.05, 1.5, 2.5}, kRadiusM), ceilplan::InputError);
+  EXPECT_THROW(CeilingEffect({5.0, 0.05, 2.5, 1.5}, kRadiusM), ceilplan::InputError);
 }

@@ -1,5 +1,6 @@
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/energy/paper_quad.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -148,30 +149,30 @@ TEST(EnergyModel, ConstantPowerConventionGivesASmallerBenefitForTheSameThrustRat
 
 TEST(EnergyModel, RefusesBadFlightInput) {
   const EnergyModel& model = paperModel();
-  EXPECT_THROW(model.currentA(-0.01, 1.0, hover()), std::invalid_argument);
-  EXPECT_THROW(model.currentA(std::nan(""), 1.0, hover()), std::invalid_argument);
-  EXPECT_THROW(model.currentA(0.1, 1.5, hover()), std::invalid_argument);
-  EXPECT_THROW(model.currentA(0.1, 1.0, hover(1.2)), std::invalid_argument);
+  EXPECT_THROW(model.currentA(-0.01, 1.0, hover()), ceilplan::InputError);
+  EXPECT_THROW(model.currentA(std::nan(""), 1.0, hover()), ceilplan::InputError);
+  EXPECT_THROW(model.currentA(0.1, 1.5, hover()), ceilplan::InputError);
+  EXPECT_THROW(model.currentA(0.1, 1.0, hover(1.2)), ceilplan::InputError);
   FlightCondition too_fast = hover();
   too_fast.speed_m_s = model.maxSpeedM_s() + 0.1;
-  EXPECT_THROW(model.currentA(kNoSurface, 1.0, too_fast), std::invalid_argument);
+  EXPECT_THROW(model.currentA(kNoSurface, 1.0, too_fast), ceilplan::InputError);
   FlightCondition bad_ground = hover();
   bad_ground.ground_gap_m = -1.0;
-  EXPECT_THROW(model.currentA(kNoSurface, 1.0, bad_ground), std::invalid_argument);
+  EXPECT_THROW(model.currentA(kNoSurface, 1.0, bad_ground), ceilplan::InputError);
   const RotorCeiling three[3] = {};
-  EXPECT_THROW(model.currentA(three, 3, hover()), std::invalid_argument);
+  EXPECT_THROW(model.currentA(three, 3, hover()), ceilplan::InputError);
 }
 
 TEST(EnergyModel, RefusesBadVehicles) {
   EnergyParameters no_rotors = paperQuadParameters();
   no_rotors.vehicle.rotor_count = 0;
-  EXPECT_THROW(EnergyModel{no_rotors}, std::invalid_argument);
+  EXPECT_THROW(EnergyModel{no_rotors}, ceilplan::InputError);
   EnergyParameters negative_mass = paperQuadParameters();
   negative_mass.vehicle.mass_kg = -1.4;
-  EXPECT_THROW(EnergyModel{negative_mass}, std::invalid_argument);
+  EXPECT_THROW(EnergyModel{negative_mass}, ceilplan::InputError);
   EnergyParameters weak = paperQuadParameters();
   weak.rotor.hover_power_w = 20.0;  // below momentum theory's induced power
-  EXPECT_THROW(EnergyModel{weak}, std::invalid_argument);
+  EXPECT_THROW(EnergyModel{weak}, ceilplan::InputError);
 }
 
 TEST(PaperQuad, AnchorSolvesForTheMeasuredCurrentUnderEitherConvention) {
@@ -179,8 +180,8 @@ TEST(PaperQuad, AnchorSolvesForTheMeasuredCurrentUnderEitherConvention) {
   p.rotor.convention = ThrustToPowerConvention::kConstantPower;
   p.ceiling = ceilingThroughAnchor(p, 0.05, 8.0, kPaperReferenceSoc, kContactThrustRatio);
   EXPECT_NEAR(EnergyModel(p).currentA(0.05, 1.0, hover()), 8.0, 1e-9);
-  EXPECT_THROW(ceilingThroughAnchor(p, 0.05, 9.6, kPaperReferenceSoc, kContactThrustRatio), std::invalid_argument);
-  EXPECT_THROW(ceilingThroughAnchor(p, 0.30, 8.0, kPaperReferenceSoc, kContactThrustRatio), std::invalid_argument);
+  EXPECT_THROW(ceilingThroughAnchor(p, 0.05, 9.6, kPaperReferenceSoc, kContactThrustRatio), ceilplan::InputError);
+  EXPECT_THROW(ceilingThroughAnchor(p, 0.30, 8.0, kPaperReferenceSoc, kContactThrustRatio), ceilplan::InputError);
 }
 
 TEST(EnergyModel, OneModelServesManyThreadsWithIdenticalAnswers) {

@@ -1,4 +1,5 @@
 #include "ceilplan/energy/ground_effect.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -50,9 +51,9 @@ TEST(GroundEffect, MultirotorFormRefusesASingleRotorAndRotorsTooClose) {
   multirotor.model = GroundEffectModel::kMultirotor;
   VehicleGeometry single = kQuad;
   single.rotor_count = 1;
-  EXPECT_THROW(GroundEffect(multirotor, single), std::invalid_argument);
+  EXPECT_THROW(GroundEffect(multirotor, single), ceilplan::InputError);
   VehicleGeometry crowded = kQuad;
   crowded.adjacent_rotor_spacing_m = 0.01;
   crowded.opposite_rotor_spacing_m = 0.014;
-  EXPECT_THROW(GroundEffect(multirotor, crowded), std::invalid_argument);
+  EXPECT_THROW(GroundEffect(multirotor, crowded), ceilplan::InputError);
 }

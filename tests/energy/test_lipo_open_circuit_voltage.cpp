@@ -1,4 +1,5 @@
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -37,7 +38,7 @@ TEST(LipoOpenCircuitVoltage, NeverFallsWithRisingCharge) {
 
 TEST(LipoOpenCircuitVoltage, RefusesChargeOutsideZeroToOne) {
   const LipoOpenCircuitVoltage ocv;
-  EXPECT_THROW(ocv.cellVoltageV(-0.01), std::invalid_argument);
-  EXPECT_THROW(ocv.cellVoltageV(1.01), std::invalid_argument);
-  EXPECT_THROW(ocv.cellVoltageV(std::nan("")), std::invalid_argument);
+  EXPECT_THROW(ocv.cellVoltageV(-0.01), ceilplan::InputError);
+  EXPECT_THROW(ocv.cellVoltageV(1.01), ceilplan::InputError);
+  EXPECT_THROW(ocv.cellVoltageV(std::nan("")), ceilplan::InputError);
 }

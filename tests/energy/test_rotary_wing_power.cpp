@@ -1,4 +1,5 @@
 #include "ceilplan/energy/rotary_wing_power.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -41,7 +42,7 @@ TEST(RotaryWingPower, InducedPowerFallsWithSpeedAndParasiticRisesAsTheCube) {
 }
 
 TEST(RotaryWingPower, ScalingRefusesHoverPowerBelowTheMomentumInducedPower) {
-  EXPECT_THROW(RotaryWingPower::scaledToHover(10.0, 13.7, 0.2, 0.1, 80.0, 0.03, 1.225), std::invalid_argument);
+  EXPECT_THROW(RotaryWingPower::scaledToHover(10.0, 13.7, 0.2, 0.1, 80.0, 0.03, 1.225), ceilplan::InputError);
   const RotaryWingPower scaled = RotaryWingPower::scaledToHover(110.0, 13.7, 0.2, 0.1, 80.0, 0.03, 1.225);
   EXPECT_NEAR(scaled.powerW(0.0), 110.0, 1e-12);
 }

@@ -1,8 +1,9 @@
-// libFuzzer target: any bytes given to the map loader give a map or a std::invalid_argument,
+// libFuzzer target: any bytes given to the map loader give a map or a ceilplan::InputError,
 // never a crash, a hang or a leak. Build and run: scripts/fuzz-map-loader (docs/environment.md).
 
 #include "ceilplan/environment/occupancy_map.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -18,10 +19,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (map.tree().size() < 4096) {
       try {
         ceilplan::environment::VoxelGrid::fromTree(map.tree());
-      } catch (const std::invalid_argument&) {
+      } catch (const ceilplan::InputError&) {
       }
     }
-  } catch (const std::invalid_argument&) {
+  } catch (const ceilplan::InputError&) {
   }
   return 0;
 }

@@ -4,6 +4,7 @@
 #include "analytic_maps.hpp"
 
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -134,13 +135,13 @@ TEST(Queries, APointOutsideTheMapIsAnErrorThatSaysSo) {
   const OccupancyMap map = room([](double, double) { return 3.0; });
   const Environment environment(map, quad());
   EXPECT_FALSE(environment.contains({2.5, 0, 1}));
-  EXPECT_THROW(environment.ceilingGapAt({2.5, 0, 1}), std::out_of_range);
-  EXPECT_THROW(environment.ground({0, 0, -1}), std::out_of_range);
-  EXPECT_THROW(environment.clearance_m({0, 9, 1}), std::out_of_range);
+  EXPECT_THROW(environment.ceilingGapAt({2.5, 0, 1}), ceilplan::InputError);
+  EXPECT_THROW(environment.ground({0, 0, -1}), ceilplan::InputError);
+  EXPECT_THROW(environment.clearance_m({0, 9, 1}), ceilplan::InputError);
   try {
     environment.ceiling({0, 0, 10});
     FAIL() << "expected an error";
-  } catch (const std::out_of_range& e) {
+  } catch (const ceilplan::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("outside the map"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(environment.isStateValid({2.5, 0, 1}));

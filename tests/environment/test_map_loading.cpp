@@ -4,6 +4,7 @@
 #include "run_command.hpp"
 
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <octomap/ColorOcTree.h>
 
@@ -21,7 +22,7 @@ const std::filesystem::path kGeb079 = "/usr/share/doc/liboctomap-dev/examples/da
 std::string loadError(const std::filesystem::path& file) {
   try {
     OccupancyMap::load(file);
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     return e.what();
   }
   return "(loaded)";

@@ -5,6 +5,7 @@
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/scenes.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -99,7 +100,7 @@ TEST(Scenes, DifferentSeedsMoveTheClutterAndTheSameSeedRepeatsIt) {
   }
   EXPECT_EQ(same_ab, a.frame().voxelCount());
   EXPECT_LT(same_ac, a.frame().voxelCount());
-  EXPECT_THROW(sceneFromName("castle"), std::invalid_argument);
+  EXPECT_THROW(sceneFromName("castle"), ceilplan::InputError);
 }
 
 TEST(Scenes, TheBridgeDeckUndersideIsSixMetresUpAndTheOpenSceneHasNoCeiling) {

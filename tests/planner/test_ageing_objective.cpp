@@ -6,6 +6,7 @@
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/ageing_objective.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -37,8 +38,8 @@ TEST(AgeingRates, DeeperCyclesWearMorePerAmpereHourUnderWoehler) {
 }
 
 TEST(AgeingRates, RefusesADepthThePackCannotGive) {
-  EXPECT_THROW(planner::measureAgeingRates("xu", modelOptions(), battery::Pack{}, 0.95, 0.0, 9.0), std::invalid_argument);
-  EXPECT_THROW(planner::measureAgeingRates("xu", modelOptions(), battery::Pack{}, 0.95, 0.97, 9.0), std::invalid_argument);
+  EXPECT_THROW(planner::measureAgeingRates("xu", modelOptions(), battery::Pack{}, 0.95, 0.0, 9.0), ceilplan::InputError);
+  EXPECT_THROW(planner::measureAgeingRates("xu", modelOptions(), battery::Pack{}, 0.95, 0.97, 9.0), ceilplan::InputError);
 }
 
 TEST(AgeingObjective, CostIsTheLinearisedWearOfTheMotionsCharge) {

@@ -2,6 +2,8 @@
 // waypoints convert back to the local route within 1 cm, the WPL file has 12 tab-separated
 // fields per row with home first, and a missing origin is a clear error.
 
+#include "ceilplan/core/error.hpp"
+
 #include "autopilot_export.hpp"
 #include "run_command.hpp"
 
@@ -126,7 +128,7 @@ TEST(AutopilotExport, MissingOriginIsAClearError) {
     try {
       write(mission);
       FAIL() << "expected an error";
-    } catch (const std::invalid_argument& e) {
+    } catch (const ceilplan::InputError& e) {
       EXPECT_NE(std::string(e.what()).find("without the map's geodetic origin"), std::string::npos) << e.what();
     }
   }
@@ -136,18 +138,18 @@ TEST(AutopilotExport, RefusesBadNumbersAndWritesNothing) {
   const std::filesystem::path dir = testing::scratchDirectory("export_bad");
   AutopilotMission mission = bridgeSortie();
   mission.waypoints[2].position_m.y() = std::nan("");
-  EXPECT_THROW(writeQgcPlan(dir / "mission.plan", mission), std::invalid_argument);
+  EXPECT_THROW(writeQgcPlan(dir / "mission.plan", mission), ceilplan::InputError);
   EXPECT_FALSE(std::filesystem::exists(dir / "mission.plan"));
   mission = bridgeSortie();
   mission.waypoints[1].hold_s = -1;
-  EXPECT_THROW(writeQgcWpl(dir / "mission.waypoints", mission), std::invalid_argument);
+  EXPECT_THROW(writeQgcWpl(dir / "mission.waypoints", mission), ceilplan::InputError);
   EXPECT_TRUE(std::filesystem::is_empty(dir));
   mission = bridgeSortie();
   mission.origin->latitude_deg = 95;
-  EXPECT_THROW(qgcPlan(mission), std::invalid_argument);
+  EXPECT_THROW(qgcPlan(mission), ceilplan::InputError);
   mission = bridgeSortie();
   mission.waypoints.clear();
-  EXPECT_THROW(qgcPlan(mission), std::invalid_argument);
+  EXPECT_THROW(qgcPlan(mission), ceilplan::InputError);
 }
 
 TEST(AutopilotExport, WritesBothFilesWhole) {
@@ -162,8 +164,8 @@ TEST(AutopilotExport, OneFilePerSortie) {
   EXPECT_EQ(sortieFileName("out/mission.plan", 1, 1), std::filesystem::path("out/mission.plan"));
   EXPECT_EQ(sortieFileName("out/mission.plan", 1, 3), std::filesystem::path("out/mission_sortie1.plan"));
   EXPECT_EQ(sortieFileName("out/mission.waypoints", 3, 3), std::filesystem::path("out/mission_sortie3.waypoints"));
-  EXPECT_THROW(sortieFileName("mission.plan", 0, 2), std::invalid_argument);
-  EXPECT_THROW(sortieFileName("mission.plan", 3, 2), std::invalid_argument);
+  EXPECT_THROW(sortieFileName("mission.plan", 0, 2), ceilplan::InputError);
+  EXPECT_THROW(sortieFileName("mission.plan", 3, 2), ceilplan::InputError);
 }
 
 }  // namespace

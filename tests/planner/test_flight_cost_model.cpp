@@ -1,5 +1,7 @@
 // FlightCostModel: speeds, durations and charge of straight motions.
 
+#include "ceilplan/core/error.hpp"
+
 #include "planner_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -99,10 +101,10 @@ TEST(FlightCostModel, RefusesSpeedsTheEnergyModelCannotFly) {
   CorridorModels scene;
   CostModelOptions options;
   options.speeds.cruise_m_s = 40.0;
-  EXPECT_THROW(FlightCostModel(scene.environment, scene.energy, options), std::invalid_argument);
+  EXPECT_THROW(FlightCostModel(scene.environment, scene.energy, options), ceilplan::InputError);
   options.speeds.cruise_m_s = 2.0;
   options.speeds.climb_m_s = 0.0;
-  EXPECT_THROW(FlightCostModel(scene.environment, scene.energy, options), std::invalid_argument);
+  EXPECT_THROW(FlightCostModel(scene.environment, scene.energy, options), ceilplan::InputError);
 }
 
 }  // namespace

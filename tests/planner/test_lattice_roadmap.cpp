@@ -8,6 +8,7 @@
 #include "ceilplan/planner/lattice_planner.hpp"
 #include "ceilplan/planner/lattice_roadmap.hpp"
 #include "ceilplan/planner/parallel_for.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -84,10 +85,10 @@ TEST(LatticeRoadmap, RefusesBadOptionsAndPlacesOutsideTheMap) {
   BeamRoom room;
   planner::RoadmapOptions options;
   options.stride_voxels = 0;
-  EXPECT_THROW(planner::LatticeRoadmap(room.rules, room.planner.objective(), room.places, options), std::invalid_argument);
-  EXPECT_THROW(planner::LatticeRoadmap(room.rules, room.planner.objective(), {{9.0, 0.0, 1.0}}), std::invalid_argument);
+  EXPECT_THROW(planner::LatticeRoadmap(room.rules, room.planner.objective(), room.places, options), ceilplan::InputError);
+  EXPECT_THROW(planner::LatticeRoadmap(room.rules, room.planner.objective(), {{9.0, 0.0, 1.0}}), ceilplan::InputError);
   const planner::LatticeRoadmap roadmap(room.rules, room.planner.objective(), room.places);
-  EXPECT_THROW(roadmap.routesFrom(3), std::out_of_range);
+  EXPECT_THROW(roadmap.routesFrom(3), ceilplan::InputError);
 }
 
 // A 12 m corridor under a flat ceiling at 3.5 m; three places hugging the ceiling, 5.5 m apart.

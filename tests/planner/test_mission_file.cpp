@@ -1,6 +1,8 @@
 // Mission files: every shipped mission parses, and each kind of bad file fails with one line
 // naming the file and the key.
 
+#include "ceilplan/core/error.hpp"
+
 #include "mission_file.hpp"
 #include "run_command.hpp"
 
@@ -74,7 +76,7 @@ std::filesystem::path variant(const std::string& name, const std::string& from, 
 std::string errorOf(const std::filesystem::path& file) {
   try {
     readMissionFile(file);
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     return e.what();
   }
   return "no error";
@@ -124,7 +126,7 @@ TEST(MissionFile, MissingOriginIsAnErrorOnlyWhenExporting) {
   try {
     mission.requireOrigin();
     FAIL() << "expected an error";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("missing key 'origin'"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("needed to export to an autopilot"), std::string::npos) << e.what();
   }

@@ -4,6 +4,7 @@
 
 #include "ceilplan/battery/simulation.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -53,8 +54,8 @@ TEST(PathEvaluation, RefusesPathsItCannotScore) {
   const environment::Environment environment(map, quad());
   const energy::EnergyModel energy = paperEnergy();
   const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
-  EXPECT_THROW(planner::evaluatePath(model, battery::Pack{}, 0.95, {{1, 0, 2}}), std::invalid_argument);
-  EXPECT_THROW(planner::evaluatePath(model, battery::Pack{}, 0.95, {{1, 0, 2}, {99, 0, 2}}), std::out_of_range);
+  EXPECT_THROW(planner::evaluatePath(model, battery::Pack{}, 0.95, {{1, 0, 2}}), ceilplan::InputError);
+  EXPECT_THROW(planner::evaluatePath(model, battery::Pack{}, 0.95, {{1, 0, 2}, {99, 0, 2}}), ceilplan::InputError);
   battery::Pack almost_empty;
   almost_empty.soc_min = 0.949;
   EXPECT_THROW(planner::evaluatePath(model, almost_empty, 0.95, {{0.5, 0, 2}, {5.5, 0, 2}}), battery::DepletionError);

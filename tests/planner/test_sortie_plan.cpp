@@ -3,6 +3,7 @@
 // that a charge-proportional model would not, and every split says why.
 
 #include "ceilplan/planner/sortie_plan.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -191,7 +192,7 @@ TEST(SortiePlan, NamesTargetsNoSortieCanReach) {
   try {
     planSorties(tour, inOrder(3), kBattery);
     FAIL() << "expected an error";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("no single sortie can reach, inspect and return from 't2'"), std::string::npos) << message;
     EXPECT_EQ(message.find("'t1'"), std::string::npos) << message;
@@ -205,7 +206,7 @@ TEST(SortiePlan, RefusesAReserveAtOrAboveTheStartSoc) {
   try {
     planSorties(tour, {1}, battery);
     FAIL() << "expected an error";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("reserve SOC 0.96 is not below the start SOC 0.95"), std::string::npos)
         << e.what();
   }
@@ -213,18 +214,18 @@ TEST(SortiePlan, RefusesAReserveAtOrAboveTheStartSoc) {
 
 TEST(SortiePlan, RefusesBadInput) {
   TourLegs tour = lineTour({5, 10}, 0.01, 10, 10);
-  EXPECT_THROW(planSorties(tour, {1}, kBattery), std::invalid_argument);      // a target missing
-  EXPECT_THROW(planSorties(tour, {1, 1}, kBattery), std::invalid_argument);   // a target twice
-  EXPECT_THROW(planSorties(tour, {1, 2}, kBattery, model("nope")), std::invalid_argument);
+  EXPECT_THROW(planSorties(tour, {1}, kBattery), ceilplan::InputError);      // a target missing
+  EXPECT_THROW(planSorties(tour, {1, 1}, kBattery), ceilplan::InputError);   // a target twice
+  EXPECT_THROW(planSorties(tour, {1, 2}, kBattery, model("nope")), ceilplan::InputError);
   TourLegs nan = tour;
   nan.legs[1][2].charge_ah = std::nan("");
-  EXPECT_THROW(planSorties(nan, {1, 2}, kBattery), std::invalid_argument);
+  EXPECT_THROW(planSorties(nan, {1, 2}, kBattery), ceilplan::InputError);
   TourLegs negative = tour;
   negative.dwells[2].duration_s = -1;
-  EXPECT_THROW(planSorties(negative, {1, 2}, kBattery), std::invalid_argument);
+  EXPECT_THROW(planSorties(negative, {1, 2}, kBattery), ceilplan::InputError);
   SortieBattery empty_pack;
   empty_pack.pack.capacity_ah = -1;
-  EXPECT_THROW(planSorties(tour, {1, 2}, empty_pack), std::invalid_argument);
+  EXPECT_THROW(planSorties(tour, {1, 2}, empty_pack), ceilplan::InputError);
 }
 
 }  // namespace

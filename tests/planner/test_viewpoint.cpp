@@ -6,6 +6,7 @@
 
 #include "analytic_maps.hpp"
 #include "ceilplan/energy/paper_quad.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -102,7 +103,7 @@ TEST(Viewpoint, NamesATargetWithNoViewpoint) {
   try {
     chooseViewpoint(buried, flat().ceiling, paperQuad());
     FAIL() << "expected an error";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("target 'buried_bolt' at (0.05, 0.05, 3.20): no valid viewpoint"),
               std::string::npos)
         << e.what();
@@ -111,14 +112,14 @@ TEST(Viewpoint, NamesATargetWithNoViewpoint) {
   try {
     chooseViewpoint(outside, flat().ceiling, paperQuad());
     FAIL() << "expected an error";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ceilplan::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("target 'far_away' at (50.00, 0.00, 1.00) lies outside the map"),
               std::string::npos)
         << e.what();
   }
   InspectionTarget inverted = ceilingTarget();
   std::swap(inverted.standoff_min_m, inverted.standoff_max_m);
-  EXPECT_THROW(chooseViewpoint(inverted, flat().ceiling, paperQuad()), std::invalid_argument);
+  EXPECT_THROW(chooseViewpoint(inverted, flat().ceiling, paperQuad()), ceilplan::InputError);
 }
 
 // The shipped bridge and its mission's targets (maps/bridge.yaml).

@@ -5,6 +5,7 @@
 #include "ceilplan/battery/schmalstieg_ageing.hpp"
 #include "ceilplan/battery/woehler_ageing.hpp"
 #include "ceilplan/battery/xu_ageing.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <memory>
 #include <string>
@@ -23,7 +24,7 @@ struct AgeingModelOptions {
 // "fec", "xu", "schmalstieg", "woehler", in that order.
 const std::vector<std::string>& ageingModelNames();
 
-// Throws std::invalid_argument for an unknown name (listing the known ones) or bad options.
+// Throws ceilplan::InputError for an unknown name (listing the known ones) or bad options.
 std::unique_ptr<AgeingModel> makeAgeingModel(const std::string& name,
                                              const AgeingModelOptions& options);
 

@@ -3,6 +3,8 @@
 // is fed a state-of-charge history piece by piece, in time order, and tells the fraction of
 // nominal capacity lost so far.
 
+#include "ceilplan/core/error.hpp"
+
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -34,10 +36,10 @@ struct OperatingConditions {
   double temperature_k = 298.15;
   std::string chemistry;  // of the studied pack, e.g. "LiPo"; empty: not checked
 
-  // Throws std::invalid_argument for a temperature over 150 C (that reads like kelvin given as
+  // Throws ceilplan::InputError for a temperature over 150 C (that reads like kelvin given as
   // Celsius) or below absolute zero.
   static OperatingConditions fromCelsius(double temperature_c);
-  // Throws std::invalid_argument unless 0 < temperature_k is finite.
+  // Throws ceilplan::InputError unless 0 < temperature_k is finite.
   void validate() const;
 };
 
@@ -56,7 +58,7 @@ class AgeingModel {
   virtual ValidityRange validity() const = 0;
 
   // Feeds the next samples, continuing the history (the interval from the previous piece's last
-  // sample counts too). Throws std::invalid_argument, before using any sample of the piece, on a
+  // sample counts too). Throws ceilplan::InputError, before using any sample of the piece, on a
   // non-finite value, an SOC outside [0, 1] or time going backwards.
   void addSamples(const AgeingSample* samples, std::size_t count);
   void addSamples(const std::vector<AgeingSample>& samples);

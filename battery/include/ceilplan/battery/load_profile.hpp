@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ceilplan/core/error.hpp"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,7 +29,7 @@ struct Segment {
   // Signed pack current: positive while discharging, negative while charging.
   double signedCurrentA() const;
 
-  // Throws std::invalid_argument naming the problem (negative or NaN current or duration,
+  // Throws ceilplan::InputError naming the problem (negative or NaN current or duration,
   // a charge with zero current, a stop SOC outside (0, 1]).
   void validate() const;
 };

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ceilplan/core/error.hpp"
+
 namespace ceilplan::battery {
 
 // A battery pack as the simulation sees it. Defaults: the founding paper's 4S 5.2 Ah LiPo,
@@ -15,7 +17,7 @@ struct Pack {
   // Usable capacity: C_nom * SOH.
   double usableCapacityAh() const { return capacity_ah * state_of_health; }
 
-  // Throws std::invalid_argument naming the first field that is out of range.
+  // Throws ceilplan::InputError naming the first field that is out of range.
   void validate() const;
 };
 

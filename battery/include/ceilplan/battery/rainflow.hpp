@@ -3,6 +3,8 @@
 // a series fed piece by piece yields exactly the cycles it yields fed at once
 // (reference-models.md section 5).
 
+#include "ceilplan/core/error.hpp"
+
 #include <cstddef>
 #include <vector>
 
@@ -23,7 +25,7 @@ struct RainflowCycle {
 class RainflowCounter {
  public:
   // Feeds the next sample(s), in time order. Cycles closed by them are appended to `closed`
-  // (nothing is cleared). Throws std::invalid_argument on a non-finite value, naming its index;
+  // (nothing is cleared). Throws ceilplan::InputError on a non-finite value, naming its index;
   // samples before the bad one have been counted.
   void add(double value, std::vector<RainflowCycle>& closed);
   void add(const double* values, std::size_t count, std::vector<RainflowCycle>& closed);

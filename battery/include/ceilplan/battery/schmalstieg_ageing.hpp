@@ -5,6 +5,7 @@
 // NREL BLAST-Lite; resistance constants agree in BLAST-Lite and SimSES).
 
 #include "ceilplan/battery/cycle_ageing_model.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <functional>
 
@@ -61,7 +62,7 @@ double advancePowerLawState(double state, double rate, double exponent, double s
 // cell voltage over the cycle's SOC swing (charge-weighted, Simpson's rule).
 class SchmalstiegAgeingModel : public CycleAgeingModel {
  public:
-  // Throws std::invalid_argument if `cell_voltage_of_soc` is empty.
+  // Throws ceilplan::InputError if `cell_voltage_of_soc` is empty.
   SchmalstiegAgeingModel(const OperatingConditions& conditions, CellVoltageOfSoc cell_voltage_of_soc,
                          const SchmalstiegParameters& parameters = {});
   std::string name() const override { return "schmalstieg"; }
@@ -74,7 +75,7 @@ class SchmalstiegAgeingModel : public CycleAgeingModel {
   double cycleWear() const override { return cycleCapacityLoss(); }
   std::string cycleWearName() const override { return "cycle capacity loss"; }
 
-  // The cell voltage the model uses, checked: throws std::invalid_argument on a value that is
+  // The cell voltage the model uses, checked: throws ceilplan::InputError on a value that is
   // not finite or not between 0 and 5 V (a pack voltage given for a cell's).
   double cellVoltage(double soc) const;
   // RMS cell voltage over an SOC swing of `depth` around `mean_soc`.

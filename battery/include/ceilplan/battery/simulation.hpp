@@ -34,7 +34,7 @@ struct BatteryState {
 };
 
 // Thrown when a segment would take the SOC below the pack's floor (soc_min).
-class DepletionError : public std::runtime_error {
+class DepletionError : public ceilplan::InfeasibleError {
  public:
   DepletionError(const std::string& message, double reached_soc, double floor_soc);
   double reachedSoc() const { return reached_soc_; }  // the SOC the segment would have reached

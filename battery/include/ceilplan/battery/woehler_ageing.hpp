@@ -4,6 +4,7 @@
 
 #include "ceilplan/battery/ageing_model.hpp"
 #include "ceilplan/battery/cycle_ageing_model.hpp"
+#include "ceilplan/core/error.hpp"
 
 namespace ceilplan::battery {
 
@@ -14,7 +15,7 @@ struct WoehlerParameters {
   double exponent = 1.5;                    // k [open]
   double end_of_life_capacity_loss = 0.2;   // end of life at SOH 0.8, the usual data-sheet rule
 
-  // Throws std::invalid_argument unless N100 > 0, k >= 0 and 0 < end-of-life loss <= 1.
+  // Throws ceilplan::InputError unless N100 > 0, k >= 0 and 0 < end-of-life loss <= 1.
   void validate() const;
 };
 

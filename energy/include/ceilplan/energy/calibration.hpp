@@ -3,6 +3,7 @@
 
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/energy/energy_parameters.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <string>
 #include <vector>
@@ -25,7 +26,7 @@ enum class FreeParameter { kHoverPowerW, kK1, kK2M, kMotorEfficiency, kDragAreaM
 // The name used in vehicle files and on the command line: hover_power_w, k1, k2_m,
 // motor_efficiency, drag_area_m2, pack_resistance_ohm.
 std::string parameterName(FreeParameter parameter);
-// Throws std::invalid_argument listing the valid names.
+// Throws ceilplan::InputError listing the valid names.
 FreeParameter parseFreeParameter(const std::string& name);
 
 struct FittedParameter {
@@ -52,7 +53,7 @@ std::vector<FreeParameter> identifiableParameters(const EnergyParameters& start,
 
 // Minimises the sum of squared current errors over `free` within fixed ranges (log-scaled;
 // the contact thrust ratio stays within 1.0001..20 and profile power non-negative) with NLopt's
-// bounded L-BFGS. Throws std::invalid_argument naming the parameter when the data cannot
+// bounded L-BFGS. Throws ceilplan::InputError naming the parameter when the data cannot
 // identify it: its column is not varied, or the fitted Jacobian has a (near) flat direction
 // along it. Deterministic: no random start.
 CalibrationResult calibrate(const EnergyParameters& start, const std::vector<CalibrationSample>& samples,

@@ -2,6 +2,7 @@
 // Thrust ratio of one rotor under a ceiling.
 
 #include "ceilplan/energy/energy_parameters.hpp"
+#include "ceilplan/core/error.hpp"
 
 namespace ceilplan::energy {
 
@@ -15,7 +16,7 @@ namespace ceilplan::energy {
 // wide as the propeller acts as an infinite one, a narrow strip hardly at all).
 class CeilingEffect {
  public:
-  // Throws std::invalid_argument when K1 <= 0, K2 <= 0, the taper is empty, or the curve
+  // Throws ceilplan::InputError when K1 <= 0, K2 <= 0, the taper is empty, or the curve
   // would be singular at contact (R^2 / (K1 K2^2) >= 1).
   CeilingEffect(const CeilingEffectParameters& parameters, double rotor_radius_m);
 

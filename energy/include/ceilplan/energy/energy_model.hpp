@@ -6,6 +6,7 @@
 #include "ceilplan/energy/ground_effect.hpp"
 #include "ceilplan/energy/pack_electrics.hpp"
 #include "ceilplan/energy/rotary_wing_power.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <limits>
 
@@ -43,13 +44,13 @@ struct CurrentBreakdown {
 };
 
 // Immutable once built: every evaluation is const, allocation-free and safe to call from
-// many threads at once. Evaluations throw std::invalid_argument on bad input (negative or
+// many threads at once. Evaluations throw ceilplan::InputError on bad input (negative or
 // NaN gap, coverage outside [0, 1], speed beyond the vehicle's limit, ...).
 class EnergyModel {
  public:
   static constexpr int kMaxRotors = 16;
 
-  // Validates and precomputes; throws std::invalid_argument naming the bad parameter.
+  // Validates and precomputes; throws ceilplan::InputError naming the bad parameter.
   explicit EnergyModel(const EnergyParameters& parameters);
 
   // Convenience: the same gap and coverage on every rotor.

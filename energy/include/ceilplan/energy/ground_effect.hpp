@@ -2,6 +2,7 @@
 // Thrust ratio of the vehicle above the ground.
 
 #include "ceilplan/energy/energy_parameters.hpp"
+#include "ceilplan/core/error.hpp"
 
 namespace ceilplan::energy {
 
@@ -11,7 +12,7 @@ namespace ceilplan::energy {
 // rotor spacing. Both are singular close to the ground, so z is clamped to >= 0.5 R.
 class GroundEffect {
  public:
-  // Throws std::invalid_argument when the chosen form is singular or not defined for this
+  // Throws ceilplan::InputError when the chosen form is singular or not defined for this
   // geometry (the multirotor form needs at least two rotors).
   GroundEffect(const GroundEffectParameters& parameters, const VehicleGeometry& vehicle);
 

@@ -1,6 +1,8 @@
 #pragma once
 // Open-circuit voltage of one LiPo cell against state of charge.
 
+#include "ceilplan/core/error.hpp"
+
 #include <array>
 
 namespace ceilplan::energy {
@@ -16,7 +18,7 @@ class LipoOpenCircuitVoltage {
 
   LipoOpenCircuitVoltage();
 
-  // Cell voltage (V) at `soc` in [0, 1]. Throws std::invalid_argument outside [0, 1] or NaN.
+  // Cell voltage (V) at `soc` in [0, 1]. Throws ceilplan::InputError outside [0, 1] or NaN.
   double cellVoltageV(double soc) const;
 
   // The same without the range check, for hot loops that validated `soc` already.

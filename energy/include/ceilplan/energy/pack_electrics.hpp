@@ -3,6 +3,7 @@
 
 #include "ceilplan/energy/energy_parameters.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
+#include "ceilplan/core/error.hpp"
 
 namespace ceilplan::energy {
 
@@ -17,11 +18,11 @@ struct PackOperatingPoint {
 // which stays exact as R -> 0.
 class PackElectrics {
  public:
-  explicit PackElectrics(const PackParameters& parameters);  // throws std::invalid_argument
+  explicit PackElectrics(const PackParameters& parameters);  // throws ceilplan::InputError
 
   double openCircuitVoltageV(double soc) const noexcept { return cell_count_ * ocv_.cellVoltageUncheckedV(soc); }
 
-  // `soc` must be in [0, 1] (unchecked). Throws std::runtime_error when the pack cannot deliver
+  // `soc` must be in [0, 1] (unchecked). Throws ceilplan::Error when the pack cannot deliver
   // `propulsion_power_w` at all (beyond its maximum power point).
   PackOperatingPoint operatingPoint(double propulsion_power_w, double soc) const;
 

@@ -3,6 +3,7 @@
 // reference-models.md section 1): 9.5 A hovering in free air, 8.0 A close under a ceiling.
 
 #include "ceilplan/energy/energy_parameters.hpp"
+#include "ceilplan/core/error.hpp"
 
 namespace ceilplan::energy {
 
@@ -21,7 +22,7 @@ double hoverPowerForCurrentW(const EnergyParameters& parameters, double current_
 // K1 and K2 such that a fully covered hover at `gap_m` (no ground, at rest) draws exactly
 // `current_a` at `soc` and the thrust ratio at contact is `contact_thrust_ratio`. Both follow in
 // closed form from 1 - 1/kappa(z) = (R^2/K1) / (z + K2)^2 at z = gap and z = 0. Every other
-// parameter (hover power included) is taken from `parameters`. Throws std::invalid_argument when
+// parameter (hover power included) is taken from `parameters`. Throws ceilplan::InputError when
 // no such curve exists (the current is not below free air, or the gap is in or past the taper).
 CeilingEffectParameters ceilingThroughAnchor(const EnergyParameters& parameters, double gap_m, double current_a,
                                              double soc, double contact_thrust_ratio);

@@ -1,4 +1,6 @@
 #pragma once
+
+#include "ceilplan/core/error.hpp"
 // Shaft power of a rotary-wing vehicle against horizontal speed.
 
 namespace ceilplan::energy {
@@ -20,7 +22,7 @@ class RotaryWingPower {
                                              double fuselage_drag_ratio);
 
   // The vehicle's form: Pi from momentum theory over the total disc area, P0 whatever of the
-  // measured hover shaft power is left. Throws std::invalid_argument when that is negative
+  // measured hover shaft power is left. Throws ceilplan::InputError when that is negative
   // (hover power too low for the mass and rotor size).
   static RotaryWingPower scaledToHover(double hover_shaft_power_w, double weight_n, double total_disc_area_m2,
                                        double induced_power_correction, double tip_speed_m_s,

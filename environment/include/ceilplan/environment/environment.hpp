@@ -10,6 +10,7 @@
 #include "ceilplan/environment/occupancy_map.hpp"
 #include "ceilplan/environment/vehicle_geometry.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -77,20 +78,20 @@ class Environment {
 
   // Single-point queries: vertical distance from `point_m` to the nearest occupied voxel face
   // above (below), +infinity if none (or unknown comes first, by policy). Throws
-  // std::out_of_range for a point outside the map.
+  // ceilplan::InputError for a point outside the map.
   double ceilingGapAt(const Eigen::Vector3d& point_m) const;
   double groundGapAt(const Eigen::Vector3d& point_m) const;
 
-  // Every rotor disc of the vehicle with its body centre at `body_m`. Throws std::out_of_range
+  // Every rotor disc of the vehicle with its body centre at `body_m`. Throws ceilplan::InputError
   // if the body centre lies outside the map.
   SurfaceGaps ceiling(const Eigen::Vector3d& body_m) const;
   SurfaceGaps ground(const Eigen::Vector3d& body_m) const;
 
   // Distance from the body centre to the nearest occupied (or, by policy, unknown) voxel
-  // surface; 0 inside one, +inf if there is none. Throws std::out_of_range outside the map.
+  // surface; 0 inside one, +inf if there is none. Throws ceilplan::InputError outside the map.
   double clearance_m(const Eigen::Vector3d& body_m) const;
   // A cheap lower bound on clearance_m (from the voxel holding the point alone, a few ns): lets
-  // callers skip gap queries far from any structure. Throws std::out_of_range outside the map.
+  // callers skip gap queries far from any structure. Throws ceilplan::InputError outside the map.
   double clearanceLowerBound_m(const Eigen::Vector3d& body_m) const;
 
   // A state is valid when the collision cylinder inflated by the margins touches no occupied

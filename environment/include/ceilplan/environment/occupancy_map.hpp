@@ -2,6 +2,8 @@
 // An OctoMap occupancy tree loaded from a .bt or .ot file, checked before OctoMap parses it,
 // so a damaged file gives one clear error instead of a crash or a half-read tree.
 
+#include "ceilplan/core/error.hpp"
+
 #include <octomap/OcTree.h>
 
 #include <filesystem>
@@ -14,7 +16,7 @@ namespace ceilplan::environment {
 class OccupancyMap {
  public:
   // Reads a .bt (binary) or .ot (full) OctoMap file; the format is taken from the file's
-  // first line, not its name. Throws std::invalid_argument naming the file and the problem:
+  // first line, not its name. Throws ceilplan::InputError naming the file and the problem:
   // missing, unreadable, not an OctoMap, truncated or corrupt, a tree type other than OcTree,
   // or a map with no known voxel.
   static OccupancyMap load(const std::filesystem::path& file);

@@ -2,6 +2,8 @@
 // The vehicle's shape as the environment queries need it: where the rotor discs are (for
 // ceiling and ground gaps) and the collision cylinder (for validity).
 
+#include "ceilplan/core/error.hpp"
+
 #include <Eigen/Core>
 
 #include <string>
@@ -23,7 +25,7 @@ struct VehicleGeometry {
   double margin_m = 0.0;              // kept free sideways and below
   double top_margin_m = 0.0;          // kept free above
 
-  // Throws std::invalid_argument naming the first bad field.
+  // Throws ceilplan::InputError naming the first bad field.
   void validate() const;
 
   // The collision cylinder inflated by the margins, relative to the body centre.

@@ -3,6 +3,8 @@
 // resolution. Voxel (i, j, k) spans [(o + i) r, (o + i + 1) r) on each axis, with o the
 // grid's origin index and r the resolution, so its faces are OctoMap's voxel faces exactly.
 
+#include "ceilplan/core/error.hpp"
+
 #include <octomap/OcTree.h>
 
 #include <Eigen/Core>
@@ -62,7 +64,7 @@ class GridFrame {
 
 class VoxelGrid {
  public:
-  // Refuses (std::invalid_argument) grids larger than this: about 5 bytes per voxel once indexed.
+  // Refuses (ceilplan::InputError) grids larger than this: about 5 bytes per voxel once indexed.
   static constexpr std::size_t kMaxVoxels = 400'000'000;
 
   // All voxels unknown.

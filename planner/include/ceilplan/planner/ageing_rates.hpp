@@ -5,6 +5,7 @@
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/pack.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <string>
 
@@ -20,7 +21,7 @@ struct AgeingRates {
 // Cycle: from `start_soc` down by `depth_of_discharge` at `discharge_current_a`, then back at the
 // pack's charge current; calendar: resting at `start_soc` for one day. loss_per_ah = (cycle loss
 // - calendar loss over the cycle's duration) / Ah discharged; loss_per_s = one day's calendar
-// loss / 86400 s. Throws std::invalid_argument on a depth outside (0, start_soc - soc_min].
+// loss / 86400 s. Throws ceilplan::InputError on a depth outside (0, start_soc - soc_min].
 AgeingRates measureAgeingRates(const std::string& model_name, const battery::AgeingModelOptions& options,
                                const battery::Pack& pack, double start_soc, double depth_of_discharge,
                                double discharge_current_a);

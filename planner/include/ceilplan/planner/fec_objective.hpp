@@ -4,6 +4,7 @@
 // with C_nom the pack's nominal capacity.
 
 #include "ceilplan/planner/flight_objective.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <stdexcept>
 
@@ -16,7 +17,7 @@ class FecObjective : public FlightObjective {
 
  private:
   static double inverseCapacity(double capacity_ah) {
-    if (!(capacity_ah > 0.0)) throw std::invalid_argument("fec objective: the pack's capacity must be > 0 Ah");
+    if (!(capacity_ah > 0.0)) throw ceilplan::InputError("fec objective: the pack's capacity must be > 0 Ah");
     return 1.0 / capacity_ah;
   }
 };

@@ -6,6 +6,7 @@
 
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -22,7 +23,7 @@ struct FlightSpeeds {
   double climb_m_s = 1.0;             // vertical rate limits
   double descent_m_s = 0.8;
 
-  // Throws std::invalid_argument naming the bad field (non-positive, non-finite, or a
+  // Throws ceilplan::InputError naming the bad field (non-positive, non-finite, or a
   // horizontal speed beyond `max_speed_m_s`, the energy model's limit).
   void validate(double max_speed_m_s) const;
 };
@@ -84,7 +85,7 @@ struct CostWeights {
 class FlightCostModel {
  public:
   // Keeps references to `environment` and `energy`: both must outlive the model.
-  // Throws std::invalid_argument on bad speeds or options.
+  // Throws ceilplan::InputError on bad speeds or options.
   FlightCostModel(const environment::Environment& environment, const energy::EnergyModel& energy,
                   CostModelOptions options);
 
@@ -97,7 +98,7 @@ class FlightCostModel {
   // effects off, every rotor sees free air (the speed rule still sees the real ceiling).
   // Where no structure lies within reach of any rotor disc (the distance field's lower bound
   // says so) the gap queries are skipped: free air, and nearest_ceiling_gap_m is +inf instead of
-  // a gap beyond the reach. Throws std::out_of_range outside the map.
+  // a gap beyond the reach. Throws ceilplan::InputError outside the map.
   PointConditions conditionsAt(const Eigen::Vector3d& body_m) const;
   // Whether conditionsAt answers without querying the map (no structure within reach).
   bool farFromStructure(const Eigen::Vector3d& body_m) const {

@@ -9,6 +9,7 @@
 #include "ceilplan/planner/objective_factory.hpp"
 #include "ceilplan/planner/path_refinement.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 #include <ompl/base/SpaceInformation.h>
@@ -20,12 +21,6 @@
 #include <vector>
 
 namespace ceilplan::planner {
-
-// The query has no solution (none found in time, or none exists); the message says which.
-class NoPathFound : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct PlanRequest {
   Eigen::Vector3d start_m = Eigen::Vector3d::Zero();
@@ -62,15 +57,15 @@ class FlightPlanner {
   const SafetyRules& rules() const { return rules_; }
 
   // Shortcuts and NLopt refinement (PlanRequest::refine), then the dense re-check: the
-  // post-processing plan() applies to a raw path. Throws std::runtime_error if neither the
+  // post-processing plan() applies to a raw path. Throws ceilplan::Error if neither the
   // result nor the raw path passes the re-check.
   std::vector<Eigen::Vector3d> postProcess(const std::vector<Eigen::Vector3d>& raw, const RefinementOptions& options,
                                            bool refine = true) const;
   const ompl::base::SpaceInformationPtr& spaceInformation() const { return si_; }
 
-  // Throws std::invalid_argument for a bad request (start or goal outside the map or invalid,
-  // time limit <= 0, unknown planner), NoPathFound when there is no path, and
-  // std::runtime_error if a path fails the dense re-check.
+  // Throws ceilplan::InputError for a bad request (start or goal outside the map or invalid,
+  // time limit <= 0, unknown planner), ceilplan::NoPathError when there is no path, and
+  // ceilplan::Error if a path fails the dense re-check.
   PlanResult plan(const PlanRequest& request) const;
 
   // Makes the space sample the ceiling band (share `band_fraction`) until cleared; plan() does
@@ -91,7 +86,7 @@ class FlightPlanner {
 // Seeds OMPL's random generators. Call it once, before constructing any FlightPlanner (OMPL
 // makes generators as soon as a space is set up, and a seed set afterwards is ignored). Only
 // the first call in a process takes effect; returns false if an earlier call used another
-// seed. Throws std::invalid_argument on seed 0.
+// seed. Throws ceilplan::InputError on seed 0.
 bool seedOmpl(std::uint32_t seed);
 
 }  // namespace ceilplan::planner

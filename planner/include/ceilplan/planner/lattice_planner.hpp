@@ -6,6 +6,7 @@
 
 #include "ceilplan/planner/flight_objective.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -30,7 +31,7 @@ struct LatticeResult {
 
 class LatticePlanner {
  public:
-  // `rules` and `objective` must outlive the planner. Throws std::invalid_argument on a
+  // `rules` and `objective` must outlive the planner. Throws ceilplan::InputError on a
   // stride < 1.
   LatticePlanner(const SafetyRules& rules, const FlightObjective& objective, LatticeOptions options = {});
 

@@ -14,6 +14,7 @@
 
 #include "ceilplan/planner/flight_objective.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -39,7 +40,7 @@ struct RoadmapRoute {
 class LatticeRoadmap {
  public:
   // `rules` and `objective` must outlive the roadmap; the centres `rules` exempts from its
-  // standoff are replaced by each route's start and goal. Throws std::invalid_argument for a
+  // standoff are replaced by each route's start and goal. Throws ceilplan::InputError for a
   // stride or worker count below 1, or a place outside the map.
   LatticeRoadmap(const SafetyRules& rules, const FlightObjective& objective, std::vector<Eigen::Vector3d> places_m,
                  RoadmapOptions options = {});

@@ -3,6 +3,7 @@
 
 #include "ceilplan/planner/ageing_rates.hpp"
 #include "ceilplan/planner/flight_objective.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <memory>
 #include <string>
@@ -18,7 +19,7 @@ struct ObjectiveChoice {
 
 const std::vector<std::string>& objectiveNames();
 
-// Throws std::invalid_argument for an unknown name, listing the known ones.
+// Throws ceilplan::InputError for an unknown name, listing the known ones.
 std::shared_ptr<FlightObjective> makeObjective(const ObjectiveChoice& choice, const ompl::base::SpaceInformationPtr& si,
                                                const FlightCostModel& model);
 

@@ -5,6 +5,7 @@
 
 #include "ceilplan/battery/pack.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -39,8 +40,8 @@ struct PathEvaluation {
   MotionTotals totals() const { return {length_m, duration_s, charge_ah}; }
 };
 
-// Throws std::invalid_argument for fewer than 2 waypoints or a start SOC outside (0, 1],
-// std::out_of_range for a waypoint outside the map, battery::DepletionError if the pack would
+// Throws ceilplan::InputError for fewer than 2 waypoints or a start SOC outside (0, 1],
+// ceilplan::InputError for a waypoint outside the map, battery::DepletionError if the pack would
 // run below its floor.
 PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
                             const std::vector<Eigen::Vector3d>& waypoints_m);

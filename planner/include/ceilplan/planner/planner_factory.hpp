@@ -2,6 +2,8 @@
 // OMPL's asymptotically optimal planners by name. "lattice" (LatticePlanner) is not an OMPL
 // planner and is handled by FlightPlanner.
 
+#include "ceilplan/core/error.hpp"
+
 #include <ompl/base/Planner.h>
 
 #include <string>
@@ -13,7 +15,7 @@ namespace ceilplan::planner {
 const std::vector<std::string>& plannerNames();
 const std::string& defaultPlannerName();
 
-// Throws std::invalid_argument for an unknown name (or "lattice"), listing the known ones.
+// Throws ceilplan::InputError for an unknown name (or "lattice"), listing the known ones.
 ompl::base::PlannerPtr makeOmplPlanner(const std::string& name, const ompl::base::SpaceInformationPtr& si);
 
 }  // namespace ceilplan::planner

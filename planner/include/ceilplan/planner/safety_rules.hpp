@@ -6,6 +6,7 @@
 // Everything is const and safe to call from many threads.
 
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -32,7 +33,7 @@ StandoffZone standoffZone(const environment::Environment& standoff, const enviro
 
 class SafetyRules {
  public:
-  // `environment` (and the standoff's) must outlive the rules. Throws std::invalid_argument on
+  // `environment` (and the standoff's) must outlive the rules. Throws ceilplan::InputError on
   // a negative or non-finite gap.
   SafetyRules(const environment::Environment& environment, double min_ceiling_gap_m,
               std::optional<StandoffZone> standoff = std::nullopt);

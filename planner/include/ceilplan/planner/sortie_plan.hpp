@@ -7,6 +7,7 @@
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/pack.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <string>
 #include <vector>
@@ -42,7 +43,7 @@ struct TourLegs {
   std::vector<Dwell> dwells;             // dwells[0] is ignored
 
   int targetCount() const { return static_cast<int>(names.size()) - 1; }
-  // Throws std::invalid_argument naming the first bad entry (sizes, NaN, negative values).
+  // Throws ceilplan::InputError naming the first bad entry (sizes, NaN, negative values).
   void validate() const;
 };
 
@@ -51,7 +52,7 @@ struct SortieBattery {
   double start_soc = 0.95;   // every sortie takes off at this SOC
   double reserve_soc = 0.25; // and lands with at least this much
 
-  // Throws std::invalid_argument for a bad pack, an SOC outside [0, 1] or a reserve at or
+  // Throws ceilplan::InputError for a bad pack, an SOC outside [0, 1] or a reserve at or
   // above the start SOC.
   void validate() const;
 };
@@ -103,7 +104,7 @@ struct SortiePlan {
 // Chooses the sorties by dynamic programming over split points of `order` (matrix indices of
 // the targets in visiting order): O(N^2) candidate sorties, each priced by feeding its SOC
 // history (discharge, then recharge to the start SOC) to a fresh ageing model. Ties go to fewer
-// sorties. Throws std::invalid_argument for bad input, and naming every target that no single
+// sorties. Throws ceilplan::InputError for bad input, and naming every target that no single
 // sortie can reach, inspect and return from above the reserve.
 SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, const SortieBattery& battery,
                        const SortieOptions& options = {});

@@ -3,6 +3,8 @@
 // whose index 0 is home (the tour starts and ends there). Costs may be asymmetric (climbing
 // costs more than descending), so a reversed stretch of the tour is priced anew.
 
+#include "ceilplan/core/error.hpp"
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -34,7 +36,7 @@ struct TourOrderOptions {
 double tourCost(const CostMatrix& costs, const std::vector<int>& targets);
 
 // Exact: Held-Karp dynamic programming over subsets, O(2^N N^2) time, O(2^N N) memory.
-// Throws std::invalid_argument for more than kHeldKarpMaxTargets targets or a bad matrix.
+// Throws ceilplan::InputError for more than kHeldKarpMaxTargets targets or a bad matrix.
 inline constexpr int kHeldKarpMaxTargets = 15;
 TourOrder heldKarpTour(const CostMatrix& costs);
 
@@ -46,7 +48,7 @@ TourOrder heuristicTour(const CostMatrix& costs, std::uint64_t seed, int restart
 // Held-Karp up to options.exact_max_targets targets, the heuristic beyond.
 TourOrder orderTour(const CostMatrix& costs, const TourOrderOptions& options = {});
 
-// Throws std::invalid_argument unless `costs` is square, at least 1 x 1, with finite,
+// Throws ceilplan::InputError unless `costs` is square, at least 1 x 1, with finite,
 // non-negative entries.
 void validateCostMatrix(const CostMatrix& costs);
 

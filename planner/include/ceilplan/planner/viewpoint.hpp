@@ -8,6 +8,7 @@
 
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -22,7 +23,7 @@ struct InspectionTarget {
   double standoff_max_m = 1.5;
   double dwell_s = 0.0;
 
-  // Throws std::invalid_argument naming the target and the bad field.
+  // Throws ceilplan::InputError naming the target and the bad field.
   void validate() const;
 };
 
@@ -51,7 +52,7 @@ double hoverCurrentA(const environment::Environment& environment, const energy::
 // Searches a lattice over the standoff shell (map resolution, then a quarter of it around the
 // best) for states valid in `environment` with a clear line of sight to the point through free
 // voxels, choosing the least dwell charge under `options.mode`, ties by distance to the point.
-// Throws std::invalid_argument naming the target when it is invalid or no viewpoint exists.
+// Throws ceilplan::InputError naming the target when it is invalid or no viewpoint exists.
 // Reads the environment and the model only: safe to run for several targets at once.
 Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Environment& environment,
                           const energy::EnergyModel& model, const ViewpointOptions& options = {});

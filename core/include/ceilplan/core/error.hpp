@@ -1,0 +1,39 @@
+#pragma once
+// The one error hierarchy of ceilplan. Every module throws these, with a one-line message that
+// says what was wrong in the library's terms and, where it can, what to do; the command line
+// adds the flag or file name and maps each kind to its exit code (docs/cli.md).
+
+#include <stdexcept>
+#include <string>
+
+namespace ceilplan {
+
+// Base of every error ceilplan throws on purpose. Thrown as such: a computation failed (a fit
+// did not converge, a planned path failed its re-check, a file could not be written).
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The input is wrong: a missing, corrupt or wrong-kind file, an unknown key, a number out of
+// its physical range, a point outside the map, a start inside an obstacle.
+class InputError : public Error {
+ public:
+  using Error::Error;
+};
+
+// The input is well formed but asks for something that cannot be done: the battery runs out,
+// a target cannot be reached and returned from.
+class InfeasibleError : public Error {
+ public:
+  using Error::Error;
+};
+
+// No path joins two places (none exists, or none was found in the time given); the message
+// says which and, where known, where the search was blocked.
+class NoPathError : public InfeasibleError {
+ public:
+  using InfeasibleError::InfeasibleError;
+};
+
+}  // namespace ceilplan
