@@ -1,6 +1,6 @@
 #include "tour_legs.hpp"
 
-#include "ceilplan/planner/parallel_for.hpp"
+#include "ceilplan/core/parallel_for.hpp"
 
 namespace ceilplan::app {
 
@@ -10,7 +10,7 @@ TourLegs planLegsByPair(int place_count, const PairPlanner& plan, const LegScore
   for (int i = 0; i < place_count; ++i)
     for (int j = i + 1; j < place_count; ++j) pairs.emplace_back(i, j);
   TourLegs legs(place_count, std::vector<TourLeg>(place_count));
-  planner::parallelFor(
+  parallelFor(
       pairs.size(), workers,
       [&](std::size_t k) {
         const auto [i, j] = pairs[k];
@@ -29,7 +29,7 @@ TourLegs planLegsByPair(int place_count, const PairPlanner& plan, const LegScore
 TourLegs planLegsByPlace(int place_count, const RoutesFrom& routes_from, const LegScorer& score, int workers,
                          Progress& progress) {
   TourLegs legs(place_count, std::vector<TourLeg>(place_count));
-  planner::parallelFor(
+  parallelFor(
       static_cast<std::size_t>(place_count), workers,
       [&](std::size_t from) {
         std::vector<std::vector<Eigen::Vector3d>> routes = routes_from(static_cast<int>(from));
@@ -47,7 +47,7 @@ TourLegs planLegsByPlace(int place_count, const RoutesFrom& routes_from, const L
 
 void refineLegs(TourLegs& legs, const std::vector<std::pair<int, int>>& which, const LegRefiner& refine,
                 const LegScorer& score, int workers, Progress& progress) {
-  planner::parallelFor(
+  parallelFor(
       which.size(), workers,
       [&](std::size_t k) {
         const auto [from, to] = which[k];

@@ -6,7 +6,7 @@
 #include <queue>
 #include <stdexcept>
 
-#include "ceilplan/planner/parallel_for.hpp"
+#include "ceilplan/core/parallel_for.hpp"
 #include "ceilplan/core/error.hpp"
 #include "lattice_grid.hpp"
 

@@ -7,7 +7,7 @@
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/lattice_planner.hpp"
 #include "ceilplan/planner/lattice_roadmap.hpp"
-#include "ceilplan/planner/parallel_for.hpp"
+#include "ceilplan/core/parallel_for.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
@@ -129,10 +129,10 @@ TEST(LatticeRoadmap, InFreeModeARouteUsesOnlyItsOwnEndsApproachZones) {
 
 TEST(ParallelFor, RunsEveryIndexOnceAndRethrowsTheFailure) {
   std::vector<std::atomic<int>> runs(100);
-  planner::parallelFor(runs.size(), 3, [&](std::size_t i) { ++runs[i]; });
+  parallelFor(runs.size(), 3, [&](std::size_t i) { ++runs[i]; });
   for (const std::atomic<int>& count : runs) EXPECT_EQ(count.load(), 1);
   try {
-    planner::parallelFor(10, 2, [](std::size_t i) {
+    parallelFor(10, 2, [](std::size_t i) {
       if (i == 4) throw std::runtime_error("task 4 failed");
     });
     FAIL() << "no exception";

@@ -1,12 +1,12 @@
 #pragma once
-// The planner's one way of spreading independent work over threads (roadmap building, tour
-// legs): indices handed out in order, progress reported from the calling thread, the first
+// ceilplan's one way of spreading independent work over threads (index building, roadmap,
+// tour legs): indices handed out in order, progress reported from the calling thread, the first
 // failure rethrown.
 
 #include <cstddef>
 #include <functional>
 
-namespace ceilplan::planner {
+namespace ceilplan {
 
 // Runs task(i) for every i in [0, count) on `workers` threads (at least one), each taking the
 // next index in turn. While it waits, the calling thread calls `progress` (if set) with the
@@ -15,4 +15,4 @@ namespace ceilplan::planner {
 void parallelFor(std::size_t count, int workers, const std::function<void(std::size_t)>& task,
                  const std::function<void(double)>& progress = {});
 
-}  // namespace ceilplan::planner
+}  // namespace ceilplan

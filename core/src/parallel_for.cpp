@@ -1,4 +1,4 @@
-#include "ceilplan/planner/parallel_for.hpp"
+#include "ceilplan/core/parallel_for.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace ceilplan::planner {
+namespace ceilplan {
 
 void parallelFor(std::size_t count, int workers, const std::function<void(std::size_t)>& task,
                  const std::function<void(double)>& progress) {
@@ -38,4 +38,4 @@ void parallelFor(std::size_t count, int workers, const std::function<void(std::s
     if (failure) std::rethrow_exception(failure);
 }
 
-}  // namespace ceilplan::planner
+}  // namespace ceilplan
