@@ -42,14 +42,14 @@ std::vector<PlanningMode> modesToRun(const std::string& mode) {
 
 void runTour(TourArguments a) {
   const MissionFile mission = readMissionFile(a.mission);
-  std::optional<Autopilot> autopilot;
+  std::optional<io::Autopilot> autopilot;
   if (!a.no_export) {
     try {
       mission.requireOrigin();  // fail before planning, not after
     } catch (const ceilplan::InputError& e) {
       throw ceilplan::InputError(std::string(e.what()) + "; or pass --no-export");
     }
-    autopilot = a.autopilot == "ardupilot" ? Autopilot::ArduPilot : Autopilot::PX4;
+    autopilot = a.autopilot == "ardupilot" ? io::Autopilot::ArduPilot : io::Autopilot::PX4;
   }
   if (a.mode.empty())
     a.mode = (mission.mode == "ceiling" || mission.mode == "free" || mission.mode == "both") ? mission.mode : "ceiling";

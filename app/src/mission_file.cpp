@@ -87,9 +87,9 @@ class MissionReader {
   YAML::Node root_;
 };
 
-planner::SortieBattery readBattery(const MissionReader& reader) {
+mission::SortieBattery readBattery(const MissionReader& reader) {
   const YAML::Node section = reader.section("battery");
-  planner::SortieBattery battery;
+  mission::SortieBattery battery;
   battery.pack.capacity_ah = reader.positive(reader.required(section, "capacity_ah", "battery.capacity_ah"), "battery.capacity_ah");
   battery.pack.charge_current_a =
       reader.positive(reader.required(section, "charge_current_a", "battery.charge_current_a"), "battery.charge_current_a");
@@ -101,9 +101,9 @@ planner::SortieBattery readBattery(const MissionReader& reader) {
   return battery;
 }
 
-GeodeticOrigin readOrigin(const MissionReader& reader, const YAML::Node& node) {
+mission::GeodeticOrigin readOrigin(const MissionReader& reader, const YAML::Node& node) {
   if (!node.IsMap()) reader.fail("'origin' must be {lat, lon, alt}");
-  GeodeticOrigin origin;
+  mission::GeodeticOrigin origin;
   origin.latitude_deg = reader.finite(reader.required(node, "lat", "origin.lat"), "origin.lat");
   origin.longitude_deg = reader.finite(reader.required(node, "lon", "origin.lon"), "origin.lon");
   origin.altitude_m = reader.finite(reader.required(node, "alt", "origin.alt"), "origin.alt");
@@ -128,16 +128,16 @@ MissionSpeeds readSpeeds(const MissionReader& reader, const YAML::Node& node) {
   return speeds;
 }
 
-std::vector<planner::InspectionTarget> readTargets(const MissionReader& reader) {
+std::vector<mission::InspectionTarget> readTargets(const MissionReader& reader) {
   const YAML::Node list = reader.required(reader.root(), "targets", "targets");
   if (!list.IsSequence() || list.size() == 0) reader.fail("'targets' must be a non-empty list");
-  std::vector<planner::InspectionTarget> targets;
+  std::vector<mission::InspectionTarget> targets;
   std::set<std::string> names;
   for (std::size_t k = 0; k < list.size(); ++k) {
     const YAML::Node node = list[k];
     const std::string path = "targets[" + std::to_string(k) + "]";
     if (!node.IsMap()) reader.fail("'" + path + "' must be a map {name, point, dwell_s, standoff_m}");
-    planner::InspectionTarget target;
+    mission::InspectionTarget target;
     target.name = reader.as<std::string>(reader.required(node, "name", path + ".name"), path + ".name", "a string");
     if (target.name.empty()) reader.fail("'" + path + ".name' is empty");
     if (!names.insert(target.name).second) reader.fail("duplicate target name '" + target.name + "' at '" + path + "'");
@@ -160,7 +160,7 @@ std::vector<planner::InspectionTarget> readTargets(const MissionReader& reader) 
 
 }  // namespace
 
-const GeodeticOrigin& MissionFile::requireOrigin() const {
+const mission::GeodeticOrigin& MissionFile::requireOrigin() const {
   if (!origin)
     throw ceilplan::InputError(file.string() +
                                 ": missing key 'origin' ({lat, lon, alt} of the map frame): needed to export to an autopilot");

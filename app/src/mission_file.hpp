@@ -3,10 +3,10 @@
 // vehicle, the battery, home, the geodetic origin, speeds, mode, seed and the targets. Paths
 // are resolved relative to the mission file.
 
-#include "autopilot_export.hpp"
+#include "ceilplan/io/autopilot_export.hpp"
 
-#include "ceilplan/planner/sortie_plan.hpp"
-#include "ceilplan/planner/viewpoint.hpp"
+#include "ceilplan/mission/sortie_plan.hpp"
+#include "ceilplan/mission/viewpoint.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
@@ -30,16 +30,16 @@ struct MissionFile {
   std::filesystem::path file;     // the mission file itself
   std::filesystem::path map;      // resolved against the mission file's directory
   std::filesystem::path vehicle;  // likewise
-  planner::SortieBattery battery; // capacity_ah, charge_current_a, start_soc, reserve_soc
+  mission::SortieBattery battery; // capacity_ah, charge_current_a, start_soc, reserve_soc
   Eigen::Vector3d home_m = Eigen::Vector3d::Zero();
-  std::optional<GeodeticOrigin> origin;  // only needed to export to an autopilot
+  std::optional<mission::GeodeticOrigin> origin;  // only needed to export to an autopilot
   MissionSpeeds speeds;           // key `speeds`, every entry optional (defaults above)
   std::string mode;               // key `mode`, as written (optional; the command decides)
   std::uint64_t seed = 1;         // key `seed` (optional)
-  std::vector<planner::InspectionTarget> targets;
+  std::vector<mission::InspectionTarget> targets;
 
   // The origin, or ceilplan::InputError naming the file and the missing key.
-  const GeodeticOrigin& requireOrigin() const;
+  const mission::GeodeticOrigin& requireOrigin() const;
 };
 
 // Throws ceilplan::InputError with one line "FILE: ..." naming the key: a missing file or key,

@@ -33,11 +33,11 @@ nlohmann::json tourJson(const TourResult& tour) {
   json["order_method"] = tour.order.method;
   json["targets_total"] = tour.stops.size();
   int visited = 0;
-  for (const planner::Sortie& sortie : tour.plan.sorties) visited += static_cast<int>(sortie.targets.size());
+  for (const mission::Sortie& sortie : tour.plan.sorties) visited += static_cast<int>(sortie.targets.size());
   json["targets_visited"] = visited;
   nlohmann::json targets = nlohmann::json::array();
   for (const TourStop& stop : tour.stops) {
-    const planner::Viewpoint& v = stop.viewpoint;
+    const mission::Viewpoint& v = stop.viewpoint;
     targets.push_back({{"name", stop.target.name},
                        {"point", waypointsJson({stop.target.point_m})[0]},
                        {"viewpoint", waypointsJson({v.position_m})[0]},
@@ -50,10 +50,10 @@ nlohmann::json tourJson(const TourResult& tour) {
   }
   json["targets"] = targets;
   nlohmann::json sorties = nlohmann::json::array();
-  for (const planner::Sortie& sortie : tour.plan.sorties) {
+  for (const mission::Sortie& sortie : tour.plan.sorties) {
     nlohmann::json names = nlohmann::json::array(), legs = nlohmann::json::array();
     for (int k : sortie.targets) names.push_back(tour.names[k]);
-    for (const planner::SortieLeg& leg : sortie.legs) {
+    for (const mission::SortieLeg& leg : sortie.legs) {
       const TourLeg& flown = tour.legs[leg.from][leg.to];
       legs.push_back({{"from", tour.names[leg.from]},
                       {"to", tour.names[leg.to]},
@@ -81,7 +81,7 @@ nlohmann::json tourJson(const TourResult& tour) {
   json["start_soc"] = tour.start_soc;
   json["reserve_soc"] = tour.reserve_soc;
   nlohmann::json wear;
-  for (const planner::PlanWear& w : tour.wear)
+  for (const mission::PlanWear& w : tour.wear)
     wear[w.model] = {{"wear_name", w.wear_name}, {"cycle_wear", w.cycle_wear}, {"capacity_loss", w.capacity_loss}};
   json["wear"] = wear;
   json["duty"] = {{"missions_per_day", tour.options.missions_per_day},
@@ -109,17 +109,17 @@ void writeTourPathCsv(const std::filesystem::path& file, const TourResult& tour)
   });
 }
 
-std::vector<AutopilotMission> autopilotMissions(const TourResult& tour, const MissionFile& mission, Autopilot autopilot) {
-  const GeodeticOrigin& origin = mission.requireOrigin();
-  std::vector<AutopilotMission> missions;
-  for (const planner::Sortie& sortie : tour.plan.sorties) {
-    AutopilotMission m;
+std::vector<io::AutopilotMission> autopilotMissions(const TourResult& tour, const MissionFile& mission, io::Autopilot autopilot) {
+  const mission::GeodeticOrigin& origin = mission.requireOrigin();
+  std::vector<io::AutopilotMission> missions;
+  for (const mission::Sortie& sortie : tour.plan.sorties) {
+    io::AutopilotMission m;
     m.home_m = mission.home_m;
     m.origin = origin;
     m.autopilot = autopilot;
     m.cruise_speed_m_s = mission.speeds.cruise_m_s;
     m.hover_speed_m_s = mission.speeds.inspection_m_s;
-    for (const planner::SortieLeg& leg : sortie.legs) {
+    for (const mission::SortieLeg& leg : sortie.legs) {
       const std::vector<Eigen::Vector3d>& waypoints = tour.legs[leg.from][leg.to].waypoints;
       for (std::size_t i = 1; i < waypoints.size(); ++i) m.waypoints.push_back({waypoints[i], 0.0, std::nullopt});
       if (leg.to != 0) m.waypoints.back().hold_s = tour.stops[leg.to - 1].target.dwell_s;
@@ -130,7 +130,7 @@ std::vector<AutopilotMission> autopilotMissions(const TourResult& tour, const Mi
 }
 
 void writeTourDirectory(const std::filesystem::path& dir, const TourResult& tour, const MissionFile& mission,
-                        const environment::Environment& environment, std::optional<Autopilot> autopilot) {
+                        const environment::Environment& environment, std::optional<io::Autopilot> autopilot) {
   writeTextAtomically(dir / "tour.json", [&](std::ostream& out) { out << std::setw(2) << tourJson(tour) << '\n'; });
   writeTourPathCsv(dir / "path.csv", tour);
   std::vector<Eigen::Vector3d> route;
@@ -138,11 +138,11 @@ void writeTourDirectory(const std::filesystem::path& dir, const TourResult& tour
     for (const planner::PathSample& s : samples) route.push_back(s.position_m);
   writeMapViews(dir, environment, route);
   if (!autopilot) return;
-  const std::vector<AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
+  const std::vector<io::AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
   const int count = static_cast<int>(missions.size());
   for (int k = 0; k < count; ++k) {
-    writeQgcPlan(sortieFileName(dir / "mission.plan", k + 1, count), missions[k]);
-    writeQgcWpl(sortieFileName(dir / "mission.waypoints", k + 1, count), missions[k]);
+    io::writeQgcPlan(io::sortieFileName(dir / "mission.plan", k + 1, count), missions[k]);
+    io::writeQgcWpl(io::sortieFileName(dir / "mission.waypoints", k + 1, count), missions[k]);
   }
 }
 
@@ -164,7 +164,7 @@ std::string comparisonTable(const TourResult& ceiling, const TourResult& free) {
   row("FEC (flights + recharges)", ceiling.plan.fec, free.plan.fec, "%.5f", true);
   row("lowest SOC [%]", 100.0 * ceiling.plan.min_soc, 100.0 * free.plan.min_soc, "%.2f", false);
   for (std::size_t m = 0; m < ceiling.wear.size() && m < free.wear.size(); ++m) {
-    const planner::PlanWear &c = ceiling.wear[m], &f = free.wear[m];
+    const mission::PlanWear &c = ceiling.wear[m], &f = free.wear[m];
     row(c.model + ": " + c.wear_name, c.cycle_wear, f.cycle_wear, "%.4e", true);
     row(c.model + ": capacity loss [%]", 100.0 * c.capacity_loss, 100.0 * f.capacity_loss, "%.5f", true);
   }
@@ -206,7 +206,7 @@ std::string tourSummary(const TourResult& tour) {
                 static_cast<unsigned long long>(tour.order.seed), tour.plan.sorties.size(), tour.plan.ageing_model.c_str());
   out << line;
   for (std::size_t k = 0; k < tour.plan.sorties.size(); ++k) {
-    const planner::Sortie& s = tour.plan.sorties[k];
+    const mission::Sortie& s = tour.plan.sorties[k];
     std::snprintf(line, sizeof line, "  sortie %zu: %zu targets, %.4f Ah, %.1f s, DoD %.1f %%, lands at %.1f %%: %s\n",
                   k + 1, s.targets.size(), s.charge_ah, s.flight_s, 100.0 * s.dod, 100.0 * s.lowest_soc,
                   s.reason.c_str());

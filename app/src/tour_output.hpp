@@ -4,7 +4,7 @@
 
 #include "ceilplan/core/error.hpp"
 
-#include "autopilot_export.hpp"
+#include "ceilplan/io/autopilot_export.hpp"
 #include "mission_file.hpp"
 #include "tour_run.hpp"
 
@@ -25,12 +25,12 @@ void writeTourPathCsv(const std::filesystem::path& file, const TourResult& tour)
 
 // One autopilot mission per sortie: every leg's waypoints after home, a hold of the target's
 // dwell at each viewpoint, home last. Throws ceilplan::InputError without a geodetic origin.
-std::vector<AutopilotMission> autopilotMissions(const TourResult& tour, const MissionFile& mission, Autopilot autopilot);
+std::vector<io::AutopilotMission> autopilotMissions(const TourResult& tour, const MissionFile& mission, io::Autopilot autopilot);
 
 // DIR/tour.json, DIR/path.csv, DIR/map_top.csv, DIR/map_side.csv and, with `autopilot`,
 // DIR/mission.plan and DIR/mission.waypoints (per sortie when several).
 void writeTourDirectory(const std::filesystem::path& dir, const TourResult& tour, const MissionFile& mission,
-                        const environment::Environment& environment, std::optional<Autopilot> autopilot);
+                        const environment::Environment& environment, std::optional<io::Autopilot> autopilot);
 
 // The side-by-side table of two modes (ceiling first), as printed and as DIR/comparison.txt.
 std::string comparisonTable(const TourResult& ceiling, const TourResult& free);

@@ -30,25 +30,25 @@ constexpr double kRetryTimeFactors[] = {10.0, 40.0};
 
 std::vector<TourStop> chooseStops(const MissionFile& mission, const PlanningSetup& setup, PlanningMode mode,
                                   const TourOptions& options) {
-  planner::ViewpointOptions viewpoint_options;
-  viewpoint_options.mode = mode == PlanningMode::Ceiling ? planner::ViewpointMode::Ceiling : planner::ViewpointMode::Free;
+  mission::ViewpointOptions viewpoint_options;
+  viewpoint_options.mode = mode == PlanningMode::Ceiling ? mission::ViewpointMode::Ceiling : mission::ViewpointMode::Free;
   viewpoint_options.min_ceiling_gap_m = setup.arguments().min_ceiling_gap_m + kViewpointGapMarginM;
   const environment::Environment& environment =
       mode == PlanningMode::Ceiling ? setup.environment() : setup.standoffEnvironment();
   std::vector<TourStop> stops;
-  for (const planner::InspectionTarget& target : mission.targets) {
+  for (const mission::InspectionTarget& target : mission.targets) {
     TourStop stop{target, {}};
     // A conventional planner inspects from where its standoff lets it, with a zoom lens.
     if (mode == PlanningMode::Free)
       stop.target.standoff_max_m = std::max(target.standoff_max_m, options.free_standoff_max_m);
-    stop.viewpoint = planner::chooseViewpoint(stop.target, environment, setup.energy(), viewpoint_options);
+    stop.viewpoint = mission::chooseViewpoint(stop.target, environment, setup.energy(), viewpoint_options);
     stops.push_back(stop);
   }
   return stops;
 }
 
-planner::LegCost legCost(const planner::PathEvaluation& evaluation) {
-  planner::LegCost cost;
+mission::LegCost legCost(const planner::PathEvaluation& evaluation) {
+  mission::LegCost cost;
   cost.charge_ah = evaluation.charge_ah;
   cost.duration_s = evaluation.duration_s;
   cost.mean_current_a = evaluation.mean_current_a;
@@ -58,7 +58,7 @@ planner::LegCost legCost(const planner::PathEvaluation& evaluation) {
 
 // The sortie as flown: legs' samples end to end, a hover sample pair per dwell, SOC counted
 // from the start SOC (trapezoid, usable capacity, as planSorties counts it).
-std::vector<planner::PathSample> flownSamples(const TourResult& tour, const planner::Sortie& sortie,
+std::vector<planner::PathSample> flownSamples(const TourResult& tour, const mission::Sortie& sortie,
                                               const battery::Pack& pack) {
   std::vector<planner::PathSample> samples;
   double t0 = 0.0;
@@ -72,7 +72,7 @@ std::vector<planner::PathSample> flownSamples(const TourResult& tour, const plan
     }
     samples.push_back(s);
   };
-  for (const planner::SortieLeg& leg : sortie.legs) {
+  for (const mission::SortieLeg& leg : sortie.legs) {
     const planner::PathEvaluation& evaluation = tour.legs[leg.from][leg.to].evaluation;
     for (planner::PathSample s : evaluation.samples) {
       s.t_s += t0;
@@ -101,7 +101,7 @@ battery::AgeingModelOptions ageingOptions(const TourOptions& options) {
   return ageing;
 }
 
-battery::DutyResult projectDuty(const TourResult& tour, const planner::SortieBattery& battery,
+battery::DutyResult projectDuty(const TourResult& tour, const mission::SortieBattery& battery,
                                 const TourOptions& options) {
   battery::DutyCycle duty;
   for (const std::vector<planner::PathSample>& samples : tour.sortie_samples) {
@@ -220,11 +220,11 @@ TourLegs roadmapLegs(const TourResult& tour, const PlanningSetup& setup, Plannin
 
 // The visiting order and the sorties for the legs as they are.
 void orderAndSplit(TourResult& tour, const MissionFile& mission, const TourOptions& options) {
-  planner::TourLegs legs;
+  mission::TourLegs legs;
   legs.names = tour.names;
   const int places = static_cast<int>(tour.places_m.size());
-  planner::CostMatrix costs = planner::CostMatrix::Zero(places, places);
-  legs.legs.assign(places, std::vector<planner::LegCost>(places));
+  mission::CostMatrix costs = mission::CostMatrix::Zero(places, places);
+  legs.legs.assign(places, std::vector<mission::LegCost>(places));
   legs.dwells.assign(places, {});
   for (int i = 0; i < places; ++i)
     for (int j = 0; j < places; ++j) {
@@ -239,13 +239,13 @@ void orderAndSplit(TourResult& tour, const MissionFile& mission, const TourOptio
     for (int i = 0; i < places; ++i)
       if (i != k) costs(i, k) += stop.viewpoint.dwell_charge_ah;
   }
-  planner::TourOrderOptions order_options;
+  mission::TourOrderOptions order_options;
   order_options.seed = options.seed;
-  tour.order = planner::orderTour(costs, order_options);
-  planner::SortieOptions sortie_options;
+  tour.order = mission::orderTour(costs, order_options);
+  mission::SortieOptions sortie_options;
   sortie_options.ageing_model = options.ageing_model;
   sortie_options.ageing = ageingOptions(options);
-  tour.plan = planner::planSorties(legs, tour.order.targets, mission.battery, sortie_options);
+  tour.plan = mission::planSorties(legs, tour.order.targets, mission.battery, sortie_options);
 }
 
 }  // namespace
@@ -327,8 +327,8 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
     std::vector<std::pair<int, int>> flown;
     try {
       orderAndSplit(tour, mission, options);
-      for (const planner::Sortie& sortie : tour.plan.sorties)
-        for (const planner::SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
+      for (const mission::Sortie& sortie : tour.plan.sorties)
+        for (const mission::SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
     } catch (const ceilplan::InputError&) {
       // A target no sortie can reach and return from, perhaps only on raw legs: refine the
       // legs out of home and back, then decide.
@@ -342,15 +342,15 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
   }
 
   // The independent re-check of every leg flown (the planner checked them too).
-  for (const planner::Sortie& sortie : tour.plan.sorties)
-    for (const planner::SortieLeg& leg : sortie.legs)
+  for (const mission::Sortie& sortie : tour.plan.sorties)
+    for (const mission::SortieLeg& leg : sortie.legs)
       if (const auto violation = setup.baseRules().checkPathDensely(tour.legs[leg.from][leg.to].waypoints))
         throw std::runtime_error(tour.mode + " mode: leg " + legName(tour, leg.from, leg.to) +
                                  " fails the dense re-check: " + *violation);
 
-  for (const planner::Sortie& sortie : tour.plan.sorties) tour.sortie_samples.push_back(flownSamples(tour, sortie, pack));
+  for (const mission::Sortie& sortie : tour.plan.sorties) tour.sortie_samples.push_back(flownSamples(tour, sortie, pack));
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
-    tour.wear.push_back(planner::planWear(tour.plan, model, ageingOptions(options)));
+    tour.wear.push_back(mission::planWear(tour.plan, model, ageingOptions(options)));
   tour.duty = projectDuty(tour, mission.battery, options);
   return tour;
 }

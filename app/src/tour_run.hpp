@@ -8,9 +8,9 @@
 #include "tour_legs.hpp"
 
 #include "ceilplan/battery/duty_cycle.hpp"
-#include "ceilplan/planner/sortie_plan.hpp"
-#include "ceilplan/planner/tour_order.hpp"
-#include "ceilplan/planner/viewpoint.hpp"
+#include "ceilplan/mission/sortie_plan.hpp"
+#include "ceilplan/mission/tour_order.hpp"
+#include "ceilplan/mission/viewpoint.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <cstdint>
@@ -39,8 +39,8 @@ struct TourOptions {
 };
 
 struct TourStop {
-  planner::InspectionTarget target;  // its standoff range as searched in this mode
-  planner::Viewpoint viewpoint;
+  mission::InspectionTarget target;  // its standoff range as searched in this mode
+  mission::Viewpoint viewpoint;
 };
 
 struct TourResult {
@@ -50,12 +50,12 @@ struct TourResult {
   std::vector<Eigen::Vector3d> places_m;
   std::vector<TourStop> stops;
   std::vector<std::vector<TourLeg>> legs;     // legs[i][j], i != j
-  planner::TourOrder order;
-  planner::SortiePlan plan;
+  mission::TourOrder order;
+  mission::SortiePlan plan;
   // Per sortie, the flown samples from take-off (dwells included, as hovering samples), the
   // SOC counted from the start SOC over the sortie's own samples.
   std::vector<std::vector<planner::PathSample>> sortie_samples;
-  std::vector<planner::PlanWear> wear;        // fec, xu, woehler, schmalstieg
+  std::vector<mission::PlanWear> wear;        // fec, xu, woehler, schmalstieg
   battery::DutyResult duty;
   double start_soc = 0.0;
   double reserve_soc = 0.0;

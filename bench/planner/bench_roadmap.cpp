@@ -7,7 +7,7 @@
 #include "tour_run.hpp"
 
 #include "ceilplan/planner/lattice_roadmap.hpp"
-#include "ceilplan/planner/viewpoint.hpp"
+#include "ceilplan/mission/viewpoint.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -29,14 +29,14 @@ struct BridgeRoadmap {
     planner = std::make_unique<planner::FlightPlanner>(*mode.rules, *mode.model,
                                                        setup.objective(mission.home_m, mission.home_m));
     places.push_back(mission.home_m);
-    planner::ViewpointOptions options;
-    options.mode = planning_mode == app::PlanningMode::Ceiling ? planner::ViewpointMode::Ceiling : planner::ViewpointMode::Free;
+    mission::ViewpointOptions options;
+    options.mode = planning_mode == app::PlanningMode::Ceiling ? mission::ViewpointMode::Ceiling : mission::ViewpointMode::Free;
     options.min_ceiling_gap_m = setup.arguments().min_ceiling_gap_m + 0.01;
     const environment::Environment& environment =
         planning_mode == app::PlanningMode::Ceiling ? setup.environment() : setup.standoffEnvironment();
-    for (planner::InspectionTarget target : mission.targets) {
+    for (mission::InspectionTarget target : mission.targets) {
       if (planning_mode == app::PlanningMode::Free) target.standoff_max_m = std::max(target.standoff_max_m, 3.0);
-      places.push_back(planner::chooseViewpoint(target, environment, setup.energy(), options).position_m);
+      places.push_back(mission::chooseViewpoint(target, environment, setup.energy(), options).position_m);
     }
   }
 };

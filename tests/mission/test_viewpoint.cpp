@@ -2,7 +2,7 @@
 // current), in free mode it keeps the conventional standoff and takes the nearest position;
 // every viewpoint is valid, inside the standoff range and sees its target.
 
-#include "ceilplan/planner/viewpoint.hpp"
+#include "ceilplan/mission/viewpoint.hpp"
 
 #include "analytic_maps.hpp"
 #include "ceilplan/energy/paper_quad.hpp"
@@ -12,7 +12,7 @@
 
 #include <memory>
 
-namespace ceilplan::planner {
+namespace ceilplan::mission {
 namespace {
 
 using environment::Environment;
@@ -154,4 +154,4 @@ TEST(Viewpoint, BridgeTargetsGetViewpointsAndDeckBaysAreHugged) {
 }
 
 }  // namespace
-}  // namespace ceilplan::planner
+}  // namespace ceilplan::mission

@@ -5,11 +5,11 @@
 #include "vehicle_geometry_file.hpp"
 
 #include "ceilplan/energy/paper_quad.hpp"
-#include "ceilplan/planner/viewpoint.hpp"
+#include "ceilplan/mission/viewpoint.hpp"
 
 #include <gtest/gtest.h>
 
-namespace ceilplan::planner {
+namespace ceilplan::mission {
 namespace {
 
 class ShippedMission : public ::testing::TestWithParam<std::string> {};
@@ -33,4 +33,4 @@ TEST_P(ShippedMission, EveryTargetHasACeilingModeViewpoint) {
 INSTANTIATE_TEST_SUITE_P(Maps, ShippedMission, ::testing::Values("bridge", "tunnel", "warehouse", "open"));
 
 }  // namespace
-}  // namespace ceilplan::planner
+}  // namespace ceilplan::mission

@@ -1,4 +1,4 @@
-#include "ceilplan/planner/tour_order.hpp"
+#include "ceilplan/mission/tour_order.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace ceilplan::planner {
+namespace ceilplan::mission {
 
 namespace {
 
@@ -265,4 +265,4 @@ TourOrder orderTour(const CostMatrix& costs, const TourOrderOptions& options) {
   return heuristicTour(costs, options.seed, options.restarts);
 }
 
-}  // namespace ceilplan::planner
+}  // namespace ceilplan::mission

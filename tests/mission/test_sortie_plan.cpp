@@ -2,7 +2,7 @@
 // ageing model (checked against every possible split), convex DoD stress buys extra sorties
 // that a charge-proportional model would not, and every split says why.
 
-#include "ceilplan/planner/sortie_plan.hpp"
+#include "ceilplan/mission/sortie_plan.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <limits>
 #include <random>
 
-namespace ceilplan::planner {
+namespace ceilplan::mission {
 namespace {
 
 // Targets on a line at x = positions[k] (home at x = 0): a leg costs `ah_per_m` per metre plus
@@ -229,4 +229,4 @@ TEST(SortiePlan, RefusesBadInput) {
 }
 
 }  // namespace
-}  // namespace ceilplan::planner
+}  // namespace ceilplan::mission

@@ -1,15 +1,15 @@
 // Tour ordering: exact Held-Karp at 12 targets, the heuristic at 20 and 50; the sortie split
 // that follows, at 20 and 50 targets.
 
-#include "ceilplan/planner/sortie_plan.hpp"
-#include "ceilplan/planner/tour_order.hpp"
+#include "ceilplan/mission/sortie_plan.hpp"
+#include "ceilplan/mission/tour_order.hpp"
 #include "test_tour_random_costs.hpp"
 
 #include <benchmark/benchmark.h>
 
 namespace {
 
-using ceilplan::planner::CostMatrix;
+using ceilplan::mission::CostMatrix;
 
 // Climbing costs 2 per metre on top of distance: asymmetric, like battery costs.
 CostMatrix randomCosts(int targets, std::uint64_t seed) { return ceilplan::testing::randomTourCosts(targets, seed, 2.0); }
@@ -17,7 +17,7 @@ CostMatrix randomCosts(int targets, std::uint64_t seed) { return ceilplan::testi
 void BM_HeldKarp(benchmark::State& state) {
   const CostMatrix costs = randomCosts(static_cast<int>(state.range(0)), 1);
   for (auto _ : state) {
-    const double cost = ceilplan::planner::heldKarpTour(costs).cost;
+    const double cost = ceilplan::mission::heldKarpTour(costs).cost;
     benchmark::DoNotOptimize(cost);
   }
 }
@@ -26,7 +26,7 @@ BENCHMARK(BM_HeldKarp)->Arg(12)->Unit(benchmark::kMillisecond);
 void BM_Heuristic(benchmark::State& state) {
   const CostMatrix costs = randomCosts(static_cast<int>(state.range(0)), 1);
   for (auto _ : state) {
-    const double cost = ceilplan::planner::heuristicTour(costs, 1).cost;
+    const double cost = ceilplan::mission::heuristicTour(costs, 1).cost;
     benchmark::DoNotOptimize(cost);
   }
 }
@@ -35,7 +35,7 @@ BENCHMARK(BM_Heuristic)->Arg(20)->Arg(50)->Unit(benchmark::kMillisecond);
 // Legs at 9.5 A and 2 m/s over the random matrix's distances, 20 s dwells at 8 A: a 50-target
 // tour needs several sorties of the paper's pack.
 void BM_Sorties(benchmark::State& state) {
-  using namespace ceilplan::planner;
+  using namespace ceilplan::mission;
   const int targets = static_cast<int>(state.range(0));
   const CostMatrix metres = randomCosts(targets, 1);
   TourLegs legs;

@@ -1,4 +1,4 @@
-#include "ceilplan/planner/sortie_plan.hpp"
+#include "ceilplan/mission/sortie_plan.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 
@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace ceilplan::planner {
+namespace ceilplan::mission {
 
 namespace {
 
@@ -286,4 +286,4 @@ PlanWear planWear(const SortiePlan& plan, const std::string& model, const batter
   return wear;
 }
 
-}  // namespace ceilplan::planner
+}  // namespace ceilplan::mission

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace ceilplan::planner {
+namespace ceilplan::mission {
 
 // A point of a leg's current profile; t_s from the leg's start.
 struct CurrentSample {
@@ -123,4 +123,4 @@ struct PlanWear {
 };
 PlanWear planWear(const SortiePlan& plan, const std::string& model, const battery::AgeingModelOptions& options = {});
 
-}  // namespace ceilplan::planner
+}  // namespace ceilplan::mission

@@ -1,8 +1,8 @@
+#include "ceilplan/io/autopilot_export.hpp"
+
 #include "ceilplan/core/error.hpp"
-
-#include "autopilot_export.hpp"
-
-#include "output.hpp"
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/io/atomic_file.hpp"
 
 #include <GeographicLib/LocalCartesian.hpp>
 
@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 
 namespace {
 
@@ -22,20 +22,14 @@ constexpr int kMavAutopilotArdupilotMega = 3;
 constexpr int kMavAutopilotPx4 = 12;
 constexpr int kMavTypeQuadrotor = 2;
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 void requireFinite(const Eigen::Vector3d& value, const std::string& what) {
-  if (!value.allFinite()) throw ceilplan::InputError(what + " must be finite, got (" + number(value.x()) + ", " +
-                                                      number(value.y()) + ", " + number(value.z()) + ")");
+  if (!value.allFinite()) throw ceilplan::InputError(what + " must be finite, got (" + formatNumber(value.x()) + ", " +
+                                                      formatNumber(value.y()) + ", " + formatNumber(value.z()) + ")");
 }
 
 void requireNonNegative(double value, const std::string& what) {
   if (!std::isfinite(value) || value < 0.0)
-    throw ceilplan::InputError(what + " must be finite and non-negative, got " + number(value));
+    throw ceilplan::InputError(what + " must be finite and non-negative, got " + formatNumber(value));
 }
 
 const GeodeticOrigin& checkedOrigin(const AutopilotMission& mission) {
@@ -51,7 +45,7 @@ const GeodeticOrigin& checkedOrigin(const AutopilotMission& mission) {
     requireFinite(waypoint.position_m, what);
     requireNonNegative(waypoint.hold_s, what + " hold time (s)");
     if (waypoint.yaw_deg && !std::isfinite(*waypoint.yaw_deg))
-      throw ceilplan::InputError(what + " yaw must be finite, got " + number(*waypoint.yaw_deg));
+      throw ceilplan::InputError(what + " yaw must be finite, got " + formatNumber(*waypoint.yaw_deg));
   }
   requireNonNegative(mission.cruise_speed_m_s, "cruise speed (m/s)");
   requireNonNegative(mission.hover_speed_m_s, "hover speed (m/s)");
@@ -87,14 +81,6 @@ GlobalMission toGlobal(const AutopilotMission& mission) {
 }
 
 }  // namespace
-
-void GeodeticOrigin::validate() const {
-  if (!(latitude_deg >= -90.0 && latitude_deg <= 90.0))
-    throw ceilplan::InputError("origin latitude must be in [-90, 90] degrees, got " + number(latitude_deg));
-  if (!(longitude_deg >= -180.0 && longitude_deg <= 180.0))
-    throw ceilplan::InputError("origin longitude must be in [-180, 180] degrees, got " + number(longitude_deg));
-  if (!std::isfinite(altitude_m)) throw ceilplan::InputError("origin altitude must be finite, got " + number(altitude_m));
-}
 
 Eigen::Vector3d toGeodetic(const GeodeticOrigin& origin, const Eigen::Vector3d& local_m) {
   const GeographicLib::LocalCartesian frame(origin.latitude_deg, origin.longitude_deg, origin.altitude_m);
@@ -176,4 +162,4 @@ std::filesystem::path sortieFileName(const std::filesystem::path& file, int sort
   return file.parent_path() / (file.stem().string() + "_sortie" + std::to_string(sortie) + file.extension().string());
 }
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

@@ -4,17 +4,17 @@
 
 #include "ceilplan/core/error.hpp"
 
-#include "autopilot_export.hpp"
+#include "ceilplan/io/autopilot_export.hpp"
 #include "run_command.hpp"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 namespace {
 
-const GeodeticOrigin kCambridge{52.218, 0.0923, 12.0};
+const mission::GeodeticOrigin kCambridge{52.218, 0.0923, 12.0};
 
 AutopilotMission bridgeSortie() {
   AutopilotMission mission;
@@ -169,4 +169,4 @@ TEST(AutopilotExport, OneFilePerSortie) {
 }
 
 }  // namespace
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

@@ -4,6 +4,7 @@
 // and a QGC WPL 110 text file. Altitudes are relative to home, as the vehicle arms there.
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/mission/geodetic_origin.hpp"
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -13,19 +14,9 @@
 #include <string>
 #include <vector>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 
-// Where the map frame's origin lies on the Earth: WGS84 latitude and longitude (degrees) and
-// altitude above mean sea level (metres).
-struct GeodeticOrigin {
-  double latitude_deg = 0.0;
-  double longitude_deg = 0.0;
-  double altitude_m = 0.0;
-
-  // Throws ceilplan::InputError for a latitude outside [-90, 90], a longitude outside
-  // [-180, 180] or a non-finite altitude.
-  void validate() const;
-};
+using mission::GeodeticOrigin;
 
 struct ExportWaypoint {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // map frame
@@ -68,4 +59,4 @@ void writeQgcWpl(const std::filesystem::path& file, const AutopilotMission& miss
 // else the stem with "_sortieN" (mission.plan -> mission_sortie2.plan).
 std::filesystem::path sortieFileName(const std::filesystem::path& file, int sortie, int sortie_count);
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

@@ -1,7 +1,7 @@
 // Tour ordering: Held-Karp is exact (checked against brute force), the heuristic stays within
 // 2 % of it, and both price asymmetric costs (a reversed stretch costs what it costs).
 
-#include "ceilplan/planner/tour_order.hpp"
+#include "ceilplan/mission/tour_order.hpp"
 #include "ceilplan/core/error.hpp"
 #include "test_tour_random_costs.hpp"
 
@@ -13,7 +13,7 @@
 #include <numeric>
 #include <random>
 
-namespace ceilplan::planner {
+namespace ceilplan::mission {
 namespace {
 
 CostMatrix randomCosts(int targets, std::uint64_t seed, double climb_penalty) {
@@ -153,4 +153,4 @@ TEST(TourOrder, RefusesBadInput) {
 }
 
 }  // namespace
-}  // namespace ceilplan::planner
+}  // namespace ceilplan::mission

@@ -14,7 +14,7 @@
 
 #include <string>
 
-namespace ceilplan::planner {
+namespace ceilplan::mission {
 
 struct InspectionTarget {
   std::string name;
@@ -57,4 +57,4 @@ double hoverCurrentA(const environment::Environment& environment, const energy::
 Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Environment& environment,
                           const energy::EnergyModel& model, const ViewpointOptions& options = {});
 
-}  // namespace ceilplan::planner
+}  // namespace ceilplan::mission

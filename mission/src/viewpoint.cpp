@@ -1,4 +1,4 @@
-#include "ceilplan/planner/viewpoint.hpp"
+#include "ceilplan/mission/viewpoint.hpp"
 
 #include "ceilplan/planner/flight_cost_model.hpp"
 #include "ceilplan/core/error.hpp"
@@ -10,17 +10,11 @@
 #include <limits>
 #include <stdexcept>
 
-namespace ceilplan::planner {
+namespace ceilplan::mission {
 
 namespace {
 
 constexpr double kCurrentResolutionA = 1e-3;
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 // Whether the segment from the body to the target point crosses only free voxels (stopping
 // half a voxel short of the point, which lies on an occupied voxel's face).
@@ -128,9 +122,9 @@ void InspectionTarget::validate() const {
   if (!(std::isfinite(standoff_min_m) && std::isfinite(standoff_max_m) && standoff_min_m >= 0.0 &&
         standoff_max_m > 0.0 && standoff_min_m <= standoff_max_m))
     throw ceilplan::InputError(what + ": standoff range must be 0 <= min <= max, max > 0, got [" +
-                                number(standoff_min_m) + ", " + number(standoff_max_m) + "] m");
+                                formatNumber(standoff_min_m) + ", " + formatNumber(standoff_max_m) + "] m");
   if (!std::isfinite(dwell_s) || dwell_s < 0.0)
-    throw ceilplan::InputError(what + ": dwell time must be finite and non-negative, got " + number(dwell_s) + " s");
+    throw ceilplan::InputError(what + ": dwell time must be finite and non-negative, got " + formatNumber(dwell_s) + " s");
 }
 
 double hoverCurrentA(const environment::Environment& environment, const energy::EnergyModel& model,
@@ -141,7 +135,7 @@ double hoverCurrentA(const environment::Environment& environment, const energy::
     throw ceilplan::InputError("the map's vehicle has " + std::to_string(above.rotors.size()) +
                                 " rotors, the energy model " + std::to_string(model.rotorCount()) +
                                 ": use one vehicle file for both");
-  const PointConditions conditions = surfaceConditions(above, below);
+  const planner::PointConditions conditions = planner::surfaceConditions(above, below);
   energy::FlightCondition hover;
   hover.ground_gap_m = conditions.ground_gap_m;
   hover.soc = soc;
@@ -159,8 +153,8 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
   search.scan(target.point_m, resolution_m, target.standoff_max_m, hug);
   if (!search.found())
     throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
-                                ": no valid viewpoint within " + number(target.standoff_min_m) + "-" +
-                                number(target.standoff_max_m) +
+                                ": no valid viewpoint within " + formatNumber(target.standoff_min_m) + "-" +
+                                formatNumber(target.standoff_max_m) +
                                 " m that sees it" +
                                 (options.mode == ViewpointMode::Free
                                      ? std::string(" while keeping the conventional standoff from every structure")
@@ -177,4 +171,4 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
   return viewpoint;
 }
 
-}  // namespace ceilplan::planner
+}  // namespace ceilplan::mission

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace ceilplan::planner {
+namespace ceilplan::mission {
 
 // costs(i, j): the cost of flying from i to j; index 0 is home, 1..N the targets.
 using CostMatrix = Eigen::MatrixXd;
@@ -52,4 +52,4 @@ TourOrder orderTour(const CostMatrix& costs, const TourOrderOptions& options = {
 // non-negative entries.
 void validateCostMatrix(const CostMatrix& costs);
 
-}  // namespace ceilplan::planner
+}  // namespace ceilplan::mission
