@@ -1,9 +1,10 @@
 // `ceilplan probe`: what the planner and the energy model see at one body position.
 
 #include "command_registry.hpp"
-#include "json_values.hpp"
 #include "output.hpp"
-#include "vehicle_geometry_file.hpp"
+
+#include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/core/error.hpp"
@@ -48,16 +49,14 @@ std::string text(double value) {
 }
 
 nlohmann::json gapJson(const environment::RotorGap& gap) {
-  return {{"nearest_gap_m", finiteOrNull(gap.nearest_gap_m)}, {"coverage", gap.coverage}, {"mean_gap_m", finiteOrNull(gap.mean_gap_m)}};
+  return {{"nearest_gap_m", io::finiteOrNull(gap.nearest_gap_m)}, {"coverage", gap.coverage}, {"mean_gap_m", io::finiteOrNull(gap.mean_gap_m)}};
 }
 
 void runProbe(const ProbeOptions& options) {
   using namespace environment;
   const Eigen::Vector3d body = parsePoint(options.at);
-  const std::filesystem::path vehicle_file = options.vehicle.empty() ? defaultVehicleFile() : std::filesystem::path(options.vehicle);
-  if (options.vehicle.empty() && !std::filesystem::exists(vehicle_file))
-    throw ceilplan::InputError("no --vehicle given and " + vehicle_file.string() + " is not here; pass --vehicle FILE");
-  const VehicleGeometry vehicle = readVehicleGeometry(vehicle_file);
+  const VehicleGeometry vehicle =
+      (options.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle)).geometry;
   EnvironmentOptions environment_options;
   environment_options.unknown_is_occupied = !options.unknown_free;
   environment_options.unknown_is_surface = options.unknown_ceiling;
@@ -93,17 +92,17 @@ void runProbe(const ProbeOptions& options) {
   }
   const nlohmann::json report = {
       {"map", options.map},
-      {"vehicle", vehicle_file.string()},
+      {"vehicle", options.vehicle.empty() ? std::string("built-in: ") + vehicle.name : options.vehicle},
       {"at", {body.x(), body.y(), body.z()}},
       {"unknown_is_occupied", environment_options.unknown_is_occupied},
       {"unknown_is_surface", environment_options.unknown_is_surface},
-      {"ceiling_gap_m", finiteOrNull(ceiling.nearest_gap_m)},
+      {"ceiling_gap_m", io::finiteOrNull(ceiling.nearest_gap_m)},
       {"ceiling_coverage", ceiling.coverage},
-      {"ceiling_mean_gap_m", finiteOrNull(ceiling.mean_gap_m)},
-      {"ground_gap_m", finiteOrNull(ground.nearest_gap_m)},
+      {"ceiling_mean_gap_m", io::finiteOrNull(ceiling.mean_gap_m)},
+      {"ground_gap_m", io::finiteOrNull(ground.nearest_gap_m)},
       {"ground_coverage", ground.coverage},
-      {"ground_mean_gap_m", finiteOrNull(ground.mean_gap_m)},
-      {"clearance_m", finiteOrNull(clearance)},
+      {"ground_mean_gap_m", io::finiteOrNull(ground.mean_gap_m)},
+      {"clearance_m", io::finiteOrNull(clearance)},
       {"valid", !violation},
       {"violation", violation ? nlohmann::json(violation->describe()) : nlohmann::json(nullptr)},
       {"rotors", rotors}};

@@ -26,8 +26,24 @@ void Progress::update(double fraction) {
 }
 
 void Progress::finish() {
-  if (enabled_ && last_percent_ >= 0) std::cerr << '\n';
+  if (enabled_ && last_percent_ >= 0) std::cerr << "\r\033[K" << std::flush;  // a finished line leaves nothing behind
   enabled_ = false;
+}
+
+ProgressCallback terminalProgress() {
+  struct Lines {
+    std::string stage;
+    std::unique_ptr<Progress> line;
+  };
+  auto lines = std::make_shared<Lines>();
+  return [lines](const std::string& stage, double fraction) {
+    if (stage != lines->stage || !lines->line) {
+      lines->line.reset();
+      lines->line = std::make_unique<Progress>(stage);
+      lines->stage = stage;
+    }
+    lines->line->update(fraction);
+  };
 }
 
 }  // namespace ceilplan::app

@@ -2,10 +2,12 @@
 // Output files appear whole or not at all: each is written under a temporary name beside
 // its final one, then renamed into place.
 
+#include "ceilplan/core/progress.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 
@@ -29,5 +31,9 @@ class Progress {
   bool enabled_;
   int last_percent_ = -1;
 };
+
+// A library progress callback drawn as Progress lines, one per stage, when stderr is a
+// terminal; the last line is cleared when the callback and its copies are gone.
+ProgressCallback terminalProgress();
 
 }  // namespace ceilplan::app

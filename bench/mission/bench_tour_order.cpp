@@ -38,7 +38,7 @@ void BM_Sorties(benchmark::State& state) {
   using namespace ceilplan::mission;
   const int targets = static_cast<int>(state.range(0));
   const CostMatrix metres = randomCosts(targets, 1);
-  TourLegs legs;
+  TourCosts legs;
   legs.names.assign(targets + 1, "target");
   legs.dwells.assign(targets + 1, Dwell{20.0, 8.0});
   legs.legs.assign(targets + 1, std::vector<LegCost>(targets + 1));
@@ -51,7 +51,7 @@ void BM_Sorties(benchmark::State& state) {
   SortieOptions options;
   options.ageing_model = "xu";
   for (auto _ : state) {
-    const double wear = planSorties(legs, order, SortieBattery{}, options).wear;
+    const double wear = planSorties(legs, order, BatterySpec{}, options).wear;
     benchmark::DoNotOptimize(wear);
   }
 }

@@ -30,7 +30,7 @@ void requireFiniteNonNegative(double value, const std::string& what) {
 // Builds a sortie's flight and recharge history and its figures; the wear comes later.
 class SortieBuilder {
  public:
-  SortieBuilder(const TourLegs& legs, const SortieBattery& battery) : legs_(legs), battery_(battery) {}
+  SortieBuilder(const TourCosts& legs, const BatterySpec& battery) : legs_(legs), battery_(battery) {}
 
   // The sortie flying order[first..last] (inclusive).
   Sortie build(const std::vector<int>& order, int first, int last) const {
@@ -94,8 +94,8 @@ class SortieBuilder {
     }
   }
 
-  const TourLegs& legs_;
-  const SortieBattery& battery_;
+  const TourCosts& legs_;
+  const BatterySpec& battery_;
 };
 
 // Feeds a sortie's history to `model`, its take-off at `start_s`.
@@ -113,7 +113,7 @@ double wearOf(const battery::AgeingModel& prototype, const Sortie& sortie) {
   return model->cycleWear();
 }
 
-std::string targetList(const TourLegs& legs, const std::vector<int>& targets) {
+std::string targetList(const TourCosts& legs, const std::vector<int>& targets) {
   std::string text;
   for (int target : targets) text += (text.empty() ? "'" : ", '") + legs.names[target] + "'";
   return text;
@@ -121,7 +121,7 @@ std::string targetList(const TourLegs& legs, const std::vector<int>& targets) {
 
 // Why a sortie ends before `next`: one sortie flying both (`merged`) would break the reserve,
 // or would wear more than the two.
-std::string splitReason(const TourLegs& legs, const SortieBattery& battery, const battery::AgeingModel& prototype,
+std::string splitReason(const TourCosts& legs, const BatterySpec& battery, const battery::AgeingModel& prototype,
                         const Sortie& sortie, const Sortie& next, const Sortie& merged, bool merged_feasible) {
   const std::string head = "split after '" + legs.names[sortie.targets.back()] + "': ";
   if (!merged_feasible)
@@ -140,7 +140,7 @@ std::string splitReason(const TourLegs& legs, const SortieBattery& battery, cons
 
 }  // namespace
 
-void TourLegs::validate() const {
+void TourCosts::validate() const {
   const std::size_t n = names.size();
   if (n < 1) throw ceilplan::InputError("a tour needs home at index 0");
   if (legs.size() != n || dwells.size() != n)
@@ -170,18 +170,7 @@ void TourLegs::validate() const {
   }
 }
 
-void SortieBattery::validate() const {
-  pack.validate();
-  if (!(start_soc > 0.0 && start_soc <= 1.0))
-    throw ceilplan::InputError("start SOC must be in (0, 1], got " + formatNumber(start_soc));
-  if (!(reserve_soc >= 0.0 && reserve_soc <= 1.0))
-    throw ceilplan::InputError("reserve SOC must be in [0, 1], got " + formatNumber(reserve_soc));
-  if (reserve_soc >= start_soc)
-    throw ceilplan::InputError("reserve SOC " + formatNumber(reserve_soc) + " is not below the start SOC " +
-                                formatNumber(start_soc) + ": no sortie could fly; lower the reserve or raise the start SOC");
-}
-
-SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, const SortieBattery& battery,
+SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
                        const SortieOptions& options) {
   legs.validate();
   battery.validate();
@@ -204,7 +193,7 @@ SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, cons
     if (!feasible(builder.build(order, k, k))) unreachable.push_back(order[k]);
   if (!unreachable.empty()) {
     const Sortie alone = builder.build(unreachable, 0, 0);
-    throw ceilplan::InputError("no single sortie can reach, inspect and return from " + targetList(legs, unreachable) +
+    throw ceilplan::InfeasibleError("no single sortie can reach, inspect and return from " + targetList(legs, unreachable) +
                                 " above the " + percent(battery.reserve_soc) + " reserve (home -> '" +
                                 legs.names[unreachable.front()] + "' -> home lands at " + percent(alone.lowest_soc) +
                                 "); move home closer or use a larger pack");
@@ -260,7 +249,7 @@ SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, cons
   return plan;
 }
 
-Sortie flySortie(const TourLegs& legs, const std::vector<int>& targets, const SortieBattery& battery) {
+Sortie flySortie(const TourCosts& legs, const std::vector<int>& targets, const BatterySpec& battery) {
   legs.validate();
   battery.validate();
   for (int target : targets)

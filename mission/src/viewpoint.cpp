@@ -94,7 +94,7 @@ class ViewpointSearch {
     // Free mode ignores proximity effects when choosing: every position draws the same. Currents
     // are compared to the milliampere, so that a difference no meter would show does not pull the
     // viewpoint away from the target.
-    const double key = options_.mode == ViewpointMode::Ceiling
+    const double key = options_.mode == FlightMode::Ceiling
                            ? std::round(hoverCurrentA(environment_, model_, body_m, options_.soc) / kCurrentResolutionA)
                            : 0.0;
     const bool better = !found() || key < best_key_ || (key == best_key_ && distance_m < best_distance_m_);
@@ -149,14 +149,14 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
     throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) + " lies outside the map");
   ViewpointSearch search(target, environment, model, options);
   const double resolution_m = environment.grid().frame().resolution_m();
-  const bool hug = options.mode == ViewpointMode::Ceiling;
+  const bool hug = options.mode == FlightMode::Ceiling;
   search.scan(target.point_m, resolution_m, target.standoff_max_m, hug);
   if (!search.found())
     throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
                                 ": no valid viewpoint within " + formatNumber(target.standoff_min_m) + "-" +
                                 formatNumber(target.standoff_max_m) +
                                 " m that sees it" +
-                                (options.mode == ViewpointMode::Free
+                                (options.mode == FlightMode::Free
                                      ? std::string(" while keeping the conventional standoff from every structure")
                                      : std::string()) +
                                 "; check the point lies on a surface facing free space, or widen its standoff range");

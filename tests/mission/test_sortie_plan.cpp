@@ -17,9 +17,9 @@ namespace {
 // Targets on a line at x = positions[k] (home at x = 0): a leg costs `ah_per_m` per metre plus
 // `takeoff_ah` when it leaves home, and lasts a second per metre. Each target dwells `dwell_s`
 // at `dwell_a`.
-TourLegs lineTour(const std::vector<double>& positions, double ah_per_m, double dwell_s, double dwell_a,
+TourCosts lineTour(const std::vector<double>& positions, double ah_per_m, double dwell_s, double dwell_a,
                   double takeoff_ah = 0.0) {
-  TourLegs tour;
+  TourCosts tour;
   std::vector<double> x = {0.0};
   x.insert(x.end(), positions.begin(), positions.end());
   const std::size_t n = x.size();
@@ -51,10 +51,10 @@ SortieOptions model(const std::string& name) {
 }
 
 // Paper pack: 5.2 Ah, 0.95 start, 0.25 reserve: 3.64 Ah per sortie.
-const SortieBattery kBattery{};
+const BatterySpec kBattery{};
 
 TEST(SortiePlan, OneSortieWhenTheWholeTourFitsAndWearFollowsCharge) {
-  const TourLegs tour = lineTour({10, 20, 30}, 0.01, 20, 10);
+  const TourCosts tour = lineTour({10, 20, 30}, 0.01, 20, 10);
   const SortiePlan plan = planSorties(tour, inOrder(3), kBattery, model("fec"));
   ASSERT_EQ(plan.sorties.size(), 1u);
   const Sortie& sortie = plan.sorties[0];
@@ -78,7 +78,7 @@ TEST(SortiePlan, OneSortieWhenTheWholeTourFitsAndWearFollowsCharge) {
 
 TEST(SortiePlan, TheReserveForcesASplitAndTheReasonSaysSo) {
   // Each target's dwell takes 1.2 Ah: three of them cannot fit in 3.64 Ah.
-  const TourLegs tour = lineTour({5, 10, 15, 20}, 0.01, 432, 10);
+  const TourCosts tour = lineTour({5, 10, 15, 20}, 0.01, 432, 10);
   const SortiePlan plan = planSorties(tour, inOrder(4), kBattery, model("fec"));
   ASSERT_EQ(plan.sorties.size(), 2u);
   for (const Sortie& sortie : plan.sorties) EXPECT_GE(sortie.lowest_soc, 0.25);
@@ -94,7 +94,7 @@ TEST(SortiePlan, ConvexDodStressChoosesMoreSortiesUnderWoehlerButNotUnderFec) {
   // Four targets close to home, each dwelling for 0.81 Ah: one sortie of all reaches 63 % DoD
   // and still clears the reserve. Woehler's DoD^1.5 makes shallower sorties cheaper despite the
   // extra transit; FEC only sees the extra charge.
-  const TourLegs tour = lineTour({2, 3, 4, 5}, 0.005, 290, 10);
+  const TourCosts tour = lineTour({2, 3, 4, 5}, 0.005, 290, 10);
   const SortiePlan fec = planSorties(tour, inOrder(4), kBattery, model("fec"));
   const SortiePlan woehler = planSorties(tour, inOrder(4), kBattery, model("woehler"));
   ASSERT_EQ(fec.sorties.size(), 1u);
@@ -110,7 +110,7 @@ TEST(SortiePlan, ConvexDodStressChoosesMoreSortiesUnderWoehlerButNotUnderFec) {
 }
 
 // Every way of cutting 1..targets into consecutive sorties: the least feasible total wear.
-double bruteForceWear(const TourLegs& tour, int targets, const std::string& name) {
+double bruteForceWear(const TourCosts& tour, int targets, const std::string& name) {
   double best = std::numeric_limits<double>::infinity();
   for (unsigned cuts = 0; cuts < (1u << (targets - 1)); ++cuts) {
     SortiePlan plan;
@@ -134,7 +134,7 @@ TEST(SortiePlan, DynamicProgrammeFindsTheLeastWearSplit) {
   for (int instance = 0; instance < 6; ++instance) {
     std::vector<double> x(6);
     for (double& v : x) v = position(random);
-    TourLegs tour = lineTour(x, 0.01, 0, 10);
+    TourCosts tour = lineTour(x, 0.01, 0, 10);
     for (std::size_t k = 1; k < tour.dwells.size(); ++k) tour.dwells[k] = {dwell(random), 12.0};
     for (const std::string name : {"woehler", "xu"}) {
       const SortiePlan plan = planSorties(tour, inOrder(6), kBattery, model(name));
@@ -147,7 +147,7 @@ TEST(SortiePlan, DynamicProgrammeFindsTheLeastWearSplit) {
 }
 
 TEST(SortiePlan, CurrentProfileShapesTheHistoryButNotTheTotals) {
-  TourLegs tour = lineTour({100}, 0.004, 10, 10);
+  TourCosts tour = lineTour({100}, 0.004, 10, 10);
   const SortiePlan flat = planSorties(tour, {1}, kBattery, model("fec"));
   tour.legs[0][1].current_profile = {{0, 5}, {50, 20}, {100, 5}};
   const SortiePlan shaped = planSorties(tour, {1}, kBattery, model("fec"));
@@ -163,7 +163,7 @@ TEST(SortiePlan, CurrentProfileShapesTheHistoryButNotTheTotals) {
 }
 
 TEST(SortiePlan, PlanWearReportsEveryModelForOneSplit) {
-  const TourLegs tour = lineTour({5, 10, 15, 20}, 0.01, 360, 10);
+  const TourCosts tour = lineTour({5, 10, 15, 20}, 0.01, 360, 10);
   const SortiePlan plan = planSorties(tour, inOrder(4), kBattery, model("xu"));
   for (const std::string& name : battery::ageingModelNames()) {
     battery::AgeingModelOptions options;
@@ -186,13 +186,14 @@ TEST(SortiePlan, PlanWearReportsEveryModelForOneSplit) {
 }
 
 TEST(SortiePlan, NamesTargetsNoSortieCanReach) {
+  // Well-formed input asking for the impossible: infeasible (exit code 3), not bad input.
   // t2 dwells for 4 Ah on its own: beyond any single sortie.
-  TourLegs tour = lineTour({5, 10, 15}, 0.01, 60, 10);
+  TourCosts tour = lineTour({5, 10, 15}, 0.01, 60, 10);
   tour.dwells[2] = {1440, 10};
   try {
     planSorties(tour, inOrder(3), kBattery);
     FAIL() << "expected an error";
-  } catch (const ceilplan::InputError& e) {
+  } catch (const ceilplan::InfeasibleError& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("no single sortie can reach, inspect and return from 't2'"), std::string::npos) << message;
     EXPECT_EQ(message.find("'t1'"), std::string::npos) << message;
@@ -200,8 +201,8 @@ TEST(SortiePlan, NamesTargetsNoSortieCanReach) {
 }
 
 TEST(SortiePlan, RefusesAReserveAtOrAboveTheStartSoc) {
-  const TourLegs tour = lineTour({5}, 0.01, 10, 10);
-  SortieBattery battery;
+  const TourCosts tour = lineTour({5}, 0.01, 10, 10);
+  BatterySpec battery;
   battery.reserve_soc = 0.96;
   try {
     planSorties(tour, {1}, battery);
@@ -213,17 +214,17 @@ TEST(SortiePlan, RefusesAReserveAtOrAboveTheStartSoc) {
 }
 
 TEST(SortiePlan, RefusesBadInput) {
-  TourLegs tour = lineTour({5, 10}, 0.01, 10, 10);
+  TourCosts tour = lineTour({5, 10}, 0.01, 10, 10);
   EXPECT_THROW(planSorties(tour, {1}, kBattery), ceilplan::InputError);      // a target missing
   EXPECT_THROW(planSorties(tour, {1, 1}, kBattery), ceilplan::InputError);   // a target twice
   EXPECT_THROW(planSorties(tour, {1, 2}, kBattery, model("nope")), ceilplan::InputError);
-  TourLegs nan = tour;
+  TourCosts nan = tour;
   nan.legs[1][2].charge_ah = std::nan("");
   EXPECT_THROW(planSorties(nan, {1, 2}, kBattery), ceilplan::InputError);
-  TourLegs negative = tour;
+  TourCosts negative = tour;
   negative.dwells[2].duration_s = -1;
   EXPECT_THROW(planSorties(negative, {1, 2}, kBattery), ceilplan::InputError);
-  SortieBattery empty_pack;
+  BatterySpec empty_pack;
   empty_pack.pack.capacity_ah = -1;
   EXPECT_THROW(planSorties(tour, {1, 2}, empty_pack), ceilplan::InputError);
 }

@@ -67,7 +67,7 @@ TEST(Viewpoint, CeilingModeHugsTheSurfaceAbove) {
 TEST(Viewpoint, FreeModeKeepsTheConventionalStandoffAndTakesTheNearestPosition) {
   const InspectionTarget target = ceilingTarget();
   ViewpointOptions options;
-  options.mode = ViewpointMode::Free;
+  options.mode = FlightMode::Free;
   const Viewpoint viewpoint = chooseViewpoint(target, flat().free, paperQuad(), options);
   expectUsable(viewpoint, target, flat().free);
   // 1 m from the ceiling above the airframe's top (0.06 m): the nearest is straight below.
@@ -84,7 +84,7 @@ TEST(Viewpoint, FindsANarrowStandoffShellBetweenLatticePoints) {
   target.standoff_min_m = 1.0;
   target.standoff_max_m = 1.08;  // thinner than a voxel
   ViewpointOptions options;
-  options.mode = ViewpointMode::Free;
+  options.mode = FlightMode::Free;
   expectUsable(chooseViewpoint(target, flat().free, paperQuad(), options), target, flat().free);
 }
 
@@ -146,7 +146,7 @@ TEST(Viewpoint, BridgeTargetsGetViewpointsAndDeckBaysAreHugged) {
   // Free mode, 1 m from every structure: under a girder's bottom flange, in free air.
   const Environment conventional(map, withStandoff(1.0));
   ViewpointOptions free;
-  free.mode = ViewpointMode::Free;
+  free.mode = FlightMode::Free;
   const Viewpoint girder = chooseViewpoint(targets[2], conventional, paperQuad(), free);
   expectUsable(girder, targets[2], conventional);
   EXPECT_NEAR(girder.distance_m, 1.06, 0.03);

@@ -1,10 +1,7 @@
 // Every target of every shipped mission gets a ceiling-mode viewpoint on its map: valid, in its
 // standoff range, seeing the target, and the vehicle's home is a valid state.
 
-#include "mission_file.hpp"
-#include "vehicle_geometry_file.hpp"
-
-#include "ceilplan/energy/paper_quad.hpp"
+#include "ceilplan/io/mission_file.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
 
 #include <gtest/gtest.h>
@@ -15,11 +12,10 @@ namespace {
 class ShippedMission : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ShippedMission, EveryTargetHasACeilingModeViewpoint) {
-  const app::MissionFile mission =
-      app::readMissionFile(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps" / (GetParam() + ".yaml"));
-  const environment::OccupancyMap map = environment::OccupancyMap::load(mission.map);
-  const environment::Environment environment(map, app::readVehicleGeometry(mission.vehicle));
-  const energy::EnergyModel model(energy::paperQuadParameters());
+  const Mission mission = io::readMission(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps" / (GetParam() + ".yaml"));
+  const environment::OccupancyMap map = environment::OccupancyMap::load(mission.map_file);
+  const environment::Environment environment(map, mission.vehicle.geometry);
+  const energy::EnergyModel model(mission.vehicle.energy);
   EXPECT_TRUE(environment.isStateValid(mission.home_m));
   for (const InspectionTarget& target : mission.targets) {
     const Viewpoint viewpoint = chooseViewpoint(target, environment, model);

@@ -4,7 +4,7 @@
 
 #include "ceilplan/io/autopilot_export.hpp"
 #include "run_command.hpp"
-#include "vehicle_geometry_file.hpp"
+#include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
@@ -144,7 +144,7 @@ void visitsEveryTargetWithItsDwellAboveTheReserve(const BothModesRun& run) {
 void everyLegPassesTheDenseRecheck(const BothModesRun& run) {
   SCOPED_TRACE("EveryLegPassesTheDenseRecheck");
   const environment::OccupancyMap map = environment::OccupancyMap::load(run.map);
-  const environment::Environment environment(map, app::readVehicleGeometry(kVehicle));
+  const environment::Environment environment(map, io::readVehicle(kVehicle).geometry);
   const planner::SafetyRules rules(environment, 0.05);
   int legs = 0;
   for (const std::string mode : {"ceiling", "free"}) {

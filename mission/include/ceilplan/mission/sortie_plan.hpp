@@ -7,6 +7,7 @@
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/pack.hpp"
+#include "ceilplan/mission/battery_spec.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <string>
@@ -37,23 +38,13 @@ struct Dwell {
 };
 
 // Everything indexed like the tour's cost matrix: 0 is home, 1..N the targets.
-struct TourLegs {
+struct TourCosts {
   std::vector<std::string> names;        // names[0] is home's, e.g. "home"
   std::vector<std::vector<LegCost>> legs;  // legs[i][j]: flying from i to j
   std::vector<Dwell> dwells;             // dwells[0] is ignored
 
   int targetCount() const { return static_cast<int>(names.size()) - 1; }
   // Throws ceilplan::InputError naming the first bad entry (sizes, NaN, negative values).
-  void validate() const;
-};
-
-struct SortieBattery {
-  battery::Pack pack;        // capacity (usable = nominal x SOH) and charge current
-  double start_soc = 0.95;   // every sortie takes off at this SOC
-  double reserve_soc = 0.25; // and lands with at least this much
-
-  // Throws ceilplan::InputError for a bad pack, an SOC outside [0, 1] or a reserve at or
-  // above the start SOC.
   void validate() const;
 };
 
@@ -106,12 +97,12 @@ struct SortiePlan {
 // history (discharge, then recharge to the start SOC) to a fresh ageing model. Ties go to fewer
 // sorties. Throws ceilplan::InputError for bad input, and naming every target that no single
 // sortie can reach, inspect and return from above the reserve.
-SortiePlan planSorties(const TourLegs& legs, const std::vector<int>& order, const SortieBattery& battery,
+SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
                        const SortieOptions& options = {});
 
 // One sortie flying `targets` (matrix indices, in order) from home and back, its wear left 0
 // and its reason empty: for pricing a sortie chosen by hand.
-Sortie flySortie(const TourLegs& legs, const std::vector<int>& targets, const SortieBattery& battery);
+Sortie flySortie(const TourCosts& legs, const std::vector<int>& targets, const BatterySpec& battery);
 
 // Wear of a plan under any model, so one split can be reported under every model: one new pack
 // flies the sorties back to back, recharged to the start SOC after each.

@@ -8,6 +8,7 @@
 
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/mission/flight_mode.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
@@ -27,10 +28,8 @@ struct InspectionTarget {
   void validate() const;
 };
 
-enum class ViewpointMode { Ceiling, Free };
-
 struct ViewpointOptions {
-  ViewpointMode mode = ViewpointMode::Ceiling;
+  FlightMode mode = FlightMode::Ceiling;
   // Rotors never come closer than this to the surface above (the planner's minimum ceiling gap).
   double min_ceiling_gap_m = 0.03;
   double soc = 0.65;  // SOC at which the dwell current is evaluated (energy model's reference)

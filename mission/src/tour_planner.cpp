@@ -1,7 +1,6 @@
-#include "tour_run.hpp"
+#include "ceilplan/mission/tour_planner.hpp"
 
-#include "duty_projection.hpp"
-#include "errors.hpp"
+#include "ceilplan/mission/duty_projection.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
@@ -16,8 +15,14 @@
 #include <memory>
 #include <stdexcept>
 
-namespace ceilplan::app {
+namespace ceilplan::mission {
 namespace {
+
+// The tour's progress callback for one stage.
+FractionCallback stageProgress(const TourOptions& options, const std::string& stage) {
+  if (!options.progress) return {};
+  return [callback = options.progress, stage](double fraction) { callback(stage, fraction); };
+}
 
 // The rotors stay this much farther from the surface at a viewpoint than the planner's
 // minimum gap, so the leg's end passes the dense re-check with its rounding.
@@ -28,27 +33,27 @@ constexpr double kViewpointGapMarginM = 0.01;
 // always in 0.5 s.
 constexpr double kRetryTimeFactors[] = {10.0, 40.0};
 
-std::vector<TourStop> chooseStops(const MissionFile& mission, const PlanningSetup& setup, PlanningMode mode,
+std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext& context, FlightMode mode,
                                   const TourOptions& options) {
-  mission::ViewpointOptions viewpoint_options;
-  viewpoint_options.mode = mode == PlanningMode::Ceiling ? mission::ViewpointMode::Ceiling : mission::ViewpointMode::Free;
-  viewpoint_options.min_ceiling_gap_m = setup.arguments().min_ceiling_gap_m + kViewpointGapMarginM;
+  ViewpointOptions viewpoint_options;
+  viewpoint_options.mode = mode;
+  viewpoint_options.min_ceiling_gap_m = context.options().min_ceiling_gap_m + kViewpointGapMarginM;
   const environment::Environment& environment =
-      mode == PlanningMode::Ceiling ? setup.environment() : setup.standoffEnvironment();
+      mode == FlightMode::Ceiling ? context.environment() : context.standoffEnvironment();
   std::vector<TourStop> stops;
-  for (const mission::InspectionTarget& target : mission.targets) {
+  for (const InspectionTarget& target : mission.targets) {
     TourStop stop{target, {}};
     // A conventional planner inspects from where its standoff lets it, with a zoom lens.
-    if (mode == PlanningMode::Free)
+    if (mode == FlightMode::Free)
       stop.target.standoff_max_m = std::max(target.standoff_max_m, options.free_standoff_max_m);
-    stop.viewpoint = mission::chooseViewpoint(stop.target, environment, setup.energy(), viewpoint_options);
+    stop.viewpoint = chooseViewpoint(stop.target, environment, context.energy(), viewpoint_options);
     stops.push_back(stop);
   }
   return stops;
 }
 
-mission::LegCost legCost(const planner::PathEvaluation& evaluation) {
-  mission::LegCost cost;
+LegCost legCost(const planner::PathEvaluation& evaluation) {
+  LegCost cost;
   cost.charge_ah = evaluation.charge_ah;
   cost.duration_s = evaluation.duration_s;
   cost.mean_current_a = evaluation.mean_current_a;
@@ -58,7 +63,7 @@ mission::LegCost legCost(const planner::PathEvaluation& evaluation) {
 
 // The sortie as flown: legs' samples end to end, a hover sample pair per dwell, SOC counted
 // from the start SOC (trapezoid, usable capacity, as planSorties counts it).
-std::vector<planner::PathSample> flownSamples(const TourResult& tour, const mission::Sortie& sortie,
+std::vector<planner::PathSample> flownSamples(const TourResult& tour, const Sortie& sortie,
                                               const battery::Pack& pack) {
   std::vector<planner::PathSample> samples;
   double t0 = 0.0;
@@ -72,7 +77,7 @@ std::vector<planner::PathSample> flownSamples(const TourResult& tour, const miss
     }
     samples.push_back(s);
   };
-  for (const mission::SortieLeg& leg : sortie.legs) {
+  for (const SortieLeg& leg : sortie.legs) {
     const planner::PathEvaluation& evaluation = tour.legs[leg.from][leg.to].evaluation;
     for (planner::PathSample s : evaluation.samples) {
       s.t_s += t0;
@@ -93,15 +98,7 @@ std::vector<planner::PathSample> flownSamples(const TourResult& tour, const miss
   return samples;
 }
 
-battery::AgeingModelOptions ageingOptions(const TourOptions& options) {
-  battery::AgeingModelOptions ageing;
-  ageing.conditions = battery::OperatingConditions::fromCelsius(options.temperature_c);
-  const energy::LipoOpenCircuitVoltage ocv;  // the energy module's cell curve, for Schmalstieg
-  ageing.cell_voltage_of_soc = [ocv](double soc) { return ocv.cellVoltageV(soc); };
-  return ageing;
-}
-
-battery::DutyResult projectDuty(const TourResult& tour, const mission::SortieBattery& battery,
+battery::DutyResult projectDuty(const TourResult& tour, const BatterySpec& battery,
                                 const TourOptions& options) {
   battery::DutyCycle duty;
   for (const std::vector<planner::PathSample>& samples : tour.sortie_samples) {
@@ -131,13 +128,13 @@ std::string legName(const TourResult& tour, int from, int to) { return tour.name
 // The rules, cost model and planner for the legs between two places (in free mode the rules
 // exempt the two from the standoff).
 struct LegPlanner {
-  PlanningSetup::Mode planning;
+  PlanningContext::Mode planning;
   std::unique_ptr<planner::FlightPlanner> planner;
 };
 
-LegPlanner legPlanner(const PlanningSetup& setup, PlanningMode mode, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  LegPlanner leg{setup.mode(mode, a, b), nullptr};
-  leg.planner = std::make_unique<planner::FlightPlanner>(*leg.planning.rules, *leg.planning.model, setup.objective(a, b));
+LegPlanner legPlanner(const PlanningContext& context, FlightMode mode, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  LegPlanner leg{context.mode(mode, a, b), nullptr};
+  leg.planner = std::make_unique<planner::FlightPlanner>(*leg.planning.rules, *leg.planning.model, context.objective(a, b));
   return leg;
 }
 
@@ -168,30 +165,29 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
       return leg.planner->plan(request).waypoints;
     } catch (const ceilplan::NoPathError& e) {
       failures += std::string(failures.empty() ? "" : "; ") + e.what();
-    } catch (const std::exception& e) {
-      throw std::runtime_error(tour.mode + " mode: leg " + legName(tour, from, to) + ": " + e.what());
+    } catch (...) {
+      rethrowWithContext(flightModeName(tour.mode) + " mode: leg " + legName(tour, from, to) + ": ");
     }
   }
-  throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] + ": " +
+  throw NoPathError(flightModeName(tour.mode) + " mode: no path between " + tour.names[from] + " and " + tour.names[to] + ": " +
                     failures);
 }
 
 // Every leg from one roadmap over the map: the roadmap's route from each place to every other,
 // shortcut under the pair's rules, or the straight line where that is valid and cheaper. Raw:
 // the legs a plan flies are refined later.
-TourLegs roadmapLegs(const TourResult& tour, const PlanningSetup& setup, PlanningMode mode, const TourOptions& options,
+LegTable roadmapLegs(const TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options,
                      const LegScorer& score) {
   const Eigen::Vector3d& home = tour.places_m.front();
-  const LegPlanner roadmap_planner = legPlanner(setup, mode, home, home);
+  const LegPlanner roadmap_planner = legPlanner(context, mode, home, home);
   const planner::SafetyRules& rules = *roadmap_planner.planning.rules;
   const planner::FlightObjective& objective = roadmap_planner.planner->objective();
-  Progress build_progress(tour.mode + " mode: building the roadmap");
+
   planner::RoadmapOptions roadmap_options;
   roadmap_options.stride_voxels = options.lattice_stride;
   roadmap_options.workers = options.workers;
-  roadmap_options.progress = [&](double share) { build_progress.update(share); };
+  roadmap_options.progress = stageProgress(options, flightModeName(tour.mode) + " mode: building the roadmap");
   const planner::LatticeRoadmap roadmap(rules, objective, tour.places_m, roadmap_options);
-  build_progress.finish();
 
   const int places = static_cast<int>(tour.places_m.size());
   const RoutesFrom routes_from = [&](int from) {
@@ -207,24 +203,24 @@ TourLegs roadmapLegs(const TourResult& tour, const PlanningSetup& setup, Plannin
           (!best || objective.motionCost(a, b) < objective.pathCost(*best)))
         best = std::vector<Eigen::Vector3d>{a, b};
       if (!best)
-        throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] +
+        throw NoPathError(flightModeName(tour.mode) + " mode: no path between " + tour.names[from] + " and " + tour.names[to] +
                           " on the roadmap (every " + std::to_string(options.lattice_stride) +
                           " voxels); if one exists through a narrower gap, try a smaller --lattice-stride");
       paths[to] = std::move(*best);
     }
     return paths;
   };
-  Progress progress(tour.mode + " mode: routing legs");
-  return planLegsByPlace(places, routes_from, score, options.workers, progress);
+  return planLegsByPlace(places, routes_from, score, options.workers,
+                         stageProgress(options, flightModeName(tour.mode) + " mode: routing legs"));
 }
 
 // The visiting order and the sorties for the legs as they are.
-void orderAndSplit(TourResult& tour, const MissionFile& mission, const TourOptions& options) {
-  mission::TourLegs legs;
+void orderAndSplit(TourResult& tour, const Mission& mission, const TourOptions& options) {
+  TourCosts legs;
   legs.names = tour.names;
   const int places = static_cast<int>(tour.places_m.size());
-  mission::CostMatrix costs = mission::CostMatrix::Zero(places, places);
-  legs.legs.assign(places, std::vector<mission::LegCost>(places));
+  CostMatrix costs = CostMatrix::Zero(places, places);
+  legs.legs.assign(places, std::vector<LegCost>(places));
   legs.dwells.assign(places, {});
   for (int i = 0; i < places; ++i)
     for (int j = 0; j < places; ++j) {
@@ -239,47 +235,34 @@ void orderAndSplit(TourResult& tour, const MissionFile& mission, const TourOptio
     for (int i = 0; i < places; ++i)
       if (i != k) costs(i, k) += stop.viewpoint.dwell_charge_ah;
   }
-  mission::TourOrderOptions order_options;
+  TourOrderOptions order_options;
   order_options.seed = options.seed;
-  tour.order = mission::orderTour(costs, order_options);
-  mission::SortieOptions sortie_options;
+  tour.order = orderTour(costs, order_options);
+  SortieOptions sortie_options;
   sortie_options.ageing_model = options.ageing_model;
-  sortie_options.ageing = ageingOptions(options);
-  tour.plan = mission::planSorties(legs, tour.order.targets, mission.battery, sortie_options);
+  sortie_options.ageing = ageingModelOptions(options.temperature_c);
+  tour.plan = planSorties(legs, tour.order.targets, mission.battery, sortie_options);
 }
 
 }  // namespace
 
-PlanningArguments planningArguments(const MissionFile& mission) {
-  PlanningArguments arguments;
-  arguments.map = mission.map.string();
-  arguments.vehicle = mission.vehicle.string();
-  arguments.battery = mission.file.string();  // readBatteryFile reads its `battery:` section
-  arguments.objective = "charge";
-  arguments.speeds.cruise_m_s = mission.speeds.cruise_m_s;
-  arguments.speeds.climb_m_s = mission.speeds.climb_m_s;
-  arguments.speeds.descent_m_s = mission.speeds.descent_m_s;
-  arguments.speeds.near_ceiling_m_s = std::min(arguments.speeds.near_ceiling_m_s, mission.speeds.cruise_m_s);
-  return arguments;
-}
-
-TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, PlanningMode mode,
+TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,
                     const TourOptions& options) {
   TourResult tour;
-  tour.mode = modeName(mode);
+  tour.mode = mode;
   tour.options = options;
   tour.start_soc = mission.battery.start_soc;
   tour.reserve_soc = mission.battery.reserve_soc;
 
   // Home as the planner would check a start: in free mode the approach zone around it exempts
   // it from the standoff, so a home near the ground is accepted.
-  const PlanningSetup::Mode home_mode = setup.mode(mode, mission.home_m, mission.home_m);
+  const PlanningContext::Mode home_mode = context.mode(mode, mission.home_m, mission.home_m);
   if (!home_mode.rules->isStateValid(mission.home_m))
-    throw ceilplan::InputError(mission.file.string() + ": home " + formatPoint(mission.home_m) +
+    throw ceilplan::InputError(mission.name() + ": home " + formatPoint(mission.home_m) +
                                 " is not a valid position for the vehicle (inside or too close to a structure, or "
                                 "outside the map); move it into free space");
 
-  tour.stops = chooseStops(mission, setup, mode, options);
+  tour.stops = chooseStops(mission, context, mode, options);
   tour.names.push_back("home");
   tour.places_m.push_back(mission.home_m);
   for (const TourStop& stop : tour.stops) {
@@ -289,21 +272,21 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
 
   const battery::Pack& pack = mission.battery.pack;
   const LegScorer score = [&](const std::vector<Eigen::Vector3d>& waypoints) {
-    return planner::evaluatePath(setup.fullModel(), pack, tour.start_soc, waypoints);
+    return planner::evaluatePath(context.fullModel(), pack, tour.start_soc, waypoints);
   };
   const auto legPlannerFor = [&](int from, int to) {
-    return legPlanner(setup, mode, tour.places_m[from], tour.places_m[to]);
+    return legPlanner(context, mode, tour.places_m[from], tour.places_m[to]);
   };
   const int places = static_cast<int>(tour.places_m.size());
   planner::RefinementOptions refinement;
   if (options.planner == kRoadmapPlanner) {
-    tour.legs = roadmapLegs(tour, setup, mode, options, score);
+    tour.legs = roadmapLegs(tour, context, mode, options, score);
     refinement.time_limit_s = kRefinementTimeGuardS;
   } else {
     refinement.time_limit_s = options.time_limit_s;
     const PairPlanner plan_pair = [&](int from, int to) { return searchLeg(tour, legPlannerFor(from, to), options, from, to); };
-    Progress progress(tour.mode + " mode: planning legs");
-    tour.legs = planLegsByPair(places, plan_pair, score, options.workers, progress);
+    tour.legs = planLegsByPair(places, plan_pair, score, options.workers,
+                               stageProgress(options, flightModeName(tour.mode) + " mode: planning legs"));
   }
 
   // Order and split with the legs as they are, post-process the raw legs the plan flies, and
@@ -311,8 +294,8 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
   const LegRefiner refine = [&](int from, int to, const std::vector<Eigen::Vector3d>& raw) {
     try {
       return legPlannerFor(from, to).planner->postProcess(raw, refinement);
-    } catch (const std::exception& e) {
-      throw std::runtime_error(tour.mode + " mode: leg " + legName(tour, from, to) + ": " + e.what());
+    } catch (...) {
+      rethrowWithContext(flightModeName(tour.mode) + " mode: leg " + legName(tour, from, to) + ": ");
     }
   };
   const auto unrefined = [&](const std::vector<std::pair<int, int>>& candidates) {
@@ -327,9 +310,9 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
     std::vector<std::pair<int, int>> flown;
     try {
       orderAndSplit(tour, mission, options);
-      for (const mission::Sortie& sortie : tour.plan.sorties)
-        for (const mission::SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
-    } catch (const ceilplan::InputError&) {
+      for (const Sortie& sortie : tour.plan.sorties)
+        for (const SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
+    } catch (const InfeasibleError&) {
       // A target no sortie can reach and return from, perhaps only on raw legs: refine the
       // legs out of home and back, then decide.
       for (int k = 1; k < places; ++k) flown.insert(flown.end(), {{0, k}, {k, 0}});
@@ -337,22 +320,23 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
     }
     const std::vector<std::pair<int, int>> raw_legs = unrefined(flown);
     if (raw_legs.empty()) break;
-    Progress progress(tour.mode + " mode: refining " + std::to_string(raw_legs.size()) + " legs");
-    refineLegs(tour.legs, raw_legs, refine, score, options.workers, progress);
+    refineLegs(tour.legs, raw_legs, refine, score, options.workers,
+               stageProgress(options, flightModeName(tour.mode) + " mode: refining " + std::to_string(raw_legs.size()) +
+                                          " legs"));
   }
 
   // The independent re-check of every leg flown (the planner checked them too).
-  for (const mission::Sortie& sortie : tour.plan.sorties)
-    for (const mission::SortieLeg& leg : sortie.legs)
-      if (const auto violation = setup.baseRules().checkPathDensely(tour.legs[leg.from][leg.to].waypoints))
-        throw std::runtime_error(tour.mode + " mode: leg " + legName(tour, leg.from, leg.to) +
+  for (const Sortie& sortie : tour.plan.sorties)
+    for (const SortieLeg& leg : sortie.legs)
+      if (const auto violation = context.baseRules().checkPathDensely(tour.legs[leg.from][leg.to].waypoints))
+        throw Error(flightModeName(tour.mode) + " mode: leg " + legName(tour, leg.from, leg.to) +
                                  " fails the dense re-check: " + *violation);
 
-  for (const mission::Sortie& sortie : tour.plan.sorties) tour.sortie_samples.push_back(flownSamples(tour, sortie, pack));
+  for (const Sortie& sortie : tour.plan.sorties) tour.sortie_samples.push_back(flownSamples(tour, sortie, pack));
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
-    tour.wear.push_back(mission::planWear(tour.plan, model, ageingOptions(options)));
+    tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));
   tour.duty = projectDuty(tour, mission.battery, options);
   return tour;
 }
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::mission

@@ -1,15 +1,15 @@
-#include "tour_legs.hpp"
+#include "ceilplan/mission/tour_legs.hpp"
 
 #include "ceilplan/core/parallel_for.hpp"
 
-namespace ceilplan::app {
+namespace ceilplan::mission {
 
-TourLegs planLegsByPair(int place_count, const PairPlanner& plan, const LegScorer& score, int workers,
-                        Progress& progress) {
+LegTable planLegsByPair(int place_count, const PairPlanner& plan, const LegScorer& score, int workers,
+                        const FractionCallback& progress) {
   std::vector<std::pair<int, int>> pairs;
   for (int i = 0; i < place_count; ++i)
     for (int j = i + 1; j < place_count; ++j) pairs.emplace_back(i, j);
-  TourLegs legs(place_count, std::vector<TourLeg>(place_count));
+  LegTable legs(place_count, std::vector<TourLeg>(place_count));
   parallelFor(
       pairs.size(), workers,
       [&](std::size_t k) {
@@ -21,14 +21,13 @@ TourLegs planLegsByPair(int place_count, const PairPlanner& plan, const LegScore
         legs[i][j] = std::move(there);  // each pair's cells are written by one task only
         legs[j][i] = std::move(back);
       },
-      [&](double share) { progress.update(share); });
-  progress.finish();
+      progress);
   return legs;
 }
 
-TourLegs planLegsByPlace(int place_count, const RoutesFrom& routes_from, const LegScorer& score, int workers,
-                         Progress& progress) {
-  TourLegs legs(place_count, std::vector<TourLeg>(place_count));
+LegTable planLegsByPlace(int place_count, const RoutesFrom& routes_from, const LegScorer& score, int workers,
+                         const FractionCallback& progress) {
+  LegTable legs(place_count, std::vector<TourLeg>(place_count));
   parallelFor(
       static_cast<std::size_t>(place_count), workers,
       [&](std::size_t from) {
@@ -40,13 +39,12 @@ TourLegs planLegsByPlace(int place_count, const RoutesFrom& routes_from, const L
           leg.evaluation = score(leg.waypoints);
         }
       },
-      [&](double share) { progress.update(share); });
-  progress.finish();
+      progress);
   return legs;
 }
 
-void refineLegs(TourLegs& legs, const std::vector<std::pair<int, int>>& which, const LegRefiner& refine,
-                const LegScorer& score, int workers, Progress& progress) {
+void refineLegs(LegTable& legs, const std::vector<std::pair<int, int>>& which, const LegRefiner& refine,
+                const LegScorer& score, int workers, const FractionCallback& progress) {
   parallelFor(
       which.size(), workers,
       [&](std::size_t k) {
@@ -56,8 +54,7 @@ void refineLegs(TourLegs& legs, const std::vector<std::pair<int, int>>& which, c
         leg.evaluation = score(leg.waypoints);
         leg.refined = true;
       },
-      [&](double share) { progress.update(share); });
-  progress.finish();
+      progress);
 }
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::mission

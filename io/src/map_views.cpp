@@ -1,10 +1,10 @@
-#include "map_views.hpp"
+#include "ceilplan/io/map_views.hpp"
 
-#include "output.hpp"
+#include "ceilplan/io/atomic_file.hpp"
 
 #include <Eigen/Geometry>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 
 void writeMapViews(const std::filesystem::path& dir, const environment::Environment& environment,
                    const std::vector<Eigen::Vector3d>& route_m) {
@@ -42,4 +42,4 @@ void writeMapViews(const std::filesystem::path& dir, const environment::Environm
   });
 }
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

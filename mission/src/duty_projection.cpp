@@ -1,6 +1,6 @@
-#include "duty_projection.hpp"
+#include "ceilplan/mission/duty_projection.hpp"
 
-namespace ceilplan::app {
+namespace ceilplan::mission {
 
 battery::LoadProfile dischargeProfile(const std::vector<planner::PathSample>& samples) {
   battery::LoadProfile profile;
@@ -25,4 +25,4 @@ battery::LoadProfile flightProfile(const planner::PathEvaluation& evaluation, in
   return profile;
 }
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::mission

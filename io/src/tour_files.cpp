@@ -1,15 +1,15 @@
-#include "tour_output.hpp"
+#include "ceilplan/io/tour_files.hpp"
 
-#include "map_views.hpp"
-#include "output.hpp"
-#include "plan_output.hpp"
+#include "ceilplan/io/map_views.hpp"
+#include "ceilplan/io/atomic_file.hpp"
+#include "ceilplan/io/plan_files.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
 #include <sstream>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 namespace {
 
 std::string format(const char* pattern, double value) {
@@ -20,13 +20,13 @@ std::string format(const char* pattern, double value) {
 
 double reductionPct(double with, double without) { return without != 0.0 ? 100.0 * (1.0 - with / without) : 0.0; }
 
-double tourDuration_s(const TourResult& tour) { return tour.plan.flight_s; }
+double tourDuration_s(const mission::TourResult& tour) { return tour.plan.flight_s; }
 
 }  // namespace
 
-nlohmann::json tourJson(const TourResult& tour) {
+nlohmann::json tourJson(const mission::TourResult& tour) {
   nlohmann::json json;
-  json["mode"] = tour.mode;
+  json["mode"] = mission::flightModeName(tour.mode);
   json["seed"] = tour.options.seed;
   json["planner"] = tour.options.planner;
   json["ageing_model"] = tour.plan.ageing_model;
@@ -36,7 +36,7 @@ nlohmann::json tourJson(const TourResult& tour) {
   for (const mission::Sortie& sortie : tour.plan.sorties) visited += static_cast<int>(sortie.targets.size());
   json["targets_visited"] = visited;
   nlohmann::json targets = nlohmann::json::array();
-  for (const TourStop& stop : tour.stops) {
+  for (const mission::TourStop& stop : tour.stops) {
     const mission::Viewpoint& v = stop.viewpoint;
     targets.push_back({{"name", stop.target.name},
                        {"point", waypointsJson({stop.target.point_m})[0]},
@@ -54,7 +54,7 @@ nlohmann::json tourJson(const TourResult& tour) {
     nlohmann::json names = nlohmann::json::array(), legs = nlohmann::json::array();
     for (int k : sortie.targets) names.push_back(tour.names[k]);
     for (const mission::SortieLeg& leg : sortie.legs) {
-      const TourLeg& flown = tour.legs[leg.from][leg.to];
+      const mission::TourLeg& flown = tour.legs[leg.from][leg.to];
       legs.push_back({{"from", tour.names[leg.from]},
                       {"to", tour.names[leg.to]},
                       {"charge_ah", leg.charge_ah},
@@ -93,7 +93,7 @@ nlohmann::json tourJson(const TourResult& tour) {
   return json;
 }
 
-void writeTourPathCsv(const std::filesystem::path& file, const TourResult& tour) {
+void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour) {
   writeTextAtomically(file, [&](std::ostream& out) {
     out << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie\n" << std::setprecision(9);
     double t0 = 0.0;
@@ -109,11 +109,11 @@ void writeTourPathCsv(const std::filesystem::path& file, const TourResult& tour)
   });
 }
 
-std::vector<io::AutopilotMission> autopilotMissions(const TourResult& tour, const MissionFile& mission, io::Autopilot autopilot) {
+std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour, const mission::Mission& mission, Autopilot autopilot) {
   const mission::GeodeticOrigin& origin = mission.requireOrigin();
-  std::vector<io::AutopilotMission> missions;
+  std::vector<AutopilotMission> missions;
   for (const mission::Sortie& sortie : tour.plan.sorties) {
-    io::AutopilotMission m;
+    AutopilotMission m;
     m.home_m = mission.home_m;
     m.origin = origin;
     m.autopilot = autopilot;
@@ -129,8 +129,8 @@ std::vector<io::AutopilotMission> autopilotMissions(const TourResult& tour, cons
   return missions;
 }
 
-void writeTourDirectory(const std::filesystem::path& dir, const TourResult& tour, const MissionFile& mission,
-                        const environment::Environment& environment, std::optional<io::Autopilot> autopilot) {
+void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour, const mission::Mission& mission,
+                        const environment::Environment& environment, std::optional<Autopilot> autopilot) {
   writeTextAtomically(dir / "tour.json", [&](std::ostream& out) { out << std::setw(2) << tourJson(tour) << '\n'; });
   writeTourPathCsv(dir / "path.csv", tour);
   std::vector<Eigen::Vector3d> route;
@@ -138,15 +138,15 @@ void writeTourDirectory(const std::filesystem::path& dir, const TourResult& tour
     for (const planner::PathSample& s : samples) route.push_back(s.position_m);
   writeMapViews(dir, environment, route);
   if (!autopilot) return;
-  const std::vector<io::AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
+  const std::vector<AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
   const int count = static_cast<int>(missions.size());
   for (int k = 0; k < count; ++k) {
-    io::writeQgcPlan(io::sortieFileName(dir / "mission.plan", k + 1, count), missions[k]);
-    io::writeQgcWpl(io::sortieFileName(dir / "mission.waypoints", k + 1, count), missions[k]);
+    writeQgcPlan(sortieFileName(dir / "mission.plan", k + 1, count), missions[k]);
+    writeQgcWpl(sortieFileName(dir / "mission.waypoints", k + 1, count), missions[k]);
   }
 }
 
-std::string comparisonTable(const TourResult& ceiling, const TourResult& free) {
+std::string comparisonTable(const mission::TourResult& ceiling, const mission::TourResult& free) {
   std::ostringstream out;
   char line[200];
   const auto row = [&](const std::string& label, double c, double f, const char* pattern, bool with_reduction) {
@@ -175,15 +175,15 @@ std::string comparisonTable(const TourResult& ceiling, const TourResult& free) {
   return out.str();
 }
 
-nlohmann::json comparisonJson(const TourResult& ceiling, const TourResult& free) {
+nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free) {
   nlohmann::json json;
-  for (const TourResult* tour : {&ceiling, &free}) {
+  for (const mission::TourResult* tour : {&ceiling, &free}) {
     const nlohmann::json full = tourJson(*tour);
     nlohmann::json entry;
     for (const char* key : {"targets_total", "targets_visited", "charge_ah", "duration_s", "fec", "min_soc", "wear", "duty"})
       entry[key] = full[key];
     entry["sorties"] = tour->plan.sorties.size();
-    json[tour->mode] = entry;
+    json[mission::flightModeName(tour->mode)] = entry;
   }
   nlohmann::json reduction = {{"charge", reductionPct(ceiling.plan.charge_ah, free.plan.charge_ah)},
                               {"duration", reductionPct(tourDuration_s(ceiling), tourDuration_s(free))},
@@ -198,11 +198,23 @@ nlohmann::json comparisonJson(const TourResult& ceiling, const TourResult& free)
   return json;
 }
 
-std::string tourSummary(const TourResult& tour) {
+void writeTourComparison(const std::filesystem::path& dir, const mission::TourResult& ceiling,
+                         const mission::TourResult& free, const environment::Environment& environment) {
+  std::vector<Eigen::Vector3d> routes;
+  for (const mission::TourResult* tour : {&ceiling, &free})
+    for (const auto& samples : tour->sortie_samples)
+      for (const planner::PathSample& sample : samples) routes.push_back(sample.position_m);
+  writeMapViews(dir, environment, routes);
+  writeTextAtomically(dir / "comparison.txt", [&](std::ostream& stream) { stream << comparisonTable(ceiling, free); });
+  writeTextAtomically(dir / "comparison.json",
+                      [&](std::ostream& stream) { stream << std::setw(2) << comparisonJson(ceiling, free) << '\n'; });
+}
+
+std::string tourSummary(const mission::TourResult& tour) {
   std::ostringstream out;
   char line[400];
   std::snprintf(line, sizeof line, "%s mode: %zu targets, order by %s (seed %llu), %zu sortie(s) split for least %s wear\n",
-                tour.mode.c_str(), tour.stops.size(), tour.order.method.c_str(),
+                mission::flightModeName(tour.mode).c_str(), tour.stops.size(), tour.order.method.c_str(),
                 static_cast<unsigned long long>(tour.order.seed), tour.plan.sorties.size(), tour.plan.ageing_model.c_str());
   out << line;
   for (std::size_t k = 0; k < tour.plan.sorties.size(); ++k) {
@@ -219,4 +231,4 @@ std::string tourSummary(const TourResult& tour) {
   return out.str();
 }
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

@@ -3,6 +3,8 @@
 
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
+#include "ceilplan/environment/environment.hpp"
+#include "ceilplan/mission/route_planning.hpp"
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -10,7 +12,7 @@
 #include <filesystem>
 #include <vector>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 
 // length_m, duration_s, charge_ah, energy_wh, fec, mean_current_a, min_soc, min_clearance_m,
 // min_ceiling_gap_m (null: no ceiling), time_under_ceiling_s.
@@ -28,4 +30,16 @@ void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanRes
 // One line of figures for a terminal.
 std::string figuresLine(const planner::PathEvaluation& evaluation);
 
-}  // namespace ceilplan::app
+// Both modes side by side with the duty projection, as `ceilplan compare` prints it.
+std::string routeComparisonTable(const mission::RouteComparison& comparison, const mission::DutyOptions& duty,
+                                 const mission::BatterySpec& battery);
+// compare.json: `extra`'s keys, the duty settings, each mode's figures, cost and duty, and the
+// reductions in percent.
+nlohmann::json routeComparisonJson(const mission::RouteComparison& comparison, const mission::DutyOptions& duty,
+                                   const nlohmann::json& extra);
+// DIR/compare.json, DIR/ceiling/ and DIR/free/ (plan directories) and the map views of both routes.
+void writeRouteComparison(const std::filesystem::path& dir, const mission::RouteComparison& comparison,
+                          const mission::DutyOptions& duty, const nlohmann::json& extra,
+                          const environment::Environment& environment);
+
+}  // namespace ceilplan::io

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <vector>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 
 // DIR/map_top.csv (x_m,y_m,ceiling_m: seen from above, the height of the structure over the
 // route) and DIR/map_side.csv (x_m,z_m: from the side, occupied voxels within 1 m of the
@@ -16,4 +16,4 @@ namespace ceilplan::app {
 void writeMapViews(const std::filesystem::path& dir, const environment::Environment& environment,
                    const std::vector<Eigen::Vector3d>& route_m);
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 
 inline nlohmann::json finiteOrNull(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

@@ -1,12 +1,10 @@
 // A 20-target inspection tour on the shipped bridge, end to end as `ceilplan tour --mode
-// ceiling` runs it: map indexing, viewpoints, 210 legs planned on two threads (BIT*, the
+// ceiling` runs it: map indexing, viewpoints, 210 legs planned on two threads (the shared roadmap, the
 // command's defaults), order, sorties, wear and duty projection. The bridge mission's 13
 // targets plus 7 more deck bays. Target: under 60 s on the 2-core machine.
 
-#include "mission_file.hpp"
-#include "planning_setup.hpp"
-#include "tour_run.hpp"
-
+#include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/mission/tour_planner.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 
 #include <benchmark/benchmark.h>
@@ -15,8 +13,8 @@ namespace {
 
 using namespace ceilplan;
 
-app::MissionFile twentyTargetBridge() {
-  app::MissionFile mission = app::readMissionFile(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.yaml");
+mission::Mission twentyTargetBridge() {
+  mission::Mission mission = io::readMission(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.yaml");
   const double bays[][2] = {{10.0, 0.0}, {18.0, 0.0}, {26.0, 0.0}, {34.0, 0.0}, {42.0, 0.0}, {18.0, -2.8}, {42.0, 2.8}};
   for (const auto& bay : bays) {
     mission::InspectionTarget target;
@@ -29,13 +27,13 @@ app::MissionFile twentyTargetBridge() {
 }
 
 void BM_TwentyTargetBridgeTour(benchmark::State& state) {
-  const app::MissionFile mission = twentyTargetBridge();
+  const mission::Mission mission = twentyTargetBridge();
   planner::seedOmpl(1);
-  app::TourOptions options;
+  mission::TourOptions options;
   options.seed = 1;
   for (auto _ : state) {
-    const app::PlanningSetup setup(app::planningArguments(mission));
-    const app::TourResult tour = app::planTour(mission, setup, app::PlanningMode::Ceiling, options);
+    const mission::PlanningContext context(mission);
+    const mission::TourResult tour = mission::planTour(mission, context, mission::FlightMode::Ceiling, options);
     state.counters["targets"] = static_cast<double>(tour.stops.size());
     state.counters["sorties"] = static_cast<double>(tour.plan.sorties.size());
     state.counters["charge_ah"] = tour.plan.charge_ah;

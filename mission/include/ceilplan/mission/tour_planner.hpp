@@ -3,24 +3,24 @@
 // (home and the viewpoints), the visiting order, the sorties, the flown samples, the wear under
 // every ageing model and the founding paper's month-long duty projection. docs/tours.md.
 
-#include "mission_file.hpp"
-#include "planning_setup.hpp"
-#include "tour_legs.hpp"
-
 #include "ceilplan/battery/duty_cycle.hpp"
+#include "ceilplan/core/progress.hpp"
+#include "ceilplan/mission/flight_mode.hpp"
+#include "ceilplan/mission/mission.hpp"
+#include "ceilplan/mission/planning_context.hpp"
 #include "ceilplan/mission/sortie_plan.hpp"
+#include "ceilplan/mission/tour_legs.hpp"
 #include "ceilplan/mission/tour_order.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace ceilplan::app {
+namespace ceilplan::mission {
 
 struct TourOptions {
-  std::uint64_t seed = 1;               // the order heuristic's; OMPL's when an OMPL planner plans the legs
+  std::uint32_t seed = 1;               // the order heuristic's; OMPL's when an OMPL planner plans the legs
   // The leg planner: "roadmap" (the default) searches one lattice roadmap from each place,
   // deterministic; OMPL's planners and "lattice" (A*) search each pair of places.
   std::string planner = "roadmap";
@@ -36,39 +36,38 @@ struct TourOptions {
   int days = 30;
   double idle_min = 5.0;
   double charge_max_min = 60.0;  // per sortie, back to the start SOC
+  ProgressCallback progress;     // stages: the roadmap, routing, refining
 };
 
 struct TourStop {
-  mission::InspectionTarget target;  // its standoff range as searched in this mode
-  mission::Viewpoint viewpoint;
+  InspectionTarget target;  // its standoff range as searched in this mode
+  Viewpoint viewpoint;
 };
 
 struct TourResult {
-  std::string mode;
+  FlightMode mode = FlightMode::Ceiling;
   TourOptions options;
   std::vector<std::string> names;             // places: 0 home, k the target of stops[k - 1]
   std::vector<Eigen::Vector3d> places_m;
   std::vector<TourStop> stops;
   std::vector<std::vector<TourLeg>> legs;     // legs[i][j], i != j
-  mission::TourOrder order;
-  mission::SortiePlan plan;
+  TourOrder order;
+  SortiePlan plan;
   // Per sortie, the flown samples from take-off (dwells included, as hovering samples), the
   // SOC counted from the start SOC over the sortie's own samples.
   std::vector<std::vector<planner::PathSample>> sortie_samples;
-  std::vector<mission::PlanWear> wear;        // fec, xu, woehler, schmalstieg
+  std::vector<PlanWear> wear;        // fec, xu, woehler, schmalstieg
   battery::DutyResult duty;
   double start_soc = 0.0;
   double reserve_soc = 0.0;
 };
 
-// The planning flags a mission file stands for: its map, vehicle, battery and speeds.
-PlanningArguments planningArguments(const MissionFile& mission);
-
-// Throws ceilplan::InputError for invalid home or a target without a viewpoint (named),
-// NoPathError for a leg without a path (naming both places), ceilplan::InputError from
-// planSorties for a target no single sortie can reach and return from, std::runtime_error if a
+// Plans the mission's tour in one mode with the context's map, vehicle and battery. Throws
+// ceilplan::InputError for an invalid home or a target without a viewpoint (named),
+// ceilplan::NoPathError for a leg without a path (naming both places), ceilplan::InputError
+// from planSorties for a target no single sortie can reach and return from, ceilplan::Error if a
 // leg fails the dense re-check.
-TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, PlanningMode mode,
-                    const TourOptions& options);
+TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,
+                    const TourOptions& options = {});
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::mission

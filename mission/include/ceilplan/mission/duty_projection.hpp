@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace ceilplan::app {
+namespace ceilplan::mission {
 
 // Discharge segments of at most a second each over `samples` (in time order; coulomb counting
 // is linear, so merging keeps charge and FEC exact).
@@ -16,4 +16,4 @@ battery::LoadProfile dischargeProfile(const std::vector<planner::PathSample>& sa
 // The evaluation's profile, repeated `repeats` times.
 battery::LoadProfile flightProfile(const planner::PathEvaluation& evaluation, int repeats);
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::mission
