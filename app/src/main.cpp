@@ -2,6 +2,7 @@
 #include "errors.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/version.hpp"
 #include "yaml_config.hpp"
 
 #include <CLI/CLI.hpp>
@@ -17,7 +18,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.config_formatter(std::make_shared<YamlConfig>(app));
   app.set_config("--config", "", "YAML file whose keys are the chosen command's long flag names");
-  app.set_version_flag("--version", "ceilplan 0.1.0");
+  app.set_version_flag("--version", ceilplan::buildInformation());
   addRegisteredCommands(app);
   try {
     app.parse(argc, argv);

@@ -3,6 +3,7 @@
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/spelling.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/ageing_rates.hpp"
 
@@ -106,9 +107,13 @@ const environment::Environment& PlanningContext::standoffEnvironment() const {
   return *standoff_environment_;
 }
 
-planner::ObjectiveChoice PlanningContext::objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const {
+planner::ObjectiveChoice PlanningContext::objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m,
+                                                    const std::string& name) const {
   planner::ObjectiveChoice choice;
-  choice.name = options_.objective;
+  choice.name = name.empty() ? options_.objective : name;
+  const auto& names = planner::objectiveNames();
+  if (std::find(names.begin(), names.end(), choice.name) == names.end())
+    throw InputError("unknown objective '" + choice.name + "'" + didYouMean(choice.name, names));
   choice.nominal_capacity_ah = battery_.pack.capacity_ah;
   if (choice.name != "ageing") return choice;
   // The route's expected depth of discharge: the straight line's charge under the full model

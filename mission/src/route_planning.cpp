@@ -33,11 +33,12 @@ battery::DutyResult projectDuty(const PlanningContext& context, const RoutePlan&
 
 }  // namespace
 
-RoutePlan planRoute(const PlanningContext& context, FlightMode mode, const planner::PlanRequest& request) {
+RoutePlan planRoute(const PlanningContext& context, FlightMode mode, const planner::PlanRequest& request,
+                    const std::string& objective) {
   RoutePlan route;
   route.mode = mode;
   const PlanningContext::Mode planning = context.mode(mode, request.start_m, request.goal_m);
-  route.objective = context.objective(request.start_m, request.goal_m);
+  route.objective = context.objective(request.start_m, request.goal_m, objective);
   const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, route.objective);
   route.cost_unit = flight_planner.objective().unit();
   route.plan = flight_planner.plan(request);

@@ -76,8 +76,10 @@ class PlanningContext {
   // on first use; call it once before sharing the context between threads.
   const environment::Environment& standoffEnvironment() const;
 
-  // The objective, with ageing rates measured for the route's expected depth of discharge.
-  planner::ObjectiveChoice objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
+  // The objective (the options', or `name`), with ageing rates measured for the route's
+  // expected depth of discharge. Throws ceilplan::InputError for an unknown name.
+  planner::ObjectiveChoice objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m,
+                                     const std::string& name = {}) const;
 
  private:
   PlanningOptions options_;

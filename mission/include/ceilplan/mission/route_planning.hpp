@@ -26,9 +26,11 @@ struct RoutePlan {
   std::string cost_unit;               // of plan.cost
 };
 
-// Plans from request.start_m to request.goal_m. Throws ceilplan::InputError for a bad request
-// (start or goal outside the map or not valid), ceilplan::NoPathError when no path is found.
-RoutePlan planRoute(const PlanningContext& context, FlightMode mode, const planner::PlanRequest& request);
+// Plans from request.start_m to request.goal_m under `objective` (empty: the context's).
+// Throws ceilplan::InputError for a bad request (start or goal outside the map or not valid),
+// ceilplan::NoPathError when no path is found.
+RoutePlan planRoute(const PlanningContext& context, FlightMode mode, const planner::PlanRequest& request,
+                    const std::string& objective = {});
 
 struct RouteCheck {
   planner::PathEvaluation evaluation;

@@ -1,0 +1,30 @@
+#pragma once
+// Everything ceilplan offers a program, in one header (target ceilplan::ceilplan).
+
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/core/version.hpp"
+
+#include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/battery/duty_cycle.hpp"
+#include "ceilplan/battery/lifetime.hpp"
+#include "ceilplan/battery/rainflow.hpp"
+
+#include "ceilplan/energy/energy_model.hpp"
+
+#include "ceilplan/environment/environment.hpp"
+#include "ceilplan/environment/occupancy_map.hpp"
+
+#include "ceilplan/planner/flight_planner.hpp"
+#include "ceilplan/planner/path_evaluation.hpp"
+
+#include "ceilplan/mission/mission.hpp"
+#include "ceilplan/mission/planning_context.hpp"
+#include "ceilplan/mission/route_planning.hpp"
+#include "ceilplan/mission/tour_planner.hpp"
+
+#include "ceilplan/io/autopilot_export.hpp"
+#include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/tour_files.hpp"
+#include "ceilplan/io/vehicle_file.hpp"

@@ -1,0 +1,305 @@
+// The `ceilplan` Python module: the library's maps, vehicles, routes and tours with numpy arrays
+// for samples. docs/python.md walks through a session.
+
+#include "ceilplan/ceilplan.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+using namespace ceilplan;
+
+namespace {
+
+// A map indexed for a vehicle and a battery: what plans and evaluations run against.
+struct PyEnvironment {
+  std::shared_ptr<const mission::PlanningContext> context;
+};
+
+struct PyMission {
+  mission::Mission mission;
+};
+
+// A planned tour, with what writing its files needs.
+struct PyTour {
+  mission::TourResult tour;
+  std::shared_ptr<const mission::Mission> mission;
+  std::shared_ptr<const mission::PlanningContext> context;
+};
+
+double noneAsInfinity(const std::optional<double>& value) { return value ? *value : energy::kNoSurface; }
+py::object infinityAsNone(double value) { return std::isfinite(value) ? py::object(py::float_(value)) : py::none(); }
+
+Eigen::Vector3d point(const std::vector<double>& xyz, const char* what) {
+  if (xyz.size() != 3) throw InputError(std::string(what) + " must be (x, y, z) in metres");
+  return {xyz[0], xyz[1], xyz[2]};
+}
+
+environment::EnvironmentOptions unknownPolicy(const std::string& unknown) {
+  environment::EnvironmentOptions options;
+  if (unknown == "occupied") return options;
+  if (unknown == "free") {
+    options.unknown_is_occupied = false;
+    return options;
+  }
+  throw InputError("unknown space policy '" + unknown + "': choose occupied or free");
+}
+
+py::dict gapsDict(const environment::SurfaceGaps& gaps) {
+  py::dict d;
+  d["nearest_gap_m"] = infinityAsNone(gaps.nearest_gap_m);
+  d["coverage"] = gaps.coverage;
+  d["mean_gap_m"] = infinityAsNone(gaps.mean_gap_m);
+  return d;
+}
+
+// Columns of samples as numpy arrays: t_s, x, y, z, current_a, soc (and speed, gaps).
+py::dict sampleArrays(const std::vector<std::vector<planner::PathSample>>& sorties, const std::vector<double>& offsets_s) {
+  std::size_t n = 0;
+  for (const auto& samples : sorties) n += samples.size();
+  py::array_t<double> t(n), x(n), y(n), z(n), speed(n), gap(n), current(n), soc(n);
+  py::array_t<int> sortie(n);
+  std::size_t k = 0;
+  for (std::size_t s = 0; s < sorties.size(); ++s)
+    for (const planner::PathSample& sample : sorties[s]) {
+      t.mutable_at(k) = offsets_s[s] + sample.t_s;
+      x.mutable_at(k) = sample.position_m.x();
+      y.mutable_at(k) = sample.position_m.y();
+      z.mutable_at(k) = sample.position_m.z();
+      speed.mutable_at(k) = sample.speed_m_s;
+      gap.mutable_at(k) = std::isfinite(sample.ceiling_gap_m) ? sample.ceiling_gap_m : std::nan("");
+      current.mutable_at(k) = sample.current_a;
+      soc.mutable_at(k) = sample.soc;
+      sortie.mutable_at(k) = static_cast<int>(s) + 1;
+      ++k;
+    }
+  py::dict d;
+  d["t_s"] = t;
+  d["x"] = x;
+  d["y"] = y;
+  d["z"] = z;
+  d["speed_m_s"] = speed;
+  d["ceiling_gap_m"] = gap;
+  d["current_a"] = current;
+  d["soc"] = soc;
+  d["sortie"] = sortie;
+  return d;
+}
+
+py::dict evaluationDict(const planner::PathEvaluation& e) {
+  py::dict d;
+  d["length_m"] = e.length_m;
+  d["duration_s"] = e.duration_s;
+  d["charge_ah"] = e.charge_ah;
+  d["energy_wh"] = e.energy_wh;
+  d["fec"] = e.fec;
+  d["mean_current_a"] = e.mean_current_a;
+  d["min_soc"] = e.min_soc;
+  d["min_clearance_m"] = infinityAsNone(e.min_clearance_m);
+  d["min_ceiling_gap_m"] = infinityAsNone(e.min_ceiling_gap_m);
+  d["time_under_ceiling_s"] = e.time_under_ceiling_s;
+  d["samples"] = sampleArrays({e.samples}, {0.0});
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(ceilplan, m) {
+  m.doc() = "ceilplan: battery-wear-aware inspection planning for multirotors flying under ceilings";
+  m.attr("__version__") = kVersion;
+
+  // The library's error hierarchy; pybind11 tries translators newest first, so the base goes first.
+  // InputError is also a ValueError, as Python code expects of bad arguments.
+  const py::exception<Error> error(m, "Error", PyExc_RuntimeError);
+  const py::exception<InfeasibleError> infeasible(m, "InfeasibleError", error);
+  py::register_exception<NoPathError>(m, "NoPathError", infeasible);
+  py::register_exception<InputError>(m, "InputError", py::make_tuple(error, py::handle(PyExc_ValueError)));
+
+  py::class_<mission::Vehicle>(m, "Vehicle", "A multirotor: its shape and its energy model")
+      .def_static("default", &mission::Vehicle::defaultQuad, "The built-in quadrotor (maps/vehicles/quad.yaml)")
+      .def_static("load", [](const std::filesystem::path& file) { return io::readVehicle(file); }, py::arg("path"))
+      .def_readonly("name", &mission::Vehicle::name)
+      .def(
+          "current_a",
+          [](const mission::Vehicle& vehicle, std::optional<double> ceiling_gap_m, double coverage,
+             std::optional<double> ground_gap_m, double speed_m_s, double climb_m_s, std::optional<double> soc) {
+            const energy::EnergyModel model(vehicle.energy);
+            energy::FlightCondition flight;
+            flight.ground_gap_m = noneAsInfinity(ground_gap_m);
+            flight.speed_m_s = speed_m_s;
+            flight.climb_m_s = climb_m_s;
+            flight.soc = soc.value_or(vehicle.energy.reference_soc);
+            return model.currentA(noneAsInfinity(ceiling_gap_m), coverage, flight);
+          },
+          "Pack current (A); a gap of None is free air", py::arg("ceiling_gap_m") = py::none(), py::arg("coverage") = 1.0,
+          py::arg("ground_gap_m") = py::none(), py::arg("speed_m_s") = 0.0, py::arg("climb_m_s") = 0.0,
+          py::arg("soc") = py::none());
+
+  py::class_<PyEnvironment>(m, "Environment", "A map indexed for a vehicle and a battery")
+      .def_static(
+          "load",
+          [](const std::filesystem::path& path, std::optional<mission::Vehicle> vehicle,
+             std::optional<std::filesystem::path> battery, const std::string& unknown) {
+            mission::PlanningOptions options;
+            options.environment = unknownPolicy(unknown);
+            return PyEnvironment{std::make_shared<mission::PlanningContext>(
+                environment::OccupancyMap::load(path), vehicle.value_or(mission::Vehicle::defaultQuad()),
+                battery ? io::readBattery(*battery) : mission::BatterySpec{}, options)};
+          },
+          py::arg("path"), py::arg("vehicle") = py::none(), py::arg("battery") = py::none(),
+          py::arg("unknown") = "occupied")
+      .def(
+          "probe",
+          [](const PyEnvironment& self, double x, double y, double z) {
+            const environment::Environment& environment = self.context->environment();
+            const Eigen::Vector3d body(x, y, z);
+            py::dict d;
+            d["ceiling"] = gapsDict(environment.ceiling(body));
+            d["ground"] = gapsDict(environment.ground(body));
+            d["clearance_m"] = infinityAsNone(environment.clearance_m(body));
+            const auto violation = environment.stateViolation(body);
+            d["valid"] = !violation;
+            d["violation"] = violation ? py::object(py::str(violation->describe())) : py::none();
+            return d;
+          },
+          "Gaps above and below each rotor, clearance and validity with the body centre at (x, y, z)", py::arg("x"),
+          py::arg("y"), py::arg("z"))
+      .def_property_readonly("resolution_m", [](const PyEnvironment& self) { return self.context->map().resolution_m(); });
+
+  m.def(
+      "plan",
+      [](const PyEnvironment& env, const std::vector<double>& start, const std::vector<double>& goal,
+         const std::string& mode, const std::string& objective, const std::string& planner, double time_limit_s,
+         std::uint32_t seed) {
+        planner::seedOmpl(seed);  // only the first seed of a process takes effect (OMPL's generators)
+        planner::PlanRequest request;
+        request.start_m = point(start, "start");
+        request.goal_m = point(goal, "goal");
+        request.planner = planner;
+        request.time_limit_s = time_limit_s;
+        const mission::FlightMode flight_mode = mission::flightModeFromName(mode);
+        const mission::RoutePlan route = [&] {
+          py::gil_scoped_release release;
+          return mission::planRoute(*env.context, flight_mode, request, objective);
+        }();
+        py::dict d = evaluationDict(route.evaluation);
+        std::vector<std::vector<double>> waypoints;
+        for (const Eigen::Vector3d& p : route.plan.waypoints) waypoints.push_back({p.x(), p.y(), p.z()});
+        d["waypoints"] = waypoints;
+        d["cost"] = route.plan.cost;
+        d["cost_unit"] = route.cost_unit;
+        d["planner"] = route.plan.planner;
+        d["seed"] = seed;
+        return d;
+      },
+      "Plans one route; figures from the full model", py::arg("env"), py::arg("start"), py::arg("goal"),
+      py::arg("mode") = "ceiling", py::arg("objective") = "charge", py::arg("planner") = "", py::arg("time_limit_s") = 5.0,
+      py::arg("seed") = 1u);
+
+  m.def(
+      "evaluate",
+      [](const PyEnvironment& env, const std::vector<std::vector<double>>& path) {
+        std::vector<Eigen::Vector3d> waypoints;
+        for (const auto& p : path) waypoints.push_back(point(p, "path point"));
+        const mission::RouteCheck check = mission::checkRoute(*env.context, waypoints);
+        py::dict d = evaluationDict(check.evaluation);
+        d["valid"] = !check.violation;
+        d["violation"] = check.violation ? py::object(py::str(*check.violation)) : py::none();
+        d["cost"] = check.cost;
+        return d;
+      },
+      "Figures and safety (dense re-check) of any path of (x, y, z) points", py::arg("env"), py::arg("path"));
+
+  py::class_<PyMission>(m, "Mission", "An inspection mission file (docs/missions.md)")
+      .def_static("load", [](const std::filesystem::path& path) { return PyMission{io::readMission(path)}; }, py::arg("path"))
+      .def_property_readonly("targets",
+                             [](const PyMission& self) {
+                               std::vector<std::string> names;
+                               for (const auto& target : self.mission.targets) names.push_back(target.name);
+                               return names;
+                             })
+      .def_property_readonly("vehicle", [](const PyMission& self) { return self.mission.vehicle; })
+      .def_property_readonly("seed", [](const PyMission& self) { return self.mission.seed; });
+
+  py::class_<PyTour>(m, "Tour", "An inspection tour in one mode")
+      .def_property_readonly("mode", [](const PyTour& t) { return mission::flightModeName(t.tour.mode); })
+      .def_property_readonly("charge_ah", [](const PyTour& t) { return t.tour.plan.charge_ah; })
+      .def_property_readonly("fec", [](const PyTour& t) { return t.tour.plan.fec; })
+      .def_property_readonly("min_soc", [](const PyTour& t) { return t.tour.plan.min_soc; })
+      .def_property_readonly("duration_s", [](const PyTour& t) { return t.tour.plan.flight_s; })
+      .def_property_readonly("sorties",
+                             [](const PyTour& t) {
+                               py::list list;
+                               for (const mission::Sortie& sortie : t.tour.plan.sorties) {
+                                 py::dict d;
+                                 std::vector<std::string> names;
+                                 for (int k : sortie.targets) names.push_back(t.tour.names[k]);
+                                 d["targets"] = names;
+                                 d["charge_ah"] = sortie.charge_ah;
+                                 d["dod"] = sortie.dod;
+                                 d["duration_s"] = sortie.flight_s;
+                                 d["min_soc"] = sortie.lowest_soc;
+                                 d["reason"] = sortie.reason;
+                                 list.append(d);
+                               }
+                               return list;
+                             })
+      .def_property_readonly("wear",
+                             [](const PyTour& t) {
+                               py::dict d;
+                               for (const mission::PlanWear& w : t.tour.wear) {
+                                 py::dict entry;
+                                 entry["wear_name"] = w.wear_name;
+                                 entry["cycle_wear"] = w.cycle_wear;
+                                 entry["capacity_loss"] = w.capacity_loss;
+                                 d[py::str(w.model)] = entry;
+                               }
+                               return d;
+                             })
+      .def_property_readonly("samples",
+                             [](const PyTour& t) {
+                               std::vector<double> offsets;
+                               double t0 = 0.0;
+                               for (const mission::Sortie& sortie : t.tour.plan.sorties) {
+                                 offsets.push_back(t0);
+                                 t0 += sortie.flight_s + sortie.recharge_s;
+                               }
+                               return sampleArrays(t.tour.sortie_samples, offsets);
+                             })
+      .def(
+          "write",
+          [](const PyTour& t, const std::filesystem::path& dir, bool export_autopilot) {
+            std::optional<io::Autopilot> autopilot;
+            if (export_autopilot) autopilot = io::Autopilot::PX4;
+            io::writeTourDirectory(dir, t.tour, *t.mission, t.context->environment(), autopilot);
+          },
+          "Writes tour.json, path.csv, map views and (with an origin) mission.plan and mission.waypoints, as `ceilplan tour`",
+          py::arg("dir"), py::arg("autopilot") = true);
+
+  m.def(
+      "plan_tour",
+      [](const PyMission& mission, const std::string& mode, std::optional<std::uint32_t> seed, const std::string& planner,
+         const std::string& ageing_model) {
+        auto shared_mission = std::make_shared<const mission::Mission>(mission.mission);
+        mission::TourOptions options;
+        options.seed = seed.value_or(mission.mission.seed);
+        options.planner = planner;
+        options.ageing_model = ageing_model;
+        const mission::FlightMode flight_mode = mission::flightModeFromName(mode);
+        py::gil_scoped_release release;
+        auto context = std::make_shared<const mission::PlanningContext>(*shared_mission);
+        if (flight_mode == mission::FlightMode::Free) context->standoffEnvironment();
+        mission::TourResult tour = mission::planTour(*shared_mission, *context, flight_mode, options);
+        return PyTour{std::move(tour), shared_mission, context};
+      },
+      "Plans the mission's tour in one mode, as `ceilplan tour` does", py::arg("mission"), py::arg("mode") = "ceiling",
+      py::arg("seed") = py::none(), py::arg("planner") = "roadmap", py::arg("ageing_model") = "xu");
+}

@@ -1,0 +1,79 @@
+"""The Python module as a user's script meets it: vehicles, maps, routes and tours."""
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import ceilplan
+
+SOURCE = Path(os.environ["CEILPLAN_SOURCE_DIR"])
+MAPS = SOURCE / "maps"
+
+
+def test_default_vehicle_draws_the_founding_papers_currents():
+    quad = ceilplan.Vehicle.default()
+    assert quad.current_a() == pytest.approx(9.5, abs=1e-9)
+    assert quad.current_a(ceiling_gap_m=0.05) == pytest.approx(8.0, abs=1e-9)
+    assert quad.current_a(speed_m_s=5.0) != pytest.approx(9.5, abs=1e-3)
+
+
+def test_vehicle_file_and_built_in_vehicle_agree():
+    assert ceilplan.Vehicle.load(MAPS / "vehicles/quad.yaml").current_a(ceiling_gap_m=0.05) == pytest.approx(
+        ceilplan.Vehicle.default().current_a(ceiling_gap_m=0.05), abs=1e-12)
+
+
+@pytest.fixture(scope="module")
+def bridge():
+    return ceilplan.Environment.load(MAPS / "bridge.bt")
+
+
+def test_probe_under_the_deck(bridge):
+    # The deck's underside is at 6.0 m; rotor plane 3 cm above the body centre.
+    probe = bridge.probe(10.0, 0.0, 5.5)
+    assert probe["valid"]
+    assert probe["ceiling"]["nearest_gap_m"] == pytest.approx(6.0 - 5.53, abs=0.11)
+    assert probe["clearance_m"] > 0.0
+    assert bridge.probe(6.0, 0.0, 6.05)["valid"] is False  # inside the deck
+
+
+def test_plan_then_evaluate_the_same_route(bridge):
+    route = ceilplan.plan(bridge, (-4.0, 0.0, 0.5), (10.0, 0.0, 5.5), time_limit_s=1.0, seed=1)
+    assert len(route["waypoints"]) >= 2
+    assert route["charge_ah"] > 0.0
+    samples = route["samples"]
+    assert isinstance(samples["t_s"], np.ndarray) and samples["t_s"].shape == samples["soc"].shape
+    again = ceilplan.evaluate(bridge, route["waypoints"])
+    assert again["valid"]
+    assert again["charge_ah"] == pytest.approx(route["charge_ah"], rel=1e-12)
+
+
+def test_bad_input_raises_a_value_error(bridge):
+    with pytest.raises(ValueError, match="outside the map"):
+        ceilplan.plan(bridge, (1e6, 0, 0), (10.0, 0.0, 5.5), planner="lattice")
+    with pytest.raises(ceilplan.Error, match="not a valid state"):
+        ceilplan.plan(bridge, (6.0, 0.0, 6.05), (10.0, 0.0, 5.5), planner="lattice")
+    with pytest.raises(ceilplan.InputError):
+        ceilplan.Mission.load(MAPS / "nowhere.yaml")
+
+
+def test_tour_matches_the_command_line(tmp_path):
+    mission = ceilplan.Mission.load(MAPS / "bridge.yaml")
+    tour = ceilplan.plan_tour(mission, mode="ceiling")
+    out = tmp_path / "cli"
+    subprocess.run([os.environ["CEILPLAN_EXE"], "tour", "--mission", str(MAPS / "bridge.yaml"), "--mode", "ceiling",
+                    "--out", str(out), "--no-export"], check=True, capture_output=True)
+    cli = json.loads((out / "tour.json").read_text())
+    assert tour.charge_ah == pytest.approx(cli["charge_ah"], abs=1e-9)
+    assert tour.fec == pytest.approx(cli["fec"], abs=1e-12)
+    assert len(tour.sorties) == len(cli["sorties"])
+    assert set(tour.wear) == {"fec", "xu", "woehler", "schmalstieg"}
+    samples = tour.samples
+    assert np.all(np.diff(samples["t_s"]) >= 0.0)
+    assert samples["soc"][0] == pytest.approx(0.95)
+    tour.write(tmp_path / "py")
+    written = json.loads((tmp_path / "py" / "tour.json").read_text())
+    assert written["charge_ah"] == cli["charge_ah"]
