@@ -37,6 +37,9 @@ class RainflowCounter {
   std::vector<RainflowCycle> residue() const;
 
   std::size_t samplesSeen() const { return samples_seen_; }
+  // The index of the earliest sample a cycle counted from now on (closed later, or in the
+  // residue) can start at: nothing before it is needed any more.
+  std::size_t firstOpenIndex() const { return stack_.empty() ? candidate_.index : stack_.front().index; }
 
  private:
   struct TurningPoint {

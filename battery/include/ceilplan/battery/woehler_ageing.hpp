@@ -44,9 +44,11 @@ class WoehlerAgeingModel : public CycleAgeingModel {
   double closed_damage_ = 0.0;
 };
 
-// The founding paper's baseline: loss proportional to full equivalent cycles,
-// FEC = sum |dSOC| / 2 (section 5, as NREL BLAST-Lite; equal to section 1's
-// integral |i| dt / (2 C_nom) while SOH = 1), reaching end of life after N100 FEC.
+// The founding paper's baseline: loss proportional to full equivalent cycles counted against
+// the nominal capacity (Kocer et al. 2019, eq. 3-6: FEC = integral |i| dt / (2 C_nom)), reaching
+// end of life after N100 FEC. From an SOC history, FEC = sum |dSOC| SOH / 2, each swing weighted
+// by the state of health it happened at (the sum |dSOC| / 2 of NREL BLAST-Lite when SOH = 1), so
+// a faded pack counts the charge it really moves, not its deeper SOC swings.
 class FecAgeingModel : public AgeingModel {
  public:
   explicit FecAgeingModel(const WoehlerParameters& parameters = {});
