@@ -12,8 +12,8 @@ namespace ceilplan::battery {
 namespace {
 
 constexpr double kSecondsPerDay = 86400.0;
-constexpr double kCalendarExponent = 0.75;  // t^0.75 (section 5)
-constexpr double kCycleCapacityExponent = 0.5;  // sqrt(Q) (section 5)
+constexpr double kCalendarExponent = 0.75;  // t^0.75 (Schmalstieg et al. 2014)
+constexpr double kCycleCapacityExponent = 0.5;  // sqrt(Q) (Schmalstieg et al. 2014)
 constexpr double kLargestCellVoltage_v = 5.0;
 constexpr int kSimpsonIntervals = 8;  // even; V(SOC) is smooth enough over one swing
 

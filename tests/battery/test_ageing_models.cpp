@@ -1,5 +1,5 @@
-// The ageing models against the reference's derived values and hand-computed cases
-// (reference-models.md section 5).
+// The ageing models against values derived from their published constants and hand-computed
+// cases (docs/ageing.md).
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/core/error.hpp"
 
@@ -122,7 +122,7 @@ TEST(XuModel, CalendarTermUsesTimeAveragedSocAndTemperature) {
 }
 
 TEST(XuModel, PaperScenarioCycleDamageFallsMoreThanFec) {
-  // Section 5: with the ceiling effect Xu's cycle damage falls 18.2 %, the FEC 15.8 %.
+  // Derived from the published constants: with the ceiling effect Xu's cycle damage falls 18.2 %, the FEC 15.8 %.
   cb::XuAgeingModel free_flight, ceiling;
   free_flight.addSamples(missions(450, 0.341, 9.5));
   ceiling.addSamples(missions(450, 0.437, 8.0));

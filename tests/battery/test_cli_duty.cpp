@@ -141,7 +141,8 @@ TEST(CliDuty, ReportsEachAgeingModelPerCaseWithReductionsAndEndOfLife) {
   ASSERT_EQ(ceiling_models.size(), 4u);
   const auto& xu = ceiling_models[1];
   EXPECT_EQ(xu["model"], "xu");
-  // Reference-models.md section 5: Xu's cycle damage falls 18.2 % with the pack kept new.
+  // Derived from Xu et al. 2018's constants (docs/ageing.md): Xu's cycle damage falls 18.2 %
+  // with the pack kept new.
   EXPECT_NEAR(xu["wear_reduction_new_pack_pct"].get<double>(), 18.2, 0.05);
   EXPECT_NEAR(ceiling_models[0]["wear_reduction_new_pack_pct"].get<double>(), 100 * (1 - 8.0 / 9.5), 1e-6);
   for (const auto& model : ceiling_models) {

@@ -96,8 +96,8 @@ double cycleWearReduction(const std::string& model, bool feed_back_fade) {
 }
 
 TEST(Lifetime, XuCycleDamageFallsMoreThanFecUnderTheCeiling) {
-  // Reference-models.md section 5: for the paper's scenario (SOH held at 1), Xu's cycle damage
-  // falls 18.2 % against 15.8 % for FEC, because S_d is convex.
+  // Derived from Xu et al. 2018's constants (docs/ageing.md): for the paper's scenario (SOH
+  // held at 1), Xu's cycle damage falls 18.2 % against 15.8 % for FEC, because S_d is convex.
   EXPECT_NEAR(100 * cycleWearReduction("fec", false), 100 * (1 - 8.0 / 9.5), 1e-6);
   EXPECT_NEAR(100 * cycleWearReduction("xu", false), 18.2, 0.05);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The common interface of the battery-ageing models (reference-models.md section 5): a model
+// The common interface of the battery-ageing models (docs/ageing.md): a model
 // is fed a state-of-charge history piece by piece, in time order, and tells the fraction of
 // nominal capacity lost so far.
 

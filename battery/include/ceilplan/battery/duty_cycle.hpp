@@ -1,6 +1,6 @@
 #pragma once
 // A mission template (fly, idle, charge back) repeated N times a day for D days, as in the
-// founding paper's month-long study (reference-models.md section 1).
+// founding paper's month-long study (Kocer et al. 2019; docs/battery.md).
 
 #include "ceilplan/battery/load_profile.hpp"
 #include "ceilplan/battery/pack.hpp"

@@ -18,8 +18,8 @@ struct LifetimeOptions {
   double end_of_life_soh = 0.8;    // the usual data-sheet end of life
   int max_projection_days = 36500; // the projection gives up after this (100 years)
   double step_s = 0.0;             // 0 = exact
-  // false: the pack keeps its SOH whatever the model says (the reference's derivations, and the
-  // paper's SOH = 1); the wear is still counted.
+  // false: the pack keeps its SOH whatever the model says (as Xu et al. 2018 derive their
+  // figures, and the paper's SOH = 1); the wear is still counted.
   bool feed_back_fade = true;
   std::function<void(double fraction)> progress;
 

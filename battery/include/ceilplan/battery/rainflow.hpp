@@ -1,7 +1,7 @@
 #pragma once
 // Rainflow cycle counting per ASTM E1049-85 (section 5.4.4, "rainflow counting"), streaming:
 // a series fed piece by piece yields exactly the cycles it yields fed at once
-// (reference-models.md section 5).
+// (docs/ageing.md).
 
 #include "ceilplan/core/error.hpp"
 

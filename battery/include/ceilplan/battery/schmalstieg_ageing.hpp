@@ -1,8 +1,8 @@
 #pragma once
 // Schmalstieg et al. 2014, "A holistic aging model for Li(NiMnCo)O2 based 18650 lithium-ion
 // batteries", J. Power Sources 257: capacity C = 1 - a_cap t^0.75 - b_cap sqrt(Q) and
-// resistance R = 1 + a_res t^0.75 + b_res Q (reference-models.md section 5, as replicated in
-// NREL BLAST-Lite; resistance constants agree in BLAST-Lite and SimSES).
+// resistance R = 1 + a_res t^0.75 + b_res Q (as replicated in NREL BLAST-Lite; resistance
+// constants agree in BLAST-Lite and SimSES; docs/ageing.md).
 
 #include "ceilplan/battery/cycle_ageing_model.hpp"
 #include "ceilplan/core/error.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Coulomb counting and full-equivalent-cycle (FEC) counting over a load profile
-// (Kocer et al. 2019, eq. 3-8; reference-models.md section 1).
+// (Kocer et al. 2019, arXiv 1812.11707, eq. 3-8; docs/battery.md).
 
 #include "ceilplan/battery/load_profile.hpp"
 #include "ceilplan/battery/pack.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Data-sheet cycle life: a Woehler law N(DoD) = N100 * DoD^-k with Miner's rule, and the
-// founding paper's FEC baseline on the same N100 (reference-models.md sections 1 and 5).
+// founding paper's FEC baseline on the same N100 (Kocer et al. 2019; docs/ageing.md).
 
 #include "ceilplan/battery/ageing_model.hpp"
 #include "ceilplan/battery/cycle_ageing_model.hpp"
@@ -8,7 +8,7 @@
 
 namespace ceilplan::battery {
 
-// [open] calibration parameters (reference-models.md section 5: no public LiPo cycle-life
+// [open] calibration parameters (docs/ageing.md: no public LiPo cycle-life
 // versus DoD data; N100 comes from a pack's data sheet, k about 1.2 to 2.1).
 struct WoehlerParameters {
   double cycles_at_full_depth = 300.0;      // N100: full cycles to end of life at DoD 1 [open]
