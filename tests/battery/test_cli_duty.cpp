@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <ostream>
 #include <fstream>
 
 namespace ceilplan::testing {
@@ -46,6 +47,9 @@ const ExpectedExit kDutyExitCodes[] = {
     {"--temperature-c 298", 2, "kelvin", true},
     {"--charge-max-min 10", 3, "mission 3 of day 1", true},
 };
+
+// Names the row in test listings (ctest shows it), instead of its bytes.
+void PrintTo(const ExpectedExit& row, std::ostream* out) { *out << row.arguments; }
 
 class CliDutyExitCode : public ::testing::TestWithParam<ExpectedExit> {};
 

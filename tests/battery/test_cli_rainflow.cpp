@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <ostream>
 #include <fstream>
 #include <map>
 #include <random>
@@ -62,6 +63,9 @@ const ExpectedExit kRainflowExitCodes[] = {
     {"nan_row", "t_s,soc\n0,0.9\n1,NaN\n2,0.5\n", 2, "line 3, column 'soc': 'NaN' is not a finite number", true},
     {"empty", "", 2, "is empty; expected a header row", true},
 };
+
+// Names the row in test listings (ctest shows it), instead of its bytes.
+void PrintTo(const ExpectedExit& row, std::ostream* out) { *out << row.name; }
 
 class CliRainflowExitCode : public ::testing::TestWithParam<ExpectedExit> {};
 
