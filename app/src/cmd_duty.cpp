@@ -73,7 +73,7 @@ int studyDays(const DutyArguments& args) {
 
 // "30 days", or "1825 days (5 years)" when the study was given in years.
 std::string studySpan(const DutyArguments& args) {
-  const std::string days = std::to_string(studyDays(args)) + " days";
+  const std::string days = std::to_string(studyDays(args)) + (studyDays(args) == 1 ? " day" : " days");
   return args.years > 0.0 ? days + " (" + formatNumber(args.years) + (args.years == 1.0 ? " year)" : " years)") : days;
 }
 
@@ -141,7 +141,8 @@ void printTable(const DutyArguments& args, const std::vector<CaseResult>& cases)
   row("charge complete [min]", [](const CaseResult& c) { return formatFixed(c.run.missions.back().charge_end_s / 60, 2); });
   row("FEC per mission", [](const CaseResult& c) { return formatFixed(c.run.fecPerMission(), 4); });
   row("FEC per day", [](const CaseResult& c) { return formatFixed(c.run.fecPerDay(), 3); });
-  row("FEC after " + std::to_string(studyDays(args)) + " days", [](const CaseResult& c) { return formatFixed(c.run.fecTotal(), 2); });
+  row("FEC after " + studySpan(args).substr(0, studySpan(args).find(" (")),
+      [](const CaseResult& c) { return formatFixed(c.run.fecTotal(), 2); });
   row("charge put back [Ah]", [](const CaseResult& c) { return formatFixed(c.run.final_state.charge_ah, 1); });
   row("FEC reduction vs first [%]", [&](const CaseResult& c) { return formatFixed(reductionPct(cases.front(), c), 2); });
   if (cases.front().ageing.empty()) return;

@@ -196,6 +196,9 @@ TEST(CliDuty, YearsLabelTheTotalsWithTheRealSpan) {
   EXPECT_NE(r.out.find("15 missions a day for 730 days (2 years)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("FEC after 730 days"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find(" 30 days"), std::string::npos) << r.out;
+  const CommandResult one = runCeilplan("duty --days 1 --model none");
+  EXPECT_NE(one.out.find("15 missions a day for 1 day;"), std::string::npos) << one.out;
+  EXPECT_NE(one.out.find("FEC after 1 day "), std::string::npos) << one.out;
 }
 
 TEST(CliDuty, ReductionsCompareCasesOverTheDaysBothFlew) {
