@@ -63,6 +63,9 @@ void AgeingModel::validate(const AgeingSample* samples, std::size_t count) const
     if (s.soc < 0.0 || s.soc > 1.0)
       throw ceilplan::InputError(
           sampleError(index, "SOC " + formatNumber(s.soc) + " is outside [0, 1]; give SOC as a fraction"));
+    if (!(s.state_of_health > 0.0 && s.state_of_health <= 1.0))
+      throw ceilplan::InputError(sampleError(index, "state of health " + formatNumber(s.state_of_health) +
+                                                        " is outside (0, 1]; give it as a fraction"));
     if (s.t_s < previous_time_s)
       throw ceilplan::InputError(sampleError(index, "time goes backwards (" +
                                                          formatNumber(previous_time_s) + " s to " +

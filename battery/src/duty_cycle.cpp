@@ -50,15 +50,25 @@ void DutyCycle::validate() const {
                                 formatNumber(mission.periodS() / 60.0) + " min do not fit in a day");
 }
 
-double DutyResult::fecPerMission() const { return missions.empty() ? 0.0 : fecTotal() / missions.size(); }
+double stepsPerMission(const MissionTemplate& mission, double step_s) {
+  return step_s > 0.0 ? std::ceil(mission.periodS() / step_s) : 0.0;
+}
+
+double DutyResult::fecPerMission() const { return missions_flown == 0 ? 0.0 : fecTotal() / missions_flown; }
 
 double DutyResult::fecPerDay() const { return days.empty() ? 0.0 : fecTotal() / days.size(); }
 
 DutyResult simulateDuty(const Pack& pack, const DutyCycle& duty, const DutyOptions& options) {
   duty.validate();
+  if (stepsPerMission(duty.mission, options.step_s) > kMaxStepsPerMission)
+    throw ceilplan::InputError("a time step of " + formatNumber(options.step_s) + " s cuts each " +
+                               formatNumber(duty.mission.periodS() / 60.0) + "-min mission into " +
+                               formatNumber(stepsPerMission(duty.mission, options.step_s)) + " steps, over the " +
+                               formatNumber(kMaxStepsPerMission) + " allowed: use a step of at least " +
+                               formatNumber(duty.mission.periodS() / kMaxStepsPerMission) + " s, or 0 (exact)");
   Simulator simulator(pack, duty.initial_soc, options.step_s);
   DutyResult result;
-  result.missions.reserve(static_cast<size_t>(duty.missions_per_day) * duty.days);
+  if (options.record_missions) result.missions.reserve(static_cast<size_t>(duty.missions_per_day) * duty.days);
   result.days.reserve(duty.days);
   const double period_s = duty.mission.periodS();
   std::vector<Sample> mission_samples;
@@ -93,6 +103,7 @@ DutyResult simulateDuty(const Pack& pack, const DutyCycle& duty, const DutyOptio
       tally.discharge_ah = after.discharge_ah - before.discharge_ah;
       tally.charge_ah = after.charge_ah - before.charge_ah;
       tally.fec = after.fec_continuous - before.fec_continuous;
+      tally.faded_pack_cycles = after.faded_pack_cycles - before.faded_pack_cycles;
       tally.end_soc = after.soc;
       day_tally.fec += tally.fec;
       day_tally.min_soc = std::min(day_tally.min_soc, tally.min_soc);
@@ -101,7 +112,8 @@ DutyResult simulateDuty(const Pack& pack, const DutyCycle& duty, const DutyOptio
       if (options.record_first_day && day == 0)
         result.first_day.insert(result.first_day.end(), mission_samples.begin(), mission_samples.end());
       if (options.record_run) result.run.insert(result.run.end(), mission_samples.begin(), mission_samples.end());
-      result.missions.push_back(tally);
+      if (options.record_missions) result.missions.push_back(tally);
+      ++result.missions_flown;
     }
     // Overnight rest to the next day's start.
     const double rest_s = day_start_s + duty.day_s - simulator.state().t_s;

@@ -34,20 +34,24 @@ LifetimeResult projectLifetime(const Pack& pack, const DutyCycle& duty, AgeingMo
   std::vector<AgeingSample> history;
   DutyOptions run_options;
   run_options.step_s = options.step_s;
+  run_options.record_missions = false;
   run_options.record_first_day = false;
   double fec_so_far = 0.0;
+  double faded_pack_cycles_so_far = 0.0;
   run_options.on_mission = [&](const MissionTally& mission, const std::vector<Sample>& samples) {
     history.clear();
-    for (const Sample& s : samples) history.push_back({s.t_s, s.soc, s.current_a});
+    for (const Sample& s : samples) history.push_back({s.t_s, s.soc, s.current_a, mission.state_of_health});
     model.addSamples(history);
     const double soh = 1.0 - model.capacityLoss();
     fec_so_far += mission.fec;
+    faded_pack_cycles_so_far += mission.faded_pack_cycles;
     if (mission.index < study_missions) {
       result.min_soc = std::min(result.min_soc, mission.min_soc);
       if (mission.index + 1 == study_missions) {
         result.cycle_wear = model.cycleWear();
         result.capacity_loss = 1.0 - soh;
         result.fec = fec_so_far;
+        result.faded_pack_cycles = faded_pack_cycles_so_far;
       }
     }
     if (!result.missions_to_end_of_life && soh <= options.end_of_life_soh) {
@@ -58,6 +62,7 @@ LifetimeResult projectLifetime(const Pack& pack, const DutyCycle& duty, AgeingMo
   };
   run_options.continue_after_day = [&](const DayTally& day) {
     result.soh_by_day.push_back(day.state_of_health);
+    result.cycle_wear_by_day.push_back(model.cycleWear());
     if (options.progress) options.progress(std::min(1.0, (day.day + 1.0) / options.study_days));
     return day.day + 1 < options.study_days || !result.missions_to_end_of_life;
   };
@@ -72,9 +77,11 @@ LifetimeResult projectLifetime(const Pack& pack, const DutyCycle& duty, AgeingMo
       result.cycle_wear = model.cycleWear();
       result.capacity_loss = std::min(1.0, model.capacityLoss());
       result.fec = fec_so_far;
+      result.faded_pack_cycles = faded_pack_cycles_so_far;
     }
     result.stopped_because = std::string("the faded pack can no longer fly the mission: ") + e.what();
   }
+  result.days_flown = static_cast<int>(std::min<std::size_t>(result.soh_by_day.size(), options.study_days));
   result.warnings = validityWarnings(model, conditions, pack.capacity_ah);
   return result;
 }

@@ -12,8 +12,8 @@ namespace ceilplan::battery {
 namespace {
 
 constexpr double kSecondsPerDay = 86400.0;
-constexpr double kCalendarExponent = 0.75;  // t^0.75 (section 5)
-constexpr double kCycleCapacityExponent = 0.5;  // sqrt(Q) (section 5)
+constexpr double kCalendarExponent = 0.75;  // t^0.75 (Schmalstieg et al. 2014)
+constexpr double kCycleCapacityExponent = 0.5;  // sqrt(Q) (Schmalstieg et al. 2014)
 constexpr double kLargestCellVoltage_v = 5.0;
 constexpr int kSimpsonIntervals = 8;  // even; V(SOC) is smooth enough over one swing
 
@@ -87,8 +87,12 @@ double SchmalstiegAgeingModel::rmsCellVoltage(double mean_soc, double depth) con
 }
 
 void SchmalstiegAgeingModel::advance(CycleState& state, const RainflowCycle& cycle) const {
-  const double throughput_ah = 2.0 * cycle.count * cycle.range * parameters_.reference_cell_capacity_ah;
+  // The charge the cycle really moved, in nominal capacities of the fitted cell: a faded pack
+  // swings its SOC further for the same charge.
+  const double throughput_ah =
+      2.0 * cycle.count * cycle.range * stateOfHealthOf(cycle) * parameters_.reference_cell_capacity_ah;
   if (!(throughput_ah > 0.0)) return;
+  state.throughput_ah += throughput_ah;
   const double rms_v = rmsCellVoltage(cycle.mean, cycle.range);
   state.capacity_loss = advancePowerLawState(
       state.capacity_loss, schmalstiegCycleCapacityRate(rms_v, cycle.range, parameters_),
@@ -130,6 +134,10 @@ SchmalstiegAgeingModel::CycleState SchmalstiegAgeingModel::cycleStateWith(
 
 double SchmalstiegAgeingModel::cycleCapacityLoss() const {
   return cycleStateWith(rainflow().residue()).capacity_loss;
+}
+
+double SchmalstiegAgeingModel::chargeThroughputAh() const {
+  return cycleStateWith(rainflow().residue()).throughput_ah;
 }
 
 double SchmalstiegAgeingModel::resistanceGrowth() const {

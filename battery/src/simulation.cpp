@@ -73,6 +73,7 @@ void Simulator::apply(const Segment& segment, const Advance& advance) {
   state_.soc = advance.soc_after;
   state_.min_soc = std::min(state_.min_soc, state_.soc);
   state_.fec_continuous += advance.charge_moved_ah / (2.0 * pack_.capacity_ah);
+  state_.faded_pack_cycles += advance.charge_moved_ah / (2.0 * pack_.usableCapacityAh());
   interval_ah_ += advance.charge_moved_ah;
   if (segment.mode == Mode::Discharge) state_.discharge_ah += advance.charge_moved_ah;
   if (segment.mode == Mode::Charge) state_.charge_ah += advance.charge_moved_ah;

@@ -87,10 +87,11 @@ std::unique_ptr<AgeingModel> FecAgeingModel::clone() const {
 
 void FecAgeingModel::consume(const AgeingSample* previous, const AgeingSample* samples,
                              std::size_t count) {
-  // Summed sample by sample, so that any split of the history gives the same total.
+  // Summed sample by sample, so that any split of the history gives the same total. A swing
+  // moved |dSOC| usable capacities, |dSOC| SOH nominal ones.
   double soc_before = previous != nullptr ? previous->soc : samples[0].soc;
   for (std::size_t i = 0; i < count; ++i) {
-    fec_ += 0.5 * std::fabs(samples[i].soc - soc_before);
+    fec_ += 0.5 * std::fabs(samples[i].soc - soc_before) * samples[i].state_of_health;
     soc_before = samples[i].soc;
   }
 }

@@ -1,5 +1,6 @@
 #include "ceilplan/energy/calibration.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <Eigen/Dense>
 #include <nlopt.hpp>
@@ -96,7 +97,7 @@ std::string missingVariation(FreeParameter parameter, const EnergyParameters& st
     case FreeParameter::kK1:
     case FreeParameter::kK2M:
       if (!hasCeilingWithinReach(start, samples))
-        return "no sample has a ceiling within " + std::to_string(start.ceiling.taper_end_radii) +
+        return "no sample has a ceiling within " + formatNumber(start.ceiling.taper_end_radii) +
                " rotor radii (column gap_m absent or too far)";
       if (distinctCount(samples, &CalibrationSample::ceiling_gap_m) < 2) return "column gap_m is not varied";
       return {};
@@ -241,6 +242,24 @@ double objective(const std::vector<double>& x, std::vector<double>& gradient, vo
   return r.squaredNorm();
 }
 
+// Why NLopt gave up, in words a user can act on: NLopt itself only says "nlopt failure".
+std::string fitFailure(const Problem& problem, const std::vector<double>& start_x,
+                       const std::vector<CalibrationSample>& samples, const std::exception& e) {
+  if (dynamic_cast<const std::bad_alloc*>(&e) != nullptr)
+    return "the least-squares fit ran out of memory with " + std::to_string(samples.size()) +
+           " samples; fit a subset of the data";
+  double largest_a = 0.0;
+  for (const CalibrationSample& s : samples) largest_a = std::max(largest_a, s.current_a);
+  const std::string head = "the least-squares fit failed: NLopt's L-BFGS gave up (" + std::string(e.what()) +
+                           ") after " + std::to_string(problem.evaluations()) + " model evaluations";
+  if (!std::isfinite(problem.residuals(start_x).squaredNorm()))
+    return head + ", because the squared errors overflow: current_a reaches " + formatNumber(largest_a) +
+           " A; give every current in amperes (a multirotor hovers at about 10 A) and remove the outlier";
+  return head + "; the data may hold currents no setting of the model can approach (largest current_a " +
+         formatNumber(largest_a) + " A: an outlier, or mA given as A?) or contradict each other: check the "
+         "data, or fit fewer parameters with --fit";
+}
+
 // Refuses when the Jacobian at the fit has a column of zeros or a (near) flat direction.
 void checkIdentifiable(const Problem& problem, const std::vector<FreeParameter>& free, const Eigen::MatrixXd& j) {
   const double rows = static_cast<double>(j.rows());
@@ -342,7 +361,7 @@ CalibrationResult calibrate(const EnergyParameters& start, const std::vector<Cal
   } catch (const nlopt::roundoff_limited&) {
     // Converged as far as floating point allows: x holds the best point found.
   } catch (const std::exception& e) {
-    throw ceilplan::Error(std::string("the least-squares fit failed: ") + e.what());
+    throw ceilplan::Error(fitFailure(problem, problem.startX(), samples, e));
   }
 
   checkIdentifiable(problem, free, problem.jacobian(x));

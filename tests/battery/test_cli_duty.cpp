@@ -9,10 +9,79 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <ostream>
 #include <fstream>
 
 namespace ceilplan::testing {
 namespace {
+
+// ---- Exit codes (docs/cli.md): 0 success, 1 runtime failure, 2 bad input or usage, 3 no path or
+// infeasible. A duty cycle that depletes the pack is infeasible. ------------------------------
+struct ExpectedExit {
+  const char* arguments;
+  int exit_code;
+  const char* says;  // a fragment of the one-line message
+  // Passes only once main.cpp maps ceilplan::InputError to 2 and ceilplan::InfeasibleError to 3
+  // (issue 12); until then these rows run in the DISABLED_ instantiation below.
+  bool awaits_main_mapping;
+};
+
+const ExpectedExit kDutyExitCodes[] = {
+    {"--days 1", 0, "", false},
+    {"--dt-s 1e-9", 2, "--dt-s", false},             // allocated without bound until bad_alloc
+    {"--dt-s -30", 2, "--dt-s", false},
+    {"--years 1e6", 2, "--years: must be at most 100, got 1e6", false},  // 365 million days
+    {"--years 0", 2, "--years", false},
+    {"--days 1000000", 2, "--days", false},
+    {"--capacity-ah 1e9", 2, "--capacity-ah", false},
+    {"--flight-min 1e9", 2, "--flight-min", false},
+    {"--eol-soh 1", 2, "--eol-soh", false},
+    {"--woehler-k 100", 2, "--woehler-k", false},
+    {"--chemistry \"$(printf '\\033[31mLiPo')\"", 2, "--chemistry", false},
+    {"--unknown-flag 3", 2, "--unknown-flag", false},
+    {"--dt-s 0.1", 2, "--dt-s 0.1 cuts each 45-min mission into 27000 steps", true},
+    {"--missions-per-day 40", 2, "--missions-per-day 40 missions of 45 min", true},
+    {"--missions-per-day 100 --flight-min 10 --idle-min 1 --charge-max-min 1 --years 100", 2,
+     "a study may hold", true},
+    {"--days 7000 --csv-dir /nonexistent/never-written", 2, "--csv-dir would record", true},
+    {"--temperature-c 298", 2, "kelvin", true},
+    {"--charge-max-min 10", 3, "mission 3 of day 1", true},
+};
+
+// Names the row in test listings (ctest shows it), instead of its bytes.
+void PrintTo(const ExpectedExit& row, std::ostream* out) { *out << row.arguments; }
+
+class CliDutyExitCode : public ::testing::TestWithParam<ExpectedExit> {};
+
+TEST_P(CliDutyExitCode, FollowsTheTable) {
+  const ExpectedExit& expected = GetParam();
+  const CommandResult r = runCeilplan(std::string("duty ") + expected.arguments);
+  EXPECT_EQ(r.exit_code, expected.exit_code) << r.err;
+  EXPECT_NE(r.err.find(expected.says), std::string::npos) << r.err;
+  if (expected.exit_code != 0) {
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << "raw terminal escape echoed";
+  }
+}
+
+std::vector<ExpectedExit> exitRows(bool awaits_main_mapping) {
+  std::vector<ExpectedExit> rows;
+  for (const ExpectedExit& row : kDutyExitCodes)
+    if (row.awaits_main_mapping == awaits_main_mapping) rows.push_back(row);
+  return rows;
+}
+
+std::string testName(const std::string& arguments) {
+  std::string name;
+  for (const char c : arguments) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Now, CliDutyExitCode, ::testing::ValuesIn(exitRows(false)),
+                         [](const auto& info) { return testName(info.param.arguments); });
+INSTANTIATE_TEST_SUITE_P(DISABLED_AwaitingMainMapping, CliDutyExitCode, ::testing::ValuesIn(exitRows(true)),
+                         [](const auto& info) { return testName(info.param.arguments); });
 
 TEST(CliDuty, WithNoArgumentsReproducesThePapersTable) {
   const CommandResult r = runCeilplan("duty");
@@ -76,7 +145,8 @@ TEST(CliDuty, ReportsEachAgeingModelPerCaseWithReductionsAndEndOfLife) {
   ASSERT_EQ(ceiling_models.size(), 4u);
   const auto& xu = ceiling_models[1];
   EXPECT_EQ(xu["model"], "xu");
-  // Reference-models.md section 5: Xu's cycle damage falls 18.2 % with the pack kept new.
+  // Derived from Xu et al. 2018's constants (docs/ageing.md): Xu's cycle damage falls 18.2 %
+  // with the pack kept new.
   EXPECT_NEAR(xu["wear_reduction_new_pack_pct"].get<double>(), 18.2, 0.05);
   EXPECT_NEAR(ceiling_models[0]["wear_reduction_new_pack_pct"].get<double>(), 100 * (1 - 8.0 / 9.5), 1e-6);
   for (const auto& model : ceiling_models) {
@@ -85,6 +155,73 @@ TEST(CliDuty, ReportsEachAgeingModelPerCaseWithReductionsAndEndOfLife) {
     EXPECT_GT(model["fade_reduction_pct"].get<double>(), 0.0) << model["model"];
   }
   EXPECT_FALSE(xu["warnings"].empty());
+}
+
+TEST(CliDuty, OneFecTheAgeingProjectionCountsTheSameFecAsTheFirstTable) {
+  // Kocer et al. 2019, eq. 3-6: FEC counts the charge moved against the nominal capacity. With the
+  // fade fed back the fec model's FEC is still the first table's 274.04 / 230.77; the faded
+  // pack's deeper SOC swings add up to more, printed under their own name.
+  const auto dir = scratchDirectory("duty_one_fec");
+  const CommandResult r = runCeilplan("duty --model fec --json " + (dir / "duty.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(readWholeFile(dir / "duty.json"));
+  for (const auto& c : j["cases"]) {
+    const auto& fec = c["ageing"][0];
+    ASSERT_EQ(fec["model"], "fec");
+    EXPECT_EQ(fec["cycle_wear_name"], "FEC");
+    EXPECT_NEAR(fec["cycle_wear"].get<double>(), c["fec_total"].get<double>(), 1e-9);
+    EXPECT_NEAR(fec["fec"].get<double>(), c["fec_total"].get<double>(), 1e-9);
+    EXPECT_GT(fec["faded_pack_cycles"].get<double>(), 1.08 * c["fec_total"].get<double>());
+  }
+  const std::string ageing = r.out.substr(r.out.find("fec:"));
+  EXPECT_NE(ageing.find("  FEC                                 274.04      230.77\n"), std::string::npos) << ageing;
+  EXPECT_NE(ageing.find("  cycles of the faded pack"), std::string::npos) << ageing;
+  // With the fade fed back, FEC falls exactly as much as with the pack kept new.
+  EXPECT_NEAR(j["cases"][1]["ageing"][0]["wear_reduction_pct"].get<double>(), 100 * (1 - 8.0 / 9.5), 1e-9);
+}
+
+TEST(CliDuty, SchmalstiegCountsTheNominalChargeThroughput) {
+  // Over the paper's month, counting the faded SOC swings as throughput made Schmalstieg's cycle
+  // loss 4-5 % high in Q; in nominal capacities the 9.5 A case loses 0.1267 (was 0.1332).
+  const auto dir = scratchDirectory("duty_schmalstieg_q");
+  const CommandResult r = runCeilplan("duty --model schmalstieg --json " + (dir / "duty.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(readWholeFile(dir / "duty.json"));
+  EXPECT_NEAR(j["cases"][0]["ageing"][0]["cycle_wear"].get<double>(), 0.12671, 5e-5);
+}
+
+TEST(CliDuty, YearsLabelTheTotalsWithTheRealSpan) {
+  const CommandResult r = runCeilplan("duty --years 2 --model none");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("15 missions a day for 730 days (2 years)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("FEC after 730 days"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find(" 30 days"), std::string::npos) << r.out;
+  const CommandResult one = runCeilplan("duty --days 1 --model none");
+  EXPECT_NE(one.out.find("15 missions a day for 1 day;"), std::string::npos) << one.out;
+  EXPECT_NE(one.out.find("FEC after 1 day "), std::string::npos) << one.out;
+}
+
+TEST(CliDuty, ReductionsCompareCasesOverTheDaysBothFlew) {
+  // Over 5 years every model's faded packs give out, the free-flight one first. Its wear then
+  // stops growing while the ceiling pack's goes on: compared at their own last days the ceiling
+  // case looked 26-42 % *worse*. Over the days both flew it wears less under every model, and by
+  // FEC exactly 1 - 8 / 9.5 less.
+  const auto dir = scratchDirectory("duty_common_span");
+  const CommandResult r = runCeilplan("duty --years 5 --json " + (dir / "duty.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(readWholeFile(dir / "duty.json"));
+  const auto& free_flight = j["cases"][0]["ageing"];
+  const auto& ceiling = j["cases"][1]["ageing"];
+  for (std::size_t m = 0; m < ceiling.size(); ++m) {
+    const int days = ceiling[m]["comparison_days"].get<int>();
+    EXPECT_EQ(days, std::min(free_flight[m]["days_flown"].get<int>(), ceiling[m]["days_flown"].get<int>()))
+        << ceiling[m]["model"];
+    EXPECT_LT(days, 1825) << ceiling[m]["model"];
+    EXPECT_GT(ceiling[m]["wear_reduction_pct"].get<double>(), 15.0) << ceiling[m]["model"];
+    EXPECT_GT(ceiling[m]["fade_reduction_pct"].get<double>(), 0.0) << ceiling[m]["model"];
+  }
+  EXPECT_NEAR(ceiling[0]["wear_reduction_pct"].get<double>(), 100 * (1 - 8.0 / 9.5), 1e-9);
+  EXPECT_NE(r.out.find("reductions the 59 days both flew"), std::string::npos) << r.out;
 }
 
 TEST(CliDuty, OneModelOverYearsWritesTheStateOfHealthSeries) {
@@ -128,7 +265,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--unknown-flag 3", "--unknown-flag"},
                       BadInput{"--temperature-c 298", "kelvin"}, BadInput{"--model rainbow", "--model"},
                       BadInput{"--eol-soh 1.2", "--eol-soh"},
-                      BadInput{"--config /nonexistent/study.yaml", "/nonexistent/study.yaml"}),
+                      BadInput{"--config /nonexistent/study.yaml", "/nonexistent/study.yaml"},
+                      BadInput{"--dt-s 1e-9", "--dt-s"}, BadInput{"--dt-s 0.1", "--dt-s"},
+                      BadInput{"--years 1e6", "--years"}, BadInput{"--missions-per-day 40", "--missions-per-day"},
+                      BadInput{"--chemistry \"$(printf '\\033[31mLiPo')\"", "--chemistry"}),
     [](const auto& info) {
       std::string name;
       for (const char c : std::string(info.param.arguments)) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';

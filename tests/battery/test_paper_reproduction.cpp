@@ -1,4 +1,4 @@
-// The founding paper's figures (Kocer et al. 2019; reference-models.md section 1), reproduced
+// The founding paper's figures (Kocer et al. 2019, arXiv 1812.11707; docs/battery.md), reproduced
 // by the battery engine. Exact values are derived from the paper's equations; the paper's own
 // rounded figures are checked at the precision it prints them.
 

@@ -1,4 +1,4 @@
-// Rainflow counting per ASTM E1049-85, streaming (reference-models.md section 5).
+// Rainflow counting per ASTM E1049-85, streaming (docs/ageing.md).
 #include "ceilplan/battery/rainflow.hpp"
 #include "ceilplan/core/error.hpp"
 

@@ -143,3 +143,27 @@ TEST(Calibration, RefusesTooFewSamplesAndBadSamples) {
   EXPECT_THROW(parseFreeParameter("k3"), ceilplan::InputError);
   EXPECT_EQ(parseFreeParameter("k2_m"), FreeParameter::kK2M);
 }
+
+TEST(Calibration, AFailedFitSaysWhatFailedAndWhatToDo) {
+  // NLopt reports a failed L-BFGS run only as "nlopt failure". One current of 1e200 A (an
+  // outlier) makes the squared errors overflow: the message says that, names the column and
+  // the value, and what to do.
+  auto samples = synthetic(truth(false), false);
+  samples[3].current_a = 1e200;
+  try {
+    calibrate(paperQuadParameters(), samples, {FreeParameter::kHoverPowerW, FreeParameter::kK1, FreeParameter::kK2M});
+    FAIL() << "a fit to a 1e200 A current succeeded";
+  } catch (const ceilplan::Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("NLopt's L-BFGS gave up"), std::string::npos) << message;
+    EXPECT_NE(message.find("squared errors overflow: current_a reaches 1e+200 A"), std::string::npos) << message;
+    EXPECT_NE(message.find("give every current in amperes"), std::string::npos) << message;
+  }
+}
+
+TEST(Calibration, MessagesPrintNumbersThroughTheOneFormatter) {
+  std::vector<CalibrationSample> free_air(4);
+  for (auto& s : free_air) s.current_a = 9.5;
+  EXPECT_NE(refusal(free_air, {FreeParameter::kK1}).find("within 2.5 rotor radii"), std::string::npos)
+      << refusal(free_air, {FreeParameter::kK1});  // std::to_string said "2.500000"
+}

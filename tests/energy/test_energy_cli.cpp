@@ -153,3 +153,22 @@ TEST_F(CalibrateCommand, RefusesWhatTheDataCannotIdentifyAndWritesNothing) {
                      "unknown calibration parameter 'k3'");
   EXPECT_FALSE(std::filesystem::exists(out));
 }
+
+TEST_F(CalibrateCommand, AFailedFitSaysWhatFailedAndWhatToDo) {
+  // A failed fit is a runtime failure (exit 1), said in words: NLopt alone says "nlopt failure".
+  const auto dir = scratchDirectory("calibrate_failed_fit");
+  writeFile(dir / "outlier.csv", "gap_m,current_a\nnone,9.5\n0.05,1e200\n0.1,9.0\n0.3,9.4\n0.5,9.5\n");
+  const auto out = dir / "v.yaml";
+  expectOneLineError("calibrate --data " + (dir / "outlier.csv").string() + " --out " + out.string(),
+                     "squared errors overflow: current_a reaches 1e+200 A; give every current in amperes");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST_F(CalibrateCommand, EchoesNoRawBytesFromABadFile) {
+  const auto dir = scratchDirectory("calibrate_escapes");
+  writeFile(dir / "evil.csv", "gap_m,current_a\nnone,\x1b]0;owned\x07\n");
+  const auto result = runCeilplan("calibrate --data " + (dir / "evil.csv").string() + " --out " + (dir / "v.yaml").string());
+  EXPECT_NE(result.exit_code, 0);
+  EXPECT_NE(result.err.find("'\\x1B]0;owned\\x07' is not a finite number"), std::string::npos) << result.err;
+  EXPECT_EQ(result.err.find('\x1b'), std::string::npos) << "raw escape echoed";
+}

@@ -1,5 +1,5 @@
 #pragma once
-// The common interface of the battery-ageing models (reference-models.md section 5): a model
+// The common interface of the battery-ageing models (docs/ageing.md): a model
 // is fed a state-of-charge history piece by piece, in time order, and tells the fraction of
 // nominal capacity lost so far.
 
@@ -14,10 +14,14 @@ namespace ceilplan::battery {
 
 // One point of a battery's history. `current_a` is positive while discharging (the sign of
 // paper eq. 7, SOC falling); the models use it only for the C-rates they report having seen.
+// `state_of_health` is the usable capacity over the nominal one while the pack moved to this
+// sample (paper eq. 7): an SOC swing dSOC moved dSOC * SOH nominal capacities of charge, which
+// is what the throughput-based measures (FEC, Schmalstieg's Q) count. 1 for a new pack.
 struct AgeingSample {
   double t_s = 0.0;
   double soc = 0.0;  // state of charge, 0..1
   double current_a = 0.0;
+  double state_of_health = 1.0;  // in (0, 1]
 };
 
 // Where a model was fitted, so that a study outside it can say so. Unbounded limits are
@@ -59,7 +63,8 @@ class AgeingModel {
 
   // Feeds the next samples, continuing the history (the interval from the previous piece's last
   // sample counts too). Throws ceilplan::InputError, before using any sample of the piece, on a
-  // non-finite value, an SOC outside [0, 1] or time going backwards.
+  // non-finite value, an SOC outside [0, 1], a state of health outside (0, 1] or time going
+  // backwards.
   void addSamples(const AgeingSample* samples, std::size_t count);
   void addSamples(const std::vector<AgeingSample>& samples);
 
@@ -71,8 +76,8 @@ class AgeingModel {
   virtual std::unique_ptr<AgeingModel> clone() const = 0;
 
   // The model's measure of cycle ageing alone, additive over cycles, so cases compare by their
-  // ratio: FEC for "fec", Miner damage for "woehler", f_c for "xu", the sqrt(Q) capacity term
-  // for "schmalstieg". Open rainflow ranges count as half cycles.
+  // ratio: FEC (against the nominal capacity) for "fec", Miner damage for "woehler", f_c for
+  // "xu", the sqrt(Q) capacity term for "schmalstieg". Open rainflow ranges count as half cycles.
   virtual double cycleWear() const = 0;
   virtual std::string cycleWearName() const = 0;
 

@@ -5,6 +5,7 @@
 #include "ceilplan/battery/ageing_model.hpp"
 #include "ceilplan/battery/rainflow.hpp"
 
+#include <deque>
 #include <vector>
 
 namespace ceilplan::battery {
@@ -22,13 +23,27 @@ class CycleAgeingModel : public AgeingModel {
   double modelCapacityLoss() const final { return capacityLossWith(counter_.residue()); }
   // The loss so far if the still-open ranges `open` (half cycles) closed now.
   virtual double capacityLossWith(const std::vector<RainflowCycle>& open) const = 0;
+  // The state of health a cycle happened at: that of the swing reaching its later turning point
+  // (exact for the half cycles of missions flown at one SOH each; within a mission's fade step
+  // for full cycles). A cycle's SOC range times this is its range in nominal capacities.
+  double stateOfHealthOf(const RainflowCycle& cycle) const;
 
  private:
+  // The state of health from sample `first_index` on, until the next change.
+  struct HealthFrom {
+    std::size_t first_index;
+    double state_of_health;
+  };
+
   void consume(const AgeingSample* previous, const AgeingSample* samples,
                std::size_t count) final;
+  double stateOfHealthAt(std::size_t index) const;
 
   RainflowCounter counter_;
   std::vector<RainflowCycle> closed_;  // scratch, reused between samples
+  // Changes of state of health still needed by an open turning point (a few at most: older
+  // ones are dropped as the rainflow count lets go of their samples).
+  std::deque<HealthFrom> health_changes_;
 };
 
 }  // namespace ceilplan::battery

@@ -1,6 +1,6 @@
 #pragma once
 // A mission template (fly, idle, charge back) repeated N times a day for D days, as in the
-// founding paper's month-long study (reference-models.md section 1).
+// founding paper's month-long study (Kocer et al. 2019; docs/battery.md).
 
 #include "ceilplan/battery/load_profile.hpp"
 #include "ceilplan/battery/pack.hpp"
@@ -26,6 +26,13 @@ struct MissionTemplate {
 MissionTemplate flyIdleChargeMission(double flight_current_a, double flight_s, double idle_s,
                                      double charge_current_a, double charge_max_s, double target_soc);
 
+// The most steps the fixed-step scheme may take per mission. Finer steps only cost time and
+// memory: the exact scheme (step 0) is exact, and the paper's 30 s take 90 steps a mission.
+inline constexpr double kMaxStepsPerMission = 10000.0;
+
+// Steps the fixed-step scheme takes over one mission slot at `step_s`; 0 for the exact scheme.
+double stepsPerMission(const MissionTemplate& mission, double step_s);
+
 struct DutyCycle {
   MissionTemplate mission;
   int missions_per_day = 15;
@@ -41,7 +48,8 @@ struct MissionTally {
   int day = 0;              // 0-based
   int mission_in_day = 0;   // 0-based
   double start_s = 0.0;
-  double fec = 0.0;         // this mission's FEC (its discharge and charge)
+  double fec = 0.0;         // this mission's FEC (its discharge and charge, against C_nom)
+  double faded_pack_cycles = 0.0;  // the same against the usable capacity C_nom * SOH
   double discharge_ah = 0.0;
   double charge_ah = 0.0;
   double min_soc = 0.0;
@@ -64,6 +72,7 @@ using MissionHook = std::function<double(const MissionTally& mission, const std:
 
 struct DutyOptions {
   double step_s = 0.0;          // 0 = exact, event-driven
+  bool record_missions = true;   // keeps every mission's tally in DutyResult::missions
   bool record_first_day = true;  // keeps samples of mission 1 and day 1
   bool record_run = false;       // keeps samples of the whole run
   MissionHook on_mission;        // optional
@@ -73,7 +82,8 @@ struct DutyOptions {
 };
 
 struct DutyResult {
-  std::vector<MissionTally> missions;
+  std::vector<MissionTally> missions;  // empty unless DutyOptions::record_missions
+  long missions_flown = 0;
   std::vector<DayTally> days;
   BatteryState final_state;
   std::vector<Sample> first_mission;
@@ -87,7 +97,8 @@ struct DutyResult {
 };
 
 // Runs the duty cycle. A mission that would cross the SOC floor throws DepletionError saying
-// which mission of which day and by how much.
+// which mission of which day and by how much. Throws ceilplan::InputError, before any work, for
+// a bad duty cycle or a step that cuts a mission into more than kMaxStepsPerMission steps.
 DutyResult simulateDuty(const Pack& pack, const DutyCycle& duty, const DutyOptions& options = {});
 
 }  // namespace ceilplan::battery

@@ -5,7 +5,7 @@
 namespace ceilplan::battery {
 
 // A battery pack as the simulation sees it. Defaults: the founding paper's 4S 5.2 Ah LiPo,
-// charged at 2C = 10.4 A (Kocer et al. 2019, reference-models.md section 1).
+// charged at 2C = 10.4 A (Kocer et al. 2019, arXiv 1812.11707).
 struct Pack {
   double capacity_ah = 5.2;        // nominal capacity C_nom
   int cell_count = 4;              // series cells

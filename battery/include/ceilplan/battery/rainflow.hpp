@@ -1,7 +1,7 @@
 #pragma once
 // Rainflow cycle counting per ASTM E1049-85 (section 5.4.4, "rainflow counting"), streaming:
 // a series fed piece by piece yields exactly the cycles it yields fed at once
-// (reference-models.md section 5).
+// (docs/ageing.md).
 
 #include "ceilplan/core/error.hpp"
 
@@ -37,6 +37,9 @@ class RainflowCounter {
   std::vector<RainflowCycle> residue() const;
 
   std::size_t samplesSeen() const { return samples_seen_; }
+  // The index of the earliest sample a cycle counted from now on (closed later, or in the
+  // residue) can start at: nothing before it is needed any more.
+  std::size_t firstOpenIndex() const { return stack_.empty() ? candidate_.index : stack_.front().index; }
 
  private:
   struct TurningPoint {

@@ -1,8 +1,8 @@
 #pragma once
 // Schmalstieg et al. 2014, "A holistic aging model for Li(NiMnCo)O2 based 18650 lithium-ion
 // batteries", J. Power Sources 257: capacity C = 1 - a_cap t^0.75 - b_cap sqrt(Q) and
-// resistance R = 1 + a_res t^0.75 + b_res Q (reference-models.md section 5, as replicated in
-// NREL BLAST-Lite; resistance constants agree in BLAST-Lite and SimSES).
+// resistance R = 1 + a_res t^0.75 + b_res Q (as replicated in NREL BLAST-Lite; resistance
+// constants agree in BLAST-Lite and SimSES; docs/ageing.md).
 
 #include "ceilplan/battery/cycle_ageing_model.hpp"
 #include "ceilplan/core/error.hpp"
@@ -34,8 +34,9 @@ struct SchmalstiegParameters {
   double b_res_v0 = 3.725;
   double b_res_0 = -1.521e-5;
   double b_res_dod = 2.798e-4;
-  // Q is the charge throughput of the fitted cell (Sanyo UR18650E; 2.15 Ah as in BLAST-Lite):
-  // a swing of the SOC by dSOC passes dSOC * this many ampere-hours.
+  // Q is the charge throughput of the fitted cell (Sanyo UR18650E; 2.15 Ah as in BLAST-Lite),
+  // counted in nominal capacities: a swing of the SOC by dSOC at state of health SOH passes
+  // dSOC * SOH * this many ampere-hours.
   double reference_cell_capacity_ah = 2.15;
 };
 
@@ -58,8 +59,10 @@ double schmalstiegCycleResistanceRate(double rms_voltage_v, double depth,
 double advancePowerLawState(double state, double rate, double exponent, double step);
 
 // Streams the history: calendar terms per sample interval with the trapezoid-averaged rate at
-// the interval's cell voltages; cycle terms per rainflow cycle, Q = 2 n DoD C_ref, Vrms the RMS
-// cell voltage over the cycle's SOC swing (charge-weighted, Simpson's rule).
+// the interval's cell voltages; cycle terms per rainflow cycle, Q = 2 n DoD SOH C_ref (the
+// charge moved, in nominal capacities; SOH of the swing reaching the cycle's later turning
+// point), Vrms the RMS cell voltage over the cycle's SOC swing (charge-weighted, Simpson's
+// rule). DoD and Vrms are the faded pack's own: they are the stress the cell sees.
 class SchmalstiegAgeingModel : public CycleAgeingModel {
  public:
   // Throws ceilplan::InputError if `cell_voltage_of_soc` is empty.
@@ -72,6 +75,8 @@ class SchmalstiegAgeingModel : public CycleAgeingModel {
   double calendarCapacityLoss() const { return calendar_capacity_loss_; }
   double cycleCapacityLoss() const;           // open ranges as half cycles
   double resistanceGrowth() const;            // R / R_new - 1, open ranges as half cycles
+  // Q so far, in ampere-hours of the fitted cell, open ranges as half cycles.
+  double chargeThroughputAh() const;
   double cycleWear() const override { return cycleCapacityLoss(); }
   std::string cycleWearName() const override { return "cycle capacity loss"; }
 
@@ -85,6 +90,7 @@ class SchmalstiegAgeingModel : public CycleAgeingModel {
   struct CycleState {
     double capacity_loss = 0.0;
     double resistance_growth = 0.0;
+    double throughput_ah = 0.0;
   };
 
   void addCycle(const RainflowCycle& cycle) override;

@@ -1,6 +1,6 @@
 #pragma once
 // Coulomb counting and full-equivalent-cycle (FEC) counting over a load profile
-// (Kocer et al. 2019, eq. 3-8; reference-models.md section 1).
+// (Kocer et al. 2019, arXiv 1812.11707, eq. 3-8; docs/battery.md).
 
 #include "ceilplan/battery/load_profile.hpp"
 #include "ceilplan/battery/pack.hpp"
@@ -29,6 +29,9 @@ struct BatteryState {
   double min_soc = 1.0;
   double fec = 0.0;             // booked at each mode change (paper eq. 3-5)
   double fec_continuous = 0.0;  // FEC(t) = 1/(2 C_nom) * integral |i| dt (paper eq. 6)
+  // The same throughput counted against the usable capacity C_nom * SOH: sum |dSOC| / 2, the
+  // cycles of the faded pack. Equal to the FEC while SOH = 1; never call it FEC.
+  double faded_pack_cycles = 0.0;
   double discharge_ah = 0.0;
   double charge_ah = 0.0;
 };

@@ -1,6 +1,6 @@
 #pragma once
 // Data-sheet cycle life: a Woehler law N(DoD) = N100 * DoD^-k with Miner's rule, and the
-// founding paper's FEC baseline on the same N100 (reference-models.md sections 1 and 5).
+// founding paper's FEC baseline on the same N100 (Kocer et al. 2019; docs/ageing.md).
 
 #include "ceilplan/battery/ageing_model.hpp"
 #include "ceilplan/battery/cycle_ageing_model.hpp"
@@ -8,7 +8,7 @@
 
 namespace ceilplan::battery {
 
-// [open] calibration parameters (reference-models.md section 5: no public LiPo cycle-life
+// [open] calibration parameters (docs/ageing.md: no public LiPo cycle-life
 // versus DoD data; N100 comes from a pack's data sheet, k about 1.2 to 2.1).
 struct WoehlerParameters {
   double cycles_at_full_depth = 300.0;      // N100: full cycles to end of life at DoD 1 [open]
@@ -44,9 +44,11 @@ class WoehlerAgeingModel : public CycleAgeingModel {
   double closed_damage_ = 0.0;
 };
 
-// The founding paper's baseline: loss proportional to full equivalent cycles,
-// FEC = sum |dSOC| / 2 (section 5, as NREL BLAST-Lite; equal to section 1's
-// integral |i| dt / (2 C_nom) while SOH = 1), reaching end of life after N100 FEC.
+// The founding paper's baseline: loss proportional to full equivalent cycles counted against
+// the nominal capacity (Kocer et al. 2019, eq. 3-6: FEC = integral |i| dt / (2 C_nom)), reaching
+// end of life after N100 FEC. From an SOC history, FEC = sum |dSOC| SOH / 2, each swing weighted
+// by the state of health it happened at (the sum |dSOC| / 2 of NREL BLAST-Lite when SOH = 1), so
+// a faded pack counts the charge it really moves, not its deeper SOC swings.
 class FecAgeingModel : public AgeingModel {
  public:
   explicit FecAgeingModel(const WoehlerParameters& parameters = {});

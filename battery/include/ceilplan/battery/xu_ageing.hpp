@@ -1,13 +1,13 @@
 #pragma once
 // Xu et al. 2018, "Modeling of Lithium-Ion Battery Degradation for Cell Life Assessment",
 // IEEE Trans. Smart Grid 9(2): cycle stress from rainflow depth, mean SOC and temperature, a
-// calendar term, and the capacity-loss law with its SEI phase (reference-models.md section 5).
+// calendar term, and the capacity-loss law with its SEI phase (docs/ageing.md).
 
 #include "ceilplan/battery/cycle_ageing_model.hpp"
 
 namespace ceilplan::battery {
 
-// Constants from reference-models.md section 5 [agreed by five implementations].
+// Constants as published (Xu et al. 2018), agreed by five open implementations of the model.
 struct XuParameters {
   double k_d1 = 1.40e5;           // depth stress
   double k_d2 = -0.501;

@@ -1,0 +1,103 @@
+#include "signal_cleanup.hpp"
+
+#include "ceilplan/core/error.hpp"
+
+#include <pthread.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <mutex>
+#include <set>
+#include <string>
+#include <system_error>
+#include <thread>
+
+namespace ceilplan::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The temporaries to remove on a signal. The cleanup thread takes the lock and never gives it
+// back, so no commit can rename a temporary after the cleanup has looked for it.
+std::mutex& registryMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+std::set<fs::path>& registry() {
+  static std::set<fs::path> paths;
+  return paths;
+}
+
+sigset_t cleanupSignals() {
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  return signals;
+}
+
+[[noreturn]] void removeTemporariesOnSignal(sigset_t signals) {
+  int signal_number = 0;
+  while (sigwait(&signals, &signal_number) != 0) {
+  }
+  registryMutex().lock();
+  std::error_code ignored;
+  for (const fs::path& path : registry()) fs::remove_all(path, ignored);
+  // End the process the way the signal would have, so the caller sees "killed by SIGINT".
+  std::signal(signal_number, SIG_DFL);
+  sigset_t only;
+  sigemptyset(&only);
+  sigaddset(&only, signal_number);
+  pthread_sigmask(SIG_UNBLOCK, &only, nullptr);
+  std::raise(signal_number);
+  _exit(128 + signal_number);  // not reached
+}
+
+}  // namespace
+
+void installSignalCleanup() {
+  static std::once_flag installed;
+  std::call_once(installed, [] {
+    const sigset_t signals = cleanupSignals();
+    pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+    std::thread(removeTemporariesOnSignal, signals).detach();
+  });
+}
+
+TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_path)) {
+  temporary_ = final_;
+  temporary_ += ".tmp" + std::to_string(::getpid());
+  std::error_code ec;
+  if (final_.has_parent_path()) {
+    fs::create_directories(final_.parent_path(), ec);
+    if (ec)
+      throw ceilplan::Error("cannot create directory " + final_.parent_path().string() + ": " + ec.message());
+  }
+  const std::lock_guard<std::mutex> lock(registryMutex());
+  registry().insert(temporary_);
+}
+
+TemporaryOutput::~TemporaryOutput() {
+  const std::lock_guard<std::mutex> lock(registryMutex());
+  registry().erase(temporary_);
+  if (!committed_) {
+    std::error_code ignored;
+    fs::remove_all(temporary_, ignored);
+  }
+}
+
+void TemporaryOutput::commit() {
+  const std::lock_guard<std::mutex> lock(registryMutex());
+  std::error_code ec;
+  fs::rename(temporary_, final_, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove_all(temporary_, ignored);
+    throw ceilplan::Error("cannot write " + final_.string() + ": " + ec.message());
+  }
+  committed_ = true;
+  registry().erase(temporary_);
+}
+
+}  // namespace ceilplan::app

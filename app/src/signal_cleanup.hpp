@@ -1,0 +1,45 @@
+#pragma once
+// Outputs that appear whole or not at all, even when the user presses Ctrl-C: each is written
+// under a temporary sibling name and renamed into place once complete. Until then it is removed
+// on an error (the destructor) and on SIGINT or SIGTERM.
+//
+// Nothing runs in signal context. installSignalCleanup() blocks SIGINT and SIGTERM in the calling
+// thread, and so in every thread started after it, and starts one thread that takes them with
+// sigwait(): it removes every temporary output still registered, then lets the signal end the
+// process as it would have (exit status 128 + the signal's number). It uses only POSIX and the
+// standard library, so it can move to core/ when a library needs it.
+
+#include <filesystem>
+
+namespace ceilplan::app {
+
+// Call once, first thing in main(), before any other thread starts (a thread started earlier
+// would still take the signals and end the process without the cleanup). Further calls do
+// nothing.
+void installSignalCleanup();
+
+// One output (a file, or a directory the caller fills) under a temporary sibling name:
+// "<name>.tmp<pid>" next to the final path. The parent directory is created.
+class TemporaryOutput {
+ public:
+  explicit TemporaryOutput(std::filesystem::path final_path);
+  ~TemporaryOutput();  // removes the temporary unless committed
+  TemporaryOutput(const TemporaryOutput&) = delete;
+  TemporaryOutput& operator=(const TemporaryOutput&) = delete;
+
+  // Where to write.
+  const std::filesystem::path& path() const { return temporary_; }
+  const std::filesystem::path& finalPath() const { return final_; }
+
+  // Renames the temporary onto the final path. Atomic with respect to the signal cleanup: an
+  // interruption finds either the temporary (and removes it) or the complete output. Throws
+  // ceilplan::Error naming the final path if the rename fails (the temporary is then removed).
+  void commit();
+
+ private:
+  std::filesystem::path final_;
+  std::filesystem::path temporary_;
+  bool committed_ = false;
+};
+
+}  // namespace ceilplan::app
