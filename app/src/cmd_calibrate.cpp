@@ -2,7 +2,7 @@
 
 #include "command_registry.hpp"
 #include "output.hpp"
-#include "printable_text.hpp"
+#include "ceilplan/core/printable_text.hpp"
 
 #include "ceilplan/io/vehicle_file.hpp"
 
@@ -65,7 +65,7 @@ const std::map<std::string, double energy::CalibrationSample::*>& columns() {
 // Reads samples; '#' lines are comments. In the gap columns an empty cell or "none" means no surface.
 std::vector<energy::CalibrationSample> readSamples(const std::string& path, double default_soc) {
   std::ifstream in(path);
-  if (!in) throw ceilplan::InputError("cannot read calibration data " + printableText(path, 256) + " (missing or unreadable)");
+  if (!in) throw ceilplan::InputError("cannot read calibration data " + ceilplan::printableText(path, 256) + " (missing or unreadable)");
   std::vector<double energy::CalibrationSample::*> header;
   std::vector<std::string> names;
   std::vector<energy::CalibrationSample> samples;
@@ -73,16 +73,16 @@ std::vector<energy::CalibrationSample> readSamples(const std::string& path, doub
   for (int line_number = 1; std::getline(in, line); ++line_number) {
     const std::string content = trimmed(line);
     if (content.empty() || content[0] == '#') continue;
-    const std::string where = printableText(path, 256) + " line " + std::to_string(line_number) + ": ";
+    const std::string where = ceilplan::printableText(path, 256) + " line " + std::to_string(line_number) + ": ";
     const std::vector<std::string> cells = splitCells(content);
     if (header.empty()) {
       for (const std::string& name : cells) {
         const auto known = columns().find(name);
         if (known == columns().end())
-          throw ceilplan::InputError(where + "unknown column '" + printableText(name) +
+          throw ceilplan::InputError(where + "unknown column '" + ceilplan::printableText(name) +
                                       "' (known: gap_m, coverage, ground_gap_m, speed_m_s, climb_m_s, soc, current_a)");
         for (const std::string& seen : names)
-          if (seen == name) throw ceilplan::InputError(where + "column " + printableText(name) + " appears twice");
+          if (seen == name) throw ceilplan::InputError(where + "column " + ceilplan::printableText(name) + " appears twice");
         header.push_back(known->second);
         names.push_back(name);
       }
@@ -106,12 +106,12 @@ std::vector<energy::CalibrationSample> readSamples(const std::string& path, doub
       errno = 0;
       const double value = std::strtod(cells[c].c_str(), &end);
       if (cells[c].empty() || *end != '\0' || errno == ERANGE || !std::isfinite(value))
-        throw ceilplan::InputError(where + "column " + names[c] + ": '" + printableText(cells[c]) + "' is not a finite number");
+        throw ceilplan::InputError(where + "column " + names[c] + ": '" + ceilplan::printableText(cells[c]) + "' is not a finite number");
       sample.*header[c] = value;
     }
     samples.push_back(sample);
   }
-  if (samples.empty()) throw ceilplan::InputError("calibration data " + printableText(path, 256) + " holds no samples");
+  if (samples.empty()) throw ceilplan::InputError("calibration data " + ceilplan::printableText(path, 256) + " holds no samples");
   return samples;
 }
 

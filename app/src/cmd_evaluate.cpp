@@ -2,7 +2,6 @@
 // whether it is safe.
 
 #include "command_registry.hpp"
-#include "csv_table.hpp"
 #include "output.hpp"
 #include "planning_flags.hpp"
 
@@ -27,21 +26,8 @@ struct EvaluateArguments {
   std::string json;
 };
 
-// The rows of x, y, z; a point repeated on consecutive rows (path.csv's segment joints) once.
-std::vector<Eigen::Vector3d> readWaypoints(const std::string& file) {
-  const CsvTable table = CsvTable::read(file);
-  const std::vector<double>&x = table.column("x"), &y = table.column("y"), &z = table.column("z");
-  std::vector<Eigen::Vector3d> waypoints;
-  for (std::size_t row = 0; row < table.rowCount(); ++row) {
-    const Eigen::Vector3d p(x[row], y[row], z[row]);
-    if (waypoints.empty() || (p - waypoints.back()).norm() > 1e-9) waypoints.push_back(p);
-  }
-  if (waypoints.size() < 2) throw ceilplan::InputError(file + ": a path needs at least 2 distinct points");
-  return waypoints;
-}
-
 void runEvaluate(const EvaluateArguments& a) {
-  const std::vector<Eigen::Vector3d> waypoints = readWaypoints(a.path);
+  const std::vector<Eigen::Vector3d> waypoints = io::readPathWaypoints(a.path);
   const auto context = makePlanningContext(a.planning);
   mission::RouteCheck check;
   try {

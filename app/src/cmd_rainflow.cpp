@@ -1,9 +1,9 @@
 // `ceilplan rainflow`: the rainflow cycles (ASTM E1049-85) of an SOC column in a CSV file.
 
 #include "command_registry.hpp"
-#include "csv_columns.hpp"
-#include "printable_text.hpp"
-#include "signal_cleanup.hpp"
+#include "ceilplan/io/csv_columns.hpp"
+#include "ceilplan/core/printable_text.hpp"
+#include "ceilplan/io/temporary_output.hpp"
 
 #include "ceilplan/battery/rainflow.hpp"
 #include "ceilplan/core/error.hpp"
@@ -36,12 +36,12 @@ struct RainflowArguments {
 
 // SOC must be a fraction, time (if the file has it) must not run backwards, and a count needs
 // at least two samples.
-void checkSeries(const CsvColumns& table, const std::string& column) {
+void checkSeries(const io::CsvColumns& table, const std::string& column) {
   const std::vector<double>& soc = table.column(column);
   for (std::size_t row = 0; row < soc.size(); ++row) {
     if (soc[row] < 0.0 || soc[row] > 1.0)
       throw InputError(table.source() + " line " + std::to_string(table.lineOfRow(row)) + ", column '" +
-                       printableText(column) + "': SOC " + formatNumber(soc[row]) +
+                       ceilplan::printableText(column) + "': SOC " + formatNumber(soc[row]) +
                        " is outside [0, 1]; give SOC as a fraction");
   }
   const std::vector<double> no_time;
@@ -55,12 +55,12 @@ void checkSeries(const CsvColumns& table, const std::string& column) {
   if (table.rowCount() < 2)
     throw InputError(table.source() + " has " + std::to_string(table.rowCount()) +
                      (table.rowCount() == 1 ? " data row" : " data rows") +
-                     "; a rainflow count needs at least 2 samples of '" + printableText(column) + "'");
+                     "; a rainflow count needs at least 2 samples of '" + ceilplan::printableText(column) + "'");
 }
 
 void printCycles(const RainflowArguments& args, std::size_t samples, const std::vector<RainflowCycle>& cycles) {
-  std::cout << "Rainflow cycles (ASTM E1049-85, residue as half cycles) of column '" << printableText(args.column)
-            << "' in " << printableText(args.csv_path, 256) << ", " << samples << " samples\n\n";
+  std::cout << "Rainflow cycles (ASTM E1049-85, residue as half cycles) of column '" << ceilplan::printableText(args.column)
+            << "' in " << ceilplan::printableText(args.csv_path, 256) << ", " << samples << " samples\n\n";
   std::cout << std::right << std::setw(10) << "range" << std::setw(10) << "mean" << std::setw(7) << "count"
             << std::setw(12) << "start" << std::setw(12) << "end" << '\n';
   double full = 0.0, half = 0.0, weighted_range = 0.0;
@@ -86,21 +86,21 @@ nlohmann::ordered_json toJson(const std::vector<RainflowCycle>& cycles) {
 }
 
 void writeJson(const std::string& path, const std::vector<RainflowCycle>& cycles) {
-  TemporaryOutput output(path);
+  io::TemporaryOutput output(path);
   {
     std::ofstream out(output.path());
-    if (!out) throw Error("cannot open " + printableText(path, 256) + " for writing; check the directory");
+    if (!out) throw Error("cannot open " + ceilplan::printableText(path, 256) + " for writing; check the directory");
     out << toJson(cycles).dump(2) << '\n';
-    if (!out.flush()) throw Error("failed while writing " + printableText(path, 256) + " (disk full?)");
+    if (!out.flush()) throw Error("failed while writing " + ceilplan::printableText(path, 256) + " (disk full?)");
   }
   output.commit();
 }
 
 void runRainflow(const RainflowArguments& args) {
-  installSignalCleanup();  // idempotent; main() should call it first (issue 12)
+  io::installSignalCleanup();  // idempotent; main() should call it first (issue 12)
   if (!args.json_path.empty() && std::filesystem::is_directory(args.json_path))
-    throw InputError("--json " + printableText(args.json_path, 256) + " is a directory; give a file name");
-  const CsvColumns table = CsvColumns::read(args.csv_path, {args.column}, {kTimeColumn});
+    throw InputError("--json " + ceilplan::printableText(args.json_path, 256) + " is a directory; give a file name");
+  const io::CsvColumns table = io::CsvColumns::read(args.csv_path, {args.column}, {kTimeColumn});
   checkSeries(table, args.column);
   const std::vector<RainflowCycle> cycles = battery::countRainflowCycles(table.column(args.column));
   printCycles(args, table.rowCount(), cycles);

@@ -1,13 +1,11 @@
 #pragma once
 
-#include <stdexcept>
-
 namespace ceilplan::app {
 
-// Exit codes of the `ceilplan` executable (documented in docs/cli.md).
+// Exit codes of the `ceilplan` executable (docs/cli.md).
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitInputError = 1;  // bad input or a failed computation, with a one-line reason
-inline constexpr int kExitUsage = 2;       // unknown flag, missing argument, malformed config file
-inline constexpr int kExitNoPath = 3;      // the planner proved or gave up on finding a path
+inline constexpr int kExitFailure = 1;     // a runtime failure: a computation or a write failed
+inline constexpr int kExitBadInput = 2;    // bad input or usage: a file, key, flag or value is wrong
+inline constexpr int kExitNoPath = 3;      // no path, or a well-formed request that cannot be met (infeasible)
 
 }  // namespace ceilplan::app

@@ -1,37 +1,65 @@
 #include "command_registry.hpp"
 #include "errors.hpp"
+#include "yaml_config.hpp"
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/version.hpp"
-#include "yaml_config.hpp"
+#include "ceilplan/io/temporary_output.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <exception>
 #include <iostream>
 #include <memory>
+#include <new>
 
 int main(int argc, char** argv) {
   using namespace ceilplan::app;
-  CLI::App app{
-      "ceilplan: battery-wear-aware inspection planning for multirotors flying under ceilings"};
+  ceilplan::io::installSignalCleanup();  // before any thread: Ctrl-C leaves no partial output
+  CLI::App app{"ceilplan: battery-wear-aware inspection planning for multirotors flying under ceilings"};
   app.require_subcommand(1);
   app.config_formatter(std::make_shared<YamlConfig>(app));
   app.set_config("--config", "", "YAML file whose keys are the chosen command's long flag names");
   app.set_version_flag("--version", ceilplan::buildInformation());
+  app.add_subcommand("version", "Print the version, the git revision and the libraries' versions")->callback([] {
+    std::cout << ceilplan::buildInformation();
+  });
+  CLI::App* help = app.add_subcommand("help", "List the commands, or describe one: ceilplan help COMMAND");
+  auto topic = std::make_shared<std::string>();
+  help->add_option("command", *topic, "the command to describe");
   addRegisteredCommands(app);
+  help->callback([&app, topic] {
+    if (topic->empty()) {
+      std::cout << app.help();
+      return;
+    }
+    try {
+      std::cout << app.get_subcommand(*topic)->help();
+    } catch (const CLI::OptionNotFound&) {
+      throw ceilplan::InputError("no command '" + *topic + "'; 'ceilplan help' lists them");
+    }
+  });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
     std::cerr << "ceilplan: error: " << e.what() << " (see 'ceilplan --help')\n";
-    return kExitUsage;
+    return kExitBadInput;
   } catch (const ceilplan::NoPathError& e) {
     std::cerr << "ceilplan: no path: " << e.what() << '\n';
     return kExitNoPath;
+  } catch (const ceilplan::InfeasibleError& e) {
+    std::cerr << "ceilplan: error: " << e.what() << '\n';
+    return kExitNoPath;
+  } catch (const ceilplan::InputError& e) {
+    std::cerr << "ceilplan: error: " << e.what() << '\n';
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ceilplan: error: out of memory; use a coarser map resolution, a smaller map or fewer targets\n";
+    return kExitFailure;
   } catch (const std::exception& e) {
     std::cerr << "ceilplan: error: " << e.what() << '\n';
-    return kExitInputError;
+    return kExitFailure;
   }
   return kExitOk;
 }

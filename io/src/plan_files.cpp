@@ -1,7 +1,9 @@
 #include "ceilplan/io/plan_files.hpp"
 
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/io/atomic_file.hpp"
+#include "ceilplan/io/csv_columns.hpp"
 #include "ceilplan/io/map_views.hpp"
 
 #include "ceilplan/core/format.hpp"
@@ -55,6 +57,22 @@ void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanRes
   json.update(extra);
   writeTextAtomically(dir / "plan.json", [&](std::ostream& stream) { stream << std::setw(2) << json << '\n'; });
   writePathCsv(dir / "path.csv", evaluation);
+}
+
+std::vector<Eigen::Vector3d> readPathWaypoints(const std::filesystem::path& file) {
+  const CsvColumns table = CsvColumns::read(file, {}, {"x", "y", "z", "x_m", "y_m", "z_m"});
+  const std::string suffix = table.hasColumn("x") ? "" : "_m";
+  for (const char* axis : {"x", "y", "z"})
+    if (!table.hasColumn(axis + suffix))
+      throw InputError(file.string() + ": a path CSV needs columns x, y, z (or x_m, y_m, z_m)");
+  const std::vector<double>&x = table.column("x" + suffix), &y = table.column("y" + suffix), &z = table.column("z" + suffix);
+  std::vector<Eigen::Vector3d> waypoints;
+  for (std::size_t row = 0; row < table.rowCount(); ++row) {
+    const Eigen::Vector3d p(x[row], y[row], z[row]);
+    if (waypoints.empty() || (p - waypoints.back()).norm() > 1e-9) waypoints.push_back(p);
+  }
+  if (waypoints.size() < 2) throw InputError(file.string() + ": a path needs at least 2 distinct points");
+  return waypoints;
 }
 
 std::string figuresLine(const planner::PathEvaluation& e) {

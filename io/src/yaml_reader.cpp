@@ -2,6 +2,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/core/spelling.hpp"
 
 #include <algorithm>
@@ -25,30 +26,11 @@ const std::vector<std::string>& signatureKeys(FileKind kind) {
   return mission;
 }
 
-// What a scalar says, for messages: control characters and bytes outside printable ASCII are
-// escaped, long values cut, so a message never echoes terminal escapes or binary junk.
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (unsigned char c : text) {
-    if (out.size() > 40) {
-      out += "...";
-      break;
-    }
-    if (c >= 0x20 && c < 0x7f) {
-      out += static_cast<char>(c);
-    } else {
-      static const char* hex = "0123456789abcdef";
-      out += "\\x";
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out;
-}
-
+// What a scalar says, for messages: escaped and cut (printableText), so a message never echoes
+// terminal escapes or binary junk.
 std::string shown(const YAML::Node& node) {
   if (!node.IsScalar()) return node.IsSequence() ? "a list" : node.IsMap() ? "a map" : "nothing";
-  return "'" + escaped(node.Scalar()) + "'";
+  return "'" + printableText(node.Scalar(), 40) + "'";
 }
 
 }  // namespace
@@ -117,7 +99,7 @@ void Section::allowOnly(const std::vector<std::string>& known) const {
              "'); give it where a " + kindName(other) + " is expected");
     }
   }
-  fail("unknown key '" + keyPath(escaped(unknown.front())) + "'" + didYouMean(unknown.front(), known));
+  fail("unknown key '" + keyPath(printableText(unknown.front(), 40)) + "'" + didYouMean(unknown.front(), known));
 }
 
 Section Section::section(const std::string& key) const {

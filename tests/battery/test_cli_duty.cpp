@@ -21,31 +21,28 @@ struct ExpectedExit {
   const char* arguments;
   int exit_code;
   const char* says;  // a fragment of the one-line message
-  // Passes only once main.cpp maps ceilplan::InputError to 2 and ceilplan::InfeasibleError to 3
-  // (issue 12); until then these rows run in the DISABLED_ instantiation below.
-  bool awaits_main_mapping;
 };
 
 const ExpectedExit kDutyExitCodes[] = {
-    {"--days 1", 0, "", false},
-    {"--dt-s 1e-9", 2, "--dt-s", false},             // allocated without bound until bad_alloc
-    {"--dt-s -30", 2, "--dt-s", false},
-    {"--years 1e6", 2, "--years: must be at most 100, got 1e6", false},  // 365 million days
-    {"--years 0", 2, "--years", false},
-    {"--days 1000000", 2, "--days", false},
-    {"--capacity-ah 1e9", 2, "--capacity-ah", false},
-    {"--flight-min 1e9", 2, "--flight-min", false},
-    {"--eol-soh 1", 2, "--eol-soh", false},
-    {"--woehler-k 100", 2, "--woehler-k", false},
-    {"--chemistry \"$(printf '\\033[31mLiPo')\"", 2, "--chemistry", false},
-    {"--unknown-flag 3", 2, "--unknown-flag", false},
-    {"--dt-s 0.1", 2, "--dt-s 0.1 cuts each 45-min mission into 27000 steps", true},
-    {"--missions-per-day 40", 2, "--missions-per-day 40 missions of 45 min", true},
+    {"--days 1", 0, ""},
+    {"--dt-s 1e-9", 2, "--dt-s"},             // allocated without bound until bad_alloc
+    {"--dt-s -30", 2, "--dt-s"},
+    {"--years 1e6", 2, "--years: must be at most 100, got 1e6"},  // 365 million days
+    {"--years 0", 2, "--years"},
+    {"--days 1000000", 2, "--days"},
+    {"--capacity-ah 1e9", 2, "--capacity-ah"},
+    {"--flight-min 1e9", 2, "--flight-min"},
+    {"--eol-soh 1", 2, "--eol-soh"},
+    {"--woehler-k 100", 2, "--woehler-k"},
+    {"--chemistry \"$(printf '\\033[31mLiPo')\"", 2, "--chemistry"},
+    {"--unknown-flag 3", 2, "--unknown-flag"},
+    {"--dt-s 0.1", 2, "--dt-s 0.1 cuts each 45-min mission into 27000 steps"},
+    {"--missions-per-day 40", 2, "--missions-per-day 40 missions of 45 min"},
     {"--missions-per-day 100 --flight-min 10 --idle-min 1 --charge-max-min 1 --years 100", 2,
-     "a study may hold", true},
-    {"--days 7000 --csv-dir /nonexistent/never-written", 2, "--csv-dir would record", true},
-    {"--temperature-c 298", 2, "kelvin", true},
-    {"--charge-max-min 10", 3, "mission 3 of day 1", true},
+     "a study may hold"},
+    {"--days 7000 --csv-dir /nonexistent/never-written", 2, "--csv-dir would record"},
+    {"--temperature-c 298", 2, "kelvin"},
+    {"--charge-max-min 10", 3, "mission 3 of day 1"},
 };
 
 // Names the row in test listings (ctest shows it), instead of its bytes.
@@ -65,22 +62,13 @@ TEST_P(CliDutyExitCode, FollowsTheTable) {
   }
 }
 
-std::vector<ExpectedExit> exitRows(bool awaits_main_mapping) {
-  std::vector<ExpectedExit> rows;
-  for (const ExpectedExit& row : kDutyExitCodes)
-    if (row.awaits_main_mapping == awaits_main_mapping) rows.push_back(row);
-  return rows;
-}
-
 std::string testName(const std::string& arguments) {
   std::string name;
   for (const char c : arguments) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
   return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Now, CliDutyExitCode, ::testing::ValuesIn(exitRows(false)),
-                         [](const auto& info) { return testName(info.param.arguments); });
-INSTANTIATE_TEST_SUITE_P(DISABLED_AwaitingMainMapping, CliDutyExitCode, ::testing::ValuesIn(exitRows(true)),
+INSTANTIATE_TEST_SUITE_P(Table, CliDutyExitCode, ::testing::ValuesIn(kDutyExitCodes),
                          [](const auto& info) { return testName(info.param.arguments); });
 
 TEST(CliDuty, WithNoArgumentsReproducesThePapersTable) {

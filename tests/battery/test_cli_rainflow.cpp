@@ -44,24 +44,21 @@ struct ExpectedExit {
   const char* csv;  // the file's bytes
   int exit_code;
   const char* says;  // a fragment of the one-line message
-  // Passes only once main.cpp maps ceilplan::InputError to 2 (issue 12); until then these rows
-  // run in the DISABLED_ instantiation below.
-  bool awaits_main_mapping;
 };
 
 const ExpectedExit kRainflowExitCodes[] = {
-    {"astm", "t_s,soc\n0,0.2\n10,0.5\n20,0.1\n30,0.9\n", 0, "", false},
-    {"bom_and_crlf", "\xEF\xBB\xBFsoc,t_s\r\n0.9,0\r\n0.3,1\r\n0.8,2\r\n", 0, "", false},
-    {"quoted_text_column", "t_s,soc,note\n0,0.9,\"take-off, north\"\n1,0.3,\"say \"\"low\"\"\"\n", 0, "", false},
-    {"missing_column", "t_s,SOC\n0,0.9\n1,0.3\n", 2, "no column 'soc'; columns: t_s, SOC", true},
-    {"garbage_row", "t_s,soc\n0,0.9\n1,0.3,7,?\n", 2, "line 3: 4 fields, but the header names 2 columns", true},
-    {"garbage_value", "t_s,soc\n0,0.9\n1,0.3x\n", 2, "line 3, column 'soc': '0.3x' is not a number", true},
-    {"terminal_escape", "t_s,soc\n0,0.9\n1,\x1b[31m\x07\x9b" "2J\n", 2, "'\\x1B[31m\\x07\\x9B2J' is not a number", true},
-    {"binary", "\x7f" "ELF\x02\x01\x01\x03,\x04\n\x05", 2, "line 1: the header holds control characters ('\\x7FELF", true},
-    {"one_row", "t_s,soc\n0,0.9\n", 2, "has 1 data row; a rainflow count needs at least 2 samples", true},
-    {"header_only", "t_s,soc\n", 2, "has 0 data rows", true},
-    {"nan_row", "t_s,soc\n0,0.9\n1,NaN\n2,0.5\n", 2, "line 3, column 'soc': 'NaN' is not a finite number", true},
-    {"empty", "", 2, "is empty; expected a header row", true},
+    {"astm", "t_s,soc\n0,0.2\n10,0.5\n20,0.1\n30,0.9\n", 0, ""},
+    {"bom_and_crlf", "\xEF\xBB\xBFsoc,t_s\r\n0.9,0\r\n0.3,1\r\n0.8,2\r\n", 0, ""},
+    {"quoted_text_column", "t_s,soc,note\n0,0.9,\"take-off, north\"\n1,0.3,\"say \"\"low\"\"\"\n", 0, ""},
+    {"missing_column", "t_s,SOC\n0,0.9\n1,0.3\n", 2, "no column 'soc'; columns: t_s, SOC"},
+    {"garbage_row", "t_s,soc\n0,0.9\n1,0.3,7,?\n", 2, "line 3: 4 fields, but the header names 2 columns"},
+    {"garbage_value", "t_s,soc\n0,0.9\n1,0.3x\n", 2, "line 3, column 'soc': '0.3x' is not a number"},
+    {"terminal_escape", "t_s,soc\n0,0.9\n1,\x1b[31m\x07\x9b" "2J\n", 2, "'\\x1B[31m\\x07\\x9B2J' is not a number"},
+    {"binary", "\x7f" "ELF\x02\x01\x01\x03,\x04\n\x05", 2, "line 1: the header holds control characters ('\\x7FELF"},
+    {"one_row", "t_s,soc\n0,0.9\n", 2, "has 1 data row; a rainflow count needs at least 2 samples"},
+    {"header_only", "t_s,soc\n", 2, "has 0 data rows"},
+    {"nan_row", "t_s,soc\n0,0.9\n1,NaN\n2,0.5\n", 2, "line 3, column 'soc': 'NaN' is not a finite number"},
+    {"empty", "", 2, "is empty; expected a header row"},
 };
 
 // Names the row in test listings (ctest shows it), instead of its bytes.
@@ -88,16 +85,7 @@ TEST_P(CliRainflowExitCode, FollowsTheTableWithOneEscapedLineAndNoOutput) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "output written for bad input";
 }
 
-std::vector<ExpectedExit> exitRows(bool awaits_main_mapping) {
-  std::vector<ExpectedExit> rows;
-  for (const ExpectedExit& row : kRainflowExitCodes)
-    if (row.awaits_main_mapping == awaits_main_mapping) rows.push_back(row);
-  return rows;
-}
-
-INSTANTIATE_TEST_SUITE_P(Now, CliRainflowExitCode, ::testing::ValuesIn(exitRows(false)),
-                         [](const auto& info) { return std::string(info.param.name); });
-INSTANTIATE_TEST_SUITE_P(DISABLED_AwaitingMainMapping, CliRainflowExitCode, ::testing::ValuesIn(exitRows(true)),
+INSTANTIATE_TEST_SUITE_P(Table, CliRainflowExitCode, ::testing::ValuesIn(kRainflowExitCodes),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
@@ -239,7 +227,7 @@ TEST(CliRainflow, AFileWithoutTimeColumnAndWithCommentsAndBlankLines) {
   EXPECT_NE(result.out.find("1 cycles in all"), std::string::npos) << result.out;
 }
 
-TEST(CliRainflow, DISABLED_AwaitingMainMapping_MissingFileOrDirectoryIsBadInput) {
+TEST(CliRainflow, MissingFileOrDirectoryIsBadInput) {
   const auto dir = scratchDirectory("missing_file_code");
   EXPECT_EQ(runCeilplan("rainflow --csv " + (dir / "nope.csv").string() + " --column soc").exit_code, 2);
   const auto r = runCeilplan("rainflow --csv " + dir.string() + " --column soc");

@@ -33,10 +33,10 @@ void writeFile(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
-// Exit 1 with one line on stderr that contains `needle`.
-void expectOneLineError(const std::string& arguments, const std::string& needle) {
+// Exit `exit_code` (2: bad input; docs/cli.md) with one line on stderr that contains `needle`.
+void expectOneLineError(const std::string& arguments, const std::string& needle, int exit_code = 2) {
   const auto result = runCeilplan(arguments);
-  EXPECT_EQ(result.exit_code, 1) << arguments;
+  EXPECT_EQ(result.exit_code, exit_code) << arguments;
   EXPECT_NE(result.err.find(needle), std::string::npos) << arguments << "\n" << result.err;
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
 }
@@ -160,7 +160,7 @@ TEST_F(CalibrateCommand, AFailedFitSaysWhatFailedAndWhatToDo) {
   writeFile(dir / "outlier.csv", "gap_m,current_a\nnone,9.5\n0.05,1e200\n0.1,9.0\n0.3,9.4\n0.5,9.5\n");
   const auto out = dir / "v.yaml";
   expectOneLineError("calibrate --data " + (dir / "outlier.csv").string() + " --out " + out.string(),
-                     "squared errors overflow: current_a reaches 1e+200 A; give every current in amperes");
+                     "squared errors overflow: current_a reaches 1e+200 A; give every current in amperes", 1);
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

@@ -30,7 +30,7 @@ TEST(ProbeCommand, UnderTheDeckReportsTheGapsAndWritesJson) {
   EXPECT_EQ(json["rotors"].size(), 4u);
 }
 
-TEST(ProbeCommand, BadInputGivesOneLineAndExitCodeOne) {
+TEST(ProbeCommand, BadInputGivesOneLineAndExitCodeTwo) {
   for (const std::string& arguments :
        {"probe --map " + kBridge + " --at 6,0,30 --vehicle " + kVehicle,            // outside the map
         "probe --map " + kBridge + " --at 6,0 --vehicle " + kVehicle,               // two numbers
@@ -39,7 +39,7 @@ TEST(ProbeCommand, BadInputGivesOneLineAndExitCodeOne) {
         "probe --map " + kBridge + " --at 6,0,3 --vehicle /nonexistent.yaml",       // missing vehicle
         "probe --map " + kVehicle + " --at 6,0,3 --vehicle " + kVehicle}) {         // not a map
     const auto result = testing::runCeilplan(arguments);
-    EXPECT_EQ(result.exit_code, 1) << arguments << "\n" << result.err;
+    EXPECT_EQ(result.exit_code, 2) << arguments << "\n" << result.err;
     EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
     EXPECT_EQ(result.err.rfind("ceilplan: error: ", 0), 0u) << result.err;
   }
@@ -59,7 +59,7 @@ TEST(MapinfoCommand, SummarisesTheBridge) {
 TEST(MapgenCommand, RefusesAnUnknownSceneAndLeavesNoFile) {
   const auto dir = testing::scratchDirectory("mapgen");
   const auto result = testing::runCeilplan("mapgen --scene castle --out " + (dir / "x.bt").string());
-  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("unknown scene"), std::string::npos) << result.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "x.bt"));
 }

@@ -264,20 +264,20 @@ void expectFailure(const std::string& name, const MissionText& text, const std::
 TEST(TourCommand, TargetInsideAnObstacleIsNamed) {
   MissionText text;
   text.extra_targets = "  - {name: buried, point: [5.0, 0.0, 1.5], dwell_s: 5, standoff_m: [0.3, 0.6]}\n";
-  expectFailure("buried", text, "", 1, "target 'buried'");
+  expectFailure("buried", text, "", 2, "target 'buried'");
 }
 
 TEST(TourCommand, ReserveAboveStartSocIsRejected) {
   MissionText text;
   text.battery = "{capacity_ah: 5.2, start_soc: 0.5, reserve_soc: 0.6, charge_current_a: 10.4}";
-  expectFailure("reserve", text, "", 1, "reserve");
+  expectFailure("reserve", text, "", 2, "reserve");
 }
 
 TEST(TourCommand, TargetNoSortieCanReachAndReturnFromIsNamed) {
   MissionText text;
   text.battery = "{capacity_ah: 0.6, start_soc: 0.95, reserve_soc: 0.25, charge_current_a: 1.2}";
   text.extra_targets = "  - {name: long_look, point: [7.0, -1.0, 3.0], dwell_s: 200, standoff_m: [0.3, 1.5]}\n";
-  expectFailure("long_look", text, " --mode ceiling", 1, "long_look");
+  expectFailure("long_look", text, " --mode ceiling", 3, "long_look");
 }
 
 TEST(TourCommand, TargetWithAViewpointButNoWayInIsNamedWithExitCode3) {
@@ -314,7 +314,7 @@ TEST(TourCommand, PairwisePlannersStillPlanEveryLeg) {
 TEST(TourCommand, MissingGeodeticOriginFailsWhenExporting) {
   MissionText text;
   text.origin = "";
-  expectFailure("origin", text, "", 1, "origin");
+  expectFailure("origin", text, "", 2, "origin");
 }
 
 }  // namespace

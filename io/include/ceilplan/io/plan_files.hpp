@@ -27,6 +27,12 @@ void writePathCsv(const std::filesystem::path& file, const planner::PathEvaluati
 void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanResult& plan,
                         const planner::PathEvaluation& evaluation, const nlohmann::json& extra);
 
+// The points of a path CSV: columns x, y, z (path.csv of plan and tour) or x_m, y_m, z_m
+// (trajectory.csv), other columns ignored, whatever they hold; a point repeated on consecutive
+// rows (path.csv's segment joints, hovering) is kept once. Throws ceilplan::InputError naming
+// the file, line and column, or for fewer than 2 distinct points.
+std::vector<Eigen::Vector3d> readPathWaypoints(const std::filesystem::path& file);
+
 // One line of figures for a terminal.
 std::string figuresLine(const planner::PathEvaluation& evaluation);
 

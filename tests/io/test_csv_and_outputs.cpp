@@ -2,9 +2,9 @@
 // column-picking CSV reader, the escaping of echoed text, and outputs that appear whole or not
 // at all.
 
-#include "csv_columns.hpp"
-#include "printable_text.hpp"
-#include "signal_cleanup.hpp"
+#include "ceilplan/io/csv_columns.hpp"
+#include "ceilplan/core/printable_text.hpp"
+#include "ceilplan/io/temporary_output.hpp"
 
 #include "ceilplan/core/error.hpp"
 
@@ -16,7 +16,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 namespace {
 
 CsvColumns parse(const std::string& text, const std::vector<std::string>& required,
@@ -35,14 +35,14 @@ std::string errorOf(const std::string& text, const std::vector<std::string>& req
 }
 
 TEST(PrintableText, EscapesControlBytesAndInvalidUtf8ButKeepsLetters) {
-  EXPECT_EQ(printableText("soc_%"), "soc_%");
-  EXPECT_EQ(printableText("Ladezustand \xC2\xB5"), "Ladezustand \xC2\xB5");  // µ is a letter
-  EXPECT_EQ(printableText("\x1b[2J\r\n\x07"), "\\x1B[2J\\x0D\\x0A\\x07");
-  EXPECT_EQ(printableText("\xC2\x9B" "31m"), "\\xC2\\x9B31m");  // C1 CSI, as UTF-8
-  EXPECT_EQ(printableText("\x9B" "31m"), "\\x9B31m");           // C1 CSI, raw byte
-  EXPECT_EQ(printableText("\xE2\x82"), "\\xE2\\x82");           // a cut sequence
-  EXPECT_EQ(printableText(std::string("a\0b", 3)), "a\\x00b");
-  EXPECT_EQ(printableText(std::string(100, 'x'), 8), "xxxxxxxx...");
+  EXPECT_EQ(ceilplan::printableText("soc_%"), "soc_%");
+  EXPECT_EQ(ceilplan::printableText("Ladezustand \xC2\xB5"), "Ladezustand \xC2\xB5");  // µ is a letter
+  EXPECT_EQ(ceilplan::printableText("\x1b[2J\r\n\x07"), "\\x1B[2J\\x0D\\x0A\\x07");
+  EXPECT_EQ(ceilplan::printableText("\xC2\x9B" "31m"), "\\xC2\\x9B31m");  // C1 CSI, as UTF-8
+  EXPECT_EQ(ceilplan::printableText("\x9B" "31m"), "\\x9B31m");           // C1 CSI, raw byte
+  EXPECT_EQ(ceilplan::printableText("\xE2\x82"), "\\xE2\\x82");           // a cut sequence
+  EXPECT_EQ(ceilplan::printableText(std::string("a\0b", 3)), "a\\x00b");
+  EXPECT_EQ(ceilplan::printableText(std::string(100, 'x'), 8), "xxxxxxxx...");
 }
 
 TEST(CsvColumns, PicksTheNamedColumnsAndIgnoresTheOthers) {
@@ -99,4 +99,4 @@ TEST(TemporaryOutput, AppearsOnlyWhenCommittedAndIsRemovedOtherwise) {
 }
 
 }  // namespace
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

@@ -6,12 +6,11 @@
 // Nothing runs in signal context. installSignalCleanup() blocks SIGINT and SIGTERM in the calling
 // thread, and so in every thread started after it, and starts one thread that takes them with
 // sigwait(): it removes every temporary output still registered, then lets the signal end the
-// process as it would have (exit status 128 + the signal's number). It uses only POSIX and the
-// standard library, so it can move to core/ when a library needs it.
+// process as it would have (exit status 128 + the signal's number).
 
 #include <filesystem>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 
 // Call once, first thing in main(), before any other thread starts (a thread started earlier
 // would still take the signals and end the process without the cleanup). Further calls do
@@ -42,4 +41,4 @@ class TemporaryOutput {
   bool committed_ = false;
 };
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 
 class CsvColumns {
  public:
@@ -42,4 +42,4 @@ class CsvColumns {
   std::vector<std::size_t> lines_;
 };
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

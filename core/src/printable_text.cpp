@@ -1,8 +1,8 @@
-#include "printable_text.hpp"
+#include "ceilplan/core/printable_text.hpp"
 
 #include <cstdio>
 
-namespace ceilplan::app {
+namespace ceilplan {
 namespace {
 
 // Length of the valid UTF-8 sequence starting at text[i] that encodes a printable code point
@@ -58,4 +58,4 @@ std::string printableText(std::string_view text, std::size_t max_chars) {
   return out;
 }
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan

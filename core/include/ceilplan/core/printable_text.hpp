@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace ceilplan::app {
+namespace ceilplan {
 
 // `text` with every byte that is not printable escaped as \xHH: ASCII control characters
 // (ESC, CR, NUL...), DEL, C1 controls (U+0080..U+009F, which some terminals obey as escapes)
@@ -14,4 +14,4 @@ namespace ceilplan::app {
 // and so does a backslash. Longer than `max_chars` characters, the rest becomes "...".
 std::string printableText(std::string_view text, std::size_t max_chars = 64);
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan

@@ -1,6 +1,6 @@
-#include "csv_columns.hpp"
+#include "ceilplan/io/csv_columns.hpp"
 
-#include "printable_text.hpp"
+#include "ceilplan/core/printable_text.hpp"
 
 #include "ceilplan/core/error.hpp"
 
@@ -11,7 +11,7 @@
 #include <cstring>
 #include <fstream>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 namespace {
 
 constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
@@ -159,4 +159,4 @@ const std::vector<double>& CsvColumns::column(const std::string& name) const {
   return kept_[static_cast<std::size_t>(it - kept_names_.begin())];
 }
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io

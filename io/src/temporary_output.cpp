@@ -1,4 +1,4 @@
-#include "signal_cleanup.hpp"
+#include "ceilplan/io/temporary_output.hpp"
 
 #include "ceilplan/core/error.hpp"
 
@@ -12,7 +12,7 @@
 #include <system_error>
 #include <thread>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -100,4 +100,4 @@ void TemporaryOutput::commit() {
   registry().erase(temporary_);
 }
 
-}  // namespace ceilplan::app
+}  // namespace ceilplan::io
