@@ -109,6 +109,7 @@ void runImport(const ImportOptions& options) {
   if (!std::isfinite(options.max_range_m) || options.max_range_m < 0.0)
     throw ceilplan::InputError("--max-range " + formatNumber(options.max_range_m) + ": a finite number of metres >= 0 (0: none)");
   const env::MeshInterior interior = env::meshInteriorFromName(options.interior);
+  if (!options.crs.empty()) io::ProjectedFrame::validate(options.crs);
   const bool from_mesh = !options.mesh.empty();
   const std::string source = from_mesh ? options.mesh : options.points;
 

@@ -7,23 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <regex>
 
 namespace ceilplan::io {
-
-// PROJ objects belong to one context and are not thread-safe: the frame owns its own.
-struct ProjectedFrame::Projection {
-  PJ_CONTEXT* context = nullptr;
-  PJ* to_wgs84 = nullptr;  // projected (easting, northing) -> (longitude, latitude) in degrees
-  double unit_m = 1.0;     // metres per unit of the CRS's axes (US survey feet exist)
-  GeographicLib::LocalCartesian enu;
-
-  ~Projection() {
-    if (to_wgs84) proj_destroy(to_wgs84);
-    if (context) proj_context_destroy(context);
-  }
-  std::string lastError() const { return proj_context_errno_string(context, proj_context_errno(context)); }
-};
 
 namespace {
 
@@ -37,43 +24,57 @@ struct Object {
 
 }  // namespace
 
+// PROJ objects belong to one context and are not thread-safe: the frame owns its own.
+struct ProjectedFrame::Projection {
+  // Members own their PROJ objects, so a constructor that throws half-way frees them.
+  std::unique_ptr<PJ_CONTEXT, PJ_CONTEXT* (*)(PJ_CONTEXT*)> owned_context{proj_context_create(), proj_context_destroy};
+  PJ_CONTEXT* context = owned_context.get();
+  std::unique_ptr<PJ, PJ* (*)(PJ*)> to_wgs84{nullptr, proj_destroy};  // (easting, northing) -> (lon, lat) in degrees
+  double unit_m = 1.0;     // metres per unit of the CRS's axes (US survey feet exist)
+  std::string name;
+  GeographicLib::LocalCartesian enu;
+
+  explicit Projection(const std::string& crs) {
+    if (!std::regex_match(crs, std::regex("EPSG:[0-9]+")))
+      throw ceilplan::InputError("--crs '" + crs + "': expected EPSG:<code>, e.g. EPSG:25832 (ETRS89 / UTM zone 32N)");
+    proj_log_level(context, PJ_LOG_NONE);  // errors come back through proj_context_errno
+    Object source{proj_create(context, crs.c_str())};
+    if (!source.pj) throw ceilplan::InputError("unknown coordinate reference system " + crs + ": PROJ's database has no such code");
+    Object horizontal{nullptr};
+    PJ* projected = source.pj;
+    if (proj_get_type(source.pj) == PJ_TYPE_COMPOUND_CRS) {
+      horizontal.pj = proj_crs_get_sub_crs(context, source.pj, 0);
+      projected = horizontal.pj;
+    }
+    if (!projected || proj_get_type(projected) != PJ_TYPE_PROJECTED_CRS)
+      throw ceilplan::InputError(crs + " (" + proj_get_name(source.pj) +
+                                 ") is not a projected coordinate reference system: its coordinates are not metres east and north");
+    name = proj_get_name(source.pj);
+
+    Object system{proj_crs_get_coordinate_system(context, projected)};
+    if (!system.pj || !proj_cs_get_axis_info(context, system.pj, 0, nullptr, nullptr, nullptr, &unit_m, nullptr, nullptr, nullptr))
+      throw ceilplan::InputError(crs + ": PROJ cannot tell its axes' unit (" + lastError() + ")");
+    Object wgs84{proj_create(context, "EPSG:4326")};
+    Object operation{proj_create_crs_to_crs_from_pj(context, projected, wgs84.pj, nullptr, nullptr)};
+    if (!operation.pj) throw ceilplan::InputError(crs + ": PROJ has no transformation to WGS 84 (" + lastError() + ")");
+    // Easting first in, longitude first out, whatever axis order the CRS definitions declare.
+    to_wgs84.reset(proj_normalize_for_visualization(context, operation.pj));
+    if (!to_wgs84) throw ceilplan::InputError(crs + ": PROJ cannot normalise its axis order (" + lastError() + ")");
+  }
+  Projection(const Projection&) = delete;
+  Projection& operator=(const Projection&) = delete;
+  std::string lastError() const { return proj_context_errno_string(context, proj_context_errno(context)); }
+};
+
+void ProjectedFrame::validate(const std::string& crs) { Projection check(crs); }
+
 ProjectedFrame::ProjectedFrame(const std::string& crs, const Eigen::Vector3d& origin_projected)
-    : crs_(crs), origin_projected_(origin_projected), projection_(std::make_unique<Projection>()) {
-  if (!std::regex_match(crs, std::regex("EPSG:[0-9]+")))
-    throw ceilplan::InputError("--crs '" + crs + "': expected EPSG:<code>, e.g. EPSG:25832 (ETRS89 / UTM zone 32N)");
+    : crs_(crs), origin_projected_(origin_projected), projection_(std::make_unique<Projection>(crs)) {
   if (!origin_projected.allFinite()) throw ceilplan::InputError("the local origin " + formatPoint(origin_projected) + " is not finite");
   Projection& p = *projection_;
-  p.context = proj_context_create();
-  proj_log_level(p.context, PJ_LOG_NONE);  // errors come back through proj_context_errno
-
-  Object source{proj_create(p.context, crs.c_str())};
-  if (!source.pj) throw ceilplan::InputError("unknown coordinate reference system " + crs + " (PROJ: " + p.lastError() + ")");
-  Object horizontal{nullptr};
-  PJ* projected = source.pj;
-  if (proj_get_type(source.pj) == PJ_TYPE_COMPOUND_CRS) {
-    horizontal.pj = proj_crs_get_sub_crs(p.context, source.pj, 0);
-    projected = horizontal.pj;
-  }
-  if (!projected || proj_get_type(projected) != PJ_TYPE_PROJECTED_CRS)
-    throw ceilplan::InputError(crs + " (" + proj_get_name(source.pj) +
-                               ") is not a projected coordinate reference system: its coordinates are not metres east and north");
-  name_ = proj_get_name(source.pj);
-
-  Object system{proj_crs_get_coordinate_system(p.context, projected)};
-  double unit = 1.0;
-  if (!system.pj || !proj_cs_get_axis_info(p.context, system.pj, 0, nullptr, nullptr, nullptr, &unit, nullptr, nullptr, nullptr))
-    throw ceilplan::InputError(crs + ": PROJ cannot tell its axes' unit (" + p.lastError() + ")");
-  p.unit_m = unit;
-
-  Object wgs84{proj_create(p.context, "EPSG:4326")};
-  Object operation{proj_create_crs_to_crs_from_pj(p.context, projected, wgs84.pj, nullptr, nullptr)};
-  if (!operation.pj) throw ceilplan::InputError(crs + ": PROJ has no transformation to WGS 84 (" + p.lastError() + ")");
-  // Easting first in, longitude first out, whatever axis order the CRS definitions declare.
-  p.to_wgs84 = proj_normalize_for_visualization(p.context, operation.pj);
-  if (!p.to_wgs84) throw ceilplan::InputError(crs + ": PROJ cannot normalise its axis order (" + p.lastError() + ")");
-
+  name_ = p.name;
   PJ_COORD coordinate = proj_coord(origin_projected.x(), origin_projected.y(), 0.0, 0.0);
-  const PJ_COORD geodetic = proj_trans(p.to_wgs84, PJ_FWD, coordinate);
+  const PJ_COORD geodetic = proj_trans(p.to_wgs84.get(), PJ_FWD, coordinate);
   if (!std::isfinite(geodetic.lp.lam) || !std::isfinite(geodetic.lp.phi) || std::abs(geodetic.lp.phi) > 90.0)
     throw ceilplan::InputError("the origin " + formatPoint(origin_projected) + " lies outside where " + crs + " is defined");
   origin_ = GeodeticOrigin{geodetic.lp.phi, geodetic.lp.lam, origin_projected.z() * p.unit_m};
@@ -104,7 +105,7 @@ void ProjectedFrame::toLocal(std::vector<Eigen::Vector3d>& points) const {
       x[i] = points[first + i].x();
       y[i] = points[first + i].y();
     }
-    proj_trans_generic(p.to_wgs84, PJ_FWD, x.data(), sizeof(double), count, y.data(), sizeof(double), count, nullptr, 0, 0,
+    proj_trans_generic(p.to_wgs84.get(), PJ_FWD, x.data(), sizeof(double), count, y.data(), sizeof(double), count, nullptr, 0, 0,
                        nullptr, 0, 0);
     for (std::size_t i = 0; i < count; ++i) {
       Eigen::Vector3d& point = points[first + i];

@@ -7,6 +7,7 @@
 #include "ceilplan/environment/map_builder.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cstdint>
 #include <filesystem>

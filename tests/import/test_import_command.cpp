@@ -94,21 +94,27 @@ TEST(ImportPoints, PerScanAndPerPointOriginsGiveTheSameRoom) {
 }
 
 TEST(ImportPoints, AThinWallSeenAtGrazingAnglesStaysClosed) {
-  // A 1 cm partition across the room at x = 3.04, scanned from both sides: rays from each
-  // station graze the far side's returns; every return keeps its voxel occupied.
+  // A 1 cm partition across the room at x = 3.04. One scan sees all of it face on; four more,
+  // from stations beside it, see only its far end (y > 3.8), so their rays graze the wall's
+  // nearer voxels. Those voxels hold returns of the first scan and must stay occupied.
   const auto dir = testing::scratchDirectory("thin_wall");
   auto points = testing::sampleBoxSurface(kRoomMin, kRoomMax, 0.03);
-  for (double x : {3.035, 3.045}) {
-    const auto wall = testing::sampleRectangle({x, kRoomMin.y(), kRoomMin.z()}, {0, 4.0, 0}, {0, 0, 3.0}, 0.03);
-    points.insert(points.end(), wall.begin(), wall.end());
+  const auto wall = testing::sampleRectangle({3.035, kRoomMin.y(), kRoomMin.z()}, {0, 4.0, 0}, {0, 0, 3.0}, 0.03);
+  points.insert(points.end(), wall.begin(), wall.end());
+  std::ofstream origins(dir / "origins.csv");
+  origins << "first_point,x,y,z\n0,1.5,2.0,1.5\n";
+  for (double z : {0.5, 1.0, 1.5, 2.0}) {
+    origins << points.size() << ",2.93,0.3," << z << "\n";
+    for (const Eigen::Vector3d& p : wall)
+      if (p.y() > 3.8) points.push_back(p);
   }
+  origins.close();
   testing::writePcd(dir / "wall.pcd", points, false);
-  std::ofstream(dir / "origins.csv") << "x,y,z\n0.5,0.5,2.5\n";  // one corner station sees the wall at grazing angles
   importOk("--points " + (dir / "wall.pcd").string() + " --origins " + (dir / "origins.csv").string() +
            " --resolution 0.1 --out " + (dir / "wall.bt").string());
   const OccupancyMap map = OccupancyMap::load(dir / "wall.bt");
-  for (double y = 0.55; y < 4.0; y += 0.5)
-    for (double z = 0.25; z < 3.0; z += 0.5) {
+  for (double y = 0.05; y < 4.0; y += 0.1)
+    for (double z = 0.05; z < 3.0; z += 0.1) {
       const octomap::OcTreeNode* node = map.tree().search(3.04, y, z);
       ASSERT_NE(node, nullptr) << y << ", " << z;
       EXPECT_TRUE(map.tree().isNodeOccupied(node)) << y << ", " << z;

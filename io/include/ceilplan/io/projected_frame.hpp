@@ -30,6 +30,10 @@ class ProjectedFrame {
   ProjectedFrame(const ProjectedFrame&) = delete;
   ProjectedFrame& operator=(const ProjectedFrame&) = delete;
 
+  // The checks of the constructor that do not need an origin, so a bad --crs is refused before
+  // any file is read.
+  static void validate(const std::string& crs);
+
   // A local origin near the data: the centre of their horizontal bounding box rounded to whole
   // metres, at the lowest height rounded down to a whole metre.
   static Eigen::Vector3d originNear(const std::vector<Eigen::Vector3d>& projected);
