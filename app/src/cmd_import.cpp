@@ -196,7 +196,8 @@ void runImport(const ImportOptions& options) {
   std::printf("import: %s -> %s\n", source.c_str(), out.string().c_str());
   std::printf("resolution_m: %s\n", formatNumber(options.resolution_m).c_str());
   if (skipped > 0) std::printf("skipped_non_finite_points: %zu\n", skipped);
-  for (const auto& [name, value] : built.figures) std::printf("%s: %s\n", name.c_str(), formatNumber(value).c_str());
+  for (const auto& [name, value] : built.figures)
+    std::printf("%s: %s\n", name.c_str(), formatNumber(value, value == std::floor(value) ? 15 : 6).c_str());
   std::printf("free_space: %s\n", built.free_space.c_str());
   std::printf("extent_m: %s to %s\n", formatPoint({x0, y0, z0}).c_str(), formatPoint({x1, y1, z1}).c_str());
   if (frame) {

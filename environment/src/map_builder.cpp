@@ -8,10 +8,10 @@
 #include "map_builder_checks.hpp"
 
 #include <algorithm>
-#include <array>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <limits>
-#include <map>
 #include <thread>
 
 namespace ceilplan::environment {
@@ -143,66 +143,80 @@ BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const Sens
     throw ceilplan::InputError("max range must be a finite number of metres (0 for none)");
   Eigen::AlignedBox3d box = boundsOf(points_m);
   for (const Eigen::Vector3d& origin : origins.origin_m) box.extend(origin);
-  detail::importFrame(box, 0.0, resolution);  // refuses what could not be held, before the tree grows
+  const GridFrame frame = detail::importFrame(box, 0.0, resolution);  // refused here, before anything is allocated
+  const double max_range = options.max_range_m > 0.0 ? options.max_range_m : std::numeric_limits<double>::infinity();
 
-  // Scans whose origins share a voxel go in together: one insertion per sensor position, even
-  // when the origins file gives every point its own.
-  auto tree = std::make_unique<octomap::OcTree>(resolution);
-  std::map<std::array<octomap::key_type, 3>, std::vector<std::size_t>> groups;  // ordered: a reproducible insertion order
-  for (std::size_t s = 0; s < origins.origin_m.size(); ++s) {
-    const Eigen::Vector3d& o = origins.origin_m[s];
-    const octomap::OcTreeKey key = tree->coordToKey(o.x(), o.y(), o.z());
-    groups[{key[0], key[1], key[2]}].push_back(s);
-  }
-  const auto scanEnd = [&](std::size_t s) { return s + 1 < origins.first_point.size() ? origins.first_point[s + 1] : points_m.size(); };
-  const double max_range = options.max_range_m > 0.0 ? options.max_range_m : -1.0;
+  // Rays are traced with OctoMap's own voxel traversal (computeRayKeys, the one insertPointCloud
+  // uses) on both cores into a dense grid; insertPointCloud itself hashes every crossed voxel on
+  // one core and took minutes for a few million points (docs/import.md). The rule is the same
+  // as its maximum-likelihood result: crossed voxels are free, voxels holding a return occupied.
+  const std::size_t voxels = frame.voxelCount();
+  const std::unique_ptr<std::atomic<std::uint8_t>[]> crossed(new std::atomic<std::uint8_t>[voxels]());
+  const octomap::OcTree keys(resolution);  // only its key arithmetic is used, read-only from every thread
+  const auto linear = [&](const octomap::OcTreeKey& key) {
+    constexpr int kKeyOffset = 32768;  // OctoMap key of global voxel index 0
+    return frame.linear(int(key[0]) - kKeyOffset - frame.origin()[0], int(key[1]) - kKeyOffset - frame.origin()[1],
+                        int(key[2]) - kKeyOffset - frame.origin()[2]);
+  };
+  const std::size_t scans = origins.origin_m.size();
+  const auto scanOf = [&](std::size_t point) {
+    return static_cast<std::size_t>(std::upper_bound(origins.first_point.begin(), origins.first_point.end(), point) -
+                                    origins.first_point.begin()) - 1;
+  };
+  constexpr std::size_t kPointsPerTask = 16384;
+  const std::size_t tasks = (points_m.size() + kPointsPerTask - 1) / kPointsPerTask;
+  std::vector<std::size_t> returns_per_task(tasks, 0);
+  parallelFor(
+      tasks, workerCount(),
+      [&](std::size_t task) {
+        // A ray crosses fewer voxels than KeyRay's default capacity (100 000): the frame's
+        // diagonal stays below that within VoxelGrid::kMaxVoxels and OctoMap's key range.
+        octomap::KeyRay ray;
+        const std::size_t begin = task * kPointsPerTask, end = std::min(begin + kPointsPerTask, points_m.size());
+        for (std::size_t i = begin, scan = scanOf(begin); i < end; ++i) {
+          while (scan + 1 < scans && origins.first_point[scan + 1] <= i) ++scan;
+          const Eigen::Vector3d& origin = origins.origin_m[scan];
+          const double length = (points_m[i] - origin).norm();
+          const bool returned = length <= max_range;
+          const Eigen::Vector3d stop = returned ? points_m[i] : Eigen::Vector3d(origin + (points_m[i] - origin) * (max_range / length));
+          if (!keys.computeRayKeys(octomap::point3d(float(origin.x()), float(origin.y()), float(origin.z())),
+                                   octomap::point3d(float(stop.x()), float(stop.y()), float(stop.z())), ray))
+            continue;
+          for (const octomap::OcTreeKey& key : ray) crossed[linear(key)].store(1, std::memory_order_relaxed);
+          if (returned)
+            ++returns_per_task[task];
+          else
+            crossed[linear(keys.coordToKey(stop.x(), stop.y(), stop.z()))].store(1, std::memory_order_relaxed);
+        }
+      },
+      progress ? std::function<void(double)>([&](double f) { progress(0.7 * f); }) : std::function<void(double)>());
 
-  std::size_t inserted = 0;
-  for (const auto& [key, scans] : groups) {
-    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-    std::size_t count = 0;
-    for (std::size_t s : scans) {
-      const std::size_t n = scanEnd(s) - origins.first_point[s];
-      origin += origins.origin_m[s] * double(n);
-      count += n;
+  VoxelGrid grid(frame);
+  for (std::size_t v = 0; v < voxels; ++v)
+    if (crossed[v].load(std::memory_order_relaxed)) {
+      const Index3 i = frame.unlinear(v);
+      grid.set(i[0], i[1], i[2], CellState::Free);
     }
-    origin /= double(count);
-    octomap::Pointcloud cloud;
-    cloud.reserve(count);
-    for (std::size_t s : scans)
-      for (std::size_t i = origins.first_point[s]; i < scanEnd(s); ++i)
-        cloud.push_back(float(points_m[i].x()), float(points_m[i].y()), float(points_m[i].z()));
-    tree->insertPointCloud(cloud, octomap::point3d(float(origin.x()), float(origin.y()), float(origin.z())), max_range,
-                           /*lazy_eval=*/true, /*discretize=*/true);
-    inserted += count;
-    if (progress) progress(0.9 * double(inserted) / double(points_m.size()));
+  // A return marks its voxel occupied whatever other rays crossed it: rays grazing a thin wall
+  // from other positions would otherwise wear it away.
+  std::size_t scan = 0;
+  for (std::size_t i = 0; i < points_m.size(); ++i) {
+    while (scan + 1 < scans && origins.first_point[scan + 1] <= i) ++scan;
+    if ((points_m[i] - origins.origin_m[scan]).norm() > max_range) continue;
+    grid.set(frame.indexOf(0, points_m[i].x()), frame.indexOf(1, points_m[i].y()), frame.indexOf(2, points_m[i].z()),
+             CellState::Occupied);
   }
-
-  // A return marks its voxel occupied for good: rays grazing a thin wall from other positions
-  // would otherwise wear it away to free.
-  const float occupied_log_odds = tree->getClampingThresMaxLog();
-  std::size_t returns = 0;
-  for (std::size_t s = 0; s < origins.origin_m.size(); ++s)
-    for (std::size_t i = origins.first_point[s]; i < scanEnd(s); ++i) {
-      if (max_range > 0.0 && (points_m[i] - origins.origin_m[s]).norm() > max_range) continue;
-      tree->setNodeValue(tree->coordToKey(points_m[i].x(), points_m[i].y(), points_m[i].z()), occupied_log_odds, true);
-      ++returns;
-    }
-  tree->updateInnerOccupancy();
-  tree->toMaxLikelihood();
-  tree->prune();
-  if (progress) progress(1.0);
+  if (progress) progress(0.8);
 
   BuiltMap built;
-  built.tree = std::move(tree);
-  built.free_space = "carved by ray casting from " + std::to_string(groups.size()) + " sensor position" +
-                     (groups.size() == 1 ? "" : "s") + " (OctoMap insertPointCloud, max range " +
-                     (max_range > 0.0 ? formatNumber(max_range) + " m" : std::string("none")) +
+  built.tree = toOcTree(grid);
+  if (progress) progress(1.0);
+  std::size_t returns = 0;
+  for (std::size_t count : returns_per_task) returns += count;
+  built.free_space = "carved by ray casting from " + std::to_string(scans) + " sensor origin" + (scans == 1 ? "" : "s") +
+                     " (max range " + (std::isfinite(max_range) ? formatNumber(max_range) + " m" : std::string("none")) +
                      "): space a ray crossed is free, a voxel holding a return is occupied, the rest is unknown";
-  built.figures = {{"points", double(points_m.size())},
-                   {"scans", double(origins.origin_m.size())},
-                   {"sensor_positions", double(groups.size())},
-                   {"returns_within_range", double(returns)}};
+  built.figures = {{"points", double(points_m.size())}, {"scans", double(scans)}, {"returns_within_range", double(returns)}};
   detail::addVolumeFigures(built);
   return built;
 }

@@ -39,13 +39,19 @@ inline std::vector<Eigen::Vector3d> sampleBoxSurface(const Eigen::Vector3d& min,
   return points;
 }
 
-inline void writePcd(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& points, bool binary) {
+// Binary files store floats, or doubles when `doubles` (projected coordinates need them).
+inline void writePcd(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& points, bool binary,
+                     bool doubles = false) {
   std::ofstream out(file, std::ios::binary);
-  out << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n"
+  out.precision(10);
+  out << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE " << (doubles ? "8 8 8" : "4 4 4")
+      << "\nTYPE F F F\nCOUNT 1 1 1\n"
       << "WIDTH " << points.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << points.size() << "\nDATA "
       << (binary ? "binary" : "ascii") << "\n";
   for (const Eigen::Vector3d& p : points) {
-    if (binary) {
+    if (binary && doubles) {
+      out.write(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
+    } else if (binary) {
       const float xyz[3] = {float(p.x()), float(p.y()), float(p.z())};
       out.write(reinterpret_cast<const char*>(xyz), sizeof xyz);
     } else {

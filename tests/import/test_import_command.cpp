@@ -55,7 +55,7 @@ TEST(ImportPoints, WithSensorOriginsCarvesTheRoomByRayCasting) {
   std::ofstream(dir / "origins.csv") << "x,y,z\n3.0,2.0,1.5\n";
   const auto result = importOk("--points " + (dir / "room.pcd").string() + " --origins " + (dir / "origins.csv").string() +
                                " --resolution 0.1 --out " + (dir / "room.bt").string());
-  EXPECT_NE(result.out.find("free_space: carved by ray casting from 1 sensor position"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("free_space: carved by ray casting from 1 sensor origin (max range none)"), std::string::npos) << result.out;
 
   const Environment environment = environmentOf(dir / "room.bt");
   const Eigen::Vector3d at(3.0, 2.0, 1.0);
@@ -88,7 +88,7 @@ TEST(ImportPoints, PerScanAndPerPointOriginsGiveTheSameRoom) {
   importOk("--points " + (dir / "room.ply").string() + " --origins " + (dir / "points.csv").string() +
            " --resolution 0.1 --out " + (dir / "points.bt").string());
   EXPECT_EQ(testing::readWholeFile(dir / "scans.bt"), testing::readWholeFile(dir / "points.bt"));
-  EXPECT_EQ(sidecarOf(dir / "scans.bt")["figures"]["sensor_positions"], 2);
+  EXPECT_EQ(sidecarOf(dir / "scans.bt")["figures"]["scans"], 2);
   const Environment environment = environmentOf(dir / "scans.bt");
   EXPECT_NEAR(environment.ceilingGapAt({1.0, 1.0, 2.0}), kRoomMax.z() - 2.0, kVoxel);
 }
