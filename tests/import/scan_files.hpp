@@ -43,7 +43,7 @@ inline std::vector<Eigen::Vector3d> sampleBoxSurface(const Eigen::Vector3d& min,
 inline void writePcd(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& points, bool binary,
                      bool doubles = false) {
   std::ofstream out(file, std::ios::binary);
-  out.precision(10);
+  out.precision(12);
   out << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE " << (doubles ? "8 8 8" : "4 4 4")
       << "\nTYPE F F F\nCOUNT 1 1 1\n"
       << "WIDTH " << points.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << points.size() << "\nDATA "

@@ -2,7 +2,7 @@
 // benchmark figure and docs/import.md, where no public scan of a bridge can be shipped. From
 // each station a spinning scanner casts rays on a regular azimuth x elevation grid; a ray that
 // hits an occupied voxel returns the point where it enters that voxel, moved along the ray by
-// Gaussian range noise. Writes a binary PCD and an origins CSV (first_point,x,y,z per station).
+// Gaussian range noise. Writes a PCD (binary, or ascii with --offset) and an origins CSV (first_point,x,y,z per station).
 //
 //   simulate_lidar --map maps/bridge.bt --stations "4,0,2;20,0,2" --out scan.pcd --origins scan_origins.csv
 //                  [--azimuth-steps 1440] [--elevation-steps 360] [--max-range 60] [--noise 0.005]
@@ -96,7 +96,8 @@ int main(int argc, char** argv) {
         }
       }
     }
-    ceilplan::testing::writePcd(out, points, /*binary=*/true, /*doubles=*/!offset.isZero());
+    // Projected coordinates need doubles; binary PCD of doubles is not readable by Open3D 0.16.
+    ceilplan::testing::writePcd(out, points, /*binary=*/offset.isZero());
     std::printf("%zu points from %zu stations -> %s, %s\n", points.size(), parsePoints(stations_text).size(), out.c_str(),
                 origins_out.c_str());
   } catch (const std::exception& e) {

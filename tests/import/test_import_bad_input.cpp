@@ -66,6 +66,9 @@ TEST_F(ImportBadInput, CorruptFiles) {
   expectRefused("--mesh " + path("truncated.stl"), "truncated.stl: not a readable mesh");
   std::ofstream(dir_ / "bad_index.obj") << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
   expectRefused("--mesh " + path("bad_index.obj"), "bad_index.obj: not a readable mesh");
+  // Open3D would read these coordinates as zeros.
+  testing::writePcd(dir_ / "doubles.pcd", {{500000.5, 5400000.5, 480.0}, {500001.5, 5400000.5, 480.0}}, true, true);
+  expectRefused("--points " + path("doubles.pcd"), "doubles.pcd: binary PCD with 8-byte coordinates");
 }
 
 TEST_F(ImportBadInput, WrongKindOfFile) {
