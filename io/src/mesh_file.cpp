@@ -7,7 +7,6 @@
 #include <open3d/io/TriangleMeshIO.h>
 
 #include <array>
-#include <fstream>
 
 namespace ceilplan::io {
 namespace {
@@ -21,13 +20,7 @@ std::string meshExtensions() { return detail::joined(kMeshExtensions); }
 
 environment::TriangleMesh readTriangleMesh(const std::filesystem::path& file) {
   const std::string name = file.string();
-  const std::string extension = detail::lowerExtension(file);
-  if (detail::listed(kCloudOnlyExtensions, extension))
-    throw ceilplan::InputError(name + ": " + extension + " is a point-cloud format, not a mesh");
-  if (!detail::listed(kMeshExtensions, extension))
-    throw ceilplan::InputError(name + ": unknown mesh format '" + extension + "' (read: " + meshExtensions() + ")");
-  if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
-    throw ceilplan::InputError(name + ": no such file, or it cannot be read");
+  detail::requireReadableFileOfKind(file, kMeshExtensions, kCloudOnlyExtensions, "mesh", "point-cloud");
 
   open3d::geometry::TriangleMesh mesh;
   if (const auto failure = detail::failureOf([&] { return open3d::io::ReadTriangleMesh(name, mesh, open3d::io::ReadTriangleMeshOptions{}); }))

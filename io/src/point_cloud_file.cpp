@@ -49,13 +49,8 @@ std::string pointCloudExtensions() { return detail::joined(kCloudExtensions); }
 
 std::vector<Eigen::Vector3d> readPointCloud(const std::filesystem::path& file) {
   const std::string name = file.string();
-  const std::string extension = detail::lowerExtension(file);
-  if (detail::listed(kMeshOnlyExtensions, extension))
-    throw ceilplan::InputError(name + ": " + extension + " is a mesh format, not a point cloud");
-  if (!detail::listed(kCloudExtensions, extension))
-    throw ceilplan::InputError(name + ": unknown point-cloud format '" + extension + "' (read: " + pointCloudExtensions() + ")");
-  if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
-    throw ceilplan::InputError(name + ": no such file, or it cannot be read");
+  const std::string extension =
+      detail::requireReadableFileOfKind(file, kCloudExtensions, kMeshOnlyExtensions, "point cloud", "mesh");
 
   if (extension == ".pcd") refuseBinaryDoublePcd(file);
 

@@ -75,7 +75,7 @@ TEST_F(ImportBadInput, WrongKindOfFile) {
   expectRefused("--points " + path("good.stl"), "good.stl: .stl is a mesh format, not a point cloud");
   expectRefused("--mesh " + path("good.pcd"), "good.pcd: .pcd is a point-cloud format, not a mesh");
   std::ofstream(dir_ / "scan.las") << "LASF";
-  expectRefused("--points " + path("scan.las"), "unknown point-cloud format '.las'");
+  expectRefused("--points " + path("scan.las"), "unknown point cloud format '.las'");
   testing::writePlyPoints(dir_ / "cloud.ply", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
   expectRefused("--mesh " + path("cloud.ply"), "the mesh has no triangles (only vertices: a point cloud?)");
   expectRefused("--points " + path("good.pcd") + " --out-of-nowhere 3", "out-of-nowhere", kUsageExit);
