@@ -1,0 +1,125 @@
+#pragma once
+// Builds an OctoMap occupancy tree from what users have of a structure: a point cloud with the
+// sensor positions it was seen from (free space carved by ray casting), a point cloud alone
+// (free space by a stated assumption), or a triangle mesh (surfaces voxelised, closed solids
+// filled). Every builder says, in one line, how it decided what is free: commands print it and
+// write it beside the map (docs/import.md).
+
+#include "ceilplan/core/error.hpp"
+
+#include <octomap/OcTree.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ceilplan::environment {
+
+// Accepted voxel sizes, in metres.
+inline constexpr double kMinImportResolution_m = 0.01;
+inline constexpr double kMaxImportResolution_m = 1.0;
+
+// Where the sensor stood for each point: scan s covers points [first_point[s], first_point[s + 1])
+// (the last scan runs to the end of the cloud) and was taken from origin_m[s]. One scan per
+// point is the per-point form.
+struct SensorOrigins {
+  std::vector<std::size_t> first_point;
+  std::vector<Eigen::Vector3d> origin_m;
+
+  // Checks the scans against a cloud of `point_count` points: first_point starts at 0, strictly
+  // increases and stays below point_count, origins are finite. Throws ceilplan::InputError
+  // naming the first bad scan.
+  void validate(std::size_t point_count) const;
+  // The origin of every point, in cloud order.
+  std::vector<Eigen::Vector3d> perPoint(std::size_t point_count) const;
+};
+
+// Drops the points with a NaN or infinite coordinate (organised clouds mark missing returns
+// this way) together with their scans' bookkeeping; returns how many were dropped.
+std::size_t dropNonFinitePoints(std::vector<Eigen::Vector3d>& points_m, SensorOrigins* origins);
+
+struct RayCarvingOptions {
+  double resolution_m = 0.1;
+  // Rays longer than this carve free space up to this range only, and their end point is not
+  // marked occupied (OctoMap's maxrange); <= 0 keeps every ray whole.
+  double max_range_m = 0.0;
+};
+
+struct PointAssumptionOptions {
+  double resolution_m = 0.1;
+  // A voxel of the box is free when its centre lies farther than this from every voxel that
+  // holds a point (measured to that voxel's faces); nearer ones stay unknown.
+  double free_distance_m = 0.2;
+  // The box is the points' bounding box grown by this on every side.
+  double margin_m = 0.0;
+};
+
+// A triangle mesh: vertex positions and, per triangle, three vertex indices.
+struct TriangleMesh {
+  std::vector<Eigen::Vector3d> vertices_m;
+  std::vector<std::array<std::size_t, 3>> triangles;
+};
+
+// What fills the space a mesh's surface encloses.
+enum class MeshInterior {
+  Automatic,  // Solid, unless the mesh is closed with inward-facing triangles (a room, a tunnel): then Hollow
+  Solid,      // enclosed space is occupied; space around the mesh is free
+  Hollow,     // enclosed space is free; space outside the mesh stays unknown
+};
+
+// "auto", "solid", "hollow"; throws ceilplan::InputError for any other name.
+MeshInterior meshInteriorFromName(const std::string& name);
+
+struct MeshVoxelisingOptions {
+  double resolution_m = 0.1;
+  // The map's box is the mesh's bounding box grown by this on every side.
+  double margin_m = 1.0;
+  MeshInterior interior = MeshInterior::Automatic;
+};
+
+// Closedness and orientation of a mesh, with vertices welded at identical positions.
+struct MeshTopology {
+  std::size_t boundary_edges = 0;      // edges of one triangle only
+  std::size_t non_manifold_edges = 0;  // edges of three or more triangles
+  bool consistently_oriented = false;  // every interior edge is walked once each way
+  double signed_volume_m3 = 0.0;       // > 0 when a closed mesh's triangles face outward
+  bool closed() const { return boundary_edges == 0 && non_manifold_edges == 0; }
+};
+MeshTopology meshTopology(const TriangleMesh& mesh);
+
+struct BuiltMap {
+  std::unique_ptr<octomap::OcTree> tree;
+  // How free space was decided, one line (printed and written beside the map).
+  std::string free_space;
+  // Named figures for the summary: points used, voxels filled, and so on, in a fixed order.
+  std::vector<std::pair<std::string, double>> figures;
+};
+
+// Ray casting with OctoMap's insertPointCloud from each scan's origin; scans whose origins
+// fall in the same voxel are inserted together from their mean origin. A voxel holding a
+// return within range ends occupied, however many rays later pass through it (thin walls stay
+// closed). Throws ceilplan::InputError for a bad resolution, a non-finite point or origin, an
+// empty cloud, or points and origins spanning more than OctoMap or ceilplan can index, before
+// any map is allocated.
+BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const SensorOrigins& origins,
+                        const RayCarvingOptions& options, const std::function<void(double)>& progress = {});
+
+// No sensor positions: voxels holding a point are occupied, voxels of the box farther than
+// free_distance_m from any of them are free, the rest stay unknown. Same checks as above.
+BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const PointAssumptionOptions& options,
+                            const std::function<void(double)>& progress = {});
+
+// Voxels a triangle touches are occupied (exact triangle-box overlap, so thin walls close);
+// space the surface encloses at that resolution is filled according to options.interior; the
+// rest of the box is free (or unknown outside a hollow mesh). Throws ceilplan::InputError for a
+// bad resolution, no triangle, a non-finite vertex, a vertex index out of range, or a box too
+// large, before any map is allocated.
+BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& options,
+                     const std::function<void(double)>& progress = {});
+
+}  // namespace ceilplan::environment

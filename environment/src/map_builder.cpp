@@ -1,0 +1,266 @@
+#include "ceilplan/environment/map_builder.hpp"
+
+#include "ceilplan/environment/distance_field.hpp"
+#include "ceilplan/environment/voxel_grid.hpp"
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/core/parallel_for.hpp"
+
+#include "map_builder_checks.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <thread>
+
+namespace ceilplan::environment {
+namespace detail {
+
+void checkImportResolution(double resolution_m) {
+  if (!(resolution_m >= kMinImportResolution_m && resolution_m <= kMaxImportResolution_m))
+    throw ceilplan::InputError("resolution " + formatNumber(resolution_m) + " m is out of range: use " +
+                               formatNumber(kMinImportResolution_m) + " to " + formatNumber(kMaxImportResolution_m) +
+                               " m");
+}
+
+void requireFinitePoints(const std::vector<Eigen::Vector3d>& points_m, const char* what) {
+  for (std::size_t i = 0; i < points_m.size(); ++i)
+    if (!points_m[i].allFinite())
+      throw ceilplan::InputError(std::string(what) + " " + std::to_string(i) + " (counting from 0) has a non-finite coordinate " +
+                                 formatPoint(points_m[i]));
+}
+
+GridFrame importFrame(const Eigen::AlignedBox3d& box_m, double margin_m, double resolution_m) {
+  if (!(margin_m >= 0.0) || !std::isfinite(margin_m))
+    throw ceilplan::InputError("margin " + formatNumber(margin_m) + " m must be a finite number >= 0");
+  constexpr double kKeyHalfRange = 32768.0;  // OctoMap keys are 16 bits, centred on coordinate 0
+  Index3 origin, size;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double lo = std::floor((box_m.min()[axis] - margin_m) / resolution_m);
+    const double hi = std::floor((box_m.max()[axis] + margin_m) / resolution_m) + 1.0;
+    if (lo < -kKeyHalfRange || hi > kKeyHalfRange)
+      throw ceilplan::InputError("the data reach " + formatNumber(std::max(std::abs(box_m.min()[axis]), std::abs(box_m.max()[axis]))) +
+                                 " m from the origin on the " + std::string(1, "xyz"[axis]) + " axis, beyond what OctoMap holds at " +
+                                 formatNumber(resolution_m) + " m (" + formatNumber(kKeyHalfRange * resolution_m) +
+                                 " m); move the data near the origin (--crs does) or coarsen the resolution");
+    origin[axis] = static_cast<int>(lo);
+    size[axis] = static_cast<int>(hi - lo);
+  }
+  return GridFrame(resolution_m, origin, size);  // refuses a box of more than VoxelGrid::kMaxVoxels
+}
+
+void addVolumeFigures(BuiltMap& built) {
+  double occupied = 0.0, free = 0.0;
+  for (auto it = built.tree->begin_leafs(), end = built.tree->end_leafs(); it != end; ++it) {
+    const double size = it.getSize();
+    (built.tree->isNodeOccupied(*it) ? occupied : free) += size * size * size;
+  }
+  built.figures.emplace_back("occupied_m3", occupied);
+  built.figures.emplace_back("free_m3", free);
+}
+
+}  // namespace detail
+
+namespace {
+
+Eigen::AlignedBox3d boundsOf(const std::vector<Eigen::Vector3d>& points_m) {
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& point : points_m) box.extend(point);
+  return box;
+}
+
+void requirePoints(const std::vector<Eigen::Vector3d>& points_m) {
+  if (points_m.empty()) throw ceilplan::InputError("the point cloud has no points");
+  detail::requireFinitePoints(points_m, "point");
+}
+
+int workerCount() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
+}  // namespace
+
+void SensorOrigins::validate(std::size_t point_count) const {
+  if (first_point.size() != origin_m.size())
+    throw ceilplan::InputError("sensor origins: " + std::to_string(first_point.size()) + " scan starts for " +
+                               std::to_string(origin_m.size()) + " origins");
+  if (origin_m.empty()) throw ceilplan::InputError("sensor origins: no origin given");
+  if (first_point.front() != 0)
+    throw ceilplan::InputError("sensor origins: the first scan must start at point 0, not " + std::to_string(first_point.front()));
+  for (std::size_t s = 0; s < origin_m.size(); ++s) {
+    if (!origin_m[s].allFinite())
+      throw ceilplan::InputError("sensor origins: scan " + std::to_string(s) + " has a non-finite origin " + formatPoint(origin_m[s]));
+    if (first_point[s] >= point_count)
+      throw ceilplan::InputError("sensor origins: scan " + std::to_string(s) + " starts at point " + std::to_string(first_point[s]) +
+                                 " but the cloud has " + std::to_string(point_count) + " points");
+    if (s > 0 && first_point[s] <= first_point[s - 1])
+      throw ceilplan::InputError("sensor origins: scan " + std::to_string(s) + " starts at point " + std::to_string(first_point[s]) +
+                                 ", not after scan " + std::to_string(s - 1) + " (" + std::to_string(first_point[s - 1]) + ")");
+  }
+}
+
+std::vector<Eigen::Vector3d> SensorOrigins::perPoint(std::size_t point_count) const {
+  std::vector<Eigen::Vector3d> result(point_count);
+  for (std::size_t s = 0; s < origin_m.size(); ++s) {
+    const std::size_t end = s + 1 < first_point.size() ? first_point[s + 1] : point_count;
+    std::fill(result.begin() + first_point[s], result.begin() + end, origin_m[s]);
+  }
+  return result;
+}
+
+std::size_t dropNonFinitePoints(std::vector<Eigen::Vector3d>& points_m, SensorOrigins* origins) {
+  std::vector<std::size_t> kept_before_scan;  // points kept before each scan's first point
+  std::size_t scan = 0, kept = 0;
+  for (std::size_t i = 0; i < points_m.size(); ++i) {
+    while (origins && scan < origins->first_point.size() && origins->first_point[scan] == i) {
+      kept_before_scan.push_back(kept);
+      ++scan;
+    }
+    if (points_m[i].allFinite()) points_m[kept++] = points_m[i];
+  }
+  const std::size_t dropped = points_m.size() - kept;
+  points_m.resize(kept);
+  if (origins) {
+    // Renumber the scans; a scan left with no point disappears.
+    SensorOrigins renumbered;
+    for (std::size_t s = 0; s < kept_before_scan.size(); ++s) {
+      const std::size_t end = s + 1 < kept_before_scan.size() ? kept_before_scan[s + 1] : kept;
+      if (end == kept_before_scan[s]) continue;
+      renumbered.first_point.push_back(kept_before_scan[s]);
+      renumbered.origin_m.push_back(origins->origin_m[s]);
+    }
+    *origins = std::move(renumbered);
+  }
+  return dropped;
+}
+
+BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const SensorOrigins& origins,
+                        const RayCarvingOptions& options, const std::function<void(double)>& progress) {
+  const double resolution = options.resolution_m;
+  detail::checkImportResolution(resolution);
+  requirePoints(points_m);
+  origins.validate(points_m.size());
+  if (!std::isfinite(options.max_range_m))
+    throw ceilplan::InputError("max range must be a finite number of metres (0 for none)");
+  Eigen::AlignedBox3d box = boundsOf(points_m);
+  for (const Eigen::Vector3d& origin : origins.origin_m) box.extend(origin);
+  const GridFrame frame = detail::importFrame(box, 0.0, resolution);  // refused here, before anything is allocated
+  const double max_range = options.max_range_m > 0.0 ? options.max_range_m : std::numeric_limits<double>::infinity();
+
+  // Rays are traced with OctoMap's own voxel traversal (computeRayKeys, the one insertPointCloud
+  // uses) on both cores into a dense grid; insertPointCloud itself hashes every crossed voxel on
+  // one core and took minutes for a few million points (docs/import.md). The rule is the same
+  // as its maximum-likelihood result: crossed voxels are free, voxels holding a return occupied.
+  const std::size_t voxels = frame.voxelCount();
+  const std::unique_ptr<std::atomic<std::uint8_t>[]> crossed(new std::atomic<std::uint8_t>[voxels]());
+  const octomap::OcTree keys(resolution);  // only its key arithmetic is used, read-only from every thread
+  const auto linear = [&](const octomap::OcTreeKey& key) {
+    constexpr int kKeyOffset = 32768;  // OctoMap key of global voxel index 0
+    return frame.linear(int(key[0]) - kKeyOffset - frame.origin()[0], int(key[1]) - kKeyOffset - frame.origin()[1],
+                        int(key[2]) - kKeyOffset - frame.origin()[2]);
+  };
+  const std::size_t scans = origins.origin_m.size();
+  const auto scanOf = [&](std::size_t point) {
+    return static_cast<std::size_t>(std::upper_bound(origins.first_point.begin(), origins.first_point.end(), point) -
+                                    origins.first_point.begin()) - 1;
+  };
+  constexpr std::size_t kPointsPerTask = 16384;
+  const std::size_t tasks = (points_m.size() + kPointsPerTask - 1) / kPointsPerTask;
+  std::vector<std::size_t> returns_per_task(tasks, 0);
+  parallelFor(
+      tasks, workerCount(),
+      [&](std::size_t task) {
+        // A ray crosses fewer voxels than KeyRay's default capacity (100 000): the frame's
+        // diagonal stays below that within VoxelGrid::kMaxVoxels and OctoMap's key range.
+        octomap::KeyRay ray;
+        const std::size_t begin = task * kPointsPerTask, end = std::min(begin + kPointsPerTask, points_m.size());
+        for (std::size_t i = begin, scan = scanOf(begin); i < end; ++i) {
+          while (scan + 1 < scans && origins.first_point[scan + 1] <= i) ++scan;
+          const Eigen::Vector3d& origin = origins.origin_m[scan];
+          const double length = (points_m[i] - origin).norm();
+          const bool returned = length <= max_range;
+          const Eigen::Vector3d stop = returned ? points_m[i] : Eigen::Vector3d(origin + (points_m[i] - origin) * (max_range / length));
+          if (!keys.computeRayKeys(octomap::point3d(float(origin.x()), float(origin.y()), float(origin.z())),
+                                   octomap::point3d(float(stop.x()), float(stop.y()), float(stop.z())), ray))
+            continue;
+          for (const octomap::OcTreeKey& key : ray) crossed[linear(key)].store(1, std::memory_order_relaxed);
+          if (returned)
+            ++returns_per_task[task];
+          else
+            crossed[linear(keys.coordToKey(stop.x(), stop.y(), stop.z()))].store(1, std::memory_order_relaxed);
+        }
+      },
+      progress ? std::function<void(double)>([&](double f) { progress(0.7 * f); }) : std::function<void(double)>());
+
+  VoxelGrid grid(frame);
+  for (std::size_t v = 0; v < voxels; ++v)
+    if (crossed[v].load(std::memory_order_relaxed)) {
+      const Index3 i = frame.unlinear(v);
+      grid.set(i[0], i[1], i[2], CellState::Free);
+    }
+  // A return marks its voxel occupied whatever other rays crossed it: rays grazing a thin wall
+  // from other positions would otherwise wear it away.
+  std::size_t scan = 0;
+  for (std::size_t i = 0; i < points_m.size(); ++i) {
+    while (scan + 1 < scans && origins.first_point[scan + 1] <= i) ++scan;
+    if ((points_m[i] - origins.origin_m[scan]).norm() > max_range) continue;
+    grid.set(frame.indexOf(0, points_m[i].x()), frame.indexOf(1, points_m[i].y()), frame.indexOf(2, points_m[i].z()),
+             CellState::Occupied);
+  }
+  if (progress) progress(0.8);
+
+  BuiltMap built;
+  built.tree = toOcTree(grid);
+  if (progress) progress(1.0);
+  std::size_t returns = 0;
+  for (std::size_t count : returns_per_task) returns += count;
+  built.free_space = "carved by ray casting from " + std::to_string(scans) + " sensor origin" + (scans == 1 ? "" : "s") +
+                     " (max range " + (std::isfinite(max_range) ? formatNumber(max_range) + " m" : std::string("none")) +
+                     "): space a ray crossed is free, a voxel holding a return is occupied, the rest is unknown";
+  built.figures = {{"points", double(points_m.size())}, {"scans", double(scans)}, {"returns_within_range", double(returns)}};
+  detail::addVolumeFigures(built);
+  return built;
+}
+
+BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const PointAssumptionOptions& options,
+                            const std::function<void(double)>& progress) {
+  const double resolution = options.resolution_m;
+  detail::checkImportResolution(resolution);
+  requirePoints(points_m);
+  if (!(options.free_distance_m >= 0.0) || !std::isfinite(options.free_distance_m))
+    throw ceilplan::InputError("free distance " + formatNumber(options.free_distance_m) + " m must be a finite number >= 0");
+  const GridFrame frame = detail::importFrame(boundsOf(points_m), options.margin_m, resolution);
+
+  VoxelGrid grid(frame);
+  for (const Eigen::Vector3d& point : points_m)
+    grid.set(frame.indexOf(0, point.x()), frame.indexOf(1, point.y()), frame.indexOf(2, point.z()), CellState::Occupied);
+  if (progress) progress(0.1);
+  const DistanceField distance(grid, /*unknown_is_blocked=*/false);
+  if (progress) progress(0.4);
+  const double free_distance = options.free_distance_m;
+  parallelFor(
+      static_cast<std::size_t>(frame.size()[2]), workerCount(),
+      [&](std::size_t layer) {
+        const int k = static_cast<int>(layer);
+        for (int j = 0; j < frame.size()[1]; ++j)
+          for (int i = 0; i < frame.size()[0]; ++i) {
+            if (grid.at(i, j, k) == CellState::Occupied) continue;
+            const Eigen::Vector3d centre(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k));
+            if (distance.lowerBound_m(centre) > free_distance || distance.distance_m(centre) > free_distance)
+              grid.set(i, j, k, CellState::Free);
+          }
+      },
+      progress ? std::function<void(double)>([&](double f) { progress(0.4 + 0.4 * f); }) : std::function<void(double)>());
+
+  BuiltMap built;
+  built.tree = toOcTree(grid);
+  if (progress) progress(1.0);
+  built.free_space = "assumed, no sensor origins: voxels holding a point are occupied; every other voxel of the points' bounding box" +
+                     (options.margin_m > 0.0 ? " grown by " + formatNumber(options.margin_m) + " m" : std::string()) +
+                     " whose centre lies farther than " + formatNumber(free_distance) +
+                     " m from them is free; the rest is unknown";
+  built.figures = {{"points", double(points_m.size())}, {"free_distance_m", free_distance}};
+  detail::addVolumeFigures(built);
+  return built;
+}
+
+}  // namespace ceilplan::environment

@@ -1,0 +1,256 @@
+// Meshes to maps: conservative surface voxelisation, then a flood fill from the box's faces
+// tells the space around the mesh from the space it encloses.
+
+#include "ceilplan/environment/map_builder.hpp"
+
+#include "ceilplan/environment/voxel_grid.hpp"
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/core/parallel_for.hpp"
+
+#include "map_builder_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <thread>
+#include <tuple>
+#include <unordered_map>
+
+namespace ceilplan::environment {
+namespace {
+
+// Separating-axis test of a triangle against an axis-aligned box (Akenine-Möller, "Fast 3D
+// triangle-box overlap testing", Journal of Graphics Tools 6(1), 2001): the 3 box axes, the
+// triangle's normal and the 9 edge-axis cross products. Touching counts as overlapping, so a
+// surface lying on a voxel face closes the voxels on both sides. Written here rather than
+// taken from Open3D or CGAL, which would bring a heavy library into the environment module.
+bool triangleTouchesBox(const Eigen::Vector3d& centre, const Eigen::Vector3d& half, const Eigen::Vector3d& a,
+                        const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const Eigen::Vector3d v0 = a - centre, v1 = b - centre, v2 = c - centre;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::min({v0[axis], v1[axis], v2[axis]}) > half[axis]) return false;
+    if (std::max({v0[axis], v1[axis], v2[axis]}) < -half[axis]) return false;
+  }
+  const Eigen::Vector3d edges[3] = {v1 - v0, v2 - v1, v0 - v2};
+  const Eigen::Vector3d normal = edges[0].cross(edges[1]);
+  if (std::abs(normal.dot(v0)) > half.dot(normal.cwiseAbs())) return false;
+  for (const Eigen::Vector3d& edge : edges)
+    for (int axis = 0; axis < 3; ++axis) {
+      const Eigen::Vector3d direction = Eigen::Vector3d::Unit(axis).cross(edge);
+      const double p0 = direction.dot(v0), p1 = direction.dot(v1), p2 = direction.dot(v2);
+      const double radius = half.dot(direction.cwiseAbs());
+      if (std::min({p0, p1, p2}) > radius || std::max({p0, p1, p2}) < -radius) return false;
+    }
+  return true;
+}
+
+struct PositionHash {
+  std::size_t operator()(const Eigen::Vector3d& p) const {
+    std::size_t hash = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      std::uint64_t bits;
+      const double value = p[axis] == 0.0 ? 0.0 : p[axis];  // -0 and +0 are one position
+      std::memcpy(&bits, &value, sizeof bits);
+      hash = hash * 1000003u ^ std::hash<std::uint64_t>()(bits);
+    }
+    return hash;
+  }
+};
+
+void validateMesh(const TriangleMesh& mesh) {
+  if (mesh.triangles.empty()) throw ceilplan::InputError("the mesh has no triangles");
+  detail::requireFinitePoints(mesh.vertices_m, "vertex");
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::size_t v : mesh.triangles[t])
+      if (v >= mesh.vertices_m.size())
+        throw ceilplan::InputError("triangle " + std::to_string(t) + " names vertex " + std::to_string(v) + " but the mesh has " +
+                                   std::to_string(mesh.vertices_m.size()));
+}
+
+// Marks every voxel a triangle touches occupied; layers of the grid are shared out between threads.
+std::size_t voxeliseSurface(const TriangleMesh& mesh, VoxelGrid& grid, const std::function<void(double)>& progress) {
+  const GridFrame& frame = grid.frame();
+  const double resolution = frame.resolution_m();
+  const Eigen::Vector3d half = Eigen::Vector3d::Constant(0.5 * resolution * (1.0 + 1e-9));
+  struct Range {
+    Index3 lo, hi;  // inclusive voxel index ranges of the triangle's bounding box
+  };
+  std::vector<Range> ranges(mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    for (int axis = 0; axis < 3; ++axis) {
+      const double lo = std::min({mesh.vertices_m[tri[0]][axis], mesh.vertices_m[tri[1]][axis], mesh.vertices_m[tri[2]][axis]});
+      const double hi = std::max({mesh.vertices_m[tri[0]][axis], mesh.vertices_m[tri[1]][axis], mesh.vertices_m[tri[2]][axis]});
+      // One voxel of slack each way: a vertex exactly on a face touches the voxel below it too.
+      ranges[t].lo[axis] = std::max(frame.indexOf(axis, lo) - 1, 0);
+      ranges[t].hi[axis] = std::min(frame.indexOf(axis, hi) + 1, frame.size()[axis] - 1);
+    }
+  }
+  constexpr int kLayersPerTask = 4;
+  const int tasks = (frame.size()[2] + kLayersPerTask - 1) / kLayersPerTask;
+  std::vector<std::size_t> touched(tasks, 0);
+  parallelFor(
+      static_cast<std::size_t>(tasks), std::max(1, static_cast<int>(std::thread::hardware_concurrency())),
+      [&](std::size_t task) {
+        const int k_begin = static_cast<int>(task) * kLayersPerTask;
+        const int k_end = std::min(k_begin + kLayersPerTask, frame.size()[2]);
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+          const Range& range = ranges[t];
+          const int k0 = std::max(range.lo[2], k_begin), k1 = std::min(range.hi[2], k_end - 1);
+          if (k0 > k1) continue;
+          const auto& tri = mesh.triangles[t];
+          const Eigen::Vector3d &a = mesh.vertices_m[tri[0]], &b = mesh.vertices_m[tri[1]], &c = mesh.vertices_m[tri[2]];
+          for (int k = k0; k <= k1; ++k)
+            for (int j = range.lo[1]; j <= range.hi[1]; ++j)
+              for (int i = range.lo[0]; i <= range.hi[0]; ++i) {
+                if (grid.at(i, j, k) == CellState::Occupied) continue;
+                const Eigen::Vector3d centre(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k));
+                if (triangleTouchesBox(centre, half, a, b, c)) {
+                  grid.set(i, j, k, CellState::Occupied);
+                  ++touched[task];
+                }
+              }
+        }
+      },
+      progress);
+  std::size_t total = 0;
+  for (std::size_t count : touched) total += count;
+  return total;
+}
+
+// Marks Free every voxel reachable from the box's faces through voxels that are not occupied
+// (face neighbours); returns how many voxels stay unreached: the enclosed ones.
+std::size_t floodFromOutside(VoxelGrid& grid) {
+  const GridFrame& frame = grid.frame();
+  const Index3& size = frame.size();
+  std::vector<std::uint32_t> stack;  // linear indices; VoxelGrid::kMaxVoxels fits in 32 bits
+  const auto visit = [&](int i, int j, int k) {
+    if (!frame.inside(i, j, k) || grid.at(i, j, k) != CellState::Unknown) return;
+    grid.set(i, j, k, CellState::Free);
+    stack.push_back(static_cast<std::uint32_t>(frame.linear(i, j, k)));
+  };
+  for (int k = 0; k < size[2]; ++k)
+    for (int j = 0; j < size[1]; ++j)
+      for (int i = 0; i < size[0]; ++i)
+        if (i == 0 || j == 0 || k == 0 || i == size[0] - 1 || j == size[1] - 1 || k == size[2] - 1) visit(i, j, k);
+  while (!stack.empty()) {
+    const Index3 v = frame.unlinear(stack.back());
+    stack.pop_back();
+    visit(v[0] - 1, v[1], v[2]);
+    visit(v[0] + 1, v[1], v[2]);
+    visit(v[0], v[1] - 1, v[2]);
+    visit(v[0], v[1] + 1, v[2]);
+    visit(v[0], v[1], v[2] - 1);
+    visit(v[0], v[1], v[2] + 1);
+  }
+  std::size_t enclosed = 0;
+  for (std::size_t v = 0; v < frame.voxelCount(); ++v) enclosed += grid.atLinear(v) == CellState::Unknown;
+  return enclosed;
+}
+
+std::string topologyText(const MeshTopology& topology) {
+  if (!topology.closed())
+    return "open mesh (" + std::to_string(topology.boundary_edges) + " boundary edges, " +
+           std::to_string(topology.non_manifold_edges) + " shared by more than two triangles)";
+  if (!topology.consistently_oriented) return "closed mesh with inconsistently oriented triangles";
+  return std::string("closed mesh, triangles facing ") + (topology.signed_volume_m3 >= 0.0 ? "outward" : "inward");
+}
+
+}  // namespace
+
+MeshInterior meshInteriorFromName(const std::string& name) {
+  if (name == "auto") return MeshInterior::Automatic;
+  if (name == "solid") return MeshInterior::Solid;
+  if (name == "hollow") return MeshInterior::Hollow;
+  throw ceilplan::InputError("unknown mesh interior '" + name + "': use auto, solid or hollow");
+}
+
+MeshTopology meshTopology(const TriangleMesh& mesh) {
+  // Weld vertices at identical positions: STL stores each triangle's corners separately.
+  std::unordered_map<Eigen::Vector3d, std::size_t, PositionHash> ids;
+  std::vector<std::size_t> welded(mesh.vertices_m.size());
+  for (std::size_t v = 0; v < mesh.vertices_m.size(); ++v)
+    welded[v] = ids.emplace(mesh.vertices_m[v], ids.size()).first->second;
+
+  MeshTopology topology;
+  std::vector<std::tuple<std::size_t, std::size_t, int>> edges;  // (low, high, +1 if walked low->high)
+  edges.reserve(3 * mesh.triangles.size());
+  for (const auto& tri : mesh.triangles) {
+    const std::size_t w[3] = {welded[tri[0]], welded[tri[1]], welded[tri[2]]};
+    if (w[0] == w[1] || w[1] == w[2] || w[2] == w[0]) continue;  // degenerate: no area, no edges
+    const Eigen::Vector3d &a = mesh.vertices_m[tri[0]], &b = mesh.vertices_m[tri[1]], &c = mesh.vertices_m[tri[2]];
+    topology.signed_volume_m3 += a.dot(b.cross(c)) / 6.0;
+    for (int e = 0; e < 3; ++e) {
+      const std::size_t from = w[e], to = w[(e + 1) % 3];
+      edges.emplace_back(std::min(from, to), std::max(from, to), from < to ? 1 : -1);
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  topology.consistently_oriented = true;
+  for (std::size_t first = 0; first < edges.size();) {
+    std::size_t last = first;
+    int direction_sum = 0;
+    while (last < edges.size() && std::get<0>(edges[last]) == std::get<0>(edges[first]) &&
+           std::get<1>(edges[last]) == std::get<1>(edges[first]))
+      direction_sum += std::get<2>(edges[last++]);
+    const std::size_t uses = last - first;
+    if (uses == 1) ++topology.boundary_edges;
+    if (uses > 2) ++topology.non_manifold_edges;
+    if (uses == 2 && direction_sum != 0) topology.consistently_oriented = false;
+    first = last;
+  }
+  return topology;
+}
+
+BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& options, const std::function<void(double)>& progress) {
+  const double resolution = options.resolution_m;
+  detail::checkImportResolution(resolution);
+  validateMesh(mesh);
+  Eigen::AlignedBox3d box;
+  for (const auto& tri : mesh.triangles)
+    for (std::size_t v : tri) box.extend(mesh.vertices_m[v]);
+  const GridFrame frame = detail::importFrame(box, options.margin_m, resolution);
+  const MeshTopology topology = meshTopology(mesh);
+
+  VoxelGrid grid(frame);
+  const std::size_t surface = voxeliseSurface(
+      mesh, grid, progress ? std::function<void(double)>([&](double f) { progress(0.6 * f); }) : std::function<void(double)>());
+  const std::size_t enclosed = floodFromOutside(grid);
+  if (progress) progress(0.8);
+
+  MeshInterior interior = options.interior;
+  if (interior == MeshInterior::Automatic)
+    interior = topology.closed() && topology.consistently_oriented && topology.signed_volume_m3 < 0.0 ? MeshInterior::Hollow
+                                                                                                       : MeshInterior::Solid;
+  // After the flood fill: Free = reached from outside, Unknown = enclosed.
+  for (std::size_t v = 0; v < frame.voxelCount(); ++v) {
+    const Index3 i = frame.unlinear(v);
+    const CellState state = grid.atLinear(v);
+    if (state == CellState::Unknown)
+      grid.set(i[0], i[1], i[2], interior == MeshInterior::Solid ? CellState::Occupied : CellState::Free);
+    else if (state == CellState::Free && interior == MeshInterior::Hollow)
+      grid.set(i[0], i[1], i[2], CellState::Unknown);
+  }
+
+  BuiltMap built;
+  built.tree = toOcTree(grid);
+  if (progress) progress(1.0);
+  const double voxel_volume = resolution * resolution * resolution;
+  const std::string around = "its bounding box" + (options.margin_m > 0.0 ? " grown by " + formatNumber(options.margin_m) + " m" : std::string());
+  std::string enclosed_text =
+      enclosed == 0 ? "it encloses no space at " + formatNumber(resolution) + " m"
+                    : "the " + formatNumber(double(enclosed) * voxel_volume, 4) + " m3 it encloses is " +
+                          (interior == MeshInterior::Solid ? "filled as occupied" : "free");
+  built.free_space = topologyText(topology) + ", surface voxelised (triangle-box overlap, occupied); " + enclosed_text + "; " +
+                     (interior == MeshInterior::Solid ? "the rest of " + around + " is free"
+                                                      : "the rest of " + around + " stays unknown (hollow interior)");
+  built.figures = {{"triangles", double(mesh.triangles.size())},
+                   {"boundary_edges", double(topology.boundary_edges)},
+                   {"surface_voxels", double(surface)},
+                   {"enclosed_voxels", double(enclosed)}};
+  detail::addVolumeFigures(built);
+  return built;
+}
+
+}  // namespace ceilplan::environment
