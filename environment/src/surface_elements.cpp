@@ -9,6 +9,10 @@ namespace {
 
 constexpr int kFaceCount = 6;
 constexpr int kNeighbourhoodVoxels = 2;  // Chebyshev radius of the normal estimate
+// Largest RMS distance (voxels) of the faces around an element from one inclined plane for them to
+// count as its staircase: steps of any length deviate by at most 0.29 (a uniform spread over
+// +-0.5 voxel), an L of faces by about a voxel.
+constexpr double kStaircaseRmsVoxels = 0.35;
 
 // Axis and direction of face `face`: 0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z.
 int axisOf(int face) { return face / 2; }
@@ -55,31 +59,39 @@ class ExposureMask {
   std::vector<std::uint8_t> bits_;
 };
 
-// The local surface's normal at an exposed face (see the header): its own axis normal if its
-// plane holds at least half the exposed faces nearby that face the same half-space, else the
-// normalised sum of their axis normals.
+// The local surface's normal at an exposed face (see the header). Face centres and normals are
+// taken in voxel units relative to the face's voxel centre.
 Eigen::Vector3d localNormal(const ExposureMask& mask, const Index3& voxel, int face) {
   const Eigen::Vector3d own = faceAxisNormal(face);
-  const int axis = axisOf(face);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int total = 0, in_plane = 0;
+  std::vector<Eigen::Vector3d> centres;
+  bool flat = true;
   for (int dk = -kNeighbourhoodVoxels; dk <= kNeighbourhoodVoxels; ++dk)
     for (int dj = -kNeighbourhoodVoxels; dj <= kNeighbourhoodVoxels; ++dj)
       for (int di = -kNeighbourhoodVoxels; di <= kNeighbourhoodVoxels; ++di) {
-        const Index3 other{voxel[0] + di, voxel[1] + dj, voxel[2] + dk};
-        const std::uint8_t bits = mask.at(other[0], other[1], other[2]);
+        const std::uint8_t bits = mask.at(voxel[0] + di, voxel[1] + dj, voxel[2] + dk);
         if (bits == 0) continue;
         for (int f = 0; f < kFaceCount; ++f) {
           if (!(bits & (1u << f))) continue;
           const Eigen::Vector3d n = faceAxisNormal(f);
           if (n.dot(own) < 0.0) continue;
+          const Eigen::Vector3d centre = Eigen::Vector3d(di, dj, dk) + 0.5 * n;
+          flat = flat && f == face && centre.dot(own) == 0.5;
           sum += n;
-          ++total;
-          if (f == face && other[axis] == voxel[axis]) ++in_plane;
+          centres.push_back(centre);
         }
       }
-  if (2 * in_plane >= total) return own;
-  return sum.normalized();
+  if (flat) return own;
+  // A staircase following an inclined plane has every face centre within about 0.3 voxel of
+  // that plane, whose normal is the sum of the faces' normals; an edge or corner of a box (an L
+  // of faces) is far from any single plane and keeps its axis normal.
+  const Eigen::Vector3d inclined = sum.normalized();
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& c : centres) centroid += c;
+  centroid /= static_cast<double>(centres.size());
+  double squares = 0.0;
+  for (const Eigen::Vector3d& c : centres) squares += std::pow((c - centroid).dot(inclined), 2);
+  return std::sqrt(squares / static_cast<double>(centres.size())) <= kStaircaseRmsVoxels ? inclined : own;
 }
 
 }  // namespace

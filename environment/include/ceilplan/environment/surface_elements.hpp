@@ -26,11 +26,11 @@ struct SurfaceElement {
 };
 
 // Every exposed face whose centre lies in `box_m` (faces on its boundary included), ordered by
-// voxel (z, then y, then x) and face. The normal of each is its face's axis normal when that
-// face's plane holds at least half of the exposed faces around it (within 2 voxels, facing the
-// same half-space): flat surfaces and the edges of boxes keep exact axis normals. Otherwise
-// (a staircase approximating an inclined surface) it is the normalised sum of those faces' axis
-// normals, which is the inclined surface's normal when the staircase follows a plane.
+// voxel (z, then y, then x) and face. Each takes its face's axis normal, unless the exposed faces
+// around it (within 2 voxels, facing its half-space) are a staircase: their centres all lie within
+// about a third of a voxel (RMS) of one inclined plane. Then the normal is the normalised sum of
+// those faces' axis normals, which is that plane's normal. Flat surfaces and the edges and corners
+// of boxes (an L of faces, far from any single plane) keep exact axis normals.
 std::vector<SurfaceElement> exposedSurface(const VoxelGrid& grid, const Eigen::AlignedBox3d& box_m);
 
 // The axis normal of face `face` (0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z).
