@@ -6,6 +6,8 @@
 namespace ceilplan::mission {
 namespace {
 
+constexpr double kLaneDistanceShare = 0.8;  // views this close to the farthest level form the lanes
+
 class Stopwatch {
  public:
   double lap_s() {
@@ -18,12 +20,6 @@ class Stopwatch {
  private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
-}
 
 }  // namespace
 
@@ -85,7 +81,6 @@ CoveragePlan planCoverage(const environment::Environment& environment, const pla
     std::vector<PlannedPhoto> chosen;
     std::vector<CameraPose> poses;
     std::vector<Eigen::Vector3d> cameras;
-    std::vector<double> lane_widths;
     for (const std::uint32_t v : result.selection.chosen) {
       PlannedPhoto photo;
       photo.pose = candidates.poses[v];
@@ -104,10 +99,15 @@ CoveragePlan planCoverage(const environment::Environment& environment, const pla
       photo.max_speed_m_s = costs[v].speed_m_s;
       poses.push_back(photo.pose);
       cameras.push_back(photo.camera_m);
-      lane_widths.push_back(2.0 * photo.distance_m * camera.halfWidthTan() * region.widthShare());
       chosen.push_back(photo);
     }
-    result.passes = orderIntoPasses(poses, cameras, result.heading_deg, median(lane_widths));
+    // Lanes from the views near the farthest distance level (the regular tiling); the rest are
+    // inserted where they cost the route least.
+    const double far_m = distanceLevels(camera, region, 1).front();
+    std::vector<std::uint8_t> in_lanes;
+    for (const PlannedPhoto& photo : chosen) in_lanes.push_back(photo.distance_m >= kLaneDistanceShare * far_m ? 1 : 0);
+    const double lane_width_m = 2.0 * far_m * camera.halfWidthTan() * region.widthShare();
+    result.passes = orderIntoPasses(poses, cameras, result.heading_deg, lane_width_m, in_lanes);
     for (std::size_t p = 0; p < result.passes.passes.size(); ++p)
       for (std::uint32_t& view : result.passes.passes[p].views) {
         PlannedPhoto photo = chosen[view];

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace ceilplan::mission {
@@ -23,16 +24,19 @@ struct ViewPass {
 struct PassPlan {
   std::vector<ViewPass> passes;   // in flying order; every view in exactly one
   double route_m = 0.0;           // closed route through the passes in order (camera positions)
-  double generic_route_m = 0.0;   // closed route of a generic tour of the same views (Euclidean 2-opt/Or-opt)
+  double generic_route_m = 0.0;   // closed route of a generic tour of the same views
+  std::string generic_method;     // how generic_route_m was found
   bool passes_win = false;        // route_m <= generic_route_m: fly the passes
 };
 
-// Orders `poses` (their cameras at `camera_m`) into passes: lanes `lane_width_m` apart from
-// the lowest lane coordinate, each view in the nearest. `heading_deg` is the region's long
-// axis (regionHeading). The generic tour (mission::heuristicTour with seed 1, 20 restarts up to
-// 200 views, local search alone beyond) is computed up to `generic_limit` views; beyond,
-// generic_route_m is 0 and passes_win true.
+// Orders `poses` (their cameras at `camera_m`) into passes. The views marked in `in_lanes`
+// (all when empty) form the lanes: `lane_width_m` apart from the lowest lane coordinate, each
+// view in the nearest, ordered along the lane, lanes flown in alternating directions. Every
+// other view (a patch of an edge, a strip behind an occluder) is inserted where it lengthens
+// the route least, into the pass of the view before it. `heading_deg` is the region's long axis
+// (regionHeading). The generic tour is mission::heuristicTour (seed 1; 20 restarts up to 200
+// views, local search alone up to 250) and a nearest-neighbour tour beyond.
 PassPlan orderIntoPasses(const std::vector<CameraPose>& poses, const std::vector<Eigen::Vector3d>& camera_m,
-                         double heading_deg, double lane_width_m, std::size_t generic_limit = 1500);
+                         double heading_deg, double lane_width_m, const std::vector<std::uint8_t>& in_lanes = {});
 
 }  // namespace ceilplan::mission
