@@ -67,6 +67,14 @@ mission::RegionShape readShape(const YAML::Node& node, const std::string& path) 
   return mission::RegionShape::makePrism(std::move(vertices), z[0], z[1]);
 }
 
+// What surfaces and contact grids share: name, box or prism, faces.
+void readPlace(const YAML::Node& node, const std::string& path, std::string& name, mission::RegionShape& shape,
+               mission::FaceSet& faces) {
+  name = text(requiredKey(node, "name", path), keyPath(path, "name"));
+  shape = readShape(node, path);
+  faces = readFaces(requiredKey(node, "faces", path, "down, side and/or up"), keyPath(path, "faces"));
+}
+
 // Overlap in percent; a value in (0, 1] is a fraction written by mistake.
 double readOverlap(const YAML::Node& node, const std::string& path) {
   const double value = numberIn(node, path, -kAny, kAny, "%");
@@ -149,9 +157,7 @@ mission::Camera readCamera(const YAML::Node& node, const std::string& path) {
 mission::CoverageRegion readSurface(const YAML::Node& node, const std::string& path) {
   requireKnownKeys(node, {"name", "box", "prism", "faces", "gsd_mm_px", "overlap", "max_incidence_deg"}, path);
   mission::CoverageRegion region;
-  region.name = text(requiredKey(node, "name", path), keyPath(path, "name"));
-  region.shape = readShape(node, path);
-  region.faces = readFaces(requiredKey(node, "faces", path, "down, side and/or up"), keyPath(path, "faces"));
+  readPlace(node, path, region.name, region.shape, region.faces);
   region.gsd_mm_px = numberIn(requiredKey(node, "gsd_mm_px", path), keyPath(path, "gsd_mm_px"), -kAny, kAny, "mm/px");
   if (region.gsd_mm_px <= 0.0)
     throw ceilplan::InputError("'" + keyPath(path, "gsd_mm_px") + "' must be positive, got " + formatNumber(region.gsd_mm_px));
@@ -170,9 +176,7 @@ mission::CoverageRegion readSurface(const YAML::Node& node, const std::string& p
 mission::ContactGrid readContactGrid(const YAML::Node& node, const std::string& path) {
   requireKnownKeys(node, {"name", "box", "prism", "faces", "spacing_m", "dwell_s", "reach_m"}, path);
   mission::ContactGrid grid;
-  grid.name = text(requiredKey(node, "name", path), keyPath(path, "name"));
-  grid.shape = readShape(node, path);
-  grid.faces = readFaces(requiredKey(node, "faces", path, "down, side and/or up"), keyPath(path, "faces"));
+  readPlace(node, path, grid.name, grid.shape, grid.faces);
   grid.spacing_m = numberIn(requiredKey(node, "spacing_m", path), keyPath(path, "spacing_m"), -kAny, kAny, "m");
   grid.dwell_s = numberIn(requiredKey(node, "dwell_s", path), keyPath(path, "dwell_s"), -kAny, kAny, "s");
   if (node["reach_m"]) grid.reach_m = numberIn(node["reach_m"], keyPath(path, "reach_m"), -kAny, kAny, "m");

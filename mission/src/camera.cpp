@@ -19,61 +19,52 @@ void requireRange(double value, double lo, double hi, const std::string& field, 
                                "] " + unit + ", got " + formatNumber(value));
 }
 
-// Published specifications (the maker's specification pages, as cited). Values the makers
-// do not publish are marked [open] in docs/coverage.md and given conservative defaults.
+// A preset's published numbers: sensor (mm), image (px), focal length (mm), gimbal pitch range
+// (deg, as mounted below the vehicle), closest focus (m), shortest photo interval (s).
+struct PresetSpec {
+  const char* name;
+  double sensor_width_mm, sensor_height_mm;
+  int image_width_px, image_height_px;
+  double focal_length_mm;
+  double pitch_min_deg, pitch_max_deg;
+  double min_focus_m, min_photo_interval_s;
+  const char* source;
+};
+
+// The makers' specification pages, as cited. Values a maker does not publish are marked [open]
+// here and in docs/coverage.md, with conservative defaults.
+// - DJI Phantom 4 RTK: 1" CMOS (13.2 x 8.8 mm), 5472 x 3648 px, 8.8 mm lens (24 mm equivalent),
+//   autofocus from 1 m, gimbal pitch -90 to +30 deg, interval shooting from 2 s.
+// - DJI Zenmuse P1 with the DL 35 mm F2.8 LS ASPH lens: full frame 35.9 x 24 mm, 8192 x 5460 px,
+//   minimum photo interval 0.7 s, gimbal tilt -125 to +40 deg (the camera points from -90 to
+//   +40); the lens's closest focus is not on the sheet: 1 m [open].
+// - DJI Zenmuse H20 wide camera: 1/2.3" CMOS (6.17 x 4.55 mm), 4056 x 3040 px, 4.5 mm lens (24 mm
+//   equivalent), gimbal tilt -120 to +30 deg; closest focus and shortest interval are not on the
+//   sheet: 0.5 m and 1 s [open].
+constexpr PresetSpec kPresets[] = {
+    {"phantom4rtk", 13.2, 8.8, 5472, 3648, 8.8, -90.0, 30.0, 1.0, 2.0,
+     "DJI Phantom 4 RTK specifications, https://www.dji.com/phantom-4-rtk/specs"},
+    {"zenmuse_p1_35mm", 35.9, 24.0, 8192, 5460, 35.0, -90.0, 40.0, 1.0, 0.7,
+     "DJI Zenmuse P1 specifications, https://enterprise.dji.com/zenmuse-p1/specs"},
+    {"zenmuse_h20_wide", 6.17, 4.55, 4056, 3040, 4.5, -90.0, 30.0, 0.5, 1.0,
+     "DJI Zenmuse H20 series specifications, https://enterprise.dji.com/zenmuse-h20-series/specs"},
+};
+
 std::vector<CameraPreset> makePresets() {
   std::vector<CameraPreset> presets;
-  {
-    // DJI Phantom 4 RTK specifications, https://www.dji.com/phantom-4-rtk/specs: 1" CMOS
-    // (13.2 x 8.8 mm), 5472 x 3648 px, 8.8 mm lens (24 mm equivalent), autofocus from 1 m,
-    // gimbal pitch -90 to +30 deg, interval shooting from 2 s.
-    Camera c;
-    c.name = "phantom4rtk";
-    c.sensor_width_mm = 13.2;
-    c.sensor_height_mm = 8.8;
-    c.image_width_px = 5472;
-    c.image_height_px = 3648;
-    c.focal_length_mm = 8.8;
-    c.gimbal_pitch_min_deg = -90.0;
-    c.gimbal_pitch_max_deg = 30.0;
-    c.min_focus_m = 1.0;
-    c.min_photo_interval_s = 2.0;
-    presets.push_back({c, "DJI Phantom 4 RTK specifications, https://www.dji.com/phantom-4-rtk/specs"});
-  }
-  {
-    // DJI Zenmuse P1 specifications, https://enterprise.dji.com/zenmuse-p1/specs: full frame
-    // 35.9 x 24 mm, 8192 x 5460 px, DL 35 mm F2.8 LS ASPH lens, minimum photo interval 0.7 s,
-    // gimbal tilt -125 to +40 deg (the camera points from -90 to +40). The lens's closest
-    // focus is not on the sheet: 1 m [open].
-    Camera c;
-    c.name = "zenmuse_p1_35mm";
-    c.sensor_width_mm = 35.9;
-    c.sensor_height_mm = 24.0;
-    c.image_width_px = 8192;
-    c.image_height_px = 5460;
-    c.focal_length_mm = 35.0;
-    c.gimbal_pitch_min_deg = -90.0;
-    c.gimbal_pitch_max_deg = 40.0;
-    c.min_focus_m = 1.0;
-    c.min_photo_interval_s = 0.7;
-    presets.push_back({c, "DJI Zenmuse P1 specifications, https://enterprise.dji.com/zenmuse-p1/specs"});
-  }
-  {
-    // DJI Zenmuse H20 wide camera, https://enterprise.dji.com/zenmuse-h20-series/specs: 1/2.3"
-    // CMOS (6.17 x 4.55 mm), 4056 x 3040 px, 4.5 mm lens (24 mm equivalent), gimbal tilt -120 to
-    // +30 deg. Closest focus and shortest interval are not on the sheet: 0.5 m and 1 s [open].
-    Camera c;
-    c.name = "zenmuse_h20_wide";
-    c.sensor_width_mm = 6.17;
-    c.sensor_height_mm = 4.55;
-    c.image_width_px = 4056;
-    c.image_height_px = 3040;
-    c.focal_length_mm = 4.5;
-    c.gimbal_pitch_min_deg = -90.0;
-    c.gimbal_pitch_max_deg = 30.0;
-    c.min_focus_m = 0.5;
-    c.min_photo_interval_s = 1.0;
-    presets.push_back({c, "DJI Zenmuse H20 series specifications, https://enterprise.dji.com/zenmuse-h20-series/specs"});
+  for (const PresetSpec& spec : kPresets) {
+    Camera camera;
+    camera.name = spec.name;
+    camera.sensor_width_mm = spec.sensor_width_mm;
+    camera.sensor_height_mm = spec.sensor_height_mm;
+    camera.image_width_px = spec.image_width_px;
+    camera.image_height_px = spec.image_height_px;
+    camera.focal_length_mm = spec.focal_length_mm;
+    camera.gimbal_pitch_min_deg = spec.pitch_min_deg;
+    camera.gimbal_pitch_max_deg = spec.pitch_max_deg;
+    camera.min_focus_m = spec.min_focus_m;
+    camera.min_photo_interval_s = spec.min_photo_interval_s;
+    presets.push_back({camera, spec.source});
   }
   return presets;
 }
