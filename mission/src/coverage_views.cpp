@@ -22,7 +22,8 @@ constexpr int kRepairLevels = 5;           // distances per repair probe
 constexpr int kRepairDirections = 8;       // tilt directions per tilt angle
 constexpr int kRepairViewsPerElement = 4;  // probes kept per element the lattice missed
 constexpr double kClearanceTolerance_m = 0.1;  // free mode: "largest clearance" within this
-constexpr double kOpenShare = 0.95;        // a straight view seeing this share of its covered part is in the open
+constexpr double kOpenShare = 0.95;          // a straight view seeing this share of its covered part is in the open
+constexpr double kPatternLevelShare = 0.5;   // patterns at distance levels this share of the farthest and beyond
 
 // Elements bucketed on a uniform grid, for "which elements lie in this box".
 class ElementIndex {
@@ -363,7 +364,7 @@ std::vector<std::vector<std::uint32_t>> flatPatches(const environment::VoxelGrid
   return patches;
 }
 
-// The pattern: per flat patch and distance level, a lawnmower tiling of the patch's extent in
+// The pattern: per flat patch and distance level (those at least half the farthest), a lawnmower tiling of the patch's extent in
 // the straight view's image axes, lanes and stations evenly spaced with the first and last
 // covering parts ending at the patch's edges, as a survey tool lays out passes. Each station
 // aims at its point on the patch's plane; stations over no element of the patch are dropped.
@@ -387,6 +388,7 @@ std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera&
     hi += Eigen::Vector2d::Constant(0.5 * r);
     const double plane = first.centre_m.dot(straight.forward());
     for (const double d : levels) {
+      if (d < kPatternLevelShare * levels.front()) continue;
       const Eigen::Vector2d span(2.0 * d * camera.halfWidthTan() * region.widthShare(),
                                  2.0 * d * camera.halfHeightTan() * region.heightShare());
       int count[2];
@@ -426,12 +428,17 @@ std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera&
 // The lattice: per distance level, cells the size of `share` x the covered part of an image
 // seen straight on, laid in each face direction's image axes (the right and up axes of the
 // straight view, whose yaw follows the region's heading), so that views one cell pitch apart
-// tile the surface; per cell, the element nearest its centre. Cells are at least `min_cell_m`
-// (two voxels): nearer views are left to the repairs.
+// tile the surface; per cell, the element nearest its centre. Cells are at least two voxels and a
+// quarter of the farthest level's covered part: the slivers nearer views would cover are left to
+// the repairs.
 std::vector<Seed> latticeSeeds(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
                                const RegionSurface& surface, const std::vector<double>& levels, double share,
                                double heading_deg) {
-  const double min_cell_m = 2.0 * grid.frame().resolution_m();
+  // Cells no smaller than two voxels, nor than a quarter of the farthest level's covered part.
+  const double far_m = levels.front();
+  const double min_cell_m =
+      std::max(2.0 * grid.frame().resolution_m(),
+               0.25 * 2.0 * far_m * std::min(camera.halfWidthTan() * region.widthShare(), camera.halfHeightTan() * region.heightShare()));
   const std::vector<CameraFrame> frames = straightFrames(camera, heading_deg);
   std::vector<Seed> seeds;
   for (const double d : levels) {
