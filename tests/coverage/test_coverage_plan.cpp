@@ -118,6 +118,20 @@ TEST(CoveragePlan, CeilingModeHugsTheCeilingToPhotographTheBeam) {
   EXPECT_LT(ceiling_mode.charge_estimate_ah, free_mode.charge_estimate_ah);
 }
 
+TEST(CoveragePlan, OnTheMoveNeitherStopsNorBlurs) {
+  Camera camera = testing::upwardCamera();
+  camera.capture = CaptureStyle::OnTheMove;
+  camera.exposure_s = 0.002;
+  camera.blur_limit_px = 0.1;  // at 1 mm/px at most 0.05 m/s; finer GSD is slower still
+  const CoveragePlan planned = planCoverage(room().environment, room().ceiling_model, camera, {ceiling()});
+  ASSERT_FALSE(planned.photos.empty());
+  for (const PlannedPhoto& photo : planned.photos) {
+    EXPECT_DOUBLE_EQ(photo.stop_s, 0.0);
+    EXPECT_GT(photo.max_speed_m_s, 0.0);
+    EXPECT_LE(photo.max_speed_m_s, 0.05 + 1e-12);
+  }
+}
+
 TEST(CoveragePlan, RefusesBadInputBeforeTheMapWork) {
   CoverageRegion sharp = ceiling();
   sharp.gsd_mm_px = 0.1;  // 0.3 m: inside the 0.5 m focus

@@ -123,6 +123,17 @@ TEST(Regions, ARegionWithNoSurfaceIsAnError) {
   EXPECT_NEAR(ceiling.area_m2, 16.0, 1e-9);
 }
 
+TEST(Regions, PrismsSelectTheirFaces) {
+  const environment::OccupancyMap map = testing::room([](double, double) { return 3.0; });
+  const auto grid = environment::VoxelGrid::fromTree(map.tree());
+  // The triangle (0, 0), (1.02, 0), (0, 1.02) of the ceiling holds the face centres (0.05 + 0.1 i,
+  // 0.05 + 0.1 j) with i + j <= 9: 10 + 9 + ... + 1 of them.
+  const RegionSurface triangle = extractRegionSurface(
+      grid, RegionShape::makePrism({{0, 0}, {1.02, 0}, {0, 1.02}}, 2.9, 3.1), FaceSet{true, false, false}, "t");
+  EXPECT_EQ(triangle.elements.size(), 55u);
+  for (const auto& element : triangle.elements) EXPECT_LE(element.centre_m.x() + element.centre_m.y(), 1.0 + 1e-9);
+}
+
 TEST(Regions, ContactGridsBecomeTargetsOnTheSurface) {
   const environment::OccupancyMap map = testing::room([](double, double) { return 3.0; });
   const auto grid = environment::VoxelGrid::fromTree(map.tree());

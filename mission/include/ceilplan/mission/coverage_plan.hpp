@@ -34,7 +34,7 @@ struct PlannedPhoto {
   double covered_area_m2 = 0.0; // of the region, in the covered part of the image
   double hover_current_a = 0.0; // at the pose, under the mode's cost model
   double stop_s = 0.0;          // hover here this long (0 when shooting on the move)
-  double max_speed_m_s = 0.0;   // fastest flight past it that keeps the blur limit and photo interval
+  double max_speed_m_s = 0.0;   // flying on to the next photo: the transit speed, on the move capped by the blur limit and photo interval
 };
 
 struct RegionPlan {
