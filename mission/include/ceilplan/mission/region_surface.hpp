@@ -1,0 +1,25 @@
+#pragma once
+// The surface elements of one region: the exposed voxel faces (environment/surface_elements.hpp)
+// inside its shape whose normal faces one of its face kinds.
+
+#include "ceilplan/environment/surface_elements.hpp"
+#include "ceilplan/environment/voxel_grid.hpp"
+#include "ceilplan/mission/coverage_region.hpp"
+#include "ceilplan/core/error.hpp"
+
+#include <vector>
+
+namespace ceilplan::mission {
+
+struct RegionSurface {
+  std::vector<environment::SurfaceElement> elements;
+  double area_m2 = 0.0;  // sum of the elements' areas
+};
+
+// Throws ceilplan::InputError naming `what` (e.g. "surface region 'soffit'") when the shape
+// holds no such element: a region with no surface in it is a mistake in the mission, not
+// something to cover trivially.
+RegionSurface extractRegionSurface(const environment::VoxelGrid& grid, const RegionShape& shape, const FaceSet& faces,
+                                   const std::string& what);
+
+}  // namespace ceilplan::mission

@@ -1,0 +1,674 @@
+#include "ceilplan/mission/coverage_views.hpp"
+
+#include "ceilplan/environment/visibility.hpp"
+#include "ceilplan/core/parallel_for.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <tuple>
+#include <unordered_map>
+
+namespace ceilplan::mission {
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+constexpr double kIndexCell_m = 0.5;       // cell of the element index
+constexpr int kRepairLevels = 5;           // distances per repair probe
+constexpr int kRepairDirections = 8;       // tilt directions per tilt angle
+constexpr int kRepairViewsPerElement = 4;  // probes kept per element the lattice missed
+constexpr double kClearanceTolerance_m = 0.1;  // free mode: "largest clearance" within this
+constexpr double kOpenShare = 0.95;          // a straight view seeing this share of its covered part is in the open
+constexpr double kPatternLevelShare = 0.5;   // patterns at distance levels this share of the farthest and beyond
+
+// Elements bucketed on a uniform grid, for "which elements lie in this box".
+class ElementIndex {
+ public:
+  explicit ElementIndex(const RegionSurface& surface) {
+    Eigen::AlignedBox3d bounds;
+    for (const auto& element : surface.elements) bounds.extend(element.centre_m);
+    origin_ = bounds.min();
+    for (int axis = 0; axis < 3; ++axis)
+      size_[axis] = 1 + static_cast<int>(std::floor((bounds.max()[axis] - origin_[axis]) / kIndexCell_m));
+    std::vector<std::uint32_t> cell_of(surface.elements.size());
+    offsets_.assign(static_cast<std::size_t>(size_[0]) * size_[1] * size_[2] + 1, 0);
+    for (std::size_t e = 0; e < surface.elements.size(); ++e) {
+      const Eigen::Vector3d& c = surface.elements[e].centre_m;
+      cell_of[e] = static_cast<std::uint32_t>(linear(cellOf(0, c.x()), cellOf(1, c.y()), cellOf(2, c.z())));
+      ++offsets_[cell_of[e] + 1];
+    }
+    for (std::size_t cell = 1; cell < offsets_.size(); ++cell) offsets_[cell] += offsets_[cell - 1];
+    members_.resize(surface.elements.size());
+    std::vector<std::uint32_t> next(offsets_.begin(), offsets_.end() - 1);
+    for (std::size_t e = 0; e < surface.elements.size(); ++e) members_[next[cell_of[e]]++] = static_cast<std::uint32_t>(e);
+  }
+
+  // Calls visit(element) for every element in the cells the box touches (a superset of the box).
+  template <typename Visit>
+  void forEachNear(const Eigen::AlignedBox3d& box, Visit&& visit) const {
+    int lo[3], hi[3];
+    for (int axis = 0; axis < 3; ++axis) {
+      lo[axis] = std::max(0, cellOf(axis, box.min()[axis]));
+      hi[axis] = std::min(size_[axis] - 1, cellOf(axis, box.max()[axis]));
+      if (lo[axis] > hi[axis]) return;
+    }
+    for (int k = lo[2]; k <= hi[2]; ++k)
+      for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int i = lo[0]; i <= hi[0]; ++i) {
+          const std::size_t cell = linear(i, j, k);
+          for (std::uint32_t m = offsets_[cell]; m < offsets_[cell + 1]; ++m) visit(members_[m]);
+        }
+  }
+
+ private:
+  int cellOf(int axis, double coordinate_m) const {
+    const double cell = std::floor((coordinate_m - origin_[axis]) / kIndexCell_m);
+    return static_cast<int>(std::clamp(cell, -1.0, static_cast<double>(size_[axis])));
+  }
+  std::size_t linear(int i, int j, int k) const { return (static_cast<std::size_t>(k) * size_[1] + j) * size_[0] + i; }
+
+  Eigen::Vector3d origin_;
+  int size_[3];
+  std::vector<std::uint32_t> offsets_;
+  std::vector<std::uint32_t> members_;
+};
+
+// The coverage rule of the header, for one region.
+class RegionViewer {
+ public:
+  RegionViewer(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
+               const RegionSurface& surface)
+      : grid_(grid),
+        camera_(camera),
+        region_(region),
+        surface_(surface),
+        index_(surface),
+        reach_m_(camera.distanceForGsd_m(region.gsd_mm_px)),
+        width_tan_(camera.halfWidthTan() * region.widthShare()),
+        height_tan_(camera.halfHeightTan() * region.heightShare()),
+        cos_max_incidence_(std::cos(region.max_incidence_deg * kDegree)),
+        gsd_per_m_(camera.gsd_mm_px(1.0)) {}
+
+  void covered(const CameraPose& pose, std::vector<SeenElement>& out) const {
+    out.clear();
+    const CameraFrame frame(camera_, pose);
+    // Elements meeting the GSD lie within reach_m_, so at depth <= reach_m_: inside the
+    // pyramid of the covered part of the image truncated there, whose box is the box of its apex
+    // and four far corners.
+    Eigen::AlignedBox3d box(frame.position_m());
+    for (const double sr : {-1.0, 1.0})
+      for (const double su : {-1.0, 1.0})
+        box.extend(frame.position_m() +
+                   reach_m_ * (frame.forward() + sr * width_tan_ * frame.right() + su * height_tan_ * frame.up()));
+    index_.forEachNear(box, [&](std::uint32_t e) {
+      SeenElement seen;
+      if (test(frame, e, seen)) out.push_back(seen);
+    });
+    std::sort(out.begin(), out.end(), [](const SeenElement& a, const SeenElement& b) { return a.element < b.element; });
+  }
+
+  // Area of the covered part of an image on a flat surface seen straight on from `distance_m`.
+  double openArea_m2(double distance_m) const {
+    return 4.0 * distance_m * distance_m * width_tan_ * height_tan_;
+  }
+
+  bool covers(const CameraPose& pose, std::uint32_t element) const {
+    SeenElement seen;
+    return test(CameraFrame(camera_, pose), element, seen);
+  }
+
+ private:
+  bool test(const CameraFrame& frame, std::uint32_t e, SeenElement& seen) const {
+    const environment::SurfaceElement& element = surface_.elements[e];
+    const auto image = frame.project(element.centre_m);
+    if (!image || std::abs(image->right_tan) > width_tan_ || std::abs(image->up_tan) > height_tan_ ||
+        image->depth_m < camera_.min_focus_m)
+      return false;
+    const Eigen::Vector3d sight = element.centre_m - frame.position_m();
+    const double distance_m = sight.norm();
+    const double cos_incidence = -sight.dot(element.normal) / distance_m;
+    if (!(cos_incidence >= cos_max_incidence_)) return false;
+    // gsd_mm_px(distance, incidence) without the arc cosine: distance x gsd per metre / cos.
+    const double gsd = gsd_per_m_ * distance_m / cos_incidence;
+    if (gsd > region_.gsd_mm_px) return false;
+    // End the sight line just in front of the face, in the free voxel it looks onto.
+    const Eigen::Vector3d end = element.centre_m + element.faceNormal() * (0.01 * grid_.frame().resolution_m());
+    if (!environment::lineOfSight(grid_, frame.position_m(), end)) return false;
+    seen = {e, static_cast<float>(gsd), static_cast<float>(std::acos(std::min(1.0, cos_incidence)) / kDegree),
+            static_cast<float>(distance_m)};
+    return true;
+  }
+
+  const environment::VoxelGrid& grid_;
+  const Camera& camera_;
+  const CoverageRegion& region_;
+  const RegionSurface& surface_;
+  ElementIndex index_;
+  double reach_m_;
+  double width_tan_;
+  double height_tan_;
+  double cos_max_incidence_;
+  double gsd_per_m_;  // GSD at 1 m, straight on
+};
+
+// Two unit tangents of the plane square to `normal`, the first along `heading` where it can be.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> tangents(const Eigen::Vector3d& normal, const Eigen::Vector3d& heading) {
+  const Eigen::Vector3d along = std::abs(normal.dot(heading)) < 0.9 ? heading : Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d t1 = (along - along.dot(normal) * normal).normalized();
+  return {t1, normal.cross(t1)};
+}
+
+struct Pose {
+  CameraPose pose;
+  double clearance_m = 0.0;  // free mode only
+};
+
+// Camera poses looking at an element, checked against the vehicle and the map.
+class PoseMaker {
+ public:
+  PoseMaker(const environment::Environment& environment, const Camera& camera, const CoverageRegion& region,
+            const ViewGenerationOptions& options, double level_yaw_deg)
+      : environment_(environment),
+        camera_(camera),
+        region_(region),
+        options_(options),
+        level_yaw_deg_(level_yaw_deg),
+        required_clearance_m_(environment.vehicle().collision_radius_m + options.free_standoff_m) {}
+
+  const Eigen::Vector3d& heading() const { return heading_; }
+  bool free() const { return options_.mode == FlightMode::Free; }
+  double requiredClearance_m() const { return required_clearance_m_; }
+
+  // The camera at `camera_m` looking at `target_m`: the pose if the gimbal can point there
+  // and the body is admissible.
+  std::optional<Pose> looking(const Eigen::Vector3d& camera_m, const Eigen::Vector3d& target_m, std::size_t& tried) const {
+    const auto [yaw, pitch] = yawPitchOf(target_m - camera_m, level_yaw_deg_);
+    if (!camera_.pitchReachable(pitch)) return std::nullopt;
+    const Eigen::Vector3d body_m = camera_m - cameraPosition(camera_, Eigen::Vector3d::Zero(), yaw);
+    ++tried;
+    if (!admissible(body_m)) return std::nullopt;
+    return Pose{{body_m, yaw, std::clamp(pitch, camera_.gimbal_pitch_min_deg, camera_.gimbal_pitch_max_deg)},
+                free() ? environment_.clearance_m(body_m) : 0.0};
+  }
+
+  // Ceiling mode: `pose` raised until the airframe meets the structure above (or 3 m), the
+  // camera re-aimed at `aim_m` on the surface of normal `normal`; none unless it rose and still
+  // sees the aim within focus, GSD, incidence and gimbal limits.
+  std::optional<Pose> raised(const Pose& pose, const Eigen::Vector3d& aim_m, const Eigen::Vector3d& normal,
+                             std::size_t& tried) const {
+    const Eigen::Vector3d low = pose.pose.body_m;
+    const double resolution_m = environment_.grid().frame().resolution_m();
+    const environment::GridFrame& frame = environment_.grid().frame();
+    const auto above = environment_.columns().above(frame.indexOf(0, low.x()), frame.indexOf(1, low.y()), low.z());
+    double top_m = std::min(low.z() + 3.0, above.face_m - environment_.vehicle().inflatedTop_m());
+    if (top_m < low.z() + 0.5 * resolution_m) return std::nullopt;
+    const auto at = [&](double z) { return Eigen::Vector3d(low.x(), low.y(), z); };
+    ++tried;
+    if (!admissible(at(top_m))) {
+      double good = low.z(), bad = top_m;
+      for (int step = 0; step < 20; ++step) {
+        const double middle = 0.5 * (good + bad);
+        ++tried;
+        (admissible(at(middle)) ? good : bad) = middle;
+      }
+      top_m = good;
+    }
+    if (top_m < low.z() + 0.5 * resolution_m) return std::nullopt;
+    // Re-aim; a horizontal mount offset moves the camera with the yaw, so settle it twice.
+    double yaw = pose.pose.yaw_deg, pitch = pose.pose.gimbal_pitch_deg;
+    for (int round = 0; round < 2; ++round)
+      std::tie(yaw, pitch) = yawPitchOf(aim_m - cameraPosition(camera_, at(top_m), yaw), level_yaw_deg_);
+    const Eigen::Vector3d sight = aim_m - cameraPosition(camera_, at(top_m), yaw);
+    const double distance_m = sight.norm();
+    const double cos_incidence = -sight.dot(normal) / distance_m;
+    if (!camera_.pitchReachable(pitch) || distance_m < camera_.min_focus_m ||
+        cos_incidence < std::cos(region_.max_incidence_deg * kDegree) ||
+        camera_.gsd_mm_px(distance_m, std::acos(std::min(1.0, cos_incidence))) > region_.gsd_mm_px)
+      return std::nullopt;
+    return Pose{{at(top_m), yaw, std::clamp(pitch, camera_.gimbal_pitch_min_deg, camera_.gimbal_pitch_max_deg)}, 0.0};
+  }
+
+  // Poses looking at `aim_m` on the surface of `element` from `distance_m` along its normal,
+  // tilted by `tilt_rad` towards each of `directions` tangent directions (one straight view when
+  // the tilt is 0), raised too in ceiling mode.
+  void around(const environment::SurfaceElement& element, const Eigen::Vector3d& aim_m, double distance_m,
+              double tilt_rad, int directions, std::vector<Pose>& out, std::size_t& tried) const {
+    const auto [t1, t2] = tangents(element.normal, heading_);
+    const int count = tilt_rad == 0.0 ? 1 : directions;
+    // At a tilt, the aim seen at the image centre meets the GSD nearer.
+    const double reach_m = camera_.distanceForGsd_m(region_.gsd_mm_px, tilt_rad);
+    const double d = std::min(distance_m, reach_m);
+    if (d < camera_.min_focus_m) return;
+    for (int k = 0; k < count; ++k) {
+      const double phi = 2.0 * M_PI * k / count;
+      const Eigen::Vector3d direction =
+          element.normal * std::cos(tilt_rad) + (t1 * std::cos(phi) + t2 * std::sin(phi)) * std::sin(tilt_rad);
+      const auto pose = looking(aim_m + d * direction, aim_m, tried);
+      if (!pose) continue;
+      out.push_back(*pose);
+      if (!free())
+        if (const auto up = raised(*pose, aim_m, element.normal, tried)) out.push_back(*up);
+    }
+  }
+
+  void setHeading(double yaw_deg) {
+    heading_ = Eigen::Vector3d(std::sin(yaw_deg * kDegree), std::cos(yaw_deg * kDegree), 0.0);
+  }
+
+ private:
+  bool admissible(const Eigen::Vector3d& body_m) const {
+    return environment_.contains(body_m) && environment_.isStateValid(body_m) &&
+           environment_.ceiling(body_m).nearest_gap_m >= options_.min_ceiling_gap_m;
+  }
+
+  const environment::Environment& environment_;
+  const Camera& camera_;
+  const CoverageRegion& region_;
+  const ViewGenerationOptions& options_;
+  double level_yaw_deg_;
+  double required_clearance_m_;
+  Eigen::Vector3d heading_ = Eigen::Vector3d::UnitY();
+};
+
+// One seed of the lattice: an element viewed from one distance.
+struct Seed {
+  std::uint32_t element;
+  double distance_m;
+  Eigen::Vector3d aim_m;  // on the element's face plane
+};
+
+// How far the flat patch of an element's face extends from its centre along `direction` (unit,
+// in the face's plane), up to `limit_m`: faces of the same orientation, in the same plane,
+// exposed and inside the region, one voxel after the other.
+double flatExtent(const environment::VoxelGrid& grid, const RegionShape& shape, const environment::SurfaceElement& element,
+                  const Eigen::Vector3d& direction, double limit_m) {
+  const environment::GridFrame& frame = grid.frame();
+  const double r = frame.resolution_m();
+  const Eigen::Vector3d n = element.faceNormal();
+  for (double s = r; s <= limit_m + 0.5 * r; s += r) {
+    const Eigen::Vector3d face = element.centre_m + direction * s;
+    const Eigen::Vector3d behind = face - 0.5 * r * n, front = face + 0.5 * r * n;
+    if (!shape.contains(face) ||
+        grid.at(frame.indexOf(0, behind.x()), frame.indexOf(1, behind.y()), frame.indexOf(2, behind.z())) !=
+            environment::CellState::Occupied ||
+        grid.at(frame.indexOf(0, front.x()), frame.indexOf(1, front.y()), frame.indexOf(2, front.z())) !=
+            environment::CellState::Free)
+      return std::min(limit_m, s - 0.5 * r);
+  }
+  return limit_m;
+}
+
+// The shift along `direction` that keeps a covered span of half-width `half_m` centred on the
+// element inside its flat patch: none in the open, inwards at an edge, centred on a strip
+// narrower than the span.
+double snapShift(double ahead_m, double behind_m, double half_m) {
+  if (ahead_m + behind_m <= 2.0 * half_m) return 0.5 * (ahead_m - behind_m);
+  if (ahead_m < half_m) return ahead_m - half_m;
+  if (behind_m < half_m) return half_m - behind_m;
+  return 0.0;
+}
+
+// The axes of a straight view of each face direction (0 +x, 1 -x, ..., 5 -z), yawed along the
+// region's heading when vertical.
+std::vector<CameraFrame> straightFrames(const Camera& camera, double heading_deg) {
+  std::vector<CameraFrame> frames;
+  for (int face = 0; face < 6; ++face) {
+    const auto [yaw, pitch] = yawPitchOf(-environment::faceAxisNormal(face), heading_deg);
+    frames.emplace_back(camera, CameraPose{-cameraPosition(camera, Eigen::Vector3d::Zero(), yaw), yaw, pitch});
+  }
+  return frames;
+}
+
+// The flat patches of a surface: elements with their face's own normal, joined to the
+// neighbouring faces of the same orientation in the same plane (4-connected). Elements of
+// inclined surfaces (a smoothed normal) belong to no patch.
+std::vector<std::vector<std::uint32_t>> flatPatches(const environment::VoxelGrid& grid, const RegionSurface& surface) {
+  const environment::GridFrame& frame = grid.frame();
+  const auto key = [&](const environment::Index3& voxel, int face) {
+    return static_cast<std::uint64_t>(frame.linear(voxel[0], voxel[1], voxel[2])) * 6 + face;
+  };
+  std::unordered_map<std::uint64_t, std::uint32_t> index;
+  for (std::uint32_t e = 0; e < surface.elements.size(); ++e) {
+    const auto& element = surface.elements[e];
+    if (element.normal.isApprox(element.faceNormal())) index.emplace(key(element.voxel, element.face), e);
+  }
+  std::vector<std::uint8_t> done(surface.elements.size(), 0);
+  std::vector<std::vector<std::uint32_t>> patches;
+  for (std::uint32_t start = 0; start < surface.elements.size(); ++start) {
+    if (done[start] || !index.count(key(surface.elements[start].voxel, surface.elements[start].face))) continue;
+    std::vector<std::uint32_t> patch{start};
+    done[start] = 1;
+    for (std::size_t next = 0; next < patch.size(); ++next) {
+      const auto& element = surface.elements[patch[next]];
+      const int normal_axis = element.face / 2;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (axis == normal_axis) continue;
+        for (const int step : {-1, 1}) {
+          environment::Index3 voxel = element.voxel;
+          voxel[axis] += step;
+          if (!frame.inside(voxel[0], voxel[1], voxel[2])) continue;
+          const auto found = index.find(key(voxel, element.face));
+          if (found == index.end() || done[found->second]) continue;
+          done[found->second] = 1;
+          patch.push_back(found->second);
+        }
+      }
+    }
+    std::sort(patch.begin(), patch.end());
+    patches.push_back(std::move(patch));
+  }
+  return patches;
+}
+
+// The pattern: per flat patch and distance level (those at least half the farthest), a lawnmower tiling of the patch's extent in
+// the straight view's image axes, lanes and stations evenly spaced with the first and last
+// covering parts ending at the patch's edges, as a survey tool lays out passes. Each station
+// aims at its point on the patch's plane; stations over no element of the patch are dropped.
+std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
+                               const RegionSurface& surface, const std::vector<double>& levels, double heading_deg) {
+  const double r = grid.frame().resolution_m();
+  const std::vector<CameraFrame> frames = straightFrames(camera, heading_deg);
+  std::vector<Seed> seeds;
+  for (const std::vector<std::uint32_t>& patch : flatPatches(grid, surface)) {
+    const auto& first = surface.elements[patch.front()];
+    const CameraFrame& straight = frames[first.face];
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
+    std::set<std::pair<long, long>> cells;  // the patch's faces in image-axis voxel units
+    for (const std::uint32_t e : patch) {
+      const Eigen::Vector2d at(surface.elements[e].centre_m.dot(straight.right()), surface.elements[e].centre_m.dot(straight.up()));
+      lo = lo.cwiseMin(at);
+      hi = hi.cwiseMax(at);
+      cells.emplace(std::lround(at.x() / r), std::lround(at.y() / r));
+    }
+    lo -= Eigen::Vector2d::Constant(0.5 * r);
+    hi += Eigen::Vector2d::Constant(0.5 * r);
+    const double plane = first.centre_m.dot(straight.forward());
+    for (const double d : levels) {
+      if (d < kPatternLevelShare * levels.front()) continue;
+      const Eigen::Vector2d span(2.0 * d * camera.halfWidthTan() * region.widthShare(),
+                                 2.0 * d * camera.halfHeightTan() * region.heightShare());
+      int count[2];
+      for (int axis = 0; axis < 2; ++axis)
+        count[axis] = std::max(1, static_cast<int>(std::ceil((hi[axis] - lo[axis]) / span[axis] - 1e-9)));
+      for (int j = 0; j < count[1]; ++j)
+        for (int i = 0; i < count[0]; ++i) {
+          Eigen::Vector2d at;
+          const int index[2] = {i, j};
+          for (int axis = 0; axis < 2; ++axis)
+            at[axis] = count[axis] == 1 ? 0.5 * (lo[axis] + hi[axis])
+                                        : lo[axis] + 0.5 * span[axis] +
+                                              (hi[axis] - lo[axis] - span[axis]) * index[axis] / (count[axis] - 1);
+          // The nearest face of the patch within a voxel, else no station here.
+          std::uint32_t nearest = patch.front();
+          bool found = false;
+          for (long dj = -1; dj <= 1 && !found; ++dj)
+            for (long di = -1; di <= 1 && !found; ++di)
+              found = cells.count({std::lround(at.x() / r) + di, std::lround(at.y() / r) + dj}) > 0;
+          if (!found) continue;
+          double best = INFINITY;
+          for (const std::uint32_t e : patch) {
+            const Eigen::Vector3d& c = surface.elements[e].centre_m;
+            const double offset = (Eigen::Vector2d(c.dot(straight.right()), c.dot(straight.up())) - at).squaredNorm();
+            if (offset < best) {
+              best = offset;
+              nearest = e;
+            }
+          }
+          seeds.push_back({nearest, d, at.x() * straight.right() + at.y() * straight.up() + plane * straight.forward()});
+        }
+    }
+  }
+  return seeds;
+}
+
+// The lattice: per distance level, cells the size of `share` x the covered part of an image
+// seen straight on, laid in each face direction's image axes (the right and up axes of the
+// straight view, whose yaw follows the region's heading), so that views one cell pitch apart
+// tile the surface; per cell, the element nearest its centre. Cells are at least two voxels and a
+// quarter of the farthest level's covered part: the slivers nearer views would cover are left to
+// the repairs.
+std::vector<Seed> latticeSeeds(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
+                               const RegionSurface& surface, const std::vector<double>& levels, double share,
+                               double heading_deg) {
+  // Cells no smaller than two voxels, nor than a quarter of the farthest level's covered part.
+  const double far_m = levels.front();
+  const double min_cell_m =
+      std::max(2.0 * grid.frame().resolution_m(),
+               0.25 * 2.0 * far_m * std::min(camera.halfWidthTan() * region.widthShare(), camera.halfHeightTan() * region.heightShare()));
+  const std::vector<CameraFrame> frames = straightFrames(camera, heading_deg);
+  std::vector<Seed> seeds;
+  for (const double d : levels) {
+    const double width_m = std::max(min_cell_m, share * 2.0 * d * camera.halfWidthTan() * region.widthShare());
+    const double height_m = std::max(min_cell_m, share * 2.0 * d * camera.halfHeightTan() * region.heightShare());
+    const double depth_m = std::min(width_m, height_m);
+    std::map<std::tuple<int, long, long, long>, std::pair<double, std::uint32_t>> best;
+    for (std::uint32_t e = 0; e < surface.elements.size(); ++e) {
+      const auto& element = surface.elements[e];
+      const CameraFrame& straight = frames[element.face];
+      const Eigen::Vector3d scaled(element.centre_m.dot(straight.right()) / width_m,
+                                   element.centre_m.dot(straight.up()) / height_m,
+                                   element.centre_m.dot(straight.forward()) / depth_m);
+      const Eigen::Vector3d cell = scaled.array().floor();
+      const double offset = (scaled - cell - Eigen::Vector3d::Constant(0.5)).squaredNorm();
+      const auto key = std::make_tuple(element.face, static_cast<long>(cell.x()), static_cast<long>(cell.y()),
+                                       static_cast<long>(cell.z()));
+      const auto found = best.find(key);
+      if (found == best.end() || offset < found->second.first) best[key] = {offset, e};
+    }
+    std::vector<std::uint32_t> chosen;
+    for (const auto& entry : best) chosen.push_back(entry.second.second);
+    std::sort(chosen.begin(), chosen.end());
+    // Each seed's aim, snapped to the edges of its flat patch; one seed per distinct aim.
+    const double half_width_m = d * camera.halfWidthTan() * region.widthShare();
+    const double half_height_m = d * camera.halfHeightTan() * region.heightShare();
+    std::map<std::tuple<long, long, long>, bool> aims;
+    for (const std::uint32_t e : chosen) {
+      const auto& element = surface.elements[e];
+      Eigen::Vector3d aim = element.centre_m;
+      if (element.normal.isApprox(element.faceNormal())) {
+        const CameraFrame& straight = frames[element.face];
+        for (const auto& [axis, half] : {std::pair<Eigen::Vector3d, double>{straight.right(), half_width_m},
+                                         std::pair<Eigen::Vector3d, double>{straight.up(), half_height_m}}) {
+          const double ahead = flatExtent(grid, region.shape, element, axis, half + half);
+          const double behind = flatExtent(grid, region.shape, element, -axis, half + half);
+          aim += axis * snapShift(ahead, behind, half);
+        }
+      }
+      const auto key = std::make_tuple(std::lround(aim.x() * 1e3), std::lround(aim.y() * 1e3), std::lround(aim.z() * 1e3));
+      if (aims.emplace(key, true).second) seeds.push_back({e, d, aim});
+    }
+  }
+  return seeds;
+}
+
+// Free mode: keep a pose where it keeps the standoff, or where it is of largest clearance
+// (within a tolerance) among the poses covering one of its elements that no standoff-keeping
+// pose covers. Every element stays covered.
+std::vector<bool> freeModeKeep(const std::vector<Pose>& poses, const std::vector<std::vector<SeenElement>>& covered,
+                               std::size_t element_count, double required_clearance_m) {
+  std::vector<std::uint8_t> fits(element_count, 0);
+  std::vector<double> best(element_count, -1.0);
+  for (std::size_t v = 0; v < poses.size(); ++v)
+    for (const SeenElement& seen : covered[v]) {
+      if (poses[v].clearance_m >= required_clearance_m) fits[seen.element] = 1;
+      best[seen.element] = std::max(best[seen.element], poses[v].clearance_m);
+    }
+  std::vector<bool> keep(poses.size(), false);
+  for (std::size_t v = 0; v < poses.size(); ++v) {
+    if (poses[v].clearance_m >= required_clearance_m) {
+      keep[v] = true;
+      continue;
+    }
+    for (const SeenElement& seen : covered[v])
+      if (!fits[seen.element] && poses[v].clearance_m >= best[seen.element] - kClearanceTolerance_m) {
+        keep[v] = true;
+        break;
+      }
+  }
+  return keep;
+}
+
+}  // namespace
+
+void CandidateViews::add(const CameraPose& pose, const std::vector<SeenElement>& covered) {
+  poses.push_back(pose);
+  seen.insert(seen.end(), covered.begin(), covered.end());
+  offsets.push_back(static_cast<std::uint32_t>(seen.size()));
+}
+
+std::vector<double> distanceLevels(const Camera& camera, const CoverageRegion& region, int levels) {
+  checkCameraReaches(camera, region);
+  // Seen straight on, a flat surface at the corner of the covered part of the image lies
+  // farther than its centre by 1 / cos(a) and is seen at incidence a, so its GSD is larger by
+  // 1 / cos^2(a) = 1 + tw^2 + th^2: the farthest level keeps the whole covered part within the GSD.
+  const double tw = camera.halfWidthTan() * region.widthShare(), th = camera.halfHeightTan() * region.heightShare();
+  const double far_m = camera.distanceForGsd_m(region.gsd_mm_px) / (1.0 + tw * tw + th * th);
+  const double near_m = std::min(far_m, camera.min_focus_m * 1.001 + 1e-3);
+  std::vector<double> distances;
+  const int count = std::max(1, levels);
+  for (int k = 0; k < count; ++k)
+    distances.push_back(count == 1 ? far_m : far_m * std::pow(near_m / far_m, static_cast<double>(k) / (count - 1)));
+  return distances;
+}
+
+double regionHeading(const RegionSurface& surface) {
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  double area = 0.0;
+  for (const auto& element : surface.elements) {
+    mean += element.area_m2 * element.centre_m.head<2>();
+    area += element.area_m2;
+  }
+  mean /= area;
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (const auto& element : surface.elements) {
+    const Eigen::Vector2d d = element.centre_m.head<2>() - mean;
+    scatter += element.area_m2 * d * d.transpose();
+  }
+  // Major axis of the horizontal scatter (closed form for a symmetric 2 x 2 matrix).
+  const double angle = 0.5 * std::atan2(2.0 * scatter(0, 1), scatter(0, 0) - scatter(1, 1));  // from +x
+  double heading = 90.0 - angle / kDegree;  // from north, clockwise
+  heading = std::fmod(heading + 360.0, 180.0);
+  return std::abs(heading - 180.0) < 1e-9 ? 0.0 : heading;
+}
+
+std::vector<SeenElement> coveredElements(const environment::VoxelGrid& grid, const Camera& camera,
+                                         const CoverageRegion& region, const RegionSurface& surface,
+                                         const CameraPose& pose) {
+  std::vector<SeenElement> covered;
+  RegionViewer(grid, camera, region, surface).covered(pose, covered);
+  return covered;
+}
+
+CandidateViews generateCandidateViews(const environment::Environment& environment, const Camera& camera,
+                                      const CoverageRegion& region, const RegionSurface& surface,
+                                      const ViewGenerationOptions& options) {
+  const std::vector<double> levels = distanceLevels(camera, region, options.distance_levels);
+  const double heading = regionHeading(surface);
+  PoseMaker maker(environment, camera, region, options, heading);
+  maker.setHeading(heading);
+  const RegionViewer viewer(environment.grid(), camera, region, surface);
+  const double tilt = std::min(region.max_incidence_deg * options.tilt_share, 60.0) * kDegree;
+
+  // The lattice: every seed's poses and what each covers, in seed order whatever the workers.
+  // Pattern seeds first: the selection breaks ties by candidate index.
+  std::vector<Seed> seeds = patternSeeds(environment.grid(), camera, region, surface, levels, heading);
+  const std::vector<Seed> lattice =
+      latticeSeeds(environment.grid(), camera, region, surface, levels, options.seed_spacing_share, heading);
+  seeds.insert(seeds.end(), lattice.begin(), lattice.end());
+  std::vector<std::vector<Pose>> seed_poses(seeds.size());
+  std::vector<std::vector<std::vector<SeenElement>>> seed_covered(seeds.size());
+  std::vector<std::size_t> seed_tried(seeds.size(), 0);
+  parallelFor(
+      seeds.size(), options.workers,
+      [&](std::size_t s) {
+        const auto& element = surface.elements[seeds[s].element];
+        const double d = seeds[s].distance_m;
+        maker.around(element, seeds[s].aim_m, d, 0.0, 1, seed_poses[s], seed_tried[s]);
+        const std::size_t straight = seed_poses[s].size();
+        double straight_area_m2 = 0.0;
+        for (std::size_t p = 0; p < straight; ++p) {
+          seed_covered[s].emplace_back();
+          viewer.covered(seed_poses[s][p].pose, seed_covered[s].back());
+          if (p == 0)
+            for (const SeenElement& seen : seed_covered[s].back()) straight_area_m2 += surface.elements[seen.element].area_m2;
+        }
+        // Tilted views where the straight one is not admissible or sees less than its whole
+        // covered part (an edge, an occluder, a narrow strip): in the open they add nothing.
+        if (straight == 0 || straight_area_m2 < kOpenShare * viewer.openArea_m2(d)) {
+          maker.around(element, seeds[s].aim_m, d, tilt, 4, seed_poses[s], seed_tried[s]);
+          for (std::size_t p = straight; p < seed_poses[s].size(); ++p) {
+            seed_covered[s].emplace_back();
+            viewer.covered(seed_poses[s][p].pose, seed_covered[s].back());
+          }
+        }
+      },
+      options.progress);
+
+  CandidateViews views;
+  views.stats.seeds = seeds.size();
+  std::vector<Pose> poses;
+  std::vector<std::vector<SeenElement>> covered;
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    views.stats.poses_tried += seed_tried[s];
+    for (std::size_t p = 0; p < seed_poses[s].size(); ++p)
+      if (!seed_covered[s][p].empty()) {
+        poses.push_back(seed_poses[s][p]);
+        covered.push_back(std::move(seed_covered[s][p]));
+      }
+  }
+
+  // Repairs: probe every element the lattice left uncovered from denser distances and tilts.
+  std::vector<std::uint8_t> reached(surface.elements.size(), 0);
+  for (const auto& list : covered)
+    for (const SeenElement& seen : list) reached[seen.element] = 1;
+  std::vector<double> repair_levels = distanceLevels(camera, region, kRepairLevels);
+  for (std::uint32_t e = 0; e < surface.elements.size(); ++e) {
+    if (reached[e]) continue;
+    const auto& element = surface.elements[e];
+    std::vector<Pose> probes;
+    for (const double d : repair_levels)
+      for (const double share : {0.0, 0.3, 0.6, 0.95}) {
+        const double probe_tilt = std::min(region.max_incidence_deg * share, 80.0) * kDegree;
+        maker.around(element, element.centre_m, d, probe_tilt, kRepairDirections, probes, views.stats.poses_tried);
+      }
+    views.stats.repair_probes += probes.size();
+    std::vector<Pose> seeing;
+    for (const Pose& probe : probes)
+      if (viewer.covers(probe.pose, e)) seeing.push_back(probe);
+    if (seeing.empty()) continue;
+    if (maker.free()) {
+      // Standoff-keeping probes if any, else those of largest clearance.
+      double best = -1.0;
+      for (const Pose& p : seeing) best = std::max(best, p.clearance_m);
+      const double floor_m = best >= maker.requiredClearance_m() ? maker.requiredClearance_m() : best - kClearanceTolerance_m;
+      seeing.erase(std::remove_if(seeing.begin(), seeing.end(), [&](const Pose& p) { return p.clearance_m < floor_m; }),
+                   seeing.end());
+    }
+    // A few probes spread over the list (farthest first, as generated), for the selection to choose.
+    const std::size_t keep = std::min<std::size_t>(kRepairViewsPerElement, seeing.size());
+    for (std::size_t k = 0; k < keep; ++k) {
+      const Pose& probe = seeing[k * seeing.size() / keep];
+      std::vector<SeenElement> list;
+      viewer.covered(probe.pose, list);
+      if (list.empty()) continue;
+      for (const SeenElement& seen : list) reached[seen.element] = 1;
+      poses.push_back(probe);
+      covered.push_back(std::move(list));
+      ++views.stats.repair_views;
+    }
+  }
+
+  const std::vector<bool> keep = maker.free()
+                                     ? freeModeKeep(poses, covered, surface.elements.size(), maker.requiredClearance_m())
+                                     : std::vector<bool>(poses.size(), true);
+  for (std::size_t v = 0; v < poses.size(); ++v)
+    if (keep[v]) views.add(poses[v].pose, covered[v]);
+  views.reachable = std::move(reached);
+  return views;
+}
+
+}  // namespace ceilplan::mission

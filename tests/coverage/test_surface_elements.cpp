@@ -1,0 +1,99 @@
+// Surface elements and lines of sight on small analytic maps: faces onto known free space only,
+// exact normals and areas on flat surfaces and box edges, the inclined surface's normal on a
+// staircase, and sight blocked by occupied and unknown voxels alike.
+
+#include "analytic_maps.hpp"
+
+#include "ceilplan/environment/surface_elements.hpp"
+#include "ceilplan/environment/visibility.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace ceilplan::environment {
+namespace {
+
+using testing::analyticMap;
+
+VoxelGrid gridOf(const OccupancyMap& map) { return VoxelGrid::fromTree(map.tree()); }
+
+TEST(SurfaceElements, FacesOntoKnownFreeSpaceOnly) {
+  // A slab at z in [2, 2.4): free below, unknown above; x < 0 of the free space unknown too.
+  const OccupancyMap map = analyticMap({-1, -1, 0}, {1, 1, 3}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() >= 2.0 && c.z() < 2.4) return CellState::Occupied;
+    if (c.z() < 2.0 && c.x() > 0.0) return CellState::Free;
+    return CellState::Unknown;
+  });
+  const std::vector<SurfaceElement> elements = exposedSurface(gridOf(map), Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(1, 1, 3)));
+  ASSERT_EQ(elements.size(), 10u * 20u);  // the underside over the known half only
+  for (const SurfaceElement& element : elements) {
+    EXPECT_EQ(element.face, 5);
+    EXPECT_TRUE(element.normal.isApprox(-Eigen::Vector3d::UnitZ()));
+    EXPECT_NEAR(element.area_m2, 0.01, 1e-12);
+    EXPECT_NEAR(element.centre_m.z(), 2.0, 1e-12);
+    EXPECT_GT(element.centre_m.x(), 0.0);
+  }
+}
+
+TEST(SurfaceElements, BoxEdgesKeepTheirAxisNormals) {
+  // A 0.4 m square beam under a ceiling: its bottom and sides stay exactly axis-aligned up to
+  // the edges, so a box's area is exact.
+  const OccupancyMap map = analyticMap({-1, -1, 0}, {1, 1, 3}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() >= 2.5) return CellState::Occupied;
+    if (std::abs(c.x()) < 0.2 && c.z() >= 2.1) return CellState::Occupied;
+    return CellState::Free;
+  });
+  const std::vector<SurfaceElement> elements =
+      exposedSurface(gridOf(map), Eigen::AlignedBox3d(Eigen::Vector3d(-0.3, -0.5, 2.05), Eigen::Vector3d(0.3, 0.5, 2.45)));
+  double bottom = 0.0, sides = 0.0;
+  for (const SurfaceElement& element : elements) {
+    EXPECT_TRUE(element.normal.isApprox(element.faceNormal())) << element.centre_m.transpose();
+    (element.face == 5 ? bottom : sides) += element.area_m2;
+  }
+  EXPECT_NEAR(bottom, 0.4 * 1.0, 1e-9);
+  EXPECT_NEAR(sides, 2 * 0.4 * 1.0, 1e-9);
+}
+
+TEST(SurfaceElements, AStaircaseTakesTheInclinedSurfacesNormal) {
+  // A ceiling rising at 45 degrees along y: z = 2 + y, stepped in 0.1 m voxels.
+  const OccupancyMap map = analyticMap({-1, -1, 0}, {1, 1, 4}, 0.1, [](const Eigen::Vector3d& c) {
+    return c.z() < 2.0 + c.y() ? CellState::Free : CellState::Occupied;
+  });
+  const Eigen::Vector3d expected = Eigen::Vector3d(0, 1, -1).normalized();
+  const std::vector<SurfaceElement> elements =
+      exposedSurface(gridOf(map), Eigen::AlignedBox3d(Eigen::Vector3d(-0.5, -0.5, 1.3), Eigen::Vector3d(0.5, 0.49, 2.7)));
+  ASSERT_FALSE(elements.empty());
+  double area = 0.0;
+  for (const SurfaceElement& element : elements) {
+    EXPECT_GT(element.normal.dot(expected), 1.0 - 1e-12) << element.centre_m.transpose();
+    area += element.area_m2;
+  }
+  // Ten steps of 0.1 m along y over 1 m in x (each a tread and a riser: 2 m^2 of voxel faces)
+  // stand for 1 m x sqrt(2) m of inclined surface.
+  EXPECT_EQ(elements.size(), 10u * 20u);
+  EXPECT_NEAR(area, std::sqrt(2.0), 1e-9);
+}
+
+TEST(Visibility, BlockedByOccupiedAndUnknownVoxels) {
+  // Free everywhere but a wall at x in [0.5, 0.6) for y < 0, and unknown space for y > 0.5.
+  const OccupancyMap map = analyticMap({-1, -1, 0}, {1, 1, 1}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.y() > 0.5) return CellState::Unknown;
+    if (c.x() >= 0.5 && c.x() < 0.6 && c.y() < 0.0) return CellState::Occupied;
+    return CellState::Free;
+  });
+  const VoxelGrid grid = gridOf(map);
+  EXPECT_TRUE(lineOfSight(grid, {-0.95, 0.25, 0.5}, {0.95, 0.25, 0.55}));
+  EXPECT_FALSE(lineOfSight(grid, {-0.95, -0.25, 0.5}, {0.95, -0.25, 0.55}));  // through the wall
+  EXPECT_FALSE(lineOfSight(grid, {-0.95, 0.25, 0.5}, {0.95, 0.75, 0.5}));     // into unknown space
+  EXPECT_FALSE(lineOfSight(grid, {0.0, 0.0, 0.5}, {0.0, 0.0, 1.5}));          // out of the map
+  EXPECT_TRUE(lineOfSight(grid, {0.3, 0.3, 0.3}, {0.3, 0.3, 0.3}));           // a point in a free voxel
+  // Grazing the wall's end: the walk visits exactly the voxels the segment crosses.
+  EXPECT_TRUE(lineOfSight(grid, {0.55, 0.05, 0.5}, {0.55, 0.45, 0.5}));
+  EXPECT_FALSE(lineOfSight(grid, {0.55, 0.05, 0.5}, {0.55, -0.05, 0.5}));
+  // A diagonal through a corner between two blocked voxels' neighbours stays exact both ways.
+  EXPECT_EQ(lineOfSight(grid, {0.2, -0.35, 0.5}, {0.9, 0.35, 0.5}), lineOfSight(grid, {0.9, 0.35, 0.5}, {0.2, -0.35, 0.5}));
+}
+
+}  // namespace
+}  // namespace ceilplan::environment
