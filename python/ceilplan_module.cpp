@@ -2,6 +2,7 @@
 // for samples. docs/python.md walks through a session.
 
 #include "ceilplan/ceilplan.hpp"
+#include "ceilplan/io/output_set.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -266,20 +267,25 @@ PYBIND11_MODULE(ceilplan, m) {
                              })
       .def_property_readonly("samples",
                              [](const PyTour& t) {
+                               std::vector<std::vector<planner::PathSample>> sorties;
                                std::vector<double> offsets;
-                               double t0 = 0.0;
-                               for (const mission::Sortie& sortie : t.tour.plan.sorties) {
-                                 offsets.push_back(t0);
-                                 t0 += sortie.flight_s + sortie.recharge_s;
+                               for (const mission::SortieRecord& sortie : t.tour.record.sorties) {
+                                 sorties.push_back(sortie.samples);
+                                 offsets.push_back(sortie.takeoff_s);
                                }
-                               return sampleArrays(t.tour.sortie_samples, offsets);
+                               return sampleArrays(sorties, offsets);
                              })
       .def(
           "write",
           [](const PyTour& t, const std::filesystem::path& dir, bool export_autopilot) {
             std::optional<io::Autopilot> autopilot;
             if (export_autopilot) autopilot = io::Autopilot::PX4;
-            io::writeTourDirectory(dir, t.tour, *t.mission, t.context->environment(), autopilot);
+            io::Provenance provenance = io::Provenance::of("python: ceilplan.plan_tour");
+            provenance.input("mission", t.mission->file).input("map", t.mission->map_file).input("vehicle", t.mission->vehicle_file);
+            provenance.seed = t.tour.options.seed;
+            io::OutputSet out(dir);
+            io::writeTourDirectory(out.path(), t.tour, *t.mission, t.context->environment(), autopilot, provenance);
+            out.commit();
           },
           "Writes tour.json, path.csv, map views and (with an origin) mission.plan and mission.waypoints, as `ceilplan tour`",
           py::arg("dir"), py::arg("autopilot") = true);

@@ -5,6 +5,7 @@
 #include "command_registry.hpp"
 #include "planning_flags.hpp"
 
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/plan_files.hpp"
 #include "ceilplan/mission/route_planning.hpp"
 
@@ -26,6 +27,7 @@ struct CompareArguments {
 
 void runCompare(const CompareArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
+  io::OutputSet out(a.out);  // checked and staged before any work
   planner::seedOmpl(a.search.seed);
   const auto context = makePlanningContext(a.planning);
   std::printf("comparing ceiling and free modes: objective %s, planner %s, seed %u, %.1f s each\n",
@@ -37,10 +39,11 @@ void runCompare(const CompareArguments& a) {
   std::printf("\n%s", io::routeComparisonTable(comparison, a.duty, context->battery()).c_str());
   const nlohmann::json extra{
       {"objective", a.planning.options.objective}, {"seed", a.search.seed}, {"planner", a.search.plannerName()}};
-  const std::filesystem::path out(a.out);
-  io::writeRouteComparison(out, comparison, a.duty, extra, context->environment());
+  io::writeRouteComparison(out.path(), comparison, a.duty, extra, context->environment(),
+                           planningProvenance(a.planning, a.search.seed));
+  out.commit();
   std::printf("\nwrote %s/{compare.json, ceiling/, free/, map_top.csv, map_side.csv}; figures: scripts/plot-compare %s\n",
-              out.c_str(), out.c_str());
+              a.out.c_str(), a.out.c_str());
 }
 
 const CommandRegistration registration(42, [](CLI::App& parent) {

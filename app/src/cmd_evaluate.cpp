@@ -6,6 +6,7 @@
 #include "planning_flags.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/plan_files.hpp"
 #include "ceilplan/mission/route_planning.hpp"
 
@@ -27,6 +28,7 @@ struct EvaluateArguments {
 };
 
 void runEvaluate(const EvaluateArguments& a) {
+  if (!a.json.empty()) io::OutputSet::checkWritable(std::filesystem::path(a.json).parent_path());
   const std::vector<Eigen::Vector3d> waypoints = io::readPathWaypoints(a.path);
   const auto context = makePlanningContext(a.planning);
   mission::RouteCheck check;
@@ -46,6 +48,9 @@ void runEvaluate(const EvaluateArguments& a) {
     out["cost"] = check.cost;
     out["cost_unit"] = check.cost_unit;
     out["waypoints"] = io::waypointsJson(waypoints);
+    io::Provenance provenance = planningProvenance(a.planning, std::nullopt);
+    provenance.input("path", a.path);
+    out["provenance"] = provenance.json();
     writeTextAtomically(a.json, [&](std::ostream& stream) { stream << std::setw(2) << out << '\n'; });
   }
 }

@@ -3,6 +3,7 @@
 #include "command_registry.hpp"
 #include "planning_flags.hpp"
 
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/plan_files.hpp"
 #include "ceilplan/mission/route_planning.hpp"
 
@@ -24,6 +25,7 @@ struct PlanArguments {
 void runPlan(const PlanArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
   const mission::FlightMode mode = mission::flightModeFromName(a.mode);
+  io::OutputSet out(a.out);  // checked and staged before any work
   planner::seedOmpl(a.search.seed);  // before anything makes an OMPL random generator
   const auto context = makePlanningContext(a.planning);
   const planner::ObjectiveChoice objective = context->objective(start, goal);
@@ -48,11 +50,12 @@ void runPlan(const PlanArguments& a) {
                        {"depth_of_discharge", objective.ageing.depth_of_discharge},
                        {"loss_per_ah", objective.ageing.loss_per_ah},
                        {"loss_per_s", objective.ageing.loss_per_s}};
-  const std::filesystem::path out(a.out);
-  io::writePlanDirectory(out, route.plan, route.evaluation, extra);
+  io::writePlanDirectory(out.path(), route.plan, route.evaluation, extra, planningProvenance(a.planning, a.search.seed));
+  out.commit();
   std::printf("%zu waypoints; cost %.6g %s (search %.6g) after %.2f s\n%s\nwrote %s and %s\n", route.plan.waypoints.size(),
               route.plan.cost, route.cost_unit.c_str(), route.plan.search_cost, route.plan.total_time_s,
-              io::figuresLine(route.evaluation).c_str(), (out / "plan.json").c_str(), (out / "path.csv").c_str());
+              io::figuresLine(route.evaluation).c_str(), (out.finalPath() / "plan.json").c_str(),
+              (out.finalPath() / "path.csv").c_str());
 }
 
 const CommandRegistration registration(40, [](CLI::App& parent) {

@@ -7,6 +7,8 @@
 #include "output.hpp"
 
 #include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/io/output_set.hpp"
+#include "ceilplan/io/provenance.hpp"
 #include "ceilplan/io/tour_files.hpp"
 #include "ceilplan/mission/tour_planner.hpp"
 
@@ -35,6 +37,7 @@ struct TourArguments {
 
 void runTour(TourArguments a) {
   const mission::Mission mission = io::readMission(a.mission);
+  io::OutputSet out(a.out);  // checked and staged before any work; in place only when complete
   std::optional<io::Autopilot> autopilot;
   if (!a.no_export) {
     try {
@@ -59,25 +62,29 @@ void runTour(TourArguments a) {
   if (a.mode != "ceiling") context.standoffEnvironment();  // built before threads share the context
   a.options.progress = progress;
 
+  io::Provenance provenance = io::Provenance::of(invocation());
+  provenance.input("mission", mission.file).input("map", mission.map_file).input("vehicle", mission.vehicle_file);
+  provenance.seed = a.options.seed;
+
   std::printf("tour of %s: %zu targets, mode %s, planner %s, seed %u, split for least %s wear\n",
               mission.file.c_str(), mission.targets.size(), a.mode.c_str(), a.options.planner.c_str(), a.options.seed,
               a.options.ageing_model.c_str());
   std::fflush(stdout);
-  const std::filesystem::path out(a.out);
   std::vector<mission::TourResult> tours;
   for (mission::FlightMode mode : modes) {
     tours.push_back(mission::planTour(mission, context, mode, a.options));
-    const std::filesystem::path dir = modes.size() > 1 ? out / mission::flightModeName(mode) : out;
-    io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot);
+    const std::filesystem::path dir = modes.size() > 1 ? out.path() / mission::flightModeName(mode) : out.path();
+    io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot, provenance);
     std::printf("%s", io::tourSummary(tours.back()).c_str());
     std::fflush(stdout);
   }
   if (tours.size() == 2) {
     std::printf("\n%s", io::comparisonTable(tours[0], tours[1]).c_str());
-    io::writeTourComparison(out, tours[0], tours[1], context.environment());
+    io::writeTourComparison(out.path(), tours[0], tours[1], mission, context.environment(), provenance);
   }
-  std::printf("\nwrote %s (tour.json, path.csv%s); figures: scripts/plot-tour %s\n", out.c_str(),
-              autopilot ? ", mission.plan, mission.waypoints" : "", out.c_str());
+  out.commit();
+  std::printf("\nwrote %s (tour.json, path.csv%s); figures: scripts/plot-tour %s\n", a.out.c_str(),
+              autopilot ? ", mission.plan, mission.waypoints" : "", a.out.c_str());
 }
 
 const CommandRegistration registration(50, [](CLI::App& parent) {
@@ -118,6 +125,15 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                     "never take a clear straight line in place of the searched route (default: take it where it is valid and "
                     "cheaper)");
   command->add_flag("--no-export", a->no_export, "skip mission.plan / mission.waypoints (no geodetic origin needed)");
+  command->add_option("--missions-per-day", a->options.missions_per_day,
+                      "duty projection: tours a day (default: as many as fit in a day, at most 15)")
+      ->check(CLI::Range(1, 1000));
+  command->add_option("--days", a->options.days, "duty projection: days")->capture_default_str()->check(CLI::Range(1, 3650));
+  command->add_option("--idle-min", a->options.idle_min, "duty projection: idle after each tour")
+      ->capture_default_str()->check(finiteAtLeast(0.0));
+  command->add_option("--charge-max-min", a->options.charge_max_min,
+                      "duty projection: longest charge back to the start SOC after each sortie")
+      ->capture_default_str()->check(positiveFinite());
   command->callback([a] { runTour(*a); });
 });
 

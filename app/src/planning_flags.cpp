@@ -84,6 +84,13 @@ Eigen::Vector3d parsePoint(const std::string& text, const std::string& flag) {
   return point;
 }
 
+io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std::uint64_t> seed) {
+  io::Provenance provenance = io::Provenance::of(invocation());
+  provenance.input("map", flags.map).input("vehicle", flags.vehicle).input("battery", flags.battery);
+  provenance.seed = seed;
+  return provenance;
+}
+
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags) {
   const mission::Vehicle vehicle =
       flags.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(flags.vehicle);

@@ -5,6 +5,7 @@
 
 #include "output.hpp"
 
+#include "ceilplan/io/provenance.hpp"
 #include "ceilplan/mission/planning_context.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 
@@ -13,6 +14,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace ceilplan::app {
@@ -27,6 +29,9 @@ struct PlanningFlags {
 // Registers --map, --vehicle, --battery, --objective and the model flags on `command`.
 // `with_objective` false leaves --objective out (commands that report every objective).
 void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objective = true);
+
+// The outputs' provenance: the command line, the map, vehicle and battery files, the seed.
+io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std::uint64_t> seed);
 
 // The map, vehicle and battery the flags name, indexed with progress on the terminal.
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags);

@@ -135,7 +135,7 @@ CurrentBreakdown EnergyModel::combine(double ceiling_factor, double induced_powe
   out.profile_w = profile_shaft_w * inverse_efficiency_;
   out.parasitic_w = parasitic_shaft_w * inverse_efficiency_;
   out.climb_w = climb_shaft_w * inverse_efficiency_;
-  const double propulsion_w = out.induced_w + out.profile_w + out.parasitic_w + out.climb_w;
+  const double propulsion_w = out.propulsionW();
   const PackOperatingPoint point = pack_.operatingPoint(propulsion_w, flight.soc);
   out.current_a = point.current_a;
   out.terminal_voltage_v = point.terminal_voltage_v;

@@ -16,8 +16,9 @@ using detail::Range;
 using detail::Section;
 using detail::YamlFile;
 
-const std::vector<std::string> kBatteryKeys{"capacity_ah",     "charge_current_a", "cell_count", "soc_min",
-                                            "state_of_health", "start_soc",        "reserve_soc"};
+const std::vector<std::string> kBatteryKeys{"capacity_ah", "charge_current_a", "cell_count",      "soc_min",
+                                            "state_of_health", "start_soc",      "reserve_soc", "between_sorties",
+                                            "swap_s"};
 // Any place in a map: a kilometre either way (the index refuses maps too large to hold anyway).
 const Range kCoordinateM = Range::closed(-1e6, 1e6, "m");
 
@@ -37,6 +38,9 @@ mission::BatterySpec readBatterySection(const Section& section, bool all_require
   pack.state_of_health = section.number("state_of_health", Range::above(0.0, 1.0), pack.state_of_health);
   spec.start_soc = number("start_soc", Range::above(0.0, 1.0), spec.start_soc, all_required);
   spec.reserve_soc = number("reserve_soc", Range::closed(0.0, 1.0), spec.reserve_soc, all_required);
+  if (section.choice("between_sorties", {"recharge", "swap"}, "recharge") == "swap")
+    spec.between_sorties = mission::Turnaround::Swap;
+  spec.swap_s = section.number("swap_s", Range::closed(0.0, 86400.0, "s"), spec.swap_s);
   if (spec.reserve_soc >= spec.start_soc)
     section.fail("'" + section.keyPath("reserve_soc") + "' " + formatNumber(spec.reserve_soc) + " is not below '" +
                  section.keyPath("start_soc") + "' " + formatNumber(spec.start_soc) + ": no sortie could fly");

@@ -33,7 +33,13 @@ TEST(PlanCli, WritesThePlanAndThePathAndEvaluateAgrees) {
   EXPECT_GE(json["min_ceiling_gap_m"].get<double>(), 0.05 - 1e-9);
   EXPECT_NEAR(json["fec"].get<double>(), json["charge_ah"].get<double>() / 5.2, 1e-12);
   const std::string csv = readWholeFile(dir / "path.csv");
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc");
+  // A provenance comment, then the header.
+  const std::string comment = csv.substr(0, csv.find('\n'));
+  EXPECT_EQ(comment.rfind("# ceilplan ", 0), 0u) << comment;
+  for (const char* fragment : {" plan --map ", "| seed 3 |", "warehouse.bt sha256 ", "quad.yaml sha256 "})
+    EXPECT_NE(comment.find(fragment), std::string::npos) << fragment;
+  const std::string header = csv.substr(comment.size() + 1, csv.find('\n', comment.size() + 1) - comment.size() - 1);
+  EXPECT_EQ(header, "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,ground_gap_m");
 
   const CommandResult evaluate =
       runCeilplan("evaluate" + kWarehouse + " --path " + (dir / "path.csv").string() + " --json " + (dir / "e.json").string());

@@ -6,6 +6,7 @@
 #include "ceilplan/battery/duty_cycle.hpp"
 #include "ceilplan/core/progress.hpp"
 #include "ceilplan/mission/flight_mode.hpp"
+#include "ceilplan/mission/flight_record.hpp"
 #include "ceilplan/mission/mission.hpp"
 #include "ceilplan/mission/planning_context.hpp"
 #include "ceilplan/mission/sortie_plan.hpp"
@@ -14,10 +15,14 @@
 #include "ceilplan/mission/viewpoint.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace ceilplan::mission {
+
+// The founding paper's 15 missions a day.
+inline constexpr int kDefaultToursPerDay = 15;
 
 struct TourOptions {
   std::uint32_t seed = 1;               // the order heuristic's; OMPL's when an OMPL planner plans the legs
@@ -32,7 +37,7 @@ struct TourOptions {
   int workers = 2;                      // threads planning legs
   double temperature_c = 25.0;          // cell temperature for the ageing models
   // Duty projection, the founding paper's month: the whole tour is one mission.
-  int missions_per_day = 15;
+  std::optional<int> missions_per_day;  // unset: as often as fits in a day, at most kDefaultToursPerDay
   int days = 30;
   double idle_min = 5.0;
   double charge_max_min = 60.0;  // per sortie, back to the start SOC
@@ -42,6 +47,16 @@ struct TourOptions {
 struct TourStop {
   InspectionTarget target;  // its standoff range as searched in this mode
   Viewpoint viewpoint;
+  planner::PathSample hover;  // hovering at the viewpoint under the full model (the record's dwell)
+};
+
+// The founding paper's month for a tour: a report, never a reason to abort the plan.
+struct DutyProjection {
+  int missions_per_day = 0;
+  int days = 0;
+  double mission_min = 0.0;                // the tour with its recharges and idle
+  std::optional<battery::DutyResult> result;  // none: not projected, `note` says why
+  std::string note;
 };
 
 struct TourResult {
@@ -53,20 +68,18 @@ struct TourResult {
   std::vector<std::vector<TourLeg>> legs;     // legs[i][j], i != j
   TourOrder order;
   SortiePlan plan;
-  // Per sortie, the flown samples from take-off (dwells included, as hovering samples), the
-  // SOC counted from the start SOC over the sortie's own samples.
-  std::vector<std::vector<planner::PathSample>> sortie_samples;
+  FlightRecord record;                // what the plan flies, sample by sample
   std::vector<PlanWear> wear;        // fec, xu, woehler, schmalstieg
-  battery::DutyResult duty;
+  DutyProjection duty;
   double start_soc = 0.0;
   double reserve_soc = 0.0;
 };
 
 // Plans the mission's tour in one mode with the context's map, vehicle and battery. Throws
 // ceilplan::InputError for an invalid home or a target without a viewpoint (named),
-// ceilplan::NoPathError for a leg without a path (naming both places), ceilplan::InputError
-// from planSorties for a target no single sortie can reach and return from, ceilplan::Error if a
-// leg fails the dense re-check.
+// ceilplan::NoPathError for a leg without a path (naming both places),
+// ceilplan::InfeasibleError for a target no single sortie can reach and return from,
+// ceilplan::Error if a leg fails the dense re-check.
 TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,
                     const TourOptions& options = {});
 

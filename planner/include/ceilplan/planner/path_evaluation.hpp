@@ -18,9 +18,11 @@ struct PathSample {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
   double speed_m_s = 0.0;       // along the path
   double ceiling_gap_m = 0.0;   // rotor plane to the nearest ceiling, any rotor (+inf: none)
+  double ground_gap_m = 0.0;    // rotor plane to the ground, area-weighted mean under the discs (+inf: none)
   double clearance_m = 0.0;     // body centre to the nearest obstacle surface
   double current_a = 0.0;
   double power_w = 0.0;         // at the pack terminals
+  double propulsion_power_w = 0.0;  // to the motors: independent of the SOC (the current is not)
   double soc = 0.0;
 };
 
