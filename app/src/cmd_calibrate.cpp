@@ -49,7 +49,8 @@ std::vector<std::string> splitCells(const std::string& line) {
   return cells;
 }
 
-// The CSV columns of issue 4; a column left out keeps the sample's default ("not varied").
+// The CSV columns (docs/energy.md, "Calibration"); a column left out keeps the sample's default
+// ("not varied").
 const std::map<std::string, double energy::CalibrationSample::*>& columns() {
   static const std::map<std::string, double energy::CalibrationSample::*> known = {
       {"gap_m", &energy::CalibrationSample::ceiling_gap_m},

@@ -97,7 +97,7 @@ void writeJson(const std::string& path, const std::vector<RainflowCycle>& cycles
 }
 
 void runRainflow(const RainflowArguments& args) {
-  io::installSignalCleanup();  // idempotent; main() should call it first (issue 12)
+  io::installSignalCleanup();  // idempotent; main() should call it first, before any thread starts
   if (!args.json_path.empty() && std::filesystem::is_directory(args.json_path))
     throw InputError("--json " + ceilplan::printableText(args.json_path, 256) + " is a directory; give a file name");
   const io::CsvColumns table = io::CsvColumns::read(args.csv_path, {args.column}, {kTimeColumn});

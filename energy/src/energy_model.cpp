@@ -126,7 +126,8 @@ CurrentBreakdown EnergyModel::combine(double ceiling_factor, double induced_powe
   const double profile_shaft_w = rotor_power_.profilePowerW(v);
   const double parasitic_shaft_w = rotor_power_.parasiticPowerW(v);
   const double level_shaft_w = induced_shaft_w + profile_shaft_w + parasitic_shaft_w;
-  // Climb adds m g v_z (reference section 4); descent gives some back, never below the floor.
+  // Climb adds m g v_z (docs/models.md, "Power against speed, climb and descent"); descent
+  // gives some back, never below the floor.
   const double climb_shaft_w =
       std::max(weight_n_ * flight.climb_m_s, -(1.0 - parameters_.rotor.descent_power_floor) * level_shaft_w);
 

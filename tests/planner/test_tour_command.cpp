@@ -229,7 +229,7 @@ TEST(TourCommand, BothModesOnTheHall) {
   checkBothModes(run);
 }
 
-// The issue's own case: on the shipped bridge, ceiling mode wears the pack less than free mode
+// The project's claim (docs/tours.md): on the shipped bridge, ceiling mode wears the pack less than free mode
 // under every ageing model, and the comparison says by how much.
 TEST(TourCommand, BothModesOnTheShippedBridge) {
   const std::filesystem::path maps = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps";

@@ -28,8 +28,8 @@ struct EnvironmentOptions {
   // claim an energy benefit the map cannot support); true makes it a surface.
   bool unknown_is_surface = false;
   // Coverage counts disc area with a surface within this many rotor radii of the rotor plane.
-  // Ceiling: the effect vanishes beyond about 2 R (reference-models.md section 2), 4 R leaves
-  // room. Ground: significant up to about 5 R (section 3, Sanchez-Cuevas 2017).
+  // Ceiling: the modelled effect is gone by 2.5 R (docs/models.md, "Ceiling effect"), 4 R leaves
+  // room. Ground: significant up to about 5 R (Sanchez-Cuevas et al. 2017).
   double ceiling_reach_radii = 4.0;
   double ground_reach_radii = 5.0;
   // Motions are checked at this fraction of the map resolution.

@@ -19,7 +19,7 @@ namespace ceilplan::planner {
 struct FlightSpeeds {
   double cruise_m_s = 2.0;            // horizontal, in free air
   double near_ceiling_m_s = 1.8;      // horizontal, when a rotor is closer than near_ceiling_gap_radii R to a ceiling (docs/planner.md: break-even)
-  double near_ceiling_gap_radii = 2.0;  // the ceiling effect fades out by about 2 R (reference-models.md section 2)
+  double near_ceiling_gap_radii = 2.0;  // where the ceiling effect has nearly faded (docs/models.md, "Ceiling effect")
   double climb_m_s = 1.0;             // vertical rate limits
   double descent_m_s = 0.8;
 
