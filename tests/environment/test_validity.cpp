@@ -29,6 +29,12 @@ OccupancyMap pillarRoom(double unknown_beyond_x = 99.0) {
 
 constexpr double kTiny = 1e-6;
 
+MapIndexOptions freeUnknown() {
+  MapIndexOptions options;
+  options.unknown.policy = UnknownPolicy::Free;
+  return options;
+}
+
 TEST(StateValidity, TheVehicleMayHugTheCeilingUpToItsTopMargin) {
   const OccupancyMap map = pillarRoom();
   const Environment environment(map, quad());
@@ -60,9 +66,7 @@ TEST(StateValidity, UnknownSpaceIsAnObstacleUnlessTheOptionFreesIt) {
   const auto violation = cautious.stateViolation({-0.3, -1.0, 1.5});
   ASSERT_TRUE(violation);
   EXPECT_EQ(violation->kind, ViolationKind::Unknown);
-  EnvironmentOptions options;
-  options.unknown_is_occupied = false;
-  const Environment bold(map, quad(), options);
+  const Environment bold(map, quad(), {}, freeUnknown());
   EXPECT_TRUE(bold.isStateValid({-0.3, -1.0, 1.5}));
 }
 
@@ -116,9 +120,7 @@ TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {
     return CellState::Free;
   });
   for (const bool unknown_blocks : {true, false}) {
-    EnvironmentOptions options;
-    options.unknown_is_occupied = unknown_blocks;
-    const Environment environment(map, quad(), options);
+    const Environment environment(map, quad(), {}, unknown_blocks ? MapIndexOptions{} : freeUnknown());
     std::mt19937 random(11);
     std::uniform_real_distribution<double> xy(-1.95, 1.95), z(0.05, 6.95);
     int blocked = 0, unknown = 0;
@@ -148,9 +150,7 @@ TEST(Clearance, IsTheDistanceToTheNearestBlockedVoxelSurface) {
   EXPECT_NEAR(environment.clearance_m({0.7, 0.5, 1.5}), std::hypot(0.3, 0.3), 1e-9);  // pillar edge
   EXPECT_NEAR(environment.clearance_m({-1.8, 0, 1.5}), 0.2, 1e-9);           // unknown beyond the map
   EXPECT_EQ(environment.clearance_m({1.2, 0, 1.5}), 0.0);                   // inside the pillar
-  EnvironmentOptions options;
-  options.unknown_is_occupied = false;
-  const Environment bold(map, quad(), options);
+  const Environment bold(map, quad(), {}, freeUnknown());
   EXPECT_NEAR(bold.clearance_m({-1.8, 0, 1.5}), 1.3, 1e-9);                  // floor
 }
 
