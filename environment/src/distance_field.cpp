@@ -14,28 +14,30 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // every cache line read serves all of them instead of one voxel (16 x 4 bytes = one line).
 constexpr int kTileWidth = 16;
 
+constexpr std::int64_t kNoFeature = -1;
+
 // One pass of the separable transform along a line of n voxels: `cost[q]` is the squared
-// distance already known from voxel q to its nearest blocked voxel (infinity if none);
-// returns in `best[p]` the q minimising (p - q)^2 + cost[q], or -1.
+// distance already known from voxel q to its nearest blocked voxel (kNoFeature if none);
+// returns in `best[p]` the q minimising (p - q)^2 + cost[q], or -1. The parabolas' crossings
+// are compared by cross-multiplying, in integers: no division, and exact.
 class LowerEnvelope {
  public:
-  void run(int n, const std::vector<double>& cost, std::vector<int>& best) {
+  void run(int n, const std::vector<std::int64_t>& cost, std::vector<int>& best) {
     sites_.resize(n);
-    bounds_.resize(n + 1);
+    height_.resize(n);
     int k = -1;
     for (int q = 0; q < n; ++q) {
-      if (cost[q] == kInfinity) continue;
-      double s = -kInfinity;
-      while (k >= 0) {
-        const int v = sites_[k];
-        s = ((cost[q] + double(q) * q) - (cost[v] + double(v) * v)) / (2.0 * (q - v));
-        if (s > bounds_[k]) break;
+      if (cost[q] == kNoFeature) continue;
+      const std::int64_t g = cost[q] + std::int64_t{q} * q;  // the parabola's height at 0, shifted
+      // Drop the last site while the new parabola overtakes it no later than it overtook the one before.
+      while (k >= 1) {
+        const std::int64_t u = sites_[k - 1], v = sites_[k];
+        if ((g - height_[k]) * (v - u) > (height_[k] - height_[k - 1]) * (q - v)) break;
         --k;
       }
       ++k;
       sites_[k] = q;
-      bounds_[k] = k == 0 ? -kInfinity : s;
-      bounds_[k + 1] = kInfinity;
+      height_[k] = g;
     }
     if (k < 0) {
       std::fill(best.begin(), best.begin() + n, -1);
@@ -43,23 +45,27 @@ class LowerEnvelope {
     }
     int j = 0;
     for (int p = 0; p < n; ++p) {
-      while (bounds_[j + 1] < p) ++j;
+      // Move on while the next site's parabola is lower at p: they cross before p.
+      while (j < k && height_[j + 1] - height_[j] < 2 * std::int64_t{p} * (sites_[j + 1] - sites_[j])) ++j;
       best[p] = sites_[j];
     }
   }
 
  private:
   std::vector<int> sites_;
-  std::vector<double> bounds_;
+  std::vector<std::int64_t> height_;
 };
 
 // Per thread: a line's features and costs, the envelope and a tile of kTileWidth lines.
 struct LineScratch {
-  explicit LineScratch(int longest) : cost(longest), best(longest), line(longest), tile(std::size_t(longest) * kTileWidth) {}
-  std::vector<double> cost;
+  explicit LineScratch(int longest)
+      : cost(longest), best(longest), line(longest), tile(std::size_t(longest) * kTileWidth),
+        horizontal_tile(std::size_t(longest) * kTileWidth) {}
+  std::vector<std::int64_t> cost;
   std::vector<int> best;
   std::vector<std::int32_t> line;
   std::vector<std::int32_t> tile;
+  std::vector<std::uint16_t> horizontal_tile;
   LowerEnvelope envelope;
 };
 
@@ -136,11 +142,11 @@ DistanceField::DistanceField(const ColumnIndex& columns, bool unknown_is_blocked
           const std::int32_t feature = s.tile[static_cast<std::size_t>(y) * kTileWidth + w];
           s.line[y] = feature;
           if (feature < 0) {
-            s.cost[y] = kInfinity;
+            s.cost[y] = kNoFeature;
             continue;
           }
           any = true;
-          const double dx = x - (feature - static_cast<std::int32_t>(layer_base + static_cast<std::size_t>(y) * nx));
+          const std::int64_t dx = x - (feature - static_cast<std::int64_t>(layer_base + static_cast<std::size_t>(y) * nx));
           s.cost[y] = dx * dx;
         }
         if (!any) continue;
@@ -168,9 +174,9 @@ DistanceField::DistanceField(const ColumnIndex& columns, bool unknown_is_blocked
         for (int z = 0; z < nz; ++z) {
           const std::int32_t feature = s.tile[static_cast<std::size_t>(z) * kTileWidth + w];
           s.line[z] = feature;
-          std::uint16_t& horizontal = horizontal_[z * layer + j * nx + x];
+          std::uint16_t& horizontal = s.horizontal_tile[static_cast<std::size_t>(z) * kTileWidth + w];
           if (feature < 0) {
-            s.cost[z] = kInfinity;
+            s.cost[z] = kNoFeature;
             horizontal = kHorizontalCap;
             continue;
           }
@@ -182,15 +188,18 @@ DistanceField::DistanceField(const ColumnIndex& columns, bool unknown_is_blocked
           if ((fy + 1) * nx <= within) ++fy;
           const long dx = x - (within - fy * nx), dy = static_cast<long>(j) - fy;
           const long squared = dx * dx + dy * dy;
-          s.cost[z] = static_cast<double>(squared);
+          s.cost[z] = squared;
           horizontal = static_cast<std::uint16_t>(std::min<long>(squared, kHorizontalCap));
         }
         if (!any) continue;
         s.envelope.run(nz, s.cost, s.best);
         for (int z = 0; z < nz; ++z) s.tile[static_cast<std::size_t>(z) * kTileWidth + w] = s.line[s.best[z]];
       }
-      for (int z = 0; z < nz; ++z)
+      for (int z = 0; z < nz; ++z) {
         std::copy_n(s.tile.data() + static_cast<std::size_t>(z) * kTileWidth, width, nearest_.data() + z * layer + j * nx + x0);
+        std::copy_n(s.horizontal_tile.data() + static_cast<std::size_t>(z) * kTileWidth, width,
+                    horizontal_.data() + z * layer + j * nx + x0);
+      }
     }
   }, stage(0.55, 1.0));
 }
