@@ -3,9 +3,8 @@
 
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
-#include "errors.hpp"
 #include "output.hpp"
-#include "planning_setup.hpp"
+#include "planning_flags.hpp"
 
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/ompl_state.hpp"
@@ -32,7 +31,7 @@ namespace {
 constexpr double kNotReached = std::numeric_limits<double>::infinity();
 
 struct BenchArguments {
-  PlanningArguments planning;
+  PlanningFlags planning;
   SearchArguments search;
   std::string start, goal, planners = "BITstar,AITstar,RRTstar,InformedRRTstar,PRMstar,LazyPRMstar";
   std::string mode = "ceiling";
@@ -83,12 +82,12 @@ void runBench(const BenchArguments& a) {
                                  planner::plannerNames().end())
       throw ceilplan::InputError("--planners: '" + name + "' is not an OMPL planner ceilplan knows");
   planner::seedOmpl(a.search.seed);
-  const PlanningSetup setup(a.planning);
-  const PlanningSetup::Mode planning = setup.mode(modeFromName(a.mode), start, goal);
-  const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, setup.objective(start, goal));
+  const auto context = makePlanningContext(a.planning);
+  const mission::PlanningContext::Mode planning = context->mode(mission::flightModeFromName(a.mode), start, goal);
+  const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, context->objective(start, goal));
   const planner::FlightObjective& objective = flight_planner.objective();
   std::printf("bench-planners: %s mode, objective %s (%s), %u runs of %.1f s per planner, seed %u\n", a.mode.c_str(),
-              a.planning.objective.c_str(), objective.unit().c_str(), a.runs, a.search.time_limit_s, a.search.seed);
+              a.planning.options.objective.c_str(), objective.unit().c_str(), a.runs, a.search.time_limit_s, a.search.seed);
 
   // The reference: the lattice optimum, post-processed like every OMPL path.
   planner::PlanRequest reference_request = a.search.request(start, goal);

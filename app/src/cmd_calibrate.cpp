@@ -2,7 +2,8 @@
 
 #include "command_registry.hpp"
 #include "output.hpp"
-#include "vehicle_energy_file.hpp"
+
+#include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/energy/calibration.hpp"
 #include "ceilplan/core/error.hpp"
@@ -114,13 +115,13 @@ std::vector<energy::CalibrationSample> readSamples(const std::string& path, doub
 }
 
 void runCalibrate(const CalibrateOptions& options) {
-  const VehicleEnergyFile vehicle =
-      options.vehicle_path.empty() ? builtInVehicle() : readVehicleEnergyFile(options.vehicle_path);
-  const auto samples = readSamples(options.data_path, vehicle.parameters.reference_soc);
+  const mission::Vehicle vehicle =
+      options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
+  const auto samples = readSamples(options.data_path, vehicle.energy.reference_soc);
   std::vector<energy::FreeParameter> free;
   for (const std::string& name : options.fit) free.push_back(energy::parseFreeParameter(name));
-  if (free.empty()) free = energy::identifiableParameters(vehicle.parameters, samples);
-  const energy::CalibrationResult result = energy::calibrate(vehicle.parameters, samples, free);
+  if (free.empty()) free = energy::identifiableParameters(vehicle.energy, samples);
+  const energy::CalibrationResult result = energy::calibrate(vehicle.energy, samples, free);
 
   std::printf("vehicle     %s\n", vehicle.name.c_str());
   std::printf("data        %s (%zu samples)\n", options.data_path.c_str(), samples.size());
@@ -141,7 +142,7 @@ void runCalibrate(const CalibrateOptions& options) {
   std::ostringstream comment;
   comment << "Calibrated by `ceilplan calibrate` from " << options.data_path << " (" << samples.size()
           << " samples; fitted " << summary << "; RMSE " << result.rmse_a << " A).";
-  writeVehicleEnergyFile(options.out_path, vehicle, result.parameters, comment.str());
+  io::writeCalibratedVehicle(options.out_path, options.vehicle_path, result.parameters, comment.str());
   std::printf("wrote %s\n", options.out_path.c_str());
   if (!options.json_path.empty()) {
     const nlohmann::json report = {{"data", options.data_path},        {"samples", samples.size()},

@@ -2,7 +2,8 @@
 
 #include "command_registry.hpp"
 #include "output.hpp"
-#include "vehicle_energy_file.hpp"
+
+#include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/energy/energy_model.hpp"
 
@@ -68,14 +69,14 @@ void printBreakdown(const energy::CurrentBreakdown& b) {
 }
 
 void runCurrent(const CurrentOptions& options) {
-  const VehicleEnergyFile vehicle =
-      options.vehicle_path.empty() ? builtInVehicle() : readVehicleEnergyFile(options.vehicle_path);
-  const energy::EnergyModel model(vehicle.parameters);
+  const mission::Vehicle vehicle =
+      options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
+  const energy::EnergyModel model(vehicle.energy);
   energy::FlightCondition flight;
   flight.ground_gap_m = options.ground_gap_m.value_or(energy::kNoSurface);
   flight.speed_m_s = options.speed_m_s;
   flight.climb_m_s = options.climb_m_s;
-  flight.soc = options.soc.value_or(vehicle.parameters.reference_soc);
+  flight.soc = options.soc.value_or(vehicle.energy.reference_soc);
   const double gap_m = options.gap_m.value_or(energy::kNoSurface);
   const energy::CurrentBreakdown at_point = model.breakdown(gap_m, options.coverage, flight);  // validates input
 

@@ -4,12 +4,11 @@
 #include "command_registry.hpp"
 #include "csv_table.hpp"
 #include "output.hpp"
-#include "plan_output.hpp"
-#include "planning_setup.hpp"
+#include "planning_flags.hpp"
 
-#include "ceilplan/planner/flight_planner.hpp"
-#include "ceilplan/planner/path_evaluation.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/mission/route_planning.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -23,7 +22,7 @@ namespace ceilplan::app {
 namespace {
 
 struct EvaluateArguments {
-  PlanningArguments planning;
+  PlanningFlags planning;
   std::string path;
   std::string json;
 };
@@ -43,28 +42,24 @@ std::vector<Eigen::Vector3d> readWaypoints(const std::string& file) {
 
 void runEvaluate(const EvaluateArguments& a) {
   const std::vector<Eigen::Vector3d> waypoints = readWaypoints(a.path);
-  const PlanningSetup setup(a.planning);
-  for (std::size_t k = 0; k < waypoints.size(); ++k)
-    if (!setup.environment().contains(waypoints[k]))
-      throw ceilplan::InputError(a.path + ": point " + std::to_string(k + 1) + " lies outside the map");
-  const std::optional<std::string> problem = setup.baseRules().checkPathDensely(waypoints);
-  const planner::PathEvaluation evaluation =
-      planner::evaluatePath(setup.fullModel(), setup.battery().pack, setup.battery().start_soc, waypoints);
-  const planner::FlightPlanner scorer(setup.baseRules(), setup.fullModel(),
-                                      setup.objective(waypoints.front(), waypoints.back()));
-  const double cost = scorer.objective().weights().of(evaluation.totals());
-
-  std::printf("%zu points: %s\n%s cost %.6g %s\nvalid: %s\n", waypoints.size(), figuresLine(evaluation).c_str(),
-              a.planning.objective.c_str(), cost, scorer.objective().unit().c_str(), problem ? "false" : "true");
-  if (problem) std::printf("violation: %s\n", problem->c_str());
+  const auto context = makePlanningContext(a.planning);
+  mission::RouteCheck check;
+  try {
+    check = mission::checkRoute(*context, waypoints);
+  } catch (...) {
+    rethrowWithContext(a.path + ": ");
+  }
+  std::printf("%zu points: %s\n%s cost %.6g %s\nvalid: %s\n", waypoints.size(), io::figuresLine(check.evaluation).c_str(),
+              a.planning.options.objective.c_str(), check.cost, check.cost_unit.c_str(), check.violation ? "false" : "true");
+  if (check.violation) std::printf("violation: %s\n", check.violation->c_str());
   if (!a.json.empty()) {
-    nlohmann::json out = figuresJson(evaluation);
-    out["valid"] = !problem;
-    out["violation"] = problem ? nlohmann::json(*problem) : nlohmann::json(nullptr);
-    out["objective"] = a.planning.objective;
-    out["cost"] = cost;
-    out["cost_unit"] = scorer.objective().unit();
-    out["waypoints"] = waypointsJson(waypoints);
+    nlohmann::json out = io::figuresJson(check.evaluation);
+    out["valid"] = !check.violation;
+    out["violation"] = check.violation ? nlohmann::json(*check.violation) : nlohmann::json(nullptr);
+    out["objective"] = a.planning.options.objective;
+    out["cost"] = check.cost;
+    out["cost_unit"] = check.cost_unit;
+    out["waypoints"] = io::waypointsJson(waypoints);
     writeTextAtomically(a.json, [&](std::ostream& stream) { stream << std::setw(2) << out << '\n'; });
   }
 }

@@ -3,12 +3,12 @@
 #include "command_registry.hpp"
 #include "map_options.hpp"
 #include "output.hpp"
-#include "vehicle_geometry_file.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/map_statistics.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
+#include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/core/format.hpp"
 
@@ -51,7 +51,7 @@ void writeSlice(const MapinfoOptions& options, const std::shared_ptr<const envir
     throw ceilplan::InputError("--slice-z " + formatNumber(options.slice_z_m) + " lies outside the map, whose heights span " +
                                formatNumber(frame.faceOf(2, 0)) + " to " + formatNumber(frame.faceOf(2, frame.size()[2])) + " m");
   std::unique_ptr<Environment> environment;
-  if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, readVehicleGeometry(options.vehicle));
+  if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
   const std::vector<std::uint8_t> ceiling = ceilingColumns(*index);
   writeTextAtomically(options.slice_csv, [&](std::ostream& out) {
     out << "x_m,y_m,state,under_ceiling" << (environment ? ",valid,assumes_free" : "") << '\n';

@@ -1,10 +1,11 @@
 // `ceilplan probe`: what the planner and the energy model see at one body position.
 
 #include "command_registry.hpp"
-#include "json_values.hpp"
 #include "map_options.hpp"
 #include "output.hpp"
-#include "vehicle_geometry_file.hpp"
+
+#include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/map_index.hpp"
@@ -49,16 +50,14 @@ std::string text(double value) {
 }
 
 nlohmann::json gapJson(const environment::RotorGap& gap) {
-  return {{"nearest_gap_m", finiteOrNull(gap.nearest_gap_m)}, {"coverage", gap.coverage}, {"mean_gap_m", finiteOrNull(gap.mean_gap_m)}};
+  return {{"nearest_gap_m", io::finiteOrNull(gap.nearest_gap_m)}, {"coverage", gap.coverage}, {"mean_gap_m", io::finiteOrNull(gap.mean_gap_m)}};
 }
 
 void runProbe(const ProbeOptions& options) {
   using namespace environment;
   const Eigen::Vector3d body = parsePoint(options.at);
-  const std::filesystem::path vehicle_file = options.vehicle.empty() ? defaultVehicleFile() : std::filesystem::path(options.vehicle);
-  if (options.vehicle.empty() && !std::filesystem::exists(vehicle_file))
-    throw ceilplan::InputError("no --vehicle given and " + vehicle_file.string() + " is not here; pass --vehicle FILE");
-  const VehicleGeometry vehicle = readVehicleGeometry(vehicle_file);
+  const VehicleGeometry vehicle =
+      (options.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle)).geometry;
   MapIndexOptions index_options;
   index_options.unknown = options.unknown.value();
   const OccupancyMap map = OccupancyMap::load(options.map);
@@ -97,18 +96,18 @@ void runProbe(const ProbeOptions& options) {
   }
   const nlohmann::json report = {
       {"map", options.map},
-      {"vehicle", vehicle_file.string()},
+      {"vehicle", options.vehicle.empty() ? std::string("built-in: ") + vehicle.name : options.vehicle},
       {"at", {body.x(), body.y(), body.z()}},
       {"unknown", unknownSpaceJson(index_options.unknown, unknown)},
       {"assumed_free", assumes_free},
       {"point_assumed_free", environment.index()->isAssumedFree(body)},
-      {"ceiling_gap_m", finiteOrNull(ceiling.nearest_gap_m)},
+      {"ceiling_gap_m", io::finiteOrNull(ceiling.nearest_gap_m)},
       {"ceiling_coverage", ceiling.coverage},
-      {"ceiling_mean_gap_m", finiteOrNull(ceiling.mean_gap_m)},
-      {"ground_gap_m", finiteOrNull(ground.nearest_gap_m)},
+      {"ceiling_mean_gap_m", io::finiteOrNull(ceiling.mean_gap_m)},
+      {"ground_gap_m", io::finiteOrNull(ground.nearest_gap_m)},
       {"ground_coverage", ground.coverage},
-      {"ground_mean_gap_m", finiteOrNull(ground.mean_gap_m)},
-      {"clearance_m", finiteOrNull(clearance)},
+      {"ground_mean_gap_m", io::finiteOrNull(ground.mean_gap_m)},
+      {"clearance_m", io::finiteOrNull(clearance)},
       {"valid", !violation},
       {"violation", violation ? nlohmann::json(violation->describe()) : nlohmann::json(nullptr)},
       {"rotors", rotors}};

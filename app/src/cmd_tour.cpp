@@ -4,12 +4,11 @@
 
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
-#include "map_views.hpp"
-#include "mission_file.hpp"
 #include "output.hpp"
-#include "planning_setup.hpp"
-#include "tour_output.hpp"
-#include "tour_run.hpp"
+
+#include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/io/tour_files.hpp"
+#include "ceilplan/mission/tour_planner.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
@@ -20,7 +19,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <iomanip>
 #include <optional>
 #include <string>
 
@@ -32,65 +30,51 @@ struct TourArguments {
   std::optional<std::uint32_t> seed;
   bool no_export = false;
   double standoff_m = 1.0;
-  TourOptions options;
+  mission::TourOptions options;
 };
 
-std::vector<PlanningMode> modesToRun(const std::string& mode) {
-  if (mode == "both") return {PlanningMode::Ceiling, PlanningMode::Free};
-  return {modeFromName(mode)};
-}
-
 void runTour(TourArguments a) {
-  const MissionFile mission = readMissionFile(a.mission);
-  std::optional<Autopilot> autopilot;
+  const mission::Mission mission = io::readMission(a.mission);
+  std::optional<io::Autopilot> autopilot;
   if (!a.no_export) {
     try {
       mission.requireOrigin();  // fail before planning, not after
-    } catch (const ceilplan::InputError& e) {
-      throw ceilplan::InputError(std::string(e.what()) + "; or pass --no-export");
+    } catch (const InputError& e) {
+      throw InputError(std::string(e.what()) + "; or pass --no-export");
     }
-    autopilot = a.autopilot == "ardupilot" ? Autopilot::ArduPilot : Autopilot::PX4;
+    autopilot = a.autopilot == "ardupilot" ? io::Autopilot::ArduPilot : io::Autopilot::PX4;
   }
-  if (a.mode.empty())
-    a.mode = (mission.mode == "ceiling" || mission.mode == "free" || mission.mode == "both") ? mission.mode : "ceiling";
+  if (a.mode.empty()) a.mode = mission.mode.empty() ? "ceiling" : mission.mode;
   a.options.seed = a.seed ? *a.seed : mission.seed;
-  if (a.options.planner != "lattice" && a.options.planner != "roadmap") {
-    // OMPL's generators are seeded once per process from the tour seed; the queries draw from
-    // them in scheduling order and stop at a wall-clock limit, so legs are not bit-reproducible.
-    if (a.options.seed == 0 || a.options.seed > 0xffffffffULL)
-      throw ceilplan::InputError("--seed must lie in [1, 4294967295] for an OMPL planner");
-    planner::seedOmpl(static_cast<std::uint32_t>(a.options.seed));
-  }
-  PlanningArguments planning = planningArguments(mission);
+  // OMPL's generators are seeded once per process from the tour seed; the queries draw from
+  // them in scheduling order and stop at a wall-clock limit, so OMPL legs are not bit-reproducible.
+  if (a.options.planner != "lattice" && a.options.planner != "roadmap") planner::seedOmpl(a.options.seed);
+  mission::PlanningOptions planning = mission::planningOptions(mission);
   planning.standoff_m = a.standoff_m;
-  const PlanningSetup setup(planning);
-  const std::vector<PlanningMode> modes = modesToRun(a.mode);
-  if (a.mode != "ceiling") setup.standoffEnvironment();  // built before threads share the setup
+  const ProgressCallback progress = terminalProgress();
+  const mission::PlanningContext context(environment::OccupancyMap::load(mission.map_file), mission.vehicle,
+                                         mission.battery, planning, progress);
+  std::vector<mission::FlightMode> modes{mission::FlightMode::Ceiling, mission::FlightMode::Free};
+  if (a.mode != "both") modes = {mission::flightModeFromName(a.mode)};
+  if (a.mode != "ceiling") context.standoffEnvironment();  // built before threads share the context
+  a.options.progress = progress;
 
-  std::printf("tour of %s: %zu targets, mode %s, planner %s, seed %llu, split for least %s wear\n",
-              mission.file.c_str(), mission.targets.size(), a.mode.c_str(), a.options.planner.c_str(),
-              static_cast<unsigned long long>(a.options.seed), a.options.ageing_model.c_str());
+  std::printf("tour of %s: %zu targets, mode %s, planner %s, seed %u, split for least %s wear\n",
+              mission.file.c_str(), mission.targets.size(), a.mode.c_str(), a.options.planner.c_str(), a.options.seed,
+              a.options.ageing_model.c_str());
   std::fflush(stdout);
   const std::filesystem::path out(a.out);
-  std::vector<TourResult> tours;
-  for (PlanningMode mode : modes) {
-    tours.push_back(planTour(mission, setup, mode, a.options));
-    const std::filesystem::path dir = modes.size() > 1 ? out / tours.back().mode : out;
-    writeTourDirectory(dir, tours.back(), mission, setup.environment(), autopilot);
-    std::printf("%s", tourSummary(tours.back()).c_str());
+  std::vector<mission::TourResult> tours;
+  for (mission::FlightMode mode : modes) {
+    tours.push_back(mission::planTour(mission, context, mode, a.options));
+    const std::filesystem::path dir = modes.size() > 1 ? out / mission::flightModeName(mode) : out;
+    io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot);
+    std::printf("%s", io::tourSummary(tours.back()).c_str());
     std::fflush(stdout);
   }
   if (tours.size() == 2) {
-    const std::string table = comparisonTable(tours[0], tours[1]);
-    std::printf("\n%s", table.c_str());
-    std::vector<Eigen::Vector3d> routes;
-    for (const TourResult& tour : tours)
-      for (const auto& samples : tour.sortie_samples)
-        for (const planner::PathSample& sample : samples) routes.push_back(sample.position_m);
-    writeMapViews(out, setup.environment(), routes);
-    writeTextAtomically(out / "comparison.txt", [&](std::ostream& stream) { stream << table; });
-    writeTextAtomically(out / "comparison.json",
-                        [&](std::ostream& stream) { stream << std::setw(2) << comparisonJson(tours[0], tours[1]) << '\n'; });
+    std::printf("\n%s", io::comparisonTable(tours[0], tours[1]).c_str());
+    io::writeTourComparison(out, tours[0], tours[1], context.environment());
   }
   std::printf("\nwrote %s (tour.json, path.csv%s); figures: scripts/plot-tour %s\n", out.c_str(),
               autopilot ? ", mission.plan, mission.waypoints" : "", out.c_str());

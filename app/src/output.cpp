@@ -11,40 +11,6 @@
 
 namespace ceilplan::app {
 
-void writeAtomically(const std::filesystem::path& path,
-                     const std::function<void(const std::filesystem::path& temporary)>& write) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (path.has_parent_path()) {
-    fs::create_directories(path.parent_path(), ec);
-    if (ec) throw std::runtime_error("cannot create directory " + path.parent_path().string() + ": " + ec.message());
-  }
-  fs::path temporary = path;
-  temporary += ".tmp" + std::to_string(::getpid());
-  try {
-    write(temporary);
-  } catch (...) {
-    fs::remove(temporary, ec);
-    throw;
-  }
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw std::runtime_error("cannot write " + path.string() + ": " + ec.message());
-  }
-}
-
-void writeTextAtomically(const std::filesystem::path& path,
-                         const std::function<void(std::ostream& out)>& write) {
-  writeAtomically(path, [&](const std::filesystem::path& temporary) {
-    std::ofstream out(temporary);
-    if (!out) throw std::runtime_error("cannot open " + path.string() + " for writing");
-    write(out);
-    out.flush();
-    if (!out) throw std::runtime_error("failed while writing " + path.string());
-  });
-}
-
 Progress::Progress(std::string label, bool enabled) : label_(std::move(label)), enabled_(enabled) {}
 
 Progress::Progress(std::string label) : Progress(std::move(label), ::isatty(STDERR_FILENO) == 1) {}
@@ -60,8 +26,24 @@ void Progress::update(double fraction) {
 }
 
 void Progress::finish() {
-  if (enabled_ && last_percent_ >= 0) std::cerr << '\n';
+  if (enabled_ && last_percent_ >= 0) std::cerr << "\r\033[K" << std::flush;  // a finished line leaves nothing behind
   enabled_ = false;
+}
+
+ProgressCallback terminalProgress() {
+  struct Lines {
+    std::string stage;
+    std::unique_ptr<Progress> line;
+  };
+  auto lines = std::make_shared<Lines>();
+  return [lines](const std::string& stage, double fraction) {
+    if (stage != lines->stage || !lines->line) {
+      lines->line.reset();
+      lines->line = std::make_unique<Progress>(stage);
+      lines->stage = stage;
+    }
+    lines->line->update(fraction);
+  };
 }
 
 }  // namespace ceilplan::app

@@ -2,22 +2,19 @@
 // Output files appear whole or not at all: each is written under a temporary name beside
 // its final one, then renamed into place.
 
+#include "ceilplan/core/progress.hpp"
+#include "ceilplan/io/atomic_file.hpp"
+
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 
 namespace ceilplan::app {
 
-// Calls `write` with a temporary path in the same directory, then renames it to `path`.
-// Creates the parent directory. On any failure the temporary file is removed and the
-// error names `path`.
-void writeAtomically(const std::filesystem::path& path,
-                     const std::function<void(const std::filesystem::path& temporary)>& write);
-
-// Same, for text produced on a stream.
-void writeTextAtomically(const std::filesystem::path& path,
-                         const std::function<void(std::ostream& out)>& write);
+using io::writeAtomically;
+using io::writeTextAtomically;
 
 // Progress for long work: a single updating line on stderr when stderr is a terminal,
 // nothing otherwise.
@@ -34,5 +31,9 @@ class Progress {
   bool enabled_;
   int last_percent_ = -1;
 };
+
+// A library progress callback drawn as Progress lines, one per stage, when stderr is a
+// terminal; the last line is cleared when the callback and its copies are gone.
+ProgressCallback terminalProgress();
 
 }  // namespace ceilplan::app

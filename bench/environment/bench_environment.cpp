@@ -2,9 +2,8 @@
 // (the naive way), and the cost of loading and indexing the largest shipped map.
 //   build/bench/environment/bench_environment
 
-#include "vehicle_geometry_file.hpp"
-
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/mission/vehicle.hpp"
 
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
@@ -17,8 +16,7 @@ namespace {
 using namespace ceilplan::environment;
 
 VehicleGeometry quad() {
-  static const VehicleGeometry vehicle =
-      ceilplan::app::readVehicleGeometry(CEILPLAN_SOURCE_DIR "/maps/vehicles/quad.yaml");
+  static const VehicleGeometry vehicle = ceilplan::mission::Vehicle::defaultQuad().geometry;
   return vehicle;
 }
 

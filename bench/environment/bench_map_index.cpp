@@ -6,10 +6,9 @@
 //   build/bench/environment/bench_map_index [--maps DIR] [--benchmark_filter=...]
 //   build/bench/environment/bench_map_index --resample IN.bt FACTOR OUT.bt
 
-#include "vehicle_geometry_file.hpp"
-
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/map_index.hpp"
+#include "ceilplan/mission/vehicle.hpp"
 
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
@@ -27,9 +26,7 @@ namespace {
 
 using namespace ceilplan::environment;
 
-VehicleGeometry quad() {
-  return ceilplan::app::readVehicleGeometry(CEILPLAN_SOURCE_DIR "/maps/vehicles/quad.yaml");
-}
+VehicleGeometry quad() { return ceilplan::mission::Vehicle::defaultQuad().geometry; }
 
 double peakRssMegabytes() {
   rusage usage{};

@@ -3,9 +3,7 @@
 //   build/bench/planner/bench_planner
 // The quality study (planners against the lattice reference) is bench/planner/quality-study.
 
-#include "vehicle_energy_file.hpp"
-#include "vehicle_geometry_file.hpp"
-
+#include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 
 #include <benchmark/benchmark.h>
@@ -14,13 +12,11 @@ namespace {
 
 using namespace ceilplan;
 
-const char* const kVehicle = CEILPLAN_SOURCE_DIR "/maps/vehicles/quad.yaml";
-
 struct Scene {
   explicit Scene(const char* file)
       : map(environment::OccupancyMap::load(file)),
-        environment(map, app::readVehicleGeometry(kVehicle)),
-        energy(app::readVehicleEnergyFile(kVehicle).parameters),
+        environment(map, mission::Vehicle::defaultQuad().geometry),
+        energy(mission::Vehicle::defaultQuad().energy),
         model(environment, energy, planner::CostModelOptions{}),
         rules(environment, 0.05) {}
   environment::OccupancyMap map;

@@ -2,12 +2,12 @@
 // viewpoints (every lattice node and edge checked and costed, two threads) and one Dijkstra
 // search from a place to all the others, in ceiling and free mode.
 
-#include "mission_file.hpp"
-#include "planning_setup.hpp"
-#include "tour_run.hpp"
+#include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/mission/planning_context.hpp"
+#include "ceilplan/planner/flight_planner.hpp"
 
 #include "ceilplan/planner/lattice_roadmap.hpp"
-#include "ceilplan/planner/viewpoint.hpp"
+#include "ceilplan/mission/viewpoint.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -18,30 +18,30 @@ namespace {
 using namespace ceilplan;
 
 struct BridgeRoadmap {
-  app::MissionFile mission = app::readMissionFile(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.yaml");
-  app::PlanningSetup setup{app::planningArguments(mission)};
-  app::PlanningSetup::Mode mode;
+  mission::Mission mission = io::readMission(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.yaml");
+  mission::PlanningContext setup{mission};
+  mission::PlanningContext::Mode mode;
   std::unique_ptr<planner::FlightPlanner> planner;  // owns the objective
   std::vector<Eigen::Vector3d> places;
 
-  explicit BridgeRoadmap(app::PlanningMode planning_mode) {
+  explicit BridgeRoadmap(mission::FlightMode planning_mode) {
     mode = setup.mode(planning_mode, mission.home_m, mission.home_m);
     planner = std::make_unique<planner::FlightPlanner>(*mode.rules, *mode.model,
                                                        setup.objective(mission.home_m, mission.home_m));
     places.push_back(mission.home_m);
-    planner::ViewpointOptions options;
-    options.mode = planning_mode == app::PlanningMode::Ceiling ? planner::ViewpointMode::Ceiling : planner::ViewpointMode::Free;
-    options.min_ceiling_gap_m = setup.arguments().min_ceiling_gap_m + 0.01;
+    mission::ViewpointOptions options;
+    options.mode = planning_mode;
+    options.min_ceiling_gap_m = setup.options().min_ceiling_gap_m + 0.01;
     const environment::Environment& environment =
-        planning_mode == app::PlanningMode::Ceiling ? setup.environment() : setup.standoffEnvironment();
-    for (planner::InspectionTarget target : mission.targets) {
-      if (planning_mode == app::PlanningMode::Free) target.standoff_max_m = std::max(target.standoff_max_m, 3.0);
-      places.push_back(planner::chooseViewpoint(target, environment, setup.energy(), options).position_m);
+        planning_mode == mission::FlightMode::Ceiling ? setup.environment() : setup.standoffEnvironment();
+    for (mission::InspectionTarget target : mission.targets) {
+      if (planning_mode == mission::FlightMode::Free) target.standoff_max_m = std::max(target.standoff_max_m, 3.0);
+      places.push_back(mission::chooseViewpoint(target, environment, setup.energy(), options).position_m);
     }
   }
 };
 
-void roadmapBuild(benchmark::State& state, app::PlanningMode planning_mode) {
+void roadmapBuild(benchmark::State& state, mission::FlightMode planning_mode) {
   BridgeRoadmap bridge(planning_mode);
   for (auto _ : state) {
     const planner::LatticeRoadmap roadmap(*bridge.mode.rules, bridge.planner->objective(), bridge.places);
@@ -55,7 +55,7 @@ void roadmapBuild(benchmark::State& state, app::PlanningMode planning_mode) {
   }
 }
 
-void roadmapSearch(benchmark::State& state, app::PlanningMode planning_mode) {
+void roadmapSearch(benchmark::State& state, mission::FlightMode planning_mode) {
   BridgeRoadmap bridge(planning_mode);
   const planner::LatticeRoadmap roadmap(*bridge.mode.rules, bridge.planner->objective(), bridge.places);
   int from = 0;
@@ -66,9 +66,9 @@ void roadmapSearch(benchmark::State& state, app::PlanningMode planning_mode) {
   }
 }
 
-BENCHMARK_CAPTURE(roadmapBuild, ceiling, app::PlanningMode::Ceiling)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(roadmapBuild, free, app::PlanningMode::Free)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(roadmapSearch, ceiling, app::PlanningMode::Ceiling)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(roadmapSearch, free, app::PlanningMode::Free)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(roadmapBuild, ceiling, mission::FlightMode::Ceiling)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(roadmapBuild, free, mission::FlightMode::Free)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(roadmapSearch, ceiling, mission::FlightMode::Ceiling)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(roadmapSearch, free, mission::FlightMode::Free)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -61,8 +61,8 @@ Range allowedRange(FreeParameter parameter, const EnergyParameters& start) {
 
 // Momentum-theory induced power Pi of the vehicle (shaft W), independent of every free parameter.
 double momentumInducedPowerW(const EnergyParameters& p) {
-  const double weight_n = p.vehicle.mass_kg * kStandardGravityM_s2;
-  const double area_m2 = p.vehicle.rotor_count * kPi * p.vehicle.rotor_radius_m * p.vehicle.rotor_radius_m;
+  const double weight_n = p.airframe.mass_kg * kStandardGravityM_s2;
+  const double area_m2 = p.airframe.rotor_count * kPi * p.airframe.rotor_radius_m * p.airframe.rotor_radius_m;
   return (1.0 + p.rotor.induced_power_correction) * std::pow(weight_n, 1.5) /
          std::sqrt(2.0 * p.rotor.air_density_kg_m3 * area_m2);
 }
@@ -83,7 +83,7 @@ std::size_t distinctCount(const std::vector<CalibrationSample>& samples, double 
 }
 
 bool hasCeilingWithinReach(const EnergyParameters& start, const std::vector<CalibrationSample>& samples) {
-  const double reach_m = start.ceiling.taper_end_radii * start.vehicle.rotor_radius_m;
+  const double reach_m = start.ceiling.taper_end_radii * start.airframe.rotor_radius_m;
   return std::any_of(samples.begin(), samples.end(),
                      [&](const CalibrationSample& s) { return s.ceiling_gap_m < reach_m && s.coverage > 0.0; });
 }
@@ -132,7 +132,7 @@ class Problem {
       : start_(start),
         samples_(samples),
         free_(free),
-        radius_squared_m2_(start.vehicle.rotor_radius_m * start.vehicle.rotor_radius_m),
+        radius_squared_m2_(start.airframe.rotor_radius_m * start.airframe.rotor_radius_m),
         shaft_coordinate_(isFree(free, FreeParameter::kHoverPowerW) && isFree(free, FreeParameter::kMotorEfficiency)) {
     const double induced_w = momentumInducedPowerW(start) * 1.001;
     for (FreeParameter parameter : free_) {

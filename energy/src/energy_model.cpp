@@ -21,7 +21,7 @@ constexpr double kPi = 3.14159265358979323846;
 }
 
 const EnergyParameters& checked(const EnergyParameters& p) {
-  const VehicleGeometry& v = p.vehicle;
+  const AirframeParameters& v = p.airframe;
   if (!(v.mass_kg > 0.0) || !std::isfinite(v.mass_kg))
     refuse("vehicle mass_kg", v.mass_kg, "must be positive");
   if (v.rotor_count < 1 || v.rotor_count > EnergyModel::kMaxRotors)
@@ -54,25 +54,25 @@ void checkGap(const char* what, double gap_m) {
 
 EnergyModel::EnergyModel(const EnergyParameters& parameters)
     : parameters_(checked(parameters)),
-      ceiling_(parameters.ceiling, parameters.vehicle.rotor_radius_m),
-      ground_(parameters.ground, parameters.vehicle),
+      ceiling_(parameters.ceiling, parameters.airframe.rotor_radius_m),
+      ground_(parameters.ground, parameters.airframe),
       rotor_power_(RotaryWingPower::scaledToHover(
           parameters.rotor.hover_power_w * parameters.rotor.motor_efficiency,
-          parameters.vehicle.mass_kg * kStandardGravityM_s2,
-          parameters.vehicle.rotor_count * kPi * parameters.vehicle.rotor_radius_m * parameters.vehicle.rotor_radius_m,
+          parameters.airframe.mass_kg * kStandardGravityM_s2,
+          parameters.airframe.rotor_count * kPi * parameters.airframe.rotor_radius_m * parameters.airframe.rotor_radius_m,
           parameters.rotor.induced_power_correction, parameters.rotor.tip_speed_m_s, parameters.rotor.drag_area_m2,
           parameters.rotor.air_density_kg_m3)),
       pack_(parameters.pack),
       inverse_efficiency_(1.0 / parameters.rotor.motor_efficiency),
-      weight_n_(parameters.vehicle.mass_kg * kStandardGravityM_s2) {}
+      weight_n_(parameters.airframe.mass_kg * kStandardGravityM_s2) {}
 
 void EnergyModel::checkFlight(const FlightCondition& flight) const {
   checkGap("ground gap", flight.ground_gap_m);
   if (!(flight.speed_m_s >= 0.0)) refuse("speed", flight.speed_m_s, "m/s must be >= 0");
-  if (flight.speed_m_s > parameters_.vehicle.max_speed_m_s) {
+  if (flight.speed_m_s > parameters_.airframe.max_speed_m_s) {
     std::ostringstream message;
     message << "speed " << flight.speed_m_s << " m/s is beyond the vehicle's max_speed_m_s ("
-            << parameters_.vehicle.max_speed_m_s << " m/s)";
+            << parameters_.airframe.max_speed_m_s << " m/s)";
     throw ceilplan::InputError(message.str());
   }
   if (!std::isfinite(flight.climb_m_s)) refuse("climb rate", flight.climb_m_s, "m/s must be finite");
@@ -99,9 +99,9 @@ CurrentBreakdown EnergyModel::breakdown(double ceiling_gap_m, double coverage, c
 
 CurrentBreakdown EnergyModel::breakdown(const RotorCeiling* rotors, int rotor_count,
                                         const FlightCondition& flight) const {
-  if (rotor_count != parameters_.vehicle.rotor_count)
+  if (rotor_count != parameters_.airframe.rotor_count)
     throw ceilplan::InputError("got ceiling gaps for " + std::to_string(rotor_count) + " rotors, the vehicle has " +
-                                std::to_string(parameters_.vehicle.rotor_count));
+                                std::to_string(parameters_.airframe.rotor_count));
   checkFlight(flight);
   const double ground_factor = ground_.thrustRatio(flight.ground_gap_m);
   double ceiling_sum = 0.0;

@@ -7,7 +7,7 @@
 
 namespace ceilplan::energy {
 
-GroundEffect::GroundEffect(const GroundEffectParameters& p, const VehicleGeometry& vehicle)
+GroundEffect::GroundEffect(const GroundEffectParameters& p, const AirframeParameters& vehicle)
     : model_(p.model),
       min_gap_m_(p.min_gap_radii * vehicle.rotor_radius_m),
       radius_squared_m2_(vehicle.rotor_radius_m * vehicle.rotor_radius_m),

@@ -21,7 +21,7 @@ double hoverPowerForCurrentW(const EnergyParameters& parameters, double current_
 
 CeilingEffectParameters ceilingThroughAnchor(const EnergyParameters& parameters, double gap_m, double current_a,
                                              double soc, double contact_thrust_ratio) {
-  const double radius_m = parameters.vehicle.rotor_radius_m;
+  const double radius_m = parameters.airframe.rotor_radius_m;
   CeilingEffectParameters result = parameters.ceiling;
   if (!(gap_m > 0.0 && gap_m < result.taper_start_radii * radius_m))
     throw ceilplan::InputError("ceiling anchor gap " + std::to_string(gap_m) +

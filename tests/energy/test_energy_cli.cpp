@@ -77,19 +77,21 @@ TEST_F(CurrentCommand, RefusesBadInputWithOneLine) {
   expectOneLineError("current --speed-m-s 40", "max_speed_m_s");
   expectOneLineError("current --soc 1.5", "outside [0, 1]");
   expectOneLineError("current --coverage 2", "coverage");
-  expectOneLineError("current --vehicle /nonexistent/vehicle.yaml", "cannot be read");
+  expectOneLineError("current --vehicle /nonexistent/vehicle.yaml", "/nonexistent/vehicle.yaml: no such vehicle file");
 }
 
 TEST_F(CurrentCommand, RefusesVehicleFilesWithoutRotorsOrWithNegativeMass) {
   const auto dir = scratchDirectory("bad_vehicles");
   writeFile(dir / "no_rotors.yaml", "name: x\nmass_kg: 1.0\n");
   writeFile(dir / "zero_rotors.yaml", "mass_kg: 1.0\nrotors:\n  count: 0\n  radius_m: 0.1\n");
-  writeFile(dir / "negative_mass.yaml", "mass_kg: -1.0\nrotors:\n  count: 4\n  radius_m: 0.1\n  arm_length_m: 0.2\n");
+  std::string negative_mass = readWholeFile(kQuad);
+  negative_mass.replace(negative_mass.find("mass_kg: 1.4"), 12, "mass_kg: -1.0");
+  writeFile(dir / "negative_mass.yaml", negative_mass);
   writeFile(dir / "typo.yaml", readWholeFile(kQuad) + "  hover_curent_a: 9\n");
-  expectOneLineError("current --vehicle " + (dir / "no_rotors.yaml").string(), "rotors.count");
+  expectOneLineError("current --vehicle " + (dir / "no_rotors.yaml").string(), "missing key 'rotors'");
   expectOneLineError("current --vehicle " + (dir / "zero_rotors.yaml").string(), "rotors.count");
-  expectOneLineError("current --vehicle " + (dir / "negative_mass.yaml").string(), "mass_kg must be positive");
-  expectOneLineError("current --vehicle " + (dir / "typo.yaml").string(), "unknown key power.hover_curent_a");
+  expectOneLineError("current --vehicle " + (dir / "negative_mass.yaml").string(), "'mass_kg' must be in (0, 200] kg, got -1");
+  expectOneLineError("current --vehicle " + (dir / "typo.yaml").string(), "unknown key 'power.hover_curent_a'; did you mean 'hover_current_a'?");
 }
 
 TEST_F(CalibrateCommand, FitsThePublishedDataAndWritesAVehicleFileThatCurrentReads) {

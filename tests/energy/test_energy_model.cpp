@@ -116,7 +116,7 @@ TEST(EnergyModel, ClimbCostsMgVOverEfficiencyAndDescentIsFloored) {
   FlightCondition climb = hover();
   climb.climb_m_s = 1.0;
   EXPECT_NEAR(model.breakdown(kNoSurface, 1.0, climb).climb_w,
-              p.vehicle.mass_kg * kStandardGravityM_s2 / p.rotor.motor_efficiency, 1e-9);
+              p.airframe.mass_kg * kStandardGravityM_s2 / p.rotor.motor_efficiency, 1e-9);
   FlightCondition fast_descent = hover();
   fast_descent.climb_m_s = -50.0;
   const CurrentBreakdown b = model.breakdown(kNoSurface, 1.0, fast_descent);
@@ -165,10 +165,10 @@ TEST(EnergyModel, RefusesBadFlightInput) {
 
 TEST(EnergyModel, RefusesBadVehicles) {
   EnergyParameters no_rotors = paperQuadParameters();
-  no_rotors.vehicle.rotor_count = 0;
+  no_rotors.airframe.rotor_count = 0;
   EXPECT_THROW(EnergyModel{no_rotors}, ceilplan::InputError);
   EnergyParameters negative_mass = paperQuadParameters();
-  negative_mass.vehicle.mass_kg = -1.4;
+  negative_mass.airframe.mass_kg = -1.4;
   EXPECT_THROW(EnergyModel{negative_mass}, ceilplan::InputError);
   EnergyParameters weak = paperQuadParameters();
   weak.rotor.hover_power_w = 20.0;  // below momentum theory's induced power

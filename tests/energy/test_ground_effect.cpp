@@ -10,7 +10,7 @@
 using namespace ceilplan::energy;
 
 namespace {
-const VehicleGeometry kQuad{};  // R = 0.127 m, 450 mm X frame
+const AirframeParameters kQuad{};  // R = 0.127 m, 450 mm X frame
 constexpr double kR = 0.127;
 }  // namespace
 
@@ -49,10 +49,10 @@ TEST(GroundEffect, MultirotorFormAddsTheNeighbouringRotorsToTheSingleRotorTerm) 
 TEST(GroundEffect, MultirotorFormRefusesASingleRotorAndRotorsTooClose) {
   GroundEffectParameters multirotor;
   multirotor.model = GroundEffectModel::kMultirotor;
-  VehicleGeometry single = kQuad;
+  AirframeParameters single = kQuad;
   single.rotor_count = 1;
   EXPECT_THROW(GroundEffect(multirotor, single), ceilplan::InputError);
-  VehicleGeometry crowded = kQuad;
+  AirframeParameters crowded = kQuad;
   crowded.adjacent_rotor_spacing_m = 0.01;
   crowded.opposite_rotor_spacing_m = 0.014;
   EXPECT_THROW(GroundEffect(multirotor, crowded), ceilplan::InputError);

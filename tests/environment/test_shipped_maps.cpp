@@ -1,7 +1,7 @@
 // The shipped scenes are up to date, small, and their missions' targets are reachable.
 
 #include "run_command.hpp"
-#include "vehicle_geometry_file.hpp"
+#include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/scenes.hpp"
@@ -70,7 +70,7 @@ TEST_P(ShippedScene, EveryMissionTargetLiesOnAnOccupiedSurfaceAndCanBeViewed) {
   const YAML::Node mission = YAML::LoadFile(mission_file.string());
   const OccupancyMap map = OccupancyMap::load(kMaps / mission["map"].as<std::string>());
   const VehicleGeometry vehicle =
-      app::readVehicleGeometry(mission_file.parent_path() / mission["vehicle"].as<std::string>());
+      io::readVehicle(mission_file.parent_path() / mission["vehicle"].as<std::string>()).geometry;
   const Environment environment(map, vehicle);
 
   const auto home = mission["home"].as<std::vector<double>>();

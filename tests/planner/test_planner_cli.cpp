@@ -73,7 +73,7 @@ TEST(PlanCli, BadInputGetsOneLineAndTheRightExitCode) {
       {kUnderRoof + " --planner FastestStar", 2, "--planner"},
       {kUnderRoof + " --objective happiness", 2, "--objective"},
       {kUnderRoof + " --seed 0", 2, "--seed"},
-      {kUnderRoof + " --battery /nonexistent/pack.yaml", 1, "battery file /nonexistent/pack.yaml"},
+      {kUnderRoof + " --battery /nonexistent/pack.yaml", 1, "/nonexistent/pack.yaml: no such battery file"},
       {" --start 7.5,6,7.9 --goal 7.5,6,7.9", 1, "start and goal coincide"},
   };
   for (const Case& c : cases) {

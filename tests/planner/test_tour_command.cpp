@@ -2,9 +2,9 @@
 // (a slab 3 m up) and a pier, four targets, home on the left. Each test writes the map and a
 // mission file, runs the real executable and reads what it wrote.
 
-#include "autopilot_export.hpp"
+#include "ceilplan/io/autopilot_export.hpp"
 #include "run_command.hpp"
-#include "vehicle_geometry_file.hpp"
+#include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
@@ -144,7 +144,7 @@ void visitsEveryTargetWithItsDwellAboveTheReserve(const BothModesRun& run) {
 void everyLegPassesTheDenseRecheck(const BothModesRun& run) {
   SCOPED_TRACE("EveryLegPassesTheDenseRecheck");
   const environment::OccupancyMap map = environment::OccupancyMap::load(run.map);
-  const environment::Environment environment(map, app::readVehicleGeometry(kVehicle));
+  const environment::Environment environment(map, io::readVehicle(kVehicle).geometry);
   const planner::SafetyRules rules(environment, 0.05);
   int legs = 0;
   for (const std::string mode : {"ceiling", "free"}) {
@@ -197,7 +197,7 @@ void planFileIsCompleteAndReproducesTheRouteWithinACentimetre(const BothModesRun
     }
     if (leg["to"] != "home") holds.back() = dwell_of[leg["to"]];
   }
-  const app::GeodeticOrigin origin{52.218, 0.0923, 12.0};  // the hall mission's and maps/bridge.yaml's
+  const mission::GeodeticOrigin origin{52.218, 0.0923, 12.0};  // the hall mission's and maps/bridge.yaml's
   const double home_amsl_m = mission["plannedHomePosition"][2].get<double>();
   const nlohmann::json& items = mission["items"];
   ASSERT_EQ(items.size(), route.size());
@@ -210,7 +210,7 @@ void planFileIsCompleteAndReproducesTheRouteWithinACentimetre(const BothModesRun
     ASSERT_EQ(item["params"].size(), 7u);
     const auto& params = item["params"];
     EXPECT_NEAR(params[0].get<double>(), holds[k], 1e-9) << k;
-    const Eigen::Vector3d local = app::toLocal(
+    const Eigen::Vector3d local = io::toLocal(
         origin, {params[4].get<double>(), params[5].get<double>(), params[6].get<double>() + home_amsl_m});
     EXPECT_LT((local - route[k]).norm(), 0.01) << k;
   }

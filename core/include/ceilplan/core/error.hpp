@@ -36,4 +36,8 @@ class NoPathError : public InfeasibleError {
   using InfeasibleError::InfeasibleError;
 };
 
+// Inside a catch block: throws the error being handled again with `context` put before its
+// message ("leg home -> a: " + what), keeping its kind; any other exception becomes an Error.
+[[noreturn]] void rethrowWithContext(const std::string& context);
+
 }  // namespace ceilplan

@@ -62,9 +62,9 @@ class EnergyModel {
   CurrentBreakdown breakdown(const RotorCeiling* rotors, int rotor_count, const FlightCondition& flight) const;
 
   const EnergyParameters& parameters() const noexcept { return parameters_; }
-  int rotorCount() const noexcept { return parameters_.vehicle.rotor_count; }
-  double rotorRadiusM() const noexcept { return parameters_.vehicle.rotor_radius_m; }
-  double maxSpeedM_s() const noexcept { return parameters_.vehicle.max_speed_m_s; }
+  int rotorCount() const noexcept { return parameters_.airframe.rotor_count; }
+  double rotorRadiusM() const noexcept { return parameters_.airframe.rotor_radius_m; }
+  double maxSpeedM_s() const noexcept { return parameters_.airframe.max_speed_m_s; }
   const CeilingEffect& ceilingEffect() const noexcept { return ceiling_; }
   const GroundEffect& groundEffect() const noexcept { return ground_; }
   const RotaryWingPower& rotaryWingPower() const noexcept { return rotor_power_; }  // shaft power

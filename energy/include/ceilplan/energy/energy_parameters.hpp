@@ -16,7 +16,7 @@ enum class GroundEffectModel {
   kMultirotor,        // Sanchez-Cuevas et al. 2017 multirotor form, reference section 3
 };
 
-struct VehicleGeometry {
+struct AirframeParameters {
   double mass_kg = 1.4;
   int rotor_count = 4;
   double rotor_radius_m = 0.127;
@@ -61,7 +61,7 @@ struct PackParameters {
 };
 
 struct EnergyParameters {
-  VehicleGeometry vehicle;
+  AirframeParameters airframe;
   CeilingEffectParameters ceiling;
   GroundEffectParameters ground;
   RotorPowerParameters rotor;

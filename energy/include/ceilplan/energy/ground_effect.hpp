@@ -14,7 +14,7 @@ class GroundEffect {
  public:
   // Throws ceilplan::InputError when the chosen form is singular or not defined for this
   // geometry (the multirotor form needs at least two rotors).
-  GroundEffect(const GroundEffectParameters& parameters, const VehicleGeometry& vehicle);
+  GroundEffect(const GroundEffectParameters& parameters, const AirframeParameters& vehicle);
 
   // Thrust ratio at `gap_m` >= 0 between rotor plane and ground; +infinity gives 1.
   double thrustRatio(double gap_m) const noexcept;

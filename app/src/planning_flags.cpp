@@ -1,0 +1,95 @@
+#include "planning_flags.hpp"
+
+#include "cli_checks.hpp"
+#include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/io/vehicle_file.hpp"
+
+#include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/planner/planner_factory.hpp"
+#include "ceilplan/core/error.hpp"
+
+#include <sstream>
+
+namespace ceilplan::app {
+
+void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objective) {
+  mission::PlanningOptions& a = flags.options;
+  command->add_option("--map", flags.map, "OctoMap file (.bt or .ot)")->required()->check(CLI::ExistingFile);
+  command->add_option("--vehicle", flags.vehicle, "vehicle file (default: the built-in quadrotor, as maps/vehicles/quad.yaml)");
+  command->add_option("--battery", flags.battery,
+                      "battery YAML: capacity_ah, start_soc, charge_current_a, ... (default: the paper's pack at 95 %)");
+  if (with_objective) {
+    command->add_option("--objective", a.objective, "what to minimise")
+        ->capture_default_str()
+        ->check(CLI::IsMember(planner::objectiveNames()));
+    command->add_option("--ageing-model", a.ageing_model, "ageing model of --objective ageing")
+        ->capture_default_str()
+        ->check(CLI::IsMember(battery::ageingModelNames()));
+    command->add_option("--ageing-dod", a.ageing_dod,
+                        "depth of discharge the ageing objective is linearised at (0: the route's own estimate)")
+        ->capture_default_str()
+        ->check(finiteAtLeast(0.0));
+  }
+  command->add_option("--cruise-speed-m-s", a.speeds.cruise_m_s, "horizontal speed in free air")
+      ->capture_default_str()->check(positiveFinite());
+  command->add_option("--near-ceiling-speed-m-s", a.speeds.near_ceiling_m_s,
+                      "horizontal speed when a rotor is within --near-ceiling-radii R of a ceiling")
+      ->capture_default_str()->check(positiveFinite());
+  command->add_option("--near-ceiling-radii", a.speeds.near_ceiling_gap_radii, "gap, in rotor radii, of the slow zone")
+      ->capture_default_str()->check(positiveFinite());
+  command->add_option("--climb-m-s", a.speeds.climb_m_s, "climb rate limit")->capture_default_str()->check(positiveFinite());
+  command->add_option("--descent-m-s", a.speeds.descent_m_s, "descent rate limit")
+      ->capture_default_str()->check(positiveFinite());
+  command->add_option("--min-ceiling-gap-m", a.min_ceiling_gap_m, "rotor plane to ceiling, never less")
+      ->capture_default_str()->check(nonNegativeFinite());
+  command->add_option("--standoff-m", a.standoff_m, "free mode: distance kept from every structure")
+      ->capture_default_str()->check(nonNegativeFinite());
+  command->add_option("--temperature-c", a.temperature_c, "cell temperature for the ageing model")
+      ->capture_default_str()->check(CLI::Range(-40.0, 80.0));
+}
+
+void addSearchOptions(CLI::App* command, SearchArguments& a) {
+  command->add_option("--planner", a.planner, "planner (default " + planner::defaultPlannerName() + ")")
+      ->check(CLI::IsMember(planner::plannerNames()));
+  command->add_option("--time-limit-s", a.time_limit_s, "search time per plan")->capture_default_str()->check(positiveFinite());
+  command->add_option("--seed", a.seed, "random seed (> 0)")->capture_default_str()->check(CLI::Range(1u, 4294967295u));
+  command->add_option("--band-fraction", a.band_fraction, "share of samples aimed under ceilings")
+      ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  command->add_flag("--no-refine", a.no_refine, "skip shortcutting and NLopt refinement");
+  command->add_option("--lattice-stride", a.lattice_stride, "lattice planner: spacing in voxels")
+      ->capture_default_str()->check(CLI::Range(1, 16));
+}
+
+planner::PlanRequest SearchArguments::request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const {
+  planner::PlanRequest request;
+  request.start_m = start_m;
+  request.goal_m = goal_m;
+  request.planner = planner;
+  request.time_limit_s = time_limit_s;
+  request.band_fraction = band_fraction;
+  request.refine = !no_refine;
+  request.lattice.stride_voxels = lattice_stride;
+  return request;
+}
+
+std::string SearchArguments::plannerName() const { return planner.empty() ? planner::defaultPlannerName() : planner; }
+
+Eigen::Vector3d parsePoint(const std::string& text, const std::string& flag) {
+  std::istringstream in(text);
+  Eigen::Vector3d point;
+  char comma1 = 0, comma2 = 0;
+  if (!(in >> point.x() >> comma1 >> point.y() >> comma2 >> point.z()) || comma1 != ',' || comma2 != ',' ||
+      !(in >> std::ws).eof() || !point.allFinite())
+    throw ceilplan::InputError(flag + " '" + text + "': expected three finite numbers x,y,z in metres");
+  return point;
+}
+
+std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags) {
+  const mission::Vehicle vehicle =
+      flags.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(flags.vehicle);
+  const mission::BatterySpec battery = flags.battery.empty() ? mission::BatterySpec{} : io::readBattery(flags.battery);
+  return std::make_unique<mission::PlanningContext>(environment::OccupancyMap::load(flags.map), vehicle, battery,
+                                                    flags.options, terminalProgress());
+}
+
+}  // namespace ceilplan::app

@@ -1,0 +1,51 @@
+#pragma once
+// The flags plan, evaluate, compare and bench-planners share: map, vehicle, battery, objective,
+// speeds and safety rules into mission::PlanningOptions, and the search flags into a
+// planner::PlanRequest.
+
+#include "output.hpp"
+
+#include "ceilplan/mission/planning_context.hpp"
+#include "ceilplan/planner/flight_planner.hpp"
+
+#include <CLI/CLI.hpp>
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace ceilplan::app {
+
+struct PlanningFlags {
+  std::string map;
+  std::string vehicle;  // empty: the built-in vehicle (maps/vehicles/quad.yaml)
+  std::string battery;  // empty: the paper's pack at 95 %
+  mission::PlanningOptions options;
+};
+
+// Registers --map, --vehicle, --battery, --objective and the model flags on `command`.
+// `with_objective` false leaves --objective out (commands that report every objective).
+void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objective = true);
+
+// The map, vehicle and battery the flags name, indexed with progress on the terminal.
+std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags);
+
+// The search flags shared by plan, compare and bench-planners.
+struct SearchArguments {
+  std::string planner;  // empty: the default
+  double time_limit_s = 5.0;
+  std::uint32_t seed = 1;
+  double band_fraction = 0.0;  // uniform by default: the band did not help BIT* in the study (docs/planner.md)
+  bool no_refine = false;
+  int lattice_stride = 2;
+
+  planner::PlanRequest request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
+  std::string plannerName() const;
+};
+void addSearchOptions(CLI::App* command, SearchArguments& arguments);
+
+// "x,y,z" in metres; throws ceilplan::InputError naming `flag`.
+Eigen::Vector3d parsePoint(const std::string& text, const std::string& flag);
+
+}  // namespace ceilplan::app

@@ -1,0 +1,140 @@
+#include "ceilplan/io/mission_file.hpp"
+
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/io/vehicle_file.hpp"
+
+#include "yaml_reader.hpp"
+
+#include <set>
+
+namespace ceilplan::io {
+namespace {
+
+using detail::FileKind;
+using detail::Range;
+using detail::Section;
+using detail::YamlFile;
+
+const std::vector<std::string> kBatteryKeys{"capacity_ah",     "charge_current_a", "cell_count", "soc_min",
+                                            "state_of_health", "start_soc",        "reserve_soc"};
+// Any place in a map: a kilometre either way (the index refuses maps too large to hold anyway).
+const Range kCoordinateM = Range::closed(-1e6, 1e6, "m");
+
+// Reads a battery section; in a mission file the pack and SOC limits of a tour are required,
+// a battery file may leave any of them at the founding paper's values.
+mission::BatterySpec readBatterySection(const Section& section, bool all_required) {
+  section.allowOnly(kBatteryKeys);
+  mission::BatterySpec spec;
+  battery::Pack& pack = spec.pack;
+  const auto number = [&](const char* key, const Range& range, double fallback, bool required) {
+    return required ? section.number(key, range) : section.number(key, range, fallback);
+  };
+  pack.capacity_ah = number("capacity_ah", Range::above(0.0, 1000.0, "Ah"), pack.capacity_ah, all_required);
+  pack.charge_current_a = number("charge_current_a", Range::above(0.0, 1000.0, "A"), pack.charge_current_a, all_required);
+  pack.cell_count = static_cast<int>(section.integer("cell_count", 1, 24, pack.cell_count));
+  pack.soc_min = section.number("soc_min", Range::below(0.0, 1.0), pack.soc_min);
+  pack.state_of_health = section.number("state_of_health", Range::above(0.0, 1.0), pack.state_of_health);
+  spec.start_soc = number("start_soc", Range::above(0.0, 1.0), spec.start_soc, all_required);
+  spec.reserve_soc = number("reserve_soc", Range::closed(0.0, 1.0), spec.reserve_soc, all_required);
+  if (spec.reserve_soc >= spec.start_soc)
+    section.fail("'" + section.keyPath("reserve_soc") + "' " + formatNumber(spec.reserve_soc) + " is not below '" +
+                 section.keyPath("start_soc") + "' " + formatNumber(spec.start_soc) + ": no sortie could fly");
+  try {
+    spec.validate();
+  } catch (const InputError& e) {
+    section.fail(e.what());
+  }
+  spec.description = section.file().path().string();
+  return spec;
+}
+
+mission::GeodeticOrigin readOrigin(const Section& node) {
+  node.allowOnly({"lat", "lon", "alt"});
+  mission::GeodeticOrigin origin;
+  origin.latitude_deg = node.number("lat", Range::closed(-90.0, 90.0, "deg"));
+  origin.longitude_deg = node.number("lon", Range::closed(-180.0, 180.0, "deg"));
+  origin.altitude_m = node.number("alt", Range::closed(-500.0, 10000.0, "m"));
+  return origin;
+}
+
+mission::MissionSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
+  node.allowOnly({"cruise_m_s", "inspection_m_s", "climb_m_s", "descent_m_s"});
+  mission::MissionSpeeds speeds;
+  const Range horizontal = Range::above(0.0, max_speed_m_s, "m/s (the vehicle's max_speed_m_s)");
+  const Range vertical = Range::above(0.0, std::min(10.0, max_speed_m_s), "m/s");
+  speeds.cruise_m_s = node.number("cruise_m_s", horizontal, speeds.cruise_m_s);
+  speeds.inspection_m_s = node.number("inspection_m_s", horizontal, speeds.inspection_m_s);
+  speeds.climb_m_s = node.number("climb_m_s", vertical, speeds.climb_m_s);
+  speeds.descent_m_s = node.number("descent_m_s", vertical, speeds.descent_m_s);
+  return speeds;
+}
+
+std::vector<mission::InspectionTarget> readTargets(const Section& root) {
+  const YAML::Node list = root.required("targets");
+  if (!list.IsSequence() || list.size() == 0) root.fail("'targets' must be a non-empty list");
+  std::vector<mission::InspectionTarget> targets;
+  std::set<std::string> names;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string path = "targets[" + std::to_string(k) + "]";
+    if (!list[k].IsMap()) root.fail("'" + path + "' must be a map {name, point, dwell_s, standoff_m}");
+    const Section node(root.file(), list[k], path);
+    node.allowOnly({"name", "point", "dwell_s", "standoff_m"});
+    mission::InspectionTarget target;
+    target.name = node.text("name");
+    if (target.name.empty()) node.fail("'" + path + ".name' is empty");
+    if (!names.insert(target.name).second) node.fail("duplicate target name '" + target.name + "' at '" + path + "'");
+    target.point_m = node.vector3("point", kCoordinateM);
+    target.dwell_s = node.number("dwell_s", Range::closed(0.0, 3600.0, "s"));
+    const std::vector<double> standoff = node.numbers("standoff_m", 2, Range::closed(0.0, 50.0, "m"));
+    target.standoff_min_m = standoff[0];
+    target.standoff_max_m = standoff[1];
+    try {
+      target.validate();
+    } catch (const InputError& e) {
+      node.fail("'" + path + "': " + e.what());
+    }
+    targets.push_back(std::move(target));
+  }
+  return targets;
+}
+
+std::filesystem::path existingFile(const Section& root, const std::string& key) {
+  const std::filesystem::path path = root.file().path().parent_path() / root.text(key);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    root.fail("'" + key + "' names " + path.string() + ", which does not exist (paths are relative to the mission file)");
+  return path;
+}
+
+}  // namespace
+
+mission::Mission readMission(const std::filesystem::path& file) {
+  const YamlFile yaml(file, FileKind::Mission);
+  const Section root(yaml, yaml.root(), "");
+  root.allowOnly({"map", "vehicle", "battery", "home", "origin", "speeds", "mode", "seed", "targets"});
+  mission::Mission mission;
+  mission.file = file;
+  mission.map_file = existingFile(root, "map");
+  mission.vehicle_file = existingFile(root, "vehicle");
+  mission.vehicle = readVehicle(mission.vehicle_file);
+  mission.battery = readBatterySection(root.section("battery"), true);
+  mission.home_m = root.vector3("home", kCoordinateM);
+  if (const std::optional<Section> origin = root.optionalSection("origin")) mission.origin = readOrigin(*origin);
+  if (const std::optional<Section> speeds = root.optionalSection("speeds"))
+    mission.speeds = readSpeeds(*speeds, mission.vehicle.energy.airframe.max_speed_m_s);
+  mission.mode = root.choice("mode", {"ceiling", "free", "both"}, "");
+  mission.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, 1));
+  mission.targets = readTargets(root);
+  return mission;
+}
+
+mission::BatterySpec readBattery(const std::filesystem::path& file) {
+  const YamlFile yaml(file, FileKind::Battery);
+  const Section root(yaml, yaml.root(), "");
+  // A mission file serves as a battery file: its other keys are the mission reader's to check.
+  if (root.has("battery") && root.has("targets")) return readBatterySection(root.section("battery"), true);
+  return readBatterySection(root, false);
+}
+
+}  // namespace ceilplan::io

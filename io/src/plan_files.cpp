@@ -1,0 +1,150 @@
+#include "ceilplan/io/plan_files.hpp"
+
+#include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/atomic_file.hpp"
+#include "ceilplan/io/map_views.hpp"
+
+#include "ceilplan/core/format.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+
+namespace ceilplan::io {
+
+nlohmann::json figuresJson(const planner::PathEvaluation& e) {
+  return {{"length_m", e.length_m},
+          {"duration_s", e.duration_s},
+          {"charge_ah", e.charge_ah},
+          {"energy_wh", e.energy_wh},
+          {"fec", e.fec},
+          {"mean_current_a", e.mean_current_a},
+          {"min_soc", e.min_soc},
+          {"min_clearance_m", finiteOrNull(e.min_clearance_m)},
+          {"min_ceiling_gap_m", finiteOrNull(e.min_ceiling_gap_m)},
+          {"time_under_ceiling_s", e.time_under_ceiling_s}};
+}
+
+nlohmann::json waypointsJson(const std::vector<Eigen::Vector3d>& waypoints_m) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const Eigen::Vector3d& p : waypoints_m) list.push_back({p.x(), p.y(), p.z()});
+  return list;
+}
+
+void writePathCsv(const std::filesystem::path& file, const planner::PathEvaluation& evaluation) {
+  writeTextAtomically(file, [&](std::ostream& out) {
+    out << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc\n" << std::setprecision(9);
+    for (const planner::PathSample& s : evaluation.samples) {
+      out << s.t_s << ',' << s.position_m.x() << ',' << s.position_m.y() << ',' << s.position_m.z() << ','
+          << s.speed_m_s << ',';
+      if (std::isfinite(s.ceiling_gap_m)) out << s.ceiling_gap_m;
+      out << ',' << s.current_a << ',' << s.soc << '\n';
+    }
+  });
+}
+
+void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanResult& plan,
+                        const planner::PathEvaluation& evaluation, const nlohmann::json& extra) {
+  nlohmann::json json = figuresJson(evaluation);
+  json["waypoints"] = waypointsJson(plan.waypoints);
+  json["planner"] = plan.planner;
+  json["cost"] = plan.cost;
+  json["search_cost"] = plan.search_cost;
+  json["search_time_s"] = plan.search_time_s;
+  json["total_time_s"] = plan.total_time_s;
+  json.update(extra);
+  writeTextAtomically(dir / "plan.json", [&](std::ostream& stream) { stream << std::setw(2) << json << '\n'; });
+  writePathCsv(dir / "path.csv", evaluation);
+}
+
+std::string figuresLine(const planner::PathEvaluation& e) {
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "length %.2f m, %.1f s, %.5f Ah, %.3f Wh, FEC %.6f, mean %.3f A, lowest SOC %.2f %%, "
+                "%.1f s under the ceiling",
+                e.length_m, e.duration_s, e.charge_ah, e.energy_wh, e.fec, e.mean_current_a, 100.0 * e.min_soc,
+                e.time_under_ceiling_s);
+  return line;
+}
+
+namespace {
+
+double reductionPct(double with, double without) { return without != 0.0 ? 100.0 * (1.0 - with / without) : 0.0; }
+
+}  // namespace
+
+std::string routeComparisonTable(const mission::RouteComparison& comparison, const mission::DutyOptions& duty,
+                                 const mission::BatterySpec& battery) {
+  const planner::PathEvaluation &c = comparison.ceiling.evaluation, &f = comparison.free.evaluation;
+  std::string out;
+  char line[256];
+  const auto row = [&](const char* label, double ceiling, double free, int decimals, bool with_reduction) {
+    std::snprintf(line, sizeof line, "%-34s %14s %14s %12s\n", label, formatFixed(ceiling, decimals).c_str(),
+                  formatFixed(free, decimals).c_str(), with_reduction ? formatFixed(reductionPct(ceiling, free), 2).c_str() : "");
+    out += line;
+  };
+  std::snprintf(line, sizeof line, "both plans scored with the full model (start SOC %.0f %%)\n%-34s %14s %14s %12s\n",
+                100.0 * battery.start_soc, "", "ceiling", "free", "reduction %");
+  out += line;
+  row("length [m]", c.length_m, f.length_m, 2, false);
+  row("time [s]", c.duration_s, f.duration_s, 1, true);
+  row("charge [Ah]", c.charge_ah, f.charge_ah, 5, true);
+  row("energy [Wh]", c.energy_wh, f.energy_wh, 3, true);
+  row("mean current [A]", c.mean_current_a, f.mean_current_a, 3, true);
+  row("FEC (flight + recharge)", c.fec, f.fec, 6, true);
+  row("lowest SOC [%]", 100 * c.min_soc, 100 * f.min_soc, 2, false);
+  row("time under the ceiling [s]", c.time_under_ceiling_s, f.time_under_ceiling_s, 1, false);
+  std::snprintf(line, sizeof line,
+                "\nduty projection: each mission flies the route %d times (the slower plan fills %.0f min), idles "
+                "%.0f min, charges back at %.1f A; %d missions a day for %d days\n",
+                comparison.repeats, duty.flight_min, duty.idle_min, battery.pack.charge_current_a, duty.missions_per_day,
+                duty.days);
+  out += line;
+  const battery::DutyResult &cd = comparison.ceiling_duty, &fd = comparison.free_duty;
+  row("FEC per mission", cd.fecPerMission(), fd.fecPerMission(), 4, true);
+  row("FEC over the study", cd.fecTotal(), fd.fecTotal(), 2, true);
+  row("lowest SOC over the study [%]", 100 * cd.minSoc(), 100 * fd.minSoc(), 1, false);
+  return out;
+}
+
+nlohmann::json routeComparisonJson(const mission::RouteComparison& comparison, const mission::DutyOptions& duty,
+                                   const nlohmann::json& extra) {
+  nlohmann::json json = extra;
+  json["duty"] = {{"flight_min", duty.flight_min}, {"idle_min", duty.idle_min}, {"charge_max_min", duty.charge_max_min},
+                  {"missions_per_day", duty.missions_per_day}, {"days", duty.days}};
+  const auto entry = [&](const mission::RoutePlan& route, const battery::DutyResult& result) {
+    nlohmann::json figures = figuresJson(route.evaluation);
+    figures["cost"] = route.plan.cost;
+    figures["repeats_per_mission"] = comparison.repeats;
+    figures["fec_per_mission"] = result.fecPerMission();
+    figures["fec_total"] = result.fecTotal();
+    figures["duty_min_soc"] = result.minSoc();
+    return figures;
+  };
+  json["ceiling"] = entry(comparison.ceiling, comparison.ceiling_duty);
+  json["free"] = entry(comparison.free, comparison.free_duty);
+  const planner::PathEvaluation &c = comparison.ceiling.evaluation, &f = comparison.free.evaluation;
+  json["reduction_pct"] = {{"charge", reductionPct(c.charge_ah, f.charge_ah)},
+                           {"energy", reductionPct(c.energy_wh, f.energy_wh)},
+                           {"fec_total", reductionPct(comparison.ceiling_duty.fecTotal(), comparison.free_duty.fecTotal())}};
+  return json;
+}
+
+void writeRouteComparison(const std::filesystem::path& dir, const mission::RouteComparison& comparison,
+                          const mission::DutyOptions& duty, const nlohmann::json& extra,
+                          const environment::Environment& environment) {
+  for (const mission::RoutePlan* route : {&comparison.ceiling, &comparison.free}) {
+    const std::string mode = mission::flightModeName(route->mode);
+    nlohmann::json plan_extra = extra;
+    plan_extra["mode"] = mode;
+    writePlanDirectory(dir / mode, route->plan, route->evaluation, plan_extra);
+  }
+  writeTextAtomically(dir / "compare.json", [&](std::ostream& stream) {
+    stream << std::setw(2) << routeComparisonJson(comparison, duty, extra) << '\n';
+  });
+  std::vector<Eigen::Vector3d> routes = comparison.ceiling.plan.waypoints;
+  routes.insert(routes.end(), comparison.free.plan.waypoints.begin(), comparison.free.plan.waypoints.end());
+  writeMapViews(dir, environment, routes);
+}
+
+}  // namespace ceilplan::io

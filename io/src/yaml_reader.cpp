@@ -1,0 +1,219 @@
+#include "yaml_reader.hpp"
+
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/core/spelling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <system_error>
+
+namespace ceilplan::io::detail {
+namespace {
+
+// Keys that only a file of one kind has at its top level.
+const std::vector<std::string>& signatureKeys(FileKind kind) {
+  static const std::vector<std::string> mission{"map", "targets", "home", "surfaces", "contact_grid"};
+  static const std::vector<std::string> vehicle{"rotors", "airframe", "clearance", "power", "mass_kg"};
+  static const std::vector<std::string> battery{"capacity_ah", "charge_current_a", "state_of_health", "soc_min"};
+  switch (kind) {
+    case FileKind::Mission: return mission;
+    case FileKind::Vehicle: return vehicle;
+    case FileKind::Battery: return battery;
+  }
+  return mission;
+}
+
+// What a scalar says, for messages: control characters and bytes outside printable ASCII are
+// escaped, long values cut, so a message never echoes terminal escapes or binary junk.
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (out.size() > 40) {
+      out += "...";
+      break;
+    }
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      static const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  return out;
+}
+
+std::string shown(const YAML::Node& node) {
+  if (!node.IsScalar()) return node.IsSequence() ? "a list" : node.IsMap() ? "a map" : "nothing";
+  return "'" + escaped(node.Scalar()) + "'";
+}
+
+}  // namespace
+
+bool Range::contains(double value) const {
+  if (!std::isfinite(value)) return false;
+  if (min_open ? value <= min : value < min) return false;
+  if (max_open ? value >= max : value > max) return false;
+  return true;
+}
+
+std::string Range::describe() const {
+  return std::string(min_open ? "(" : "[") + formatNumber(min) + ", " + formatNumber(max) + (max_open ? ")" : "]") +
+         (unit.empty() ? "" : " " + unit);
+}
+
+std::string kindName(FileKind kind) {
+  switch (kind) {
+    case FileKind::Mission: return "mission file";
+    case FileKind::Vehicle: return "vehicle file";
+    case FileKind::Battery: return "battery file";
+  }
+  return "file";
+}
+
+YamlFile::YamlFile(const std::filesystem::path& file, FileKind kind) : path_(file), kind_(kind) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) fail("no such " + kindName(kind));
+  if (std::filesystem::is_directory(file, ec)) fail("is a directory, not a " + kindName(kind));
+  if (!std::filesystem::is_regular_file(file, ec)) fail("is not a regular file");
+  try {
+    root_ = YAML::LoadFile(file.string());
+  } catch (const YAML::BadFile&) {
+    fail("cannot be read");
+  } catch (const YAML::Exception& e) {
+    fail("malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+  if (!root_.IsMap()) fail("a " + kindName(kind) + " must be a YAML map of keys (docs/missions.md)");
+}
+
+void YamlFile::fail(const std::string& problem) const { throw InputError(path_.string() + ": " + problem); }
+
+Section::Section(const YamlFile& file, YAML::Node node, std::string path)
+    : file_(&file), node_(std::move(node)), path_(std::move(path)) {
+  if (!node_.IsMap()) fail("'" + path_ + "' must be a map of keys");
+}
+
+std::string Section::keyPath(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+void Section::allowOnly(const std::vector<std::string>& known) const {
+  std::vector<std::string> unknown;
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "?";
+    if (std::find(known.begin(), known.end(), key) == known.end()) unknown.push_back(key);
+  }
+  if (unknown.empty()) return;
+  if (path_.empty()) {
+    for (FileKind other : {FileKind::Mission, FileKind::Vehicle, FileKind::Battery}) {
+      if (other == file_->kind()) continue;
+      const auto& signature = signatureKeys(other);
+      const auto matches = std::count_if(unknown.begin(), unknown.end(), [&](const std::string& key) {
+        return std::find(signature.begin(), signature.end(), key) != signature.end();
+      });
+      if (matches >= 2)
+        fail("this is a " + kindName(other) + ", not a " + kindName(file_->kind()) + " (it has '" + unknown[0] +
+             "'); give it where a " + kindName(other) + " is expected");
+    }
+  }
+  fail("unknown key '" + keyPath(escaped(unknown.front())) + "'" + didYouMean(unknown.front(), known));
+}
+
+Section Section::section(const std::string& key) const {
+  const YAML::Node node = required(key);
+  if (!node.IsMap()) fail("'" + keyPath(key) + "' must be a map of keys");
+  return Section(*file_, node, keyPath(key));
+}
+
+std::optional<Section> Section::optionalSection(const std::string& key) const {
+  if (!has(key)) return std::nullopt;
+  return section(key);
+}
+
+YAML::Node Section::required(const std::string& key) const {
+  const YAML::Node node = node_[key];
+  if (!node) fail("missing key '" + keyPath(key) + "'");
+  return node;
+}
+
+double Section::numberAt(const YAML::Node& node, const std::string& path, const Range& range) const {
+  double value = 0.0;
+  if (!node.IsScalar()) fail("'" + path + "' must be a number in " + range.describe() + ", got " + shown(node));
+  try {
+    value = node.as<double>();
+  } catch (const YAML::Exception&) {
+    fail("'" + path + "' must be a number in " + range.describe() + ", got " + shown(node));
+  }
+  if (!range.contains(value))
+    fail("'" + path + "' must be " + (std::isfinite(value) ? "in " : "a finite number in ") + range.describe() +
+         ", got " + formatNumber(value));
+  return value;
+}
+
+double Section::number(const std::string& key, const Range& range) const {
+  return numberAt(required(key), keyPath(key), range);
+}
+
+double Section::number(const std::string& key, const Range& range, double fallback) const {
+  return has(key) ? number(key, range) : fallback;
+}
+
+long long Section::integer(const std::string& key, long long min, long long max) const {
+  const YAML::Node node = required(key);
+  const std::string what = "'" + keyPath(key) + "' must be a whole number in [" + std::to_string(min) + ", " +
+                           std::to_string(max) + "], got " + shown(node);
+  if (!node.IsScalar()) fail(what);
+  long long value = 0;
+  try {
+    value = node.as<long long>();
+  } catch (const YAML::Exception&) {
+    fail(what);
+  }
+  if (value < min || value > max) fail(what);
+  return value;
+}
+
+long long Section::integer(const std::string& key, long long min, long long max, long long fallback) const {
+  return has(key) ? integer(key, min, max) : fallback;
+}
+
+std::string Section::text(const std::string& key) const {
+  const YAML::Node node = required(key);
+  if (!node.IsScalar()) fail("'" + keyPath(key) + "' must be text, got " + shown(node));
+  return node.Scalar();
+}
+
+std::string Section::text(const std::string& key, const std::string& fallback) const {
+  return has(key) ? text(key) : fallback;
+}
+
+std::string Section::choice(const std::string& key, const std::vector<std::string>& choices,
+                            const std::string& fallback) const {
+  if (!has(key)) return fallback;
+  const std::string value = text(key);
+  if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
+  std::string list;
+  for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
+  fail("'" + keyPath(key) + "' must be one of " + list + ", got " + shown(node_[key]) + didYouMean(value, choices));
+}
+
+std::vector<double> Section::numbers(const std::string& key, std::size_t count, const Range& range) const {
+  const YAML::Node node = required(key);
+  if (!node.IsSequence() || node.size() != count)
+    fail("'" + keyPath(key) + "' must be a list of " + std::to_string(count) + " numbers, got " + shown(node));
+  std::vector<double> values;
+  for (std::size_t k = 0; k < count; ++k)
+    values.push_back(numberAt(node[k], keyPath(key) + "[" + std::to_string(k) + "]", range));
+  return values;
+}
+
+Eigen::Vector3d Section::vector3(const std::string& key, const Range& range) const {
+  const YAML::Node node = required(key);
+  if (!node.IsSequence() || node.size() != 3)
+    fail("'" + keyPath(key) + "' must be [x, y, z] in metres, got " + shown(node));
+  const std::vector<double> xyz = numbers(key, 3, range);
+  return {xyz[0], xyz[1], xyz[2]};
+}
+
+}  // namespace ceilplan::io::detail

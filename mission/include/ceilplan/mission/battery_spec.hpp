@@ -1,0 +1,22 @@
+#pragma once
+// The one battery type of a mission: the pack, the state of charge each sortie takes off at,
+// and the reserve it must land with.
+
+#include "ceilplan/battery/pack.hpp"
+
+#include <string>
+
+namespace ceilplan::mission {
+
+struct BatterySpec {
+  battery::Pack pack;         // capacity (usable = nominal x SOH), charge current, SOC limits
+  double start_soc = 0.95;    // every sortie takes off at this SOC (the paper's missions)
+  double reserve_soc = 0.25;  // and lands with at least this much
+  std::string description = "built-in: the founding paper's 4S 5.2 Ah pack at 95 %";  // for reports: where it came from
+
+  // Throws ceilplan::InputError for a bad pack, an SOC outside [0, 1], a start SOC at or below
+  // the pack's floor, or a reserve at or above the start SOC.
+  void validate() const;
+};
+
+}  // namespace ceilplan::mission

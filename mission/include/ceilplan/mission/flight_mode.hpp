@@ -1,0 +1,18 @@
+#pragma once
+// The two ways ceilplan plans the same work: hugging ceilings where that saves charge, or as a
+// conventional planner would fly it (proximity effects ignored, a standoff kept from structure).
+
+#include <string>
+#include <vector>
+
+namespace ceilplan::mission {
+
+enum class FlightMode { Ceiling, Free };
+
+// "ceiling", "free".
+std::string flightModeName(FlightMode mode);
+// Throws ceilplan::InputError for any other name, listing both.
+FlightMode flightModeFromName(const std::string& name);
+const std::vector<std::string>& flightModeNames();
+
+}  // namespace ceilplan::mission

@@ -1,0 +1,48 @@
+#pragma once
+// An inspection mission: the map, the vehicle, the battery, home, where the map lies on the
+// Earth, the speed rules and what to inspect. Read from a mission file by io::readMission
+// (docs/missions.md).
+
+#include "ceilplan/mission/battery_spec.hpp"
+#include "ceilplan/mission/geodetic_origin.hpp"
+#include "ceilplan/mission/vehicle.hpp"
+#include "ceilplan/mission/viewpoint.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ceilplan::mission {
+
+struct MissionSpeeds {
+  double cruise_m_s = 2.0;      // horizontal, in free air
+  double inspection_m_s = 0.5;  // near a target (autopilot files' hover speed)
+  double climb_m_s = 1.0;
+  double descent_m_s = 0.8;
+};
+
+struct Mission {
+  std::filesystem::path file;          // the mission file, empty for a mission built in code
+  std::filesystem::path map_file;      // the OctoMap (.bt or .ot)
+  std::filesystem::path vehicle_file;  // empty: the built-in vehicle
+  Vehicle vehicle = Vehicle::defaultQuad();
+  BatterySpec battery;
+  Eigen::Vector3d home_m = Eigen::Vector3d::Zero();
+  std::optional<GeodeticOrigin> origin;  // needed only to export to an autopilot
+  MissionSpeeds speeds;
+  std::string mode;       // "ceiling", "free" or "both"; empty: the command decides
+  std::uint32_t seed = 1;  // of every random choice
+  std::vector<InspectionTarget> targets;
+
+  // A name for messages: the mission file, or "mission".
+  std::string name() const { return file.empty() ? std::string("mission") : file.string(); }
+
+  // The origin, or ceilplan::InputError naming the mission and the missing key.
+  const GeodeticOrigin& requireOrigin() const;
+};
+
+}  // namespace ceilplan::mission

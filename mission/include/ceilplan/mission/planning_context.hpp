@@ -1,0 +1,95 @@
+#pragma once
+// Everything planning needs, built once per map, vehicle and battery: the map indexed for the
+// vehicle (and, for free mode, with the conventional standoff as its margins), the energy
+// model, the cost models (planning and full) and the safety rules; flight modes are then cheap
+// to add. Shared read-only by every query, leg and command.
+
+#include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/core/progress.hpp"
+#include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/environment/environment.hpp"
+#include "ceilplan/environment/occupancy_map.hpp"
+#include "ceilplan/mission/battery_spec.hpp"
+#include "ceilplan/mission/flight_mode.hpp"
+#include "ceilplan/mission/mission.hpp"
+#include "ceilplan/mission/vehicle.hpp"
+#include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/planner/objective_factory.hpp"
+#include "ceilplan/planner/safety_rules.hpp"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+
+namespace ceilplan::mission {
+
+struct PlanningOptions {
+  std::string objective = "charge";  // planner::objectiveNames()
+  std::string ageing_model = "xu";   // of the ageing objective
+  double ageing_dod = 0.0;           // 0: the route's own depth of discharge (straight-line estimate, at least 1 %)
+  planner::FlightSpeeds speeds;
+  double min_ceiling_gap_m = 0.05;   // rotor plane to any ceiling, never less
+  double standoff_m = 1.0;           // free mode: the conventional distance from every structure
+  double temperature_c = 25.0;       // cell temperature for the ageing models
+  environment::EnvironmentOptions environment;
+
+  // Throws ceilplan::InputError naming the first bad field.
+  void validate() const;
+};
+
+// The ageing models' options at a cell temperature, with the energy module's LiPo open-circuit
+// voltage curve for Schmalstieg's voltage-dependent terms.
+battery::AgeingModelOptions ageingModelOptions(double temperature_c);
+
+// A mission's speeds and the charge objective (what a tour plans with).
+PlanningOptions planningOptions(const Mission& mission);
+
+class PlanningContext {
+ public:
+  // Indexes `map` for the vehicle. Throws ceilplan::InputError for bad options or vehicle.
+  PlanningContext(environment::OccupancyMap map, Vehicle vehicle, BatterySpec battery, PlanningOptions options,
+                  const ProgressCallback& progress = {});
+  // The mission's map (loaded here), vehicle, battery and planningOptions(mission).
+  explicit PlanningContext(const Mission& mission, const ProgressCallback& progress = {});
+
+  const PlanningOptions& options() const { return options_; }
+  const Vehicle& vehicle() const { return vehicle_; }
+  const BatterySpec& battery() const { return battery_; }
+  const environment::OccupancyMap& map() const { return map_; }
+  const environment::Environment& environment() const { return *environment_; }
+  const energy::EnergyModel& energy() const { return *energy_; }
+
+  // The full proximity model at the start SOC: every reported figure comes from it.
+  const planner::FlightCostModel& fullModel() const { return *full_model_; }
+  // Safety rules without standoff: what the dense re-check and `evaluate` apply.
+  const planner::SafetyRules& baseRules() const { return *base_rules_; }
+
+  // What one mode plans with. Free mode: proximity effects off in the cost and the standoff
+  // applied everywhere except near start and goal.
+  struct Mode {
+    std::unique_ptr<planner::FlightCostModel> model;
+    std::unique_ptr<planner::SafetyRules> rules;
+  };
+  Mode mode(FlightMode mode, const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
+  // The map indexed with the conventional standoff as the vehicle's margins (free mode), built
+  // on first use; call it once before sharing the context between threads.
+  const environment::Environment& standoffEnvironment() const;
+
+  // The objective, with ageing rates measured for the route's expected depth of discharge.
+  planner::ObjectiveChoice objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
+
+ private:
+  PlanningOptions options_;
+  Vehicle vehicle_;
+  BatterySpec battery_;
+  environment::OccupancyMap map_;
+  ProgressCallback progress_;
+  std::unique_ptr<environment::Environment> environment_;
+  mutable std::unique_ptr<environment::Environment> standoff_environment_;  // built on first use
+  std::unique_ptr<energy::EnergyModel> energy_;
+  std::unique_ptr<planner::FlightCostModel> full_model_;
+  std::unique_ptr<planner::SafetyRules> base_rules_;
+};
+
+}  // namespace ceilplan::mission

@@ -1,0 +1,67 @@
+#pragma once
+// Single routes as users ask for them: plan one between two points in a flight mode, score and
+// check any given path, and compare the two modes on the same query with the founding paper's
+// month-long duty projection. Every figure comes from the full model with the state of charge
+// integrated along the path.
+
+#include "ceilplan/battery/duty_cycle.hpp"
+#include "ceilplan/mission/flight_mode.hpp"
+#include "ceilplan/mission/planning_context.hpp"
+#include "ceilplan/planner/flight_planner.hpp"
+#include "ceilplan/planner/path_evaluation.hpp"
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ceilplan::mission {
+
+struct RoutePlan {
+  FlightMode mode = FlightMode::Ceiling;
+  planner::PlanResult plan;
+  planner::PathEvaluation evaluation;  // full model, from the battery's start SOC
+  planner::ObjectiveChoice objective;  // with the ageing rates it was linearised at
+  std::string cost_unit;               // of plan.cost
+};
+
+// Plans from request.start_m to request.goal_m. Throws ceilplan::InputError for a bad request
+// (start or goal outside the map or not valid), ceilplan::NoPathError when no path is found.
+RoutePlan planRoute(const PlanningContext& context, FlightMode mode, const planner::PlanRequest& request);
+
+struct RouteCheck {
+  planner::PathEvaluation evaluation;
+  std::optional<std::string> violation;  // the dense re-check's first violation; none: safe
+  double cost = 0.0;                     // under the context's objective
+  std::string cost_unit;
+};
+
+// The figures and the safety of any path (at least 2 distinct points). Throws
+// ceilplan::InputError naming a point outside the map.
+RouteCheck checkRoute(const PlanningContext& context, const std::vector<Eigen::Vector3d>& waypoints_m);
+
+// The founding paper's month for a route: each mission flies it as often as the slower mode
+// fits in flight_min, idles, charges back.
+struct DutyOptions {
+  double flight_min = 20.0;  // the paper's mission
+  double idle_min = 5.0;
+  double charge_max_min = 20.0;
+  int missions_per_day = 15;
+  int days = 30;
+};
+
+struct RouteComparison {
+  RoutePlan ceiling;
+  RoutePlan free;
+  int repeats = 1;  // flights of the route per mission, the same for both modes
+  battery::DutyResult ceiling_duty;
+  battery::DutyResult free_duty;
+};
+
+// Free mode first; ceiling mode is shown the free route, so it is never worse under the full
+// model. Throws as planRoute, and ceilplan::InfeasibleError when the duty depletes the pack.
+RouteComparison compareRoutes(const PlanningContext& context, const planner::PlanRequest& request,
+                              const DutyOptions& duty);
+
+}  // namespace ceilplan::mission

@@ -1,0 +1,117 @@
+#pragma once
+// Splits a tour, in its fixed visiting order, into sorties: the vehicle returns home and the
+// pack is recharged (or swapped) to the start SOC before the SOC would fall below the reserve,
+// and the split points are chosen to wear the battery least under an ageing model. Cycle stress
+// is convex in depth of discharge under "xu" and "woehler", so several shallow sorties can wear
+// less than one deep one despite the extra transit; under "fec" wear follows charge alone.
+
+#include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/battery/pack.hpp"
+#include "ceilplan/mission/battery_spec.hpp"
+#include "ceilplan/core/error.hpp"
+
+#include <string>
+#include <vector>
+
+namespace ceilplan::mission {
+
+// A point of a leg's current profile; t_s from the leg's start.
+struct CurrentSample {
+  double t_s = 0.0;
+  double current_a = 0.0;
+};
+
+// What flying from one place to another costs the battery.
+struct LegCost {
+  double charge_ah = 0.0;
+  double duration_s = 0.0;
+  double mean_current_a = 0.0;
+  // Optional, for the SOC history of figures: samples over [0, duration_s]; the SOC follows
+  // their trapezoid integral, scaled to charge_ah. Empty: the mean current throughout.
+  std::vector<CurrentSample> current_profile;
+};
+
+// Hovering at a target's viewpoint for its inspection.
+struct Dwell {
+  double duration_s = 0.0;
+  double current_a = 0.0;
+};
+
+// Everything indexed like the tour's cost matrix: 0 is home, 1..N the targets.
+struct TourCosts {
+  std::vector<std::string> names;        // names[0] is home's, e.g. "home"
+  std::vector<std::vector<LegCost>> legs;  // legs[i][j]: flying from i to j
+  std::vector<Dwell> dwells;             // dwells[0] is ignored
+
+  int targetCount() const { return static_cast<int>(names.size()) - 1; }
+  // Throws ceilplan::InputError naming the first bad entry (sizes, NaN, negative values).
+  void validate() const;
+};
+
+struct SortieOptions {
+  std::string ageing_model = "xu";  // battery::ageingModelNames()
+  battery::AgeingModelOptions ageing;
+};
+
+struct SortieLeg {
+  int from = 0;  // matrix indices
+  int to = 0;
+  double charge_ah = 0.0;
+  double duration_s = 0.0;
+};
+
+// A point of a sortie's SOC history: flight, then the recharge back to the start SOC.
+struct SocSample {
+  double t_s = 0.0;       // from the sortie's take-off
+  double soc = 0.0;
+  double current_a = 0.0; // positive discharging, negative charging
+};
+
+struct Sortie {
+  std::vector<int> targets;     // matrix indices in visiting order
+  std::vector<SortieLeg> legs;  // home -> targets -> home
+  double charge_ah = 0.0;       // legs and dwells
+  double flight_s = 0.0;        // take-off to landing, dwells included
+  double recharge_s = 0.0;      // back to the start SOC at the pack's charge current
+  double fec = 0.0;             // the discharge and its recharge, against nominal capacity
+  double dod = 0.0;             // start SOC - lowest SOC
+  double lowest_soc = 0.0;      // at landing
+  double wear = 0.0;            // the ageing model's cycle wear of this sortie, fresh pack
+  std::string reason;           // why it ends where it does, one sentence
+  std::vector<SocSample> soc_history;  // leg and dwell boundaries, profile samples, recharge end
+};
+
+struct SortiePlan {
+  std::string ageing_model;  // the model the split minimises
+  std::string wear_name;     // its cycle-wear measure, e.g. "Miner damage"
+  std::vector<Sortie> sorties;
+  double charge_ah = 0.0;
+  double flight_s = 0.0;
+  double fec = 0.0;
+  double wear = 0.0;
+  double min_soc = 1.0;
+};
+
+// Chooses the sorties by dynamic programming over split points of `order` (matrix indices of
+// the targets in visiting order): O(N^2) candidate sorties, each priced by feeding its SOC
+// history (discharge, then recharge to the start SOC) to a fresh ageing model. Ties go to fewer
+// sorties. Throws ceilplan::InputError for bad input, and naming every target that no single
+// sortie can reach, inspect and return from above the reserve.
+SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
+                       const SortieOptions& options = {});
+
+// One sortie flying `targets` (matrix indices, in order) from home and back, its wear left 0
+// and its reason empty: for pricing a sortie chosen by hand.
+Sortie flySortie(const TourCosts& legs, const std::vector<int>& targets, const BatterySpec& battery);
+
+// Wear of a plan under any model, so one split can be reported under every model: one new pack
+// flies the sorties back to back, recharged to the start SOC after each.
+struct PlanWear {
+  std::string model;
+  std::string wear_name;
+  double cycle_wear = 0.0;     // the model's cycle wear (equal to the sum over the sorties)
+  double capacity_loss = 0.0;  // fraction of nominal capacity lost, calendar ageing included
+};
+PlanWear planWear(const SortiePlan& plan, const std::string& model, const battery::AgeingModelOptions& options = {});
+
+}  // namespace ceilplan::mission

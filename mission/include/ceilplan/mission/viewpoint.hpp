@@ -1,0 +1,59 @@
+#pragma once
+// Where the vehicle hovers to inspect a target: a valid body position within the target's
+// standoff range that sees the target point, drawing the least charge over the dwell. In
+// ceiling mode that is hugging the surface above (contact-style inspection under a deck); in
+// free mode proximity effects are ignored when choosing, as a conventional planner would, so
+// the nearest position of the free-mode environment (built with the conventional standoff from
+// every structure as its margin) wins. Either way the dwell is scored with the full model.
+
+#include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/environment/environment.hpp"
+#include "ceilplan/mission/flight_mode.hpp"
+#include "ceilplan/core/error.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace ceilplan::mission {
+
+struct InspectionTarget {
+  std::string name;
+  Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  // on the structure's surface
+  double standoff_min_m = 0.3;  // body centre to point
+  double standoff_max_m = 1.5;
+  double dwell_s = 0.0;
+
+  // Throws ceilplan::InputError naming the target and the bad field.
+  void validate() const;
+};
+
+struct ViewpointOptions {
+  FlightMode mode = FlightMode::Ceiling;
+  // Rotors never come closer than this to the surface above (the planner's minimum ceiling gap).
+  double min_ceiling_gap_m = 0.03;
+  double soc = 0.65;  // SOC at which the dwell current is evaluated (energy model's reference)
+};
+
+struct Viewpoint {
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // body centre
+  double distance_m = 0.0;        // to the target point
+  double ceiling_gap_m = 0.0;     // nearest rotor-plane gap above; +inf if none
+  double dwell_current_a = 0.0;   // full model, hovering here
+  double dwell_charge_ah = 0.0;   // dwell current x dwell time
+};
+
+// Pack current hovering at `body_m` under the full model: each rotor's mean gap and coverage
+// above, the mean gap below.
+double hoverCurrentA(const environment::Environment& environment, const energy::EnergyModel& model,
+                     const Eigen::Vector3d& body_m, double soc);
+
+// Searches a lattice over the standoff shell (map resolution, then a quarter of it around the
+// best) for states valid in `environment` with a clear line of sight to the point through free
+// voxels, choosing the least dwell charge under `options.mode`, ties by distance to the point.
+// Throws ceilplan::InputError naming the target when it is invalid or no viewpoint exists.
+// Reads the environment and the model only: safe to run for several targets at once.
+Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Environment& environment,
+                          const energy::EnergyModel& model, const ViewpointOptions& options = {});
+
+}  // namespace ceilplan::mission

@@ -1,0 +1,131 @@
+#include "ceilplan/mission/planning_context.hpp"
+
+#include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
+#include "ceilplan/planner/ageing_rates.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ceilplan::mission {
+namespace {
+
+void requireIn(double value, double min, double max, const std::string& what) {
+  if (!(value >= min && value <= max))
+    throw InputError(what + " must be in [" + formatNumber(min) + ", " + formatNumber(max) + "], got " +
+                     formatNumber(value));
+}
+
+}  // namespace
+
+void PlanningOptions::validate() const {
+  const auto& objectives = planner::objectiveNames();
+  if (std::find(objectives.begin(), objectives.end(), objective) == objectives.end())
+    throw InputError("unknown objective '" + objective + "'");
+  const auto models = battery::ageingModelNames();
+  if (std::find(models.begin(), models.end(), ageing_model) == models.end())
+    throw InputError("unknown ageing model '" + ageing_model + "'");
+  requireIn(ageing_dod, 0.0, 1.0, "ageing depth of discharge");
+  requireIn(min_ceiling_gap_m, 0.0, 2.0, "minimum ceiling gap (m)");
+  requireIn(standoff_m, 0.0, 20.0, "standoff (m)");
+  requireIn(temperature_c, -40.0, 80.0, "cell temperature (C)");
+}
+
+battery::AgeingModelOptions ageingModelOptions(double temperature_c) {
+  battery::AgeingModelOptions options;
+  options.conditions = battery::OperatingConditions::fromCelsius(temperature_c);
+  const energy::LipoOpenCircuitVoltage ocv;  // the energy module's cell curve, for Schmalstieg
+  options.cell_voltage_of_soc = [ocv](double soc) { return ocv.cellVoltageV(soc); };
+  return options;
+}
+
+PlanningOptions planningOptions(const Mission& mission) {
+  PlanningOptions options;
+  options.objective = "charge";
+  options.speeds.cruise_m_s = mission.speeds.cruise_m_s;
+  options.speeds.climb_m_s = mission.speeds.climb_m_s;
+  options.speeds.descent_m_s = mission.speeds.descent_m_s;
+  options.speeds.near_ceiling_m_s = std::min(options.speeds.near_ceiling_m_s, mission.speeds.cruise_m_s);
+  return options;
+}
+
+PlanningContext::PlanningContext(environment::OccupancyMap map, Vehicle vehicle, BatterySpec battery,
+                                 PlanningOptions options, const ProgressCallback& progress)
+    : options_(std::move(options)),
+      vehicle_(std::move(vehicle)),
+      battery_(std::move(battery)),
+      map_(std::move(map)),
+      progress_(progress) {
+  options_.validate();
+  vehicle_.validate();
+  battery_.validate();
+  energy_ = std::make_unique<energy::EnergyModel>(vehicle_.energy);
+  const std::string stage = "indexing " + map_.name();
+  environment_ = std::make_unique<environment::Environment>(map_, vehicle_.geometry, options_.environment, [&](double f) {
+    if (progress_) progress_(stage, f);
+  });
+  planner::CostModelOptions full;
+  full.speeds = options_.speeds;
+  full.planning_soc = battery_.start_soc;
+  full_model_ = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, full);
+  base_rules_ = std::make_unique<planner::SafetyRules>(*environment_, options_.min_ceiling_gap_m);
+}
+
+PlanningContext::PlanningContext(const Mission& mission, const ProgressCallback& progress)
+    : PlanningContext(environment::OccupancyMap::load(mission.map_file), mission.vehicle, mission.battery,
+                      planningOptions(mission), progress) {}
+
+PlanningContext::Mode PlanningContext::mode(FlightMode mode, const Eigen::Vector3d& start_m,
+                                            const Eigen::Vector3d& goal_m) const {
+  Mode result;
+  planner::CostModelOptions options = full_model_->options();
+  if (mode == FlightMode::Ceiling) {
+    result.model = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, options);
+    result.rules = std::make_unique<planner::SafetyRules>(*environment_, options_.min_ceiling_gap_m);
+    return result;
+  }
+  options.proximity_effects = false;
+  result.model = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, options);
+  const planner::StandoffZone zone =
+      planner::standoffZone(standoffEnvironment(), *environment_, options_.standoff_m, start_m, goal_m);
+  result.rules = std::make_unique<planner::SafetyRules>(*environment_, options_.min_ceiling_gap_m, zone);
+  return result;
+}
+
+const environment::Environment& PlanningContext::standoffEnvironment() const {
+  if (!standoff_environment_) {
+    const std::string stage = "indexing with the " + formatNumber(options_.standoff_m) + " m standoff";
+    standoff_environment_ = std::make_unique<environment::Environment>(
+        map_, planner::withStandoff(environment_->vehicle(), options_.standoff_m), options_.environment,
+        [&](double f) {
+          if (progress_) progress_(stage, f);
+        });
+  }
+  return *standoff_environment_;
+}
+
+planner::ObjectiveChoice PlanningContext::objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const {
+  planner::ObjectiveChoice choice;
+  choice.name = options_.objective;
+  choice.nominal_capacity_ah = battery_.pack.capacity_ah;
+  if (choice.name != "ageing") return choice;
+  // The route's expected depth of discharge: the straight line's charge under the full model
+  // (a fair estimate for a route a little longer), never below 1 %.
+  double dod = options_.ageing_dod;
+  if (dod == 0.0) {
+    const double straight_ah = full_model_->integrate(start_m, goal_m).charge_ah;
+    dod = std::max(0.01, straight_ah / battery_.pack.usableCapacityAh());
+  }
+  dod = std::min(dod, battery_.start_soc - battery_.pack.soc_min);
+  energy::FlightCondition cruise;
+  cruise.speed_m_s = options_.speeds.cruise_m_s;
+  cruise.soc = battery_.start_soc;
+  const double cruise_current_a = energy_->currentA(energy::kNoSurface, 0.0, cruise);
+  choice.ageing = planner::measureAgeingRates(options_.ageing_model, ageingModelOptions(options_.temperature_c), battery_.pack, battery_.start_soc, dod,
+                                              cruise_current_a);
+  return choice;
+}
+
+}  // namespace ceilplan::mission

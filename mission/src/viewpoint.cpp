@@ -1,0 +1,174 @@
+#include "ceilplan/mission/viewpoint.hpp"
+
+#include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace ceilplan::mission {
+
+namespace {
+
+constexpr double kCurrentResolutionA = 1e-3;
+
+// Whether the segment from the body to the target point crosses only free voxels (stopping
+// half a voxel short of the point, which lies on an occupied voxel's face).
+bool seesPoint(const environment::VoxelGrid& grid, const Eigen::Vector3d& body_m, const Eigen::Vector3d& point_m) {
+  const environment::GridFrame& frame = grid.frame();
+  const double step_m = 0.25 * frame.resolution_m();
+  const Eigen::Vector3d toward_point = point_m - body_m;
+  const double length_m = toward_point.norm() - 0.5 * frame.resolution_m();
+  for (double s = 0.0; s <= length_m; s += step_m) {
+    const Eigen::Vector3d p = body_m + toward_point.normalized() * s;
+    if (grid.at(frame.indexOf(0, p.x()), frame.indexOf(1, p.y()), frame.indexOf(2, p.z())) !=
+        environment::CellState::Free)
+      return false;
+  }
+  return true;
+}
+
+class ViewpointSearch {
+ public:
+  ViewpointSearch(const InspectionTarget& target, const environment::Environment& environment,
+                  const energy::EnergyModel& model, const ViewpointOptions& options)
+      : target_(target), environment_(environment), model_(model), options_(options) {}
+
+  // Every lattice point at `step_m` spacing within `reach_m` of `centre_m`. With `hug`, the top
+  // admissible point of each lattice column is also tried as high as it stays admissible.
+  void scan(const Eigen::Vector3d centre_m, double step_m, double reach_m, bool hug) {
+    const int n = static_cast<int>(std::ceil(reach_m / step_m));
+    for (int k = -n; k <= n; ++k)
+      for (int j = -n; j <= n; ++j)
+        for (int i = -n; i <= n; ++i) {
+          const Eigen::Vector3d body_m = ontoShell(centre_m + step_m * Eigen::Vector3d(i, j, k), step_m);
+          if (!admissible(body_m)) continue;
+          consider(body_m);
+          const Eigen::Vector3d step_up_m(0, 0, step_m);
+          if (hug && !admissible(body_m + step_up_m)) consider(raised(body_m, step_m));
+        }
+  }
+
+  bool found() const { return best_key_ < std::numeric_limits<double>::infinity(); }
+  const Eigen::Vector3d& best() const { return best_m_; }
+
+ private:
+  // A lattice point within a step outside the standoff shell, moved radially onto it, so that
+  // a shell thinner than the lattice spacing is still met.
+  Eigen::Vector3d ontoShell(const Eigen::Vector3d& body_m, double step_m) const {
+    const Eigen::Vector3d offset_m = body_m - target_.point_m;
+    const double distance_m = offset_m.norm();
+    if (distance_m == 0.0 || distance_m < target_.standoff_min_m - step_m || distance_m > target_.standoff_max_m + step_m)
+      return body_m;
+    const double onto_m = std::clamp(distance_m, target_.standoff_min_m, target_.standoff_max_m);
+    return target_.point_m + offset_m * (onto_m / distance_m);
+  }
+
+  // In the standoff range, a valid state, and clear of the ceiling by the minimum gap.
+  bool admissible(const Eigen::Vector3d& body_m) const {
+    const double distance_m = (body_m - target_.point_m).norm();
+    return distance_m >= target_.standoff_min_m && distance_m <= target_.standoff_max_m &&
+           environment_.contains(body_m) && environment_.isStateValid(body_m) &&
+           environment_.ceiling(body_m).nearest_gap_m >= options_.min_ceiling_gap_m;
+  }
+
+  // Ceiling mode: the current keeps falling as the gap above closes, and a lattice leaves the
+  // highest admissible position up to a step below; bisect upwards for it (admissibility is
+  // taken as lost once, upwards, within the span).
+  Eigen::Vector3d raised(const Eigen::Vector3d& body_m, double span_m) const {
+    double low_m = 0.0, high_m = span_m;
+    for (int step = 0; step < 24; ++step) {
+      const double middle_m = 0.5 * (low_m + high_m);
+      (admissible(body_m + Eigen::Vector3d(0, 0, middle_m)) ? low_m : high_m) = middle_m;
+    }
+    return body_m + Eigen::Vector3d(0, 0, low_m);
+  }
+
+  // Keeps an admissible position if it beats the best so far and sees the target.
+  void consider(const Eigen::Vector3d& body_m) {
+    const double distance_m = (body_m - target_.point_m).norm();
+    // Free mode ignores proximity effects when choosing: every position draws the same. Currents
+    // are compared to the milliampere, so that a difference no meter would show does not pull the
+    // viewpoint away from the target.
+    const double key = options_.mode == FlightMode::Ceiling
+                           ? std::round(hoverCurrentA(environment_, model_, body_m, options_.soc) / kCurrentResolutionA)
+                           : 0.0;
+    const bool better = !found() || key < best_key_ || (key == best_key_ && distance_m < best_distance_m_);
+    if (!better || !seesPoint(environment_.grid(), body_m, target_.point_m)) return;
+    best_key_ = key;
+    best_distance_m_ = distance_m;
+    best_m_ = body_m;
+  }
+
+  const InspectionTarget& target_;
+  const environment::Environment& environment_;
+  const energy::EnergyModel& model_;
+  const ViewpointOptions& options_;
+  double best_key_ = std::numeric_limits<double>::infinity();
+  double best_distance_m_ = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d best_m_ = Eigen::Vector3d::Zero();
+};
+
+}  // namespace
+
+void InspectionTarget::validate() const {
+  const std::string what = "target '" + name + "'";
+  if (name.empty()) throw ceilplan::InputError("a target needs a name");
+  if (!point_m.allFinite()) throw ceilplan::InputError(what + ": point must be finite, got " + formatPoint(point_m));
+  if (!(std::isfinite(standoff_min_m) && std::isfinite(standoff_max_m) && standoff_min_m >= 0.0 &&
+        standoff_max_m > 0.0 && standoff_min_m <= standoff_max_m))
+    throw ceilplan::InputError(what + ": standoff range must be 0 <= min <= max, max > 0, got [" +
+                                formatNumber(standoff_min_m) + ", " + formatNumber(standoff_max_m) + "] m");
+  if (!std::isfinite(dwell_s) || dwell_s < 0.0)
+    throw ceilplan::InputError(what + ": dwell time must be finite and non-negative, got " + formatNumber(dwell_s) + " s");
+}
+
+double hoverCurrentA(const environment::Environment& environment, const energy::EnergyModel& model,
+                     const Eigen::Vector3d& body_m, double soc) {
+  const environment::SurfaceGaps above = environment.ceiling(body_m);
+  const environment::SurfaceGaps below = environment.ground(body_m);
+  if (static_cast<int>(above.rotors.size()) != model.rotorCount() || model.rotorCount() > energy::EnergyModel::kMaxRotors)
+    throw ceilplan::InputError("the map's vehicle has " + std::to_string(above.rotors.size()) +
+                                " rotors, the energy model " + std::to_string(model.rotorCount()) +
+                                ": use one vehicle file for both");
+  const planner::PointConditions conditions = planner::surfaceConditions(above, below);
+  energy::FlightCondition hover;
+  hover.ground_gap_m = conditions.ground_gap_m;
+  hover.soc = soc;
+  return model.currentA(conditions.rotors.data(), model.rotorCount(), hover);
+}
+
+Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Environment& environment,
+                          const energy::EnergyModel& model, const ViewpointOptions& options) {
+  target.validate();
+  if (!environment.contains(target.point_m))
+    throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) + " lies outside the map");
+  ViewpointSearch search(target, environment, model, options);
+  const double resolution_m = environment.grid().frame().resolution_m();
+  const bool hug = options.mode == FlightMode::Ceiling;
+  search.scan(target.point_m, resolution_m, target.standoff_max_m, hug);
+  if (!search.found())
+    throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
+                                ": no valid viewpoint within " + formatNumber(target.standoff_min_m) + "-" +
+                                formatNumber(target.standoff_max_m) +
+                                " m that sees it" +
+                                (options.mode == FlightMode::Free
+                                     ? std::string(" while keeping the conventional standoff from every structure")
+                                     : std::string()) +
+                                "; check the point lies on a surface facing free space, or widen its standoff range");
+  search.scan(search.best(), 0.25 * resolution_m, resolution_m, hug);
+
+  Viewpoint viewpoint;
+  viewpoint.position_m = search.best();
+  viewpoint.distance_m = (viewpoint.position_m - target.point_m).norm();
+  viewpoint.ceiling_gap_m = environment.ceiling(viewpoint.position_m).nearest_gap_m;
+  viewpoint.dwell_current_a = hoverCurrentA(environment, model, viewpoint.position_m, options.soc);
+  viewpoint.dwell_charge_ah = viewpoint.dwell_current_a * target.dwell_s / 3600.0;
+  return viewpoint;
+}
+
+}  // namespace ceilplan::mission
