@@ -85,6 +85,22 @@ void Environment::requireInside(const Eigen::Vector3d& point_m, const char* quer
                           " to " + formatPoint(box.max(), 3));
 }
 
+template <class Visit>
+bool Environment::anyColumnUnderCylinder(const Eigen::Vector3d& body_m, Visit&& visit) const {
+  const GridFrame& frame = grid().frame();
+  const double radius = vehicle_.inflatedRadius_m();
+  const int j_end = frame.indexOf(1, body_m.y() + radius), i_end = frame.indexOf(0, body_m.x() + radius);
+  for (int j = frame.indexOf(1, body_m.y() - radius); j <= j_end; ++j) {
+    const double dy = std::max({frame.faceOf(1, j) - body_m.y(), 0.0, body_m.y() - frame.faceOf(1, j + 1)});
+    for (int i = frame.indexOf(0, body_m.x() - radius); i <= i_end; ++i) {
+      const double dx = std::max({frame.faceOf(0, i) - body_m.x(), 0.0, body_m.x() - frame.faceOf(0, i + 1)});
+      if (dx * dx + dy * dy >= radius * radius) continue;  // touching the column's side is allowed
+      if (visit(i, j)) return true;
+    }
+  }
+  return false;
+}
+
 double Environment::columnGap(int i, int j, double z_m, Direction direction) const {
   const ColumnIndex& columns = index_->columns();
   const ColumnIndex::Boundary boundary = direction == Direction::Up ? columns.above(i, j, z_m) : columns.below(i, j, z_m);
@@ -186,21 +202,16 @@ double Environment::clearanceLowerBound_m(const Eigen::Vector3d& body_m) const {
 }
 
 std::optional<Violation> Environment::exactCylinderViolation(const Eigen::Vector3d& body_m) const {
-  const GridFrame& frame = grid().frame();
-  const double radius = vehicle_.inflatedRadius_m();
   const double bottom = body_m.z() + vehicle_.inflatedBottom_m();
   const double top = body_m.z() + vehicle_.inflatedTop_m();
-  const int j_end = frame.indexOf(1, body_m.y() + radius), i_end = frame.indexOf(0, body_m.x() + radius);
-  for (int j = frame.indexOf(1, body_m.y() - radius); j <= j_end; ++j) {
-    const double dy = std::max({frame.faceOf(1, j) - body_m.y(), 0.0, body_m.y() - frame.faceOf(1, j + 1)});
-    for (int i = frame.indexOf(0, body_m.x() - radius); i <= i_end; ++i) {
-      const double dx = std::max({frame.faceOf(0, i) - body_m.x(), 0.0, body_m.x() - frame.faceOf(0, i + 1)});
-      if (dx * dx + dy * dy >= radius * radius) continue;  // touching the column's side is allowed
-      if (const auto state = index_->columns().firstBlocking(i, j, bottom, top, index_->unknownBlocks()))
-        return Violation{0, body_m, *state == CellState::Occupied ? ViolationKind::Occupied : ViolationKind::Unknown};
-    }
-  }
-  return std::nullopt;
+  std::optional<Violation> violation;
+  anyColumnUnderCylinder(body_m, [&](int i, int j) {
+    const auto state = index_->columns().firstBlocking(i, j, bottom, top, index_->unknownBlocks());
+    if (state)
+      violation = Violation{0, body_m, *state == CellState::Occupied ? ViolationKind::Occupied : ViolationKind::Unknown};
+    return state.has_value();
+  });
+  return violation;
 }
 
 std::optional<Violation> Environment::stateViolation(const Eigen::Vector3d& body_m) const {
@@ -255,21 +266,9 @@ std::optional<Violation> Environment::checkPathDensely(const std::vector<Eigen::
 
 bool Environment::assumesFree(const Eigen::Vector3d& body_m) const {
   if (index_->unknownSpace().policy == UnknownPolicy::Occupied || !body_m.allFinite() || !contains(body_m)) return false;
-  const GridFrame& frame = grid().frame();
-  const double radius = vehicle_.inflatedRadius_m();
   const double bottom = body_m.z() + vehicle_.inflatedBottom_m();
   const double top = body_m.z() + vehicle_.inflatedTop_m();
-  // The same columns as the exact cylinder test.
-  const int j_end = frame.indexOf(1, body_m.y() + radius), i_end = frame.indexOf(0, body_m.x() + radius);
-  for (int j = frame.indexOf(1, body_m.y() - radius); j <= j_end; ++j) {
-    const double dy = std::max({frame.faceOf(1, j) - body_m.y(), 0.0, body_m.y() - frame.faceOf(1, j + 1)});
-    for (int i = frame.indexOf(0, body_m.x() - radius); i <= i_end; ++i) {
-      const double dx = std::max({frame.faceOf(0, i) - body_m.x(), 0.0, body_m.x() - frame.faceOf(0, i + 1)});
-      if (dx * dx + dy * dy >= radius * radius) continue;
-      if (index_->assumedFreeOverlaps(i, j, bottom, top)) return true;
-    }
-  }
-  return false;
+  return anyColumnUnderCylinder(body_m, [&](int i, int j) { return index_->assumedFreeOverlaps(i, j, bottom, top); });
 }
 
 AssumedFreeStretches Environment::assumedFreeAlong(const std::vector<Eigen::Vector3d>& waypoints_m) const {

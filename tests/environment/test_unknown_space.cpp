@@ -186,7 +186,6 @@ TEST(UnknownSpace, UnderFillTheFastPathsAgreeWithAVoxelScan) {
   const auto index = indexed(map, UnknownPolicy::Fill, 1.0);
   const Environment environment(index, quad());
   const GridFrame& frame = index->grid().frame();
-  const VehicleGeometry& vehicle = environment.vehicle();
   std::mt19937 random(5);
   std::uniform_real_distribution<double> x(-2.95, 2.95), y(-1.95, 1.95), z(0.05, 3.15);
   int blocked = 0, relied = 0;
@@ -194,21 +193,14 @@ TEST(UnknownSpace, UnderFillTheFastPathsAgreeWithAVoxelScan) {
     const Eigen::Vector3d p(x(random), y(random), z(random));
     // The specification: a voxel blocks if occupied, or unknown and not assumed free.
     bool expected_blocked = false, expected_relies = false;
-    const double r = vehicle.inflatedRadius_m(), bottom = p.z() + vehicle.inflatedBottom_m(), top = p.z() + vehicle.inflatedTop_m();
-    for (int j = frame.indexOf(1, p.y() - r); j <= frame.indexOf(1, p.y() + r); ++j)
-      for (int i = frame.indexOf(0, p.x() - r); i <= frame.indexOf(0, p.x() + r); ++i) {
-        const double dx = std::max({frame.faceOf(0, i) - p.x(), 0.0, p.x() - frame.faceOf(0, i + 1)});
-        const double dy = std::max({frame.faceOf(1, j) - p.y(), 0.0, p.y() - frame.faceOf(1, j + 1)});
-        if (dx * dx + dy * dy >= r * r) continue;
-        for (int k = frame.indexOf(2, bottom); k <= frame.indexOf(2, top); ++k) {
-          if (frame.faceOf(2, k) >= top || frame.faceOf(2, k + 1) <= bottom) continue;
-          const Eigen::Vector3d centre(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k));
-          const CellState state = index->grid().at(i, j, k);
-          const bool assumed = index->isAssumedFree(centre);
-          expected_relies = expected_relies || assumed;
-          expected_blocked = expected_blocked || state == CellState::Occupied || (state == CellState::Unknown && !assumed);
-        }
-      }
+    testing::anyVoxelInCylinder(frame, environment.vehicle(), p, [&](int i, int j, int k) {
+      const Eigen::Vector3d centre(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k));
+      const CellState state = index->grid().at(i, j, k);
+      const bool assumed = index->isAssumedFree(centre);
+      expected_relies = expected_relies || assumed;
+      expected_blocked = expected_blocked || state == CellState::Occupied || (state == CellState::Unknown && !assumed);
+      return false;  // every voxel: both answers are wanted
+    });
     ASSERT_EQ(environment.isStateValid(p), !expected_blocked) << p.transpose();
     ASSERT_EQ(environment.assumesFree(p), expected_relies) << p.transpose();
     blocked += expected_blocked;

@@ -89,22 +89,14 @@ TEST(StateValidity, TheFastPathAgreesWithTheExactCylinderTest) {
 // The specification of the cylinder test, voxel by voxel: the first blocking voxel (rows of
 // columns, then bottom to top) the inflated cylinder overlaps by more than a face or a side.
 std::optional<ViolationKind> scanCylinder(const Environment& environment, const Eigen::Vector3d& p, bool unknown_blocks) {
-  const GridFrame& frame = environment.grid().frame();
-  const VehicleGeometry& vehicle = environment.vehicle();
-  const double r = vehicle.inflatedRadius_m(), bottom = p.z() + vehicle.inflatedBottom_m(), top = p.z() + vehicle.inflatedTop_m();
-  for (int j = frame.indexOf(1, p.y() - r); j <= frame.indexOf(1, p.y() + r); ++j)
-    for (int i = frame.indexOf(0, p.x() - r); i <= frame.indexOf(0, p.x() + r); ++i) {
-      const double dx = std::max({frame.faceOf(0, i) - p.x(), 0.0, p.x() - frame.faceOf(0, i + 1)});
-      const double dy = std::max({frame.faceOf(1, j) - p.y(), 0.0, p.y() - frame.faceOf(1, j + 1)});
-      if (dx * dx + dy * dy >= r * r) continue;
-      for (int k = frame.indexOf(2, bottom); k <= frame.indexOf(2, top); ++k) {
-        if (frame.faceOf(2, k) >= top || frame.faceOf(2, k + 1) <= bottom) continue;
-        const CellState state = environment.grid().at(i, j, k);
-        if (state == CellState::Occupied) return ViolationKind::Occupied;
-        if (state == CellState::Unknown && unknown_blocks) return ViolationKind::Unknown;
-      }
-    }
-  return std::nullopt;
+  std::optional<ViolationKind> found;
+  testing::anyVoxelInCylinder(environment.grid().frame(), environment.vehicle(), p, [&](int i, int j, int k) {
+    const CellState state = environment.grid().at(i, j, k);
+    if (state == CellState::Occupied) found = ViolationKind::Occupied;
+    if (state == CellState::Unknown && unknown_blocks) found = ViolationKind::Unknown;
+    return found.has_value();
+  });
+  return found;
 }
 
 TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {

@@ -160,6 +160,10 @@ class Environment {
   double columnGap(int i, int j, double z_m, Direction direction) const;
   void requireInside(const Eigen::Vector3d& point_m, const char* query) const;
   std::optional<Violation> exactCylinderViolation(const Eigen::Vector3d& body_m) const;
+  // Calls `visit(i, j)` for every column the inflated cylinder at `body_m` overlaps by more
+  // than its side, until one returns true; returns whether one did.
+  template <class Visit>
+  bool anyColumnUnderCylinder(const Eigen::Vector3d& body_m, Visit&& visit) const;
   std::optional<Violation> segmentViolation(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
                                             double step_m, bool fast_path) const;
 
