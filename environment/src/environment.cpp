@@ -5,6 +5,7 @@
 #include "ceilplan/core/format.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -16,10 +17,7 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kDenseStepVoxels = 0.1;  // checkPathDensely's step: finer than any planner's
 
-struct ColumnGap {
-  int i, j;
-  double gap_m;
-};
+constexpr int kKeptGaps = 256;  // columns under a rotor disc: 9 for a 10" rotor at 0.1 m, 196 at 0.02 m
 
 void validateOptions(const EnvironmentOptions& options) {
   if (!(options.ceiling_reach_radii > 0.0) || !std::isfinite(options.ceiling_reach_radii))
@@ -57,6 +55,8 @@ std::string Violation::describe() const {
 Environment::Environment(std::shared_ptr<const MapIndex> index, VehicleGeometry vehicle, EnvironmentOptions options,
                          const std::function<void(double)>& progress)
     : index_(requireIndex(std::move(index))),
+      columns_(&index_->columns()),
+      distance_(&index_->distance()),
       vehicle_(validated(std::move(vehicle))),
       options_((validateOptions(options), options)),
       footprint_(index_->distance(), vehicle_.inflatedRadius_m(), options_.workers) {
@@ -102,8 +102,7 @@ bool Environment::anyColumnUnderCylinder(const Eigen::Vector3d& body_m, Visit&& 
 }
 
 double Environment::columnGap(int i, int j, double z_m, Direction direction) const {
-  const ColumnIndex& columns = index_->columns();
-  const ColumnIndex::Boundary boundary = direction == Direction::Up ? columns.above(i, j, z_m) : columns.below(i, j, z_m);
+  const ColumnIndex::Boundary boundary = direction == Direction::Up ? columns_->above(i, j, z_m) : columns_->below(i, j, z_m);
   const bool surface = boundary.state == CellState::Occupied ||
                        (boundary.state == CellState::Unknown && options_.unknown_is_surface);
   return surface ? std::abs(boundary.face_m - z_m) : kInfinity;
@@ -145,21 +144,27 @@ SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction
     const Eigen::Vector2d centre = body_m.head<2>() + offset;
     const int i_begin = frame.indexOf(0, centre.x() - radius), i_end = frame.indexOf(0, centre.x() + radius);
     const int j_begin = frame.indexOf(1, centre.y() - radius), j_end = frame.indexOf(1, centre.y() + radius);
-    // The gap of every column the disc overlaps with positive area, looked up once.
-    thread_local std::vector<ColumnGap> under_disc;
-    under_disc.clear();
-    double lowest = kInfinity, highest = -kInfinity;
-    for (int j = j_begin; j <= j_end; ++j) {
-      const double dy = std::max({frame.faceOf(1, j) - centre.y(), 0.0, centre.y() - frame.faceOf(1, j + 1)});
-      for (int i = i_begin; i <= i_end; ++i) {
-        const double dx = std::max({frame.faceOf(0, i) - centre.x(), 0.0, centre.x() - frame.faceOf(0, i + 1)});
-        if (dx * dx + dy * dy >= radius * radius) continue;
-        const double gap = columnGap(i, j, plane_z, direction);
-        under_disc.push_back({i, j, gap});
-        lowest = std::min(lowest, gap);
-        highest = std::max(highest, gap);
+    // Calls `visit(i, j, n)` for every column the disc overlaps with positive area, n counting them.
+    const auto forEachColumn = [&](auto&& visit) {
+      int n = 0;
+      for (int j = j_begin; j <= j_end; ++j) {
+        const double dy = std::max({frame.faceOf(1, j) - centre.y(), 0.0, centre.y() - frame.faceOf(1, j + 1)});
+        for (int i = i_begin; i <= i_end; ++i) {
+          const double dx = std::max({frame.faceOf(0, i) - centre.x(), 0.0, centre.x() - frame.faceOf(0, i + 1)});
+          if (dx * dx + dy * dy < radius * radius) visit(i, j, n++);
+        }
       }
-    }
+    };
+    // Each column's gap is looked up once and kept for the weighing below (on fine maps, past
+    // the first kKeptGaps columns, looked up again there).
+    std::array<double, kKeptGaps> kept;
+    double lowest = kInfinity, highest = -kInfinity;
+    forEachColumn([&](int i, int j, int n) {
+      const double gap = columnGap(i, j, plane_z, direction);
+      if (n < kKeptGaps) kept[n] = gap;
+      lowest = std::min(lowest, gap);
+      highest = std::max(highest, gap);
+    });
     // Usually every column under the disc gives the same gap (a flat ceiling, or none): then
     // no area is needed. Otherwise weigh each column by its exact share of the disc.
     RotorGap rotor{lowest, 0.0, kInfinity};
@@ -170,14 +175,14 @@ SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction
         weighted = disc_area * lowest;
       }
     } else {
-      for (const ColumnGap& column : under_disc) {
-        if (column.gap_m > reach) continue;
-        const double area =
-            discRectangleOverlap_m2(centre, radius, {frame.faceOf(0, column.i), frame.faceOf(1, column.j)},
-                                    {frame.faceOf(0, column.i + 1), frame.faceOf(1, column.j + 1)});
+      forEachColumn([&](int i, int j, int n) {
+        const double gap = n < kKeptGaps ? kept[n] : columnGap(i, j, plane_z, direction);
+        if (gap > reach) return;
+        const double area = discRectangleOverlap_m2(centre, radius, {frame.faceOf(0, i), frame.faceOf(1, j)},
+                                                    {frame.faceOf(0, i + 1), frame.faceOf(1, j + 1)});
         covered += area;
-        weighted += area * column.gap_m;
-      }
+        weighted += area * gap;
+      });
     }
     rotor.coverage = std::min(covered / disc_area, 1.0);
     if (covered > 0.0) rotor.mean_gap_m = weighted / covered;
@@ -193,12 +198,12 @@ SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction
 
 double Environment::clearance_m(const Eigen::Vector3d& body_m) const {
   requireInside(body_m, "clearance");
-  return index_->distance().distance_m(body_m);
+  return distance_->distance_m(body_m);
 }
 
 double Environment::clearanceLowerBound_m(const Eigen::Vector3d& body_m) const {
   requireInside(body_m, "clearance");
-  return index_->distance().lowerBound_m(body_m);
+  return distance_->lowerBound_m(body_m);
 }
 
 std::optional<Violation> Environment::exactCylinderViolation(const Eigen::Vector3d& body_m) const {
@@ -206,7 +211,7 @@ std::optional<Violation> Environment::exactCylinderViolation(const Eigen::Vector
   const double top = body_m.z() + vehicle_.inflatedTop_m();
   std::optional<Violation> violation;
   anyColumnUnderCylinder(body_m, [&](int i, int j) {
-    const auto state = index_->columns().firstBlocking(i, j, bottom, top, index_->unknownBlocks());
+    const auto state = columns_->firstBlocking(i, j, bottom, top, index_->unknownBlocks());
     if (state)
       violation = Violation{0, body_m, *state == CellState::Occupied ? ViolationKind::Occupied : ViolationKind::Unknown};
     return state.has_value();
@@ -217,7 +222,7 @@ std::optional<Violation> Environment::exactCylinderViolation(const Eigen::Vector
 std::optional<Violation> Environment::stateViolation(const Eigen::Vector3d& body_m) const {
   if (!body_m.allFinite() || !contains(body_m)) return Violation{0, body_m, ViolationKind::OutsideMap};
   // Fast path: nothing blocked within the sphere around the inflated cylinder.
-  if (index_->distance().lowerBound_m(body_m) > bounding_sphere_m_) return std::nullopt;
+  if (distance_->lowerBound_m(body_m) > bounding_sphere_m_) return std::nullopt;
   // Second fast path: nothing blocking within the footprint's reach at the cylinder's heights.
   const GridFrame& frame = grid().frame();
   if (!footprint_.mayBlock(frame.indexOf(0, body_m.x()), frame.indexOf(1, body_m.y()),

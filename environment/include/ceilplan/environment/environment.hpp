@@ -168,6 +168,8 @@ class Environment {
                                             double step_m, bool fast_path) const;
 
   std::shared_ptr<const MapIndex> index_;
+  const ColumnIndex* columns_;    // the index's, reached without two indirections on every query
+  const DistanceField* distance_;
   VehicleGeometry vehicle_;
   EnvironmentOptions options_;
   FootprintMasks footprint_;
