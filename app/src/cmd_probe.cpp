@@ -1,12 +1,14 @@
 // `ceilplan probe`: what the planner and the energy model see at one body position.
 
 #include "command_registry.hpp"
+#include "map_options.hpp"
 #include "output.hpp"
 
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <nlohmann/json.hpp>
@@ -26,8 +28,7 @@ struct ProbeOptions {
   std::string at;
   std::string vehicle;
   std::string json;
-  bool unknown_free = false;
-  bool unknown_ceiling = false;
+  UnknownSpaceFlags unknown;
 };
 
 Eigen::Vector3d parsePoint(const std::string& text) {
@@ -57,18 +58,19 @@ void runProbe(const ProbeOptions& options) {
   const Eigen::Vector3d body = parsePoint(options.at);
   const VehicleGeometry vehicle =
       (options.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle)).geometry;
-  EnvironmentOptions environment_options;
-  environment_options.unknown_is_occupied = !options.unknown_free;
-  environment_options.unknown_is_surface = options.unknown_ceiling;
+  MapIndexOptions index_options;
+  index_options.unknown = options.unknown.value();
   const OccupancyMap map = OccupancyMap::load(options.map);
   Progress progress("indexing " + options.map);
-  const Environment environment(map, vehicle, environment_options, [&](double f) { progress.update(f); });
+  const Environment environment(MapIndex::build(map, index_options, [&](double f) { progress.update(f); }), vehicle);
   progress.finish();
+  const UnknownSpaceSummary& unknown = environment.index()->unknownSummary();
 
   const SurfaceGaps ceiling = environment.ceiling(body);
   const SurfaceGaps ground = environment.ground(body);
   const double clearance = environment.clearance_m(body);
   const std::optional<Violation> violation = environment.stateViolation(body);
+  const bool assumes_free = environment.assumesFree(body);
 
   std::printf("at: %.3f, %.3f, %.3f (vehicle %s)\n", body.x(), body.y(), body.z(), vehicle.name.c_str());
   std::printf("ceiling_gap_m: %s\nceiling_coverage: %.4f\nceiling_mean_gap_m: %s\n", text(ceiling.nearest_gap_m).c_str(),
@@ -77,6 +79,8 @@ void runProbe(const ProbeOptions& options) {
               ground.coverage, text(ground.mean_gap_m).c_str());
   std::printf("clearance_m: %s\nvalid: %s\n", text(clearance).c_str(), violation ? "false" : "true");
   if (violation) std::printf("violation: %s\n", violation->describe().c_str());
+  std::printf("unknown: %s\n", unknownSpaceLine(index_options.unknown, unknown).c_str());
+  std::printf("assumed_free: %s\n", assumes_free ? "true (the vehicle overlaps unknown space the policy assumed free)" : "false");
   for (std::size_t r = 0; r < vehicle.rotor_positions_m.size(); ++r)
     std::printf("rotor %zu: ceiling gap %s coverage %.4f | ground gap %s coverage %.4f\n", r,
                 text(ceiling.rotors[r].nearest_gap_m).c_str(), ceiling.rotors[r].coverage,
@@ -94,8 +98,9 @@ void runProbe(const ProbeOptions& options) {
       {"map", options.map},
       {"vehicle", options.vehicle.empty() ? std::string("built-in: ") + vehicle.name : options.vehicle},
       {"at", {body.x(), body.y(), body.z()}},
-      {"unknown_is_occupied", environment_options.unknown_is_occupied},
-      {"unknown_is_surface", environment_options.unknown_is_surface},
+      {"unknown", unknownSpaceJson(index_options.unknown, unknown)},
+      {"assumed_free", assumes_free},
+      {"point_assumed_free", environment.index()->isAssumedFree(body)},
       {"ceiling_gap_m", io::finiteOrNull(ceiling.nearest_gap_m)},
       {"ceiling_coverage", ceiling.coverage},
       {"ceiling_mean_gap_m", io::finiteOrNull(ceiling.mean_gap_m)},
@@ -116,8 +121,7 @@ const CommandRegistration registration(22, [](CLI::App& parent) {
   command->add_option("--at", options->at, "Body centre x,y,z in metres (map frame)")->required();
   command->add_option("--vehicle", options->vehicle, "Vehicle file (default: maps/vehicles/quad.yaml)");
   command->add_option("--json", options->json, "Also write the answer as JSON to this file");
-  command->add_flag("--unknown-free", options->unknown_free, "Treat unknown space as free for validity and clearance");
-  command->add_flag("--unknown-ceiling", options->unknown_ceiling, "Treat unknown space as a surface for the gaps");
+  options->unknown.addTo(*command);
   command->callback([options] { runProbe(*options); });
 });
 
