@@ -54,7 +54,7 @@ void runTour(TourArguments a) {
   if (a.mode.empty())
     a.mode = (mission.mode == "ceiling" || mission.mode == "free" || mission.mode == "both") ? mission.mode : "ceiling";
   a.options.seed = a.seed ? *a.seed : mission.seed;
-  if (a.options.planner != "lattice" && a.options.planner != "roadmap") {
+  if (!planner::plannerInfo(a.options.planner).deterministic()) {
     // OMPL's generators are seeded once per process from the tour seed; the queries draw from
     // them in scheduling order and stop at a wall-clock limit, so legs are not bit-reproducible.
     if (a.options.seed == 0 || a.options.seed > 0xffffffffULL)
@@ -106,18 +106,20 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
       ->check(CLI::IsMember({"ceiling", "free", "both"}));
   command->add_option("--seed", a->seed, "seed of the order heuristic (default: the mission's)")
       ->check(CLI::Range(1u, 4294967295u));
-  std::vector<std::string> leg_planners{"roadmap"};
-  leg_planners.insert(leg_planners.end(), planner::plannerNames().begin(), planner::plannerNames().end());
   command->add_option("--planner", a->options.planner,
-                      "leg planner: roadmap (one lattice roadmap for all legs, deterministic), or a planner searching "
-                      "each pair of places (OMPL's, or lattice A*; slow on large maps)")
+                      "leg planner: " + planner::defaultTourPlannerName() +
+                          " (one lattice roadmap for all legs, deterministic), or a planner searching each pair of "
+                          "places (OMPL's, or the lattice A*; slow on large maps)")
       ->capture_default_str()
-      ->check(CLI::IsMember(leg_planners));
+      ->check(CLI::IsMember(planner::plannerNames()));
   command->add_option("--time-limit-s", a->options.time_limit_s,
                       "pairwise planners: search time per leg (refinement may take as long again)")
       ->capture_default_str()->check(positiveFinite());
-  command->add_option("--lattice-stride", a->options.lattice_stride, "roadmap and lattice: node spacing in voxels")
-      ->capture_default_str()->check(CLI::Range(1, 16));
+  command->add_option("--lattice-spacing-m", a->options.lattice_spacing_m, "roadmap and lattice: node spacing")
+      ->capture_default_str()->check(CLI::Range(0.01, 2.0));
+  command->add_option("--lattice-stride", a->options.lattice_stride,
+                      "roadmap and lattice: node spacing in voxels of the map instead (to be retired)")
+      ->check(CLI::Range(1, 16));
   command->add_option("--workers", a->options.workers, "threads planning legs")->capture_default_str()->check(CLI::Range(1, 64));
   command->add_option("--ageing-model", a->options.ageing_model, "the sortie split minimises this model's wear")
       ->capture_default_str()

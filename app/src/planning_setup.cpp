@@ -63,8 +63,8 @@ void addSearchOptions(CLI::App* command, SearchArguments& a) {
   command->add_option("--band-fraction", a.band_fraction, "share of samples aimed under ceilings")
       ->capture_default_str()->check(CLI::Range(0.0, 1.0));
   command->add_flag("--no-refine", a.no_refine, "skip shortcutting and NLopt refinement");
-  command->add_option("--lattice-stride", a.lattice_stride, "lattice planner: spacing in voxels")
-      ->capture_default_str()->check(CLI::Range(1, 16));
+  command->add_option("--lattice-spacing-m", a.lattice_spacing_m, "lattice and roadmap planners: node spacing")
+      ->capture_default_str()->check(CLI::Range(0.01, 2.0));
 }
 
 planner::PlanRequest SearchArguments::request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const {
@@ -75,7 +75,7 @@ planner::PlanRequest SearchArguments::request(const Eigen::Vector3d& start_m, co
   request.time_limit_s = time_limit_s;
   request.band_fraction = band_fraction;
   request.refine = !no_refine;
-  request.lattice.stride_voxels = lattice_stride;
+  request.lattice.spacing_m = lattice_spacing_m;
   return request;
 }
 

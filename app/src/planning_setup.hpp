@@ -48,7 +48,7 @@ struct SearchArguments {
   std::uint32_t seed = 1;
   double band_fraction = 0.0;  // uniform by default: the band did not help BIT* in the study (docs/planner.md)
   bool no_refine = false;
-  int lattice_stride = 2;
+  double lattice_spacing_m = 0.2;  // the lattice planners' node spacing
 
   planner::PlanRequest request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
   std::string plannerName() const;

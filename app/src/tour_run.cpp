@@ -119,9 +119,6 @@ battery::DutyResult projectDuty(const TourResult& tour, const mission::SortieBat
   return battery::simulateDuty(battery.pack, duty, duty_options);
 }
 
-// The leg planner that searches one roadmap from each place (docs/tours.md).
-const std::string kRoadmapPlanner = "roadmap";
-
 // Refinement of roadmap legs stops at its evaluation budget; this time limit only guards
 // against a pathological case, so refined legs do not depend on the machine's speed.
 constexpr double kRefinementTimeGuardS = 30.0;
@@ -135,6 +132,15 @@ struct LegPlanner {
   std::unique_ptr<planner::FlightPlanner> planner;
 };
 
+planner::LatticeSettings latticeSettings(const PlanningSetup& setup, const TourOptions& options) {
+  planner::LatticeSettings settings;
+  settings.spacing_m = options.lattice_stride > 0
+                           ? options.lattice_stride * setup.environment().grid().frame().resolution_m()
+                           : options.lattice_spacing_m;
+  settings.workers = options.workers;
+  return settings;
+}
+
 LegPlanner legPlanner(const PlanningSetup& setup, PlanningMode mode, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   LegPlanner leg{setup.mode(mode, a, b), nullptr};
   leg.planner = std::make_unique<planner::FlightPlanner>(*leg.planning.rules, *leg.planning.model, setup.objective(a, b));
@@ -143,8 +149,8 @@ LegPlanner legPlanner(const PlanningSetup& setup, PlanningMode mode, const Eigen
 
 // One search between two places with a pairwise planner (OMPL's or the lattice A*), the path
 // post-processed.
-std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner& leg, const TourOptions& options,
-                                       int from, int to) {
+std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const PlanningSetup& setup, const LegPlanner& leg,
+                                       const TourOptions& options, int from, int to) {
   const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
   planner::PlanRequest request;
   request.start_m = a;
@@ -152,7 +158,8 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
   request.planner = options.planner;
   request.time_limit_s = options.time_limit_s;
   request.refinement.time_limit_s = options.time_limit_s;
-  request.lattice.stride_voxels = options.lattice_stride;
+  request.lattice = latticeSettings(setup, options);
+  request.lattice.workers = 1;
   // A clear straight line needs no search: the refinement bends it where that saves charge
   // (up towards a ceiling), and the dense re-check still applies.
   if (options.straight_when_clear && leg.planning.rules->isMotionValid(a, b)) {
@@ -161,7 +168,8 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
   }
   // An anytime planner may miss a narrow passage in a short search: search again, longer.
   std::string failures;
-  const int attempts = options.planner == "lattice" ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
+  const int attempts =
+      planner::plannerInfo(options.planner).deterministic() ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
   for (int attempt = 0; attempt < attempts; ++attempt) {
     if (attempt > 0) request.time_limit_s = kRetryTimeFactors[attempt - 1] * options.time_limit_s;
     try {
@@ -186,11 +194,10 @@ TourLegs roadmapLegs(const TourResult& tour, const PlanningSetup& setup, Plannin
   const planner::SafetyRules& rules = *roadmap_planner.planning.rules;
   const planner::FlightObjective& objective = roadmap_planner.planner->objective();
   Progress build_progress(tour.mode + " mode: building the roadmap");
-  planner::RoadmapOptions roadmap_options;
-  roadmap_options.stride_voxels = options.lattice_stride;
-  roadmap_options.workers = options.workers;
-  roadmap_options.progress = [&](double share) { build_progress.update(share); };
-  const planner::LatticeRoadmap roadmap(rules, objective, tour.places_m, roadmap_options);
+  planner::LatticeSettings settings = latticeSettings(setup, options);
+  settings.progress = [&](double share) { build_progress.update(share); };
+  planner::LatticeRoadmap roadmap(roadmap_planner.planner->spaceInformation(), settings);
+  roadmap.build(objective, tour.places_m);
   build_progress.finish();
 
   const int places = static_cast<int>(tour.places_m.size());
@@ -208,8 +215,8 @@ TourLegs roadmapLegs(const TourResult& tour, const PlanningSetup& setup, Plannin
         best = std::vector<Eigen::Vector3d>{a, b};
       if (!best)
         throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] +
-                          " on the roadmap (every " + std::to_string(options.lattice_stride) +
-                          " voxels); if one exists through a narrower gap, try a smaller --lattice-stride");
+                          " on the roadmap (nodes every " + formatNumber(settings.spacing_m) +
+                          " m); if one exists through a narrower gap, try a smaller --lattice-spacing-m");
       paths[to] = std::move(*best);
     }
     return paths;
@@ -296,12 +303,14 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
   };
   const int places = static_cast<int>(tour.places_m.size());
   planner::RefinementOptions refinement;
-  if (options.planner == kRoadmapPlanner) {
+  if (planner::plannerInfo(options.planner).multiQuery()) {
     tour.legs = roadmapLegs(tour, setup, mode, options, score);
     refinement.time_limit_s = kRefinementTimeGuardS;
   } else {
     refinement.time_limit_s = options.time_limit_s;
-    const PairPlanner plan_pair = [&](int from, int to) { return searchLeg(tour, legPlannerFor(from, to), options, from, to); };
+    const PairPlanner plan_pair = [&](int from, int to) {
+      return searchLeg(tour, setup, legPlannerFor(from, to), options, from, to);
+    };
     Progress progress(tour.mode + " mode: planning legs");
     tour.legs = planLegsByPair(places, plan_pair, score, options.workers, progress);
   }

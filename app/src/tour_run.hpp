@@ -11,6 +11,7 @@
 #include "ceilplan/mission/sortie_plan.hpp"
 #include "ceilplan/mission/tour_order.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
+#include "ceilplan/planner/planner_factory.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <cstdint>
@@ -21,11 +22,12 @@ namespace ceilplan::app {
 
 struct TourOptions {
   std::uint64_t seed = 1;               // the order heuristic's; OMPL's when an OMPL planner plans the legs
-  // The leg planner: "roadmap" (the default) searches one lattice roadmap from each place,
-  // deterministic; OMPL's planners and "lattice" (A*) search each pair of places.
-  std::string planner = "roadmap";
+  // The leg planner: the roadmap (the default) searches one lattice roadmap from each place,
+  // deterministic; the other planners search each pair of places.
+  std::string planner = planner::defaultTourPlannerName();
   double time_limit_s = 0.5;            // pairwise planners: search time per leg, and as much again for refinement
-  int lattice_stride = 4;               // roadmap and lattice: voxels between lattice nodes
+  double lattice_spacing_m = 0.4;       // roadmap and lattice: between lattice nodes
+  int lattice_stride = 0;               // when > 0, the spacing in voxels of the map instead (to be retired)
   bool straight_when_clear = true;      // a pair joined by a valid straight motion skips the search
   std::string ageing_model = "xu";      // the split minimises this model's wear
   double free_standoff_max_m = 3.0;     // free mode: farthest viewpoint (a conventional planner zooms)

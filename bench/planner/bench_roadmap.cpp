@@ -41,10 +41,18 @@ struct BridgeRoadmap {
   }
 };
 
+// The tour's settings: 0.4 m, two threads.
+planner::LatticeSettings tourSettings() {
+  planner::LatticeSettings settings;
+  settings.workers = 2;
+  return settings;
+}
+
 void roadmapBuild(benchmark::State& state, app::PlanningMode planning_mode) {
   BridgeRoadmap bridge(planning_mode);
   for (auto _ : state) {
-    const planner::LatticeRoadmap roadmap(*bridge.mode.rules, bridge.planner->objective(), bridge.places);
+    planner::LatticeRoadmap roadmap(bridge.planner->spaceInformation(), tourSettings());
+    roadmap.build(bridge.planner->objective(), bridge.places);
     state.counters["nodes"] = static_cast<double>(roadmap.validNodeCount());
     state.counters["edges"] = static_cast<double>(roadmap.edgeCount());
     state.counters["MB"] = static_cast<double>(roadmap.memoryBytes()) / 1e6;
@@ -57,7 +65,8 @@ void roadmapBuild(benchmark::State& state, app::PlanningMode planning_mode) {
 
 void roadmapSearch(benchmark::State& state, app::PlanningMode planning_mode) {
   BridgeRoadmap bridge(planning_mode);
-  const planner::LatticeRoadmap roadmap(*bridge.mode.rules, bridge.planner->objective(), bridge.places);
+  planner::LatticeRoadmap roadmap(bridge.planner->spaceInformation(), tourSettings());
+  roadmap.build(bridge.planner->objective(), bridge.places);
   int from = 0;
   for (auto _ : state) {
     const auto routes = roadmap.routesFrom(from);

@@ -1,7 +1,12 @@
 #include "ceilplan/planner/lattice_planner.hpp"
+
 #include "ceilplan/core/error.hpp"
 
+#include "conditions_cache.hpp"
 #include "lattice_grid.hpp"
+#include "lattice_query.hpp"
+
+#include <ompl/base/PlannerData.h>
 
 #include <algorithm>
 #include <array>
@@ -9,69 +14,23 @@
 #include <cstdint>
 #include <limits>
 #include <queue>
-#include <stdexcept>
-#include <unordered_map>
 
 namespace ceilplan::planner {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// Map conditions at points of the cost model's sampling lattice near structure, computed once
-// each and stored compactly (2 numbers per rotor, 2 more); far from structure the model answers
-// without the map anyway.
-class ConditionsCache {
- public:
-  explicit ConditionsCache(const FlightCostModel& model)
-      : model_(model), inverse_step_(1.0 / model.step_m()), rotors_(model.energy().rotorCount()) {}
-
-  PointConditions operator()(const Eigen::Vector3d& point_m) {
-    const Eigen::Vector3d scaled = point_m * inverse_step_;
-    const Eigen::Vector3d rounded = scaled.array().round();
-    if ((scaled - rounded).cwiseAbs().maxCoeff() > 1e-6 || model_.farFromStructure(point_m))
-      return model_.conditionsAt(point_m);
-    const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::int64_t>(rounded.x()) & 0x1FFFFF) << 42) |
-                              (static_cast<std::uint64_t>(static_cast<std::int64_t>(rounded.y()) & 0x1FFFFF) << 21) |
-                              (static_cast<std::uint64_t>(static_cast<std::int64_t>(rounded.z()) & 0x1FFFFF));
-    const std::size_t width = 2 * rotors_ + 2;
-    const auto [found, inserted] = offsets_.try_emplace(key, values_.size());
-    if (inserted) {
-      const PointConditions conditions = model_.conditionsAt(point_m);
-      for (int r = 0; r < rotors_; ++r) {
-        values_.push_back(conditions.rotors[r].gap_m);
-        values_.push_back(conditions.rotors[r].coverage);
-      }
-      values_.push_back(conditions.ground_gap_m);
-      values_.push_back(conditions.nearest_ceiling_gap_m);
-      return conditions;
-    }
-    const double* v = values_.data() + found->second;
-    PointConditions conditions;
-    conditions.rotor_count = rotors_;
-    for (int r = 0; r < rotors_; ++r) conditions.rotors[r] = {v[2 * r], v[2 * r + 1]};
-    conditions.ground_gap_m = v[width - 2];
-    conditions.nearest_ceiling_gap_m = v[width - 1];
-    return conditions;
-  }
-
- private:
-  const FlightCostModel& model_;
-  double inverse_step_;
-  int rotors_;
-  std::unordered_map<std::uint64_t, std::size_t> offsets_;
-  std::vector<double> values_;
+struct SearchOutcome {
+  std::vector<Eigen::Vector3d> waypoints;  // empty: no path
+  double cost = kInfinity;
+  std::size_t expansions = 0;
+  bool stopped = false;
 };
 
-}  // namespace
-
-LatticePlanner::LatticePlanner(const SafetyRules& rules, const FlightObjective& objective, LatticeOptions options)
-    : rules_(rules), objective_(objective), options_(std::move(options)) {
-  if (options_.stride_voxels < 1) throw ceilplan::InputError("lattice stride must be at least 1 voxel");
-}
-
-std::optional<LatticeResult> LatticePlanner::plan(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) {
-  stopped_ = false;
-  const detail::LatticeGrid lattice(rules_.environment().grid().frame(), options_.stride_voxels);
+SearchOutcome latticeSearch(const SafetyRules& rules, const FlightObjective& objective, const LatticeSettings& settings,
+                            const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m,
+                            const ompl::base::PlannerTerminationCondition& ptc) {
+  const detail::LatticeGrid lattice(rules.environment().grid().frame(), settings.spacing_m);
   const detail::LatticeDirections directions;
   const std::size_t node_count = lattice.nodeCount();
 
@@ -87,13 +46,13 @@ std::optional<LatticeResult> LatticePlanner::plan(const Eigen::Vector3d& start_m
     return lattice.position(id);
   };
   const auto nodeValid = [&](std::size_t id) {
-    if (!(flags[id] & (kValid | kInvalid))) flags[id] |= rules_.isStateValid(nodeAt(id)) ? kValid : kInvalid;
+    if (!(flags[id] & (kValid | kInvalid))) flags[id] |= rules.isStateValid(nodeAt(id)) ? kValid : kInvalid;
     return (flags[id] & kValid) != 0;
   };
 
-  ConditionsCache conditions(objective_.model());
+  detail::ConditionsCache conditions(objective.model());
   const auto edgeCost = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    return objective_.weights().of(objective_.model().integrate(a, b, conditions));
+    return objective.weights().of(objective.model().integrate(a, b, conditions));
   };
 
   using Entry = std::pair<double, std::size_t>;  // (f, id)
@@ -102,31 +61,31 @@ std::optional<LatticeResult> LatticePlanner::plan(const Eigen::Vector3d& start_m
     if (g < cost_to[to]) {
       cost_to[to] = g;
       parent[to] = static_cast<std::uint32_t>(from);
-      open.emplace(g + objective_.heuristic(nodeAt(to), goal_m), to);
+      open.emplace(g + objective.heuristic(nodeAt(to), goal_m), to);
     }
   };
   std::vector<char> joins_goal(node_count, 0);
   lattice.forEachNodeNear(goal_m, [&](std::size_t id) {
-    if (nodeValid(id) && rules_.isMotionValid(nodeAt(id), goal_m)) joins_goal[id] = 1;
+    if (nodeValid(id) && rules.isMotionValid(nodeAt(id), goal_m)) joins_goal[id] = 1;
   });
 
   cost_to[start_id] = 0.0;
-  if (rules_.isMotionValid(start_m, goal_m)) relax(start_id, goal_id, edgeCost(start_m, goal_m));
+  if (rules.isMotionValid(start_m, goal_m)) relax(start_id, goal_id, edgeCost(start_m, goal_m));
   lattice.forEachNodeNear(start_m, [&](std::size_t id) {
-    if (nodeValid(id) && rules_.isMotionValid(start_m, nodeAt(id))) relax(start_id, id, edgeCost(start_m, nodeAt(id)));
+    if (nodeValid(id) && rules.isMotionValid(start_m, nodeAt(id))) relax(start_id, id, edgeCost(start_m, nodeAt(id)));
   });
 
-  std::size_t expansions = 0;
+  SearchOutcome outcome;
+  std::size_t& expansions = outcome.expansions;
   while (!open.empty()) {
     const auto [f, id] = open.top();
     open.pop();
     if (id == goal_id) break;
     if (flags[id] & kClosed) continue;
     flags[id] |= kClosed;
-    if (++expansions > options_.max_expansions ||
-        (options_.should_stop && expansions % 4096 == 0 && options_.should_stop())) {
-      stopped_ = true;
-      return std::nullopt;
+    if (++expansions > settings.max_expansions || (expansions % 4096 == 0 && ptc())) {
+      outcome.stopped = true;
+      return outcome;
     }
     const Eigen::Vector3d here = nodeAt(id);
     const double g = cost_to[id];
@@ -139,19 +98,68 @@ std::optional<LatticeResult> LatticePlanner::plan(const Eigen::Vector3d& start_m
       if ((flags[next] & kClosed) || !nodeValid(next)) continue;
       const Eigen::Vector3d there = lattice.position(na, nb, nc);
       // The lower bound g + c_min d rules out most edges before any motion check.
-      if (g + objective_.heuristic(here, there) >= cost_to[next]) continue;
-      if (!rules_.isMotionValid(here, there)) continue;
+      if (g + objective.heuristic(here, there) >= cost_to[next]) continue;
+      if (!rules.isMotionValid(here, there)) continue;
       relax(id, next, g + edgeCost(here, there));
     }
   }
-  if (!std::isfinite(cost_to[goal_id])) return std::nullopt;
-  LatticeResult result;
-  result.cost = cost_to[goal_id];
-  result.expansions = expansions;
-  for (std::size_t id = goal_id; id != start_id; id = parent[id]) result.waypoints.push_back(nodeAt(id));
-  result.waypoints.push_back(start_m);
-  std::reverse(result.waypoints.begin(), result.waypoints.end());
-  return result;
+  if (!std::isfinite(cost_to[goal_id])) return outcome;
+  outcome.cost = cost_to[goal_id];
+  for (std::size_t id = goal_id; id != start_id; id = parent[id]) outcome.waypoints.push_back(nodeAt(id));
+  outcome.waypoints.push_back(start_m);
+  std::reverse(outcome.waypoints.begin(), outcome.waypoints.end());
+  return outcome;
+}
+
+}  // namespace
+
+void LatticeSettings::validate() const {
+  if (!(std::isfinite(spacing_m) && spacing_m > 0.0))
+    throw ceilplan::InputError("lattice spacing must be a positive number of metres");
+  if (workers < 1) throw ceilplan::InputError("the lattice planners need at least one worker thread");
+}
+
+LatticePlanner::LatticePlanner(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings)
+    : ompl::base::Planner(si, "lattice"), settings_(std::move(settings)), best_cost_(kInfinity) {
+  settings_.validate();
+  specs_.optimizingPaths = true;
+  specs_.directed = true;
+  declareParam<double>("spacing_m", this, &LatticePlanner::setSpacing, &LatticePlanner::getSpacing, "0.01:0.01:2.0");
+  addPlannerProgressProperty("best cost REAL", [this] { return std::to_string(best_cost_.load()); });
+}
+
+void LatticePlanner::setSpacing(double spacing_m) {
+  LatticeSettings settings = settings_;
+  settings.spacing_m = spacing_m;
+  settings.validate();
+  settings_ = settings;
+}
+
+void LatticePlanner::clear() {
+  ompl::base::Planner::clear();
+  expansions_ = 0;
+  best_cost_ = kInfinity;
+}
+
+ompl::base::PlannerStatus LatticePlanner::solve(const ompl::base::PlannerTerminationCondition& ptc) {
+  checkValidity();
+  const SafetyRules& rules = detail::rulesOf(*si_, getName());
+  const FlightObjective& objective = detail::objectiveOf(*pdef_, getName());
+  ompl::base::PlannerStatus failure;
+  const std::optional<detail::LatticeQuery> query = detail::readQuery(*pdef_, failure);
+  if (!query) return failure;
+  const SearchOutcome outcome = latticeSearch(rules, objective, settings_, query->start_m, query->goal_m, ptc);
+  expansions_ = outcome.expansions;
+  if (outcome.stopped) return ompl::base::PlannerStatus::TIMEOUT;
+  if (outcome.waypoints.empty()) return ompl::base::PlannerStatus::ABORT;
+  best_cost_ = outcome.cost;
+  detail::addSolution(*this, outcome.waypoints, outcome.cost);
+  return ompl::base::PlannerStatus::EXACT_SOLUTION;
+}
+
+void LatticePlanner::getPlannerData(ompl::base::PlannerData& data) const {
+  ompl::base::Planner::getPlannerData(data);
+  data.properties["expansions INTEGER"] = std::to_string(expansions_);
 }
 
 }  // namespace ceilplan::planner

@@ -8,7 +8,12 @@
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
+#include "ceilplan/planner/ompl_state.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
+
+#include <ompl/base/Planner.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/geometric/PathGeometric.h>
 
 #include <functional>
 #include <memory>
@@ -56,5 +61,34 @@ struct CeilingScene {
   planner::FlightCostModel model{environment, energy, planner::CostModelOptions{}};
   planner::FlightPlanner planner{rules, model, planner::ObjectiveChoice{}};
 };
+
+// What an OMPL planner returned for one query.
+struct Solved {
+  ompl::base::PlannerStatus status;
+  std::vector<Eigen::Vector3d> waypoints;  // empty without an exact solution
+  double cost = 0.0;                       // as the planner reported it
+};
+
+// Runs `planner` (made on `flight_planner`'s space) on one query under its objective.
+inline Solved solveOnce(ompl::base::Planner& planner, const planner::FlightPlanner& flight_planner,
+                        const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m, double time_limit_s = 120.0) {
+  const ompl::base::SpaceInformationPtr& si = flight_planner.spaceInformation();
+  auto definition = std::make_shared<ompl::base::ProblemDefinition>(si);
+  ompl::base::ScopedState<> start(si), goal(si);
+  planner::setPosition(start.get(), start_m);
+  planner::setPosition(goal.get(), goal_m);
+  definition->setStartAndGoalStates(start, goal, 1e-6);
+  definition->setOptimizationObjective(flight_planner.objectivePtr());
+  planner.setProblemDefinition(definition);
+  Solved solved{planner.solve(time_limit_s), {}, 0.0};
+  if (solved.status == ompl::base::PlannerStatus::EXACT_SOLUTION) {
+    for (const ompl::base::State* s : definition->getSolutionPath()->as<ompl::geometric::PathGeometric>()->getStates())
+      solved.waypoints.push_back(planner::toPosition(s));
+    ompl::base::PlannerSolution solution(nullptr);
+    definition->getSolution(solution);
+    solved.cost = solution.cost_.value();
+  }
+  return solved;
+}
 
 }  // namespace ceilplan::testing
