@@ -1,5 +1,6 @@
 #include "ceilplan/planner/flight_planner.hpp"
 
+#include "ceilplan/planner/blockage.hpp"
 #include "ceilplan/planner/ceiling_band_sampler.hpp"
 #include "ceilplan/planner/motion_validator.hpp"
 #include "ceilplan/planner/ompl_state.hpp"
@@ -125,7 +126,10 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
     if (status == ompl::base::PlannerStatus::TIMEOUT)
       throw ceilplan::NoPathError("the " + result.planner + " search ran out of time (" + limit +
                                   "); raise --time-limit-s or the lattice spacing");
-    throw ceilplan::NoPathError("no collision-free route joins start and goal on the " + result.planner);
+    const auto* reporter = dynamic_cast<const BlockageReporter*>(planner.get());
+    const std::optional<Blockage> blockage = reporter ? reporter->lastBlockage() : std::nullopt;
+    throw ceilplan::NoPathError("no collision-free route joins start and goal (" + result.planner + ")" +
+                                (blockage ? ": " + blockage->describe() : std::string()));
   }
   const auto path = definition->getSolutionPath()->as<ompl::geometric::PathGeometric>();
   for (const ompl::base::State* state : path->getStates()) result.waypoints.push_back(toPosition(state));

@@ -3,6 +3,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/parallel_for.hpp"
 
+#include "lattice_bridge.hpp"
 #include "lattice_grid.hpp"
 #include "lattice_query.hpp"
 
@@ -25,21 +26,6 @@ constexpr int kFirstForwardDirection = 13;
 
 std::array<int, 3> neighbour(const std::array<int, 3>& at, const std::array<int, 3>& offset) {
   return {at[0] + offset[0], at[1] + offset[1], at[2] + offset[2]};
-}
-
-// Drops repeated points and the inner points of straight runs.
-std::vector<Eigen::Vector3d> turningPoints(const std::vector<Eigen::Vector3d>& points) {
-  std::vector<Eigen::Vector3d> result;
-  for (const Eigen::Vector3d& p : points) {
-    if (!result.empty() && (p - result.back()).norm() < 1e-9) continue;
-    if (result.size() >= 2) {
-      const Eigen::Vector3d a = result[result.size() - 1] - result[result.size() - 2];
-      const Eigen::Vector3d b = p - result.back();
-      if (a.cross(b).norm() <= 1e-9 * a.norm() * b.norm() && a.dot(b) > 0.0) result.pop_back();
-    }
-    result.push_back(p);
-  }
-  return result;
 }
 
 }  // namespace
@@ -358,7 +344,7 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     for (std::uint32_t s = parent[state]; s != kStart; s = parent[s]) backwards.push_back(lattice.position(nodeOf(s)));
     backwards.push_back(places_m[from]);
     RoadmapRoute route;
-    route.waypoints = turningPoints({backwards.rbegin(), backwards.rend()});
+    route.waypoints = detail::turningPoints({backwards.rbegin(), backwards.rend()});
     route.cost = cost_to[state];
     routes[goal] = std::move(route);
   }

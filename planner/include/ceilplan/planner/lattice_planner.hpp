@@ -5,24 +5,31 @@
 // cached) and the admissible, consistent heuristic c_min x distance, under the space's
 // validity checker (FlightStateValidityChecker). Optimal over the lattice; the quality oracle.
 // Start and goal join the lattice nodes within sqrt(3) spacings.
+//
+// Where the lattice misses a passage, it refines: between the regions the start and the goal
+// reach on the lattice it searches a fine lattice (half a voxel) around their closest points,
+// and plans again with that passage as one more edge (the route is then the cheapest through
+// it). When there is none, blockage() says where and by which rule the way is blocked.
 
+#include "ceilplan/planner/blockage.hpp"
 #include "ceilplan/planner/lattice_settings.hpp"
 
 #include <ompl/base/Planner.h>
 
 #include <atomic>
 #include <cstddef>
+#include <optional>
 
 namespace ceilplan::planner {
 
-class LatticePlanner : public ompl::base::Planner {
+class LatticePlanner : public ompl::base::Planner, public BlockageReporter {
  public:
   // Throws ceilplan::InputError for bad settings.
   explicit LatticePlanner(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings = {});
 
   // Needs a FlightObjective, a FlightStateValidityChecker and a GoalState. EXACT_SOLUTION with
   // the cheapest lattice path; TIMEOUT when `ptc` or the expansion limit stopped the search;
-  // ABORT when no lattice path exists.
+  // ABORT when no path exists on the lattice and its refinement (then blockage() is set).
   ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition& ptc) override;
   using ompl::base::Planner::solve;
   void clear() override;
@@ -32,11 +39,14 @@ class LatticePlanner : public ompl::base::Planner {
   void setSpacing(double spacing_m);
   double getSpacing() const { return settings_.spacing_m; }
   std::size_t expansions() const { return expansions_; }
+  // After an ABORT: where the most open gap between the start's and the goal's regions is blocked.
+  std::optional<Blockage> lastBlockage() const override { return blockage_; }
 
  private:
   LatticeSettings settings_;
   std::size_t expansions_ = 0;
   std::atomic<double> best_cost_;
+  std::optional<Blockage> blockage_;
 };
 
 }  // namespace ceilplan::planner

@@ -1,0 +1,139 @@
+// Complete where the map is passable: a doorway the coarse lattice misses is found by refining
+// near it, and where there is no way through, the error names the gap and the rule that
+// blocks it.
+
+#include "planner_fixtures.hpp"
+
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/planner/lattice_planner.hpp"
+#include "ceilplan/planner/planner_factory.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace ceilplan::testing {
+namespace {
+
+// Two rooms at 0.1 m, floor top 0.2 m, ceiling 2.4 m, joined through a 0.2 m wall at x [0, 0.2)
+// by a doorway from y_lo to y_hi, floor to ceiling; `door` says what fills the doorway's
+// voxels (Free: open).
+environment::OccupancyMap twoRooms(double y_lo, double y_hi, CellState door = CellState::Free) {
+  return analyticMap({-2.0, -2.0, 0.0}, {2.2, 2.0, 2.8}, 0.1, [=](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || c.z() > 2.4) return CellState::Occupied;
+    if (c.x() > 0.0 && c.x() < 0.2) return c.y() > y_lo && c.y() < y_hi ? door : CellState::Occupied;
+    return CellState::Free;
+  });
+}
+
+const Eigen::Vector3d kStart(-1.2, -1.0, 1.2), kGoal(1.4, 1.0, 1.2);
+
+// The vehicle with its margins is 0.92 m wide (quad.yaml: 0.36 m radius, 0.10 m margin).
+constexpr double kVehicleWidthM = 0.92;
+
+// Whether a node of the default 0.4 m lattice in the wall's slab is valid: without one, the
+// coarse lattice alone cannot pass.
+bool coarseLatticeHasANodeInTheDoorway(const planner::SafetyRules& rules) {
+  const environment::GridFrame& frame = rules.environment().grid().frame();
+  for (int k = 0; k < frame.size()[2]; k += 4)
+    for (int j = 0; j < frame.size()[1]; j += 4)
+      for (int i = 0; i < frame.size()[0]; i += 4) {
+        const Eigen::Vector3d p(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k));
+        if (std::abs(p.x() - 0.1) < 0.1 && rules.isStateValid(p)) return true;
+      }
+  return false;
+}
+
+class DoorwayOneVoxelWiderThanTheVehicle : public ::testing::TestWithParam<double> {};
+
+// Doorways 1.0 m (the vehicle's width rounded up to whole voxels: 8 cm to spare) and 1.1 m
+// (one voxel more) wide, placed so that no node of the 0.4 m lattice fits in them.
+TEST_P(DoorwayOneVoxelWiderThanTheVehicle, TheLatticePlannerFindsTheWayThrough) {
+  const double width_m = GetParam();
+  const CeilingScene scene(twoRooms(0.4, 0.4 + width_m));
+  ASSERT_FALSE(coarseLatticeHasANodeInTheDoorway(scene.rules));
+  planner::LatticePlanner lattice(scene.planner.spaceInformation());  // 0.4 m, the tour's spacing
+  const Solved solved = solveOnce(lattice, scene.planner, kStart, kGoal);
+  ASSERT_EQ(solved.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
+  EXPECT_FALSE(scene.rules.checkPathDensely(solved.waypoints));
+  EXPECT_NEAR(scene.planner.objective().pathCost(solved.waypoints), solved.cost, 1e-6 * solved.cost);
+  bool through_the_doorway = false;
+  for (std::size_t k = 1; k < solved.waypoints.size(); ++k) {
+    const Eigen::Vector3d &a = solved.waypoints[k - 1], &b = solved.waypoints[k];
+    if (a.x() < 0.1 && b.x() >= 0.1) {
+      const Eigen::Vector3d crossing = a + (b - a) * ((0.1 - a.x()) / (b.x() - a.x()));
+      through_the_doorway = crossing.y() > 0.4 && crossing.y() < 0.4 + width_m;
+    }
+  }
+  EXPECT_TRUE(through_the_doorway);
+  // And through FlightPlanner, post-processed and re-checked, as `ceilplan plan` runs it.
+  planner::PlanRequest request;
+  request.start_m = kStart;
+  request.goal_m = kGoal;
+  request.planner = planner::referencePlannerName();
+  request.lattice.spacing_m = 0.4;
+  request.time_limit_s = 120.0;
+  const planner::PlanResult plan = scene.planner.plan(request);
+  EXPECT_FALSE(scene.rules.checkPathDensely(plan.waypoints));
+}
+
+INSTANTIATE_TEST_SUITE_P(Widths, DoorwayOneVoxelWiderThanTheVehicle, ::testing::Values(1.0, 1.1));
+
+TEST(NoPath, TheErrorNamesTheGapTooNarrowForTheVehicle) {
+  const CeilingScene scene(twoRooms(0.3, 1.1));  // 0.8 m wide
+  planner::LatticePlanner lattice(scene.planner.spaceInformation());
+  ASSERT_EQ(solveOnce(lattice, scene.planner, kStart, kGoal).status, ompl::base::PlannerStatus::ABORT);
+  const std::optional<planner::Blockage> blockage = lattice.lastBlockage();
+  ASSERT_TRUE(blockage);
+  EXPECT_EQ(blockage->rule, planner::BlockingRule::Clearance);
+  // The middle of the doorway: in the wall, halfway across it and up it.
+  EXPECT_NEAR(blockage->position_m.x(), 0.1, 0.1) << blockage->describe();
+  EXPECT_NEAR(blockage->position_m.y(), 0.7, 0.01) << blockage->describe();
+  EXPECT_NEAR(blockage->position_m.z(), 1.3, 0.01) << blockage->describe();
+  EXPECT_NEAR(blockage->width_m, 0.8, 0.005) << blockage->describe();
+  EXPECT_NEAR(blockage->needed_width_m, kVehicleWidthM, 1e-9);
+
+  planner::PlanRequest request;
+  request.start_m = kStart;
+  request.goal_m = kGoal;
+  request.planner = planner::referencePlannerName();
+  try {
+    scene.planner.plan(request);
+    FAIL() << "expected no path";
+  } catch (const ceilplan::NoPathError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("by the vehicle's clearance: the opening there is 0.80 m wide and 2.20 m high"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("the vehicle needs 0.92 x 0.30 m with its margins"), std::string::npos) << message;
+    EXPECT_EQ(message.find("stride"), std::string::npos) << message;
+  }
+}
+
+TEST(NoPath, TheErrorNamesUnknownSpaceWhenItFillsTheGap) {
+  const CeilingScene scene(twoRooms(0.3, 1.5, CellState::Unknown));  // wide enough, but never scanned
+  planner::LatticePlanner lattice(scene.planner.spaceInformation());
+  ASSERT_EQ(solveOnce(lattice, scene.planner, kStart, kGoal).status, ompl::base::PlannerStatus::ABORT);
+  const std::optional<planner::Blockage> blockage = lattice.lastBlockage();
+  ASSERT_TRUE(blockage);
+  EXPECT_EQ(blockage->rule, planner::BlockingRule::Unknown) << blockage->describe();
+  EXPECT_NEAR(blockage->position_m.x(), 0.1, 0.1) << blockage->describe();
+  EXPECT_GT(blockage->position_m.y(), 0.3) << blockage->describe();
+  EXPECT_LT(blockage->position_m.y(), 1.5) << blockage->describe();
+  EXPECT_NE(blockage->describe().find("by unknown space"), std::string::npos) << blockage->describe();
+}
+
+TEST(NoPath, TheErrorNamesTheMapsEdgeWhenTheWayWouldLeaveTheMap) {
+  // The wall's doorway is a notch 0.6 m wide at the map's edge (y up to 2.0): open beyond,
+  // but there the map ends.
+  const CeilingScene scene(twoRooms(1.4, 2.5));
+  planner::LatticePlanner lattice(scene.planner.spaceInformation());
+  ASSERT_EQ(solveOnce(lattice, scene.planner, kStart, kGoal).status, ompl::base::PlannerStatus::ABORT);
+  const std::optional<planner::Blockage> blockage = lattice.lastBlockage();
+  ASSERT_TRUE(blockage);
+  EXPECT_EQ(blockage->rule, planner::BlockingRule::MapEdge) << blockage->describe();
+  EXPECT_NEAR(blockage->position_m.x(), 0.1, 0.1) << blockage->describe();
+  EXPECT_GT(blockage->position_m.y(), 1.4) << blockage->describe();
+}
+
+}  // namespace
+}  // namespace ceilplan::testing
