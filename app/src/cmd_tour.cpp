@@ -65,7 +65,6 @@ void runTour(TourArguments a) {
   planning.standoff_m = a.standoff_m;
   const PlanningSetup setup(planning);
   const std::vector<PlanningMode> modes = modesToRun(a.mode);
-  if (a.mode != "ceiling") setup.standoffEnvironment();  // built before threads share the setup
 
   std::printf("tour of %s: %zu targets, mode %s, planner %s, seed %llu, split for least %s wear\n",
               mission.file.c_str(), mission.targets.size(), a.mode.c_str(), a.options.planner.c_str(),
@@ -124,7 +123,8 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
   command->add_option("--ageing-model", a->options.ageing_model, "the sortie split minimises this model's wear")
       ->capture_default_str()
       ->check(CLI::IsMember(battery::ageingModelNames()));
-  command->add_option("--standoff-m", a->standoff_m, "free mode: conventional distance kept from every structure")
+  command->add_option("--standoff-m", a->standoff_m,
+                      "free mode: the conventional distance from every structure, kept where it fits")
       ->capture_default_str()->check(nonNegativeFinite());
   command->add_option("--free-standoff-max-m", a->options.free_standoff_max_m,
                       "free mode: farthest viewpoint from a target (a conventional planner inspects from where its "

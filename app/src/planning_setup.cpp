@@ -49,7 +49,7 @@ void addPlanningOptions(CLI::App* command, PlanningArguments& a, bool with_objec
       ->capture_default_str()->check(positiveFinite());
   command->add_option("--min-ceiling-gap-m", a.min_ceiling_gap_m, "rotor plane to ceiling, never less")
       ->capture_default_str()->check(nonNegativeFinite());
-  command->add_option("--standoff-m", a.standoff_m, "free mode: distance kept from every structure")
+  command->add_option("--standoff-m", a.standoff_m, "free mode: the conventional distance from every structure, kept where it fits")
       ->capture_default_str()->check(nonNegativeFinite());
   command->add_option("--temperature-c", a.temperature_c, "cell temperature for the ageing model")
       ->capture_default_str()->check(CLI::Range(-40.0, 80.0));
@@ -168,32 +168,16 @@ PlanningSetup::PlanningSetup(const PlanningArguments& arguments) : arguments_(ar
   base_rules_ = std::make_unique<planner::SafetyRules>(*environment_, arguments_.min_ceiling_gap_m);
 }
 
-PlanningSetup::Mode PlanningSetup::mode(PlanningMode mode, const Eigen::Vector3d& start_m,
-                                        const Eigen::Vector3d& goal_m) const {
+PlanningSetup::Mode PlanningSetup::mode(PlanningMode mode, const Eigen::Vector3d&, const Eigen::Vector3d&) const {
   Mode result;
   planner::CostModelOptions options = full_model_->options();
-  if (mode == PlanningMode::Ceiling) {
-    result.model = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, options);
-    result.rules = std::make_unique<planner::SafetyRules>(*environment_, arguments_.min_ceiling_gap_m);
-    return result;
+  if (mode == PlanningMode::Free) {
+    options.proximity_effects = false;
+    options.standoff_m = arguments_.standoff_m;
   }
-  options.proximity_effects = false;
   result.model = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, options);
-  const planner::StandoffZone zone =
-      planner::standoffZone(standoffEnvironment(), *environment_, arguments_.standoff_m, start_m, goal_m);
-  result.rules = std::make_unique<planner::SafetyRules>(*environment_, arguments_.min_ceiling_gap_m, zone);
+  result.rules = std::make_unique<planner::SafetyRules>(*environment_, arguments_.min_ceiling_gap_m);
   return result;
-}
-
-const environment::Environment& PlanningSetup::standoffEnvironment() const {
-  if (!standoff_environment_) {
-    Progress progress("indexing with the " + std::to_string(arguments_.standoff_m) + " m standoff");
-    standoff_environment_ = std::make_unique<environment::Environment>(
-        *map_, planner::withStandoff(environment_->vehicle(), arguments_.standoff_m), environment::EnvironmentOptions{},
-        [&](double f) { progress.update(f); });
-    progress.finish();
-  }
-  return *standoff_environment_;
 }
 
 planner::ObjectiveChoice PlanningSetup::objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const {

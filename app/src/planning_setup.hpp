@@ -1,7 +1,6 @@
 #pragma once
-// Everything a planning command needs, built from its flags: the map indexed for the vehicle
-// (and, in free mode, a second index with the conventional standoff), the energy model, the
-// battery, the cost models (planning and full) and the safety rules. Shared by plan, evaluate,
+// Everything a planning command needs, built from its flags: the map indexed for the vehicle,
+// the energy model, the battery, the cost models (planning and full) and the safety rules. Shared by plan, evaluate,
 // compare and bench-planners, which register the same flags through addPlanningOptions.
 
 #include "ceilplan/battery/pack.hpp"
@@ -33,7 +32,7 @@ struct PlanningArguments {
   double ageing_dod = 0.0;  // 0: the route's own (straight-line estimate, at least 1 %)
   planner::FlightSpeeds speeds;
   double min_ceiling_gap_m = 0.05;
-  double standoff_m = 1.0;
+  double standoff_m = 1.0;  // free mode: the conventional standoff, kept where it fits
   double temperature_c = 25.0;
 };
 
@@ -83,19 +82,17 @@ class PlanningSetup {
 
   // The full proximity model at the planning SOC: every reported figure comes from it.
   const planner::FlightCostModel& fullModel() const { return *full_model_; }
-  // Safety rules without standoff: what the dense re-check and `evaluate` apply.
+  // The safety rules of every mode: what the dense re-check and `evaluate` apply.
   const planner::SafetyRules& baseRules() const { return *base_rules_; }
 
-  // What one mode plans with. Free mode: proximity effects off in the cost and the standoff
-  // applied everywhere except near start and goal.
+  // What one mode plans with: the same safety rules in both; free mode's cost ignores
+  // proximity effects and prefers the conventional standoff (CostModelOptions::standoff_m).
+  // `start_m` and `goal_m` are no longer used (to be dropped).
   struct Mode {
     std::unique_ptr<planner::FlightCostModel> model;
     std::unique_ptr<planner::SafetyRules> rules;
   };
   Mode mode(PlanningMode mode, const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
-  // The map indexed with the conventional standoff as the vehicle's margins (free mode), built
-  // on first use; call it once before sharing the setup between threads.
-  const environment::Environment& standoffEnvironment() const;
 
   // The objective, with ageing rates measured for the route's expected depth of discharge.
   planner::ObjectiveChoice objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
@@ -105,7 +102,6 @@ class PlanningSetup {
   std::string vehicle_name_;
   std::unique_ptr<environment::OccupancyMap> map_;
   std::unique_ptr<environment::Environment> environment_;
-  mutable std::unique_ptr<environment::Environment> standoff_environment_;  // built on first use
   std::unique_ptr<energy::EnergyModel> energy_;
   BatteryChoice battery_;
   std::unique_ptr<planner::FlightCostModel> full_model_;

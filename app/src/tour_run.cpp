@@ -23,9 +23,8 @@ namespace {
 // minimum gap, so the leg's end passes the dense re-check with its rounding.
 constexpr double kViewpointGapMarginM = 0.01;
 
-// A leg an OMPL planner misses is searched again this many times longer, twice: BIT* finds the
-// free-mode bridge's long legs through the standoff environment in a few seconds, but not
-// always in 0.5 s.
+// A leg an OMPL planner misses is searched again this many times longer, twice: BIT* finds
+// long legs round the bridge's girders in a few seconds, but not always in 0.5 s.
 constexpr double kRetryTimeFactors[] = {10.0, 40.0};
 
 std::vector<TourStop> chooseStops(const MissionFile& mission, const PlanningSetup& setup, PlanningMode mode,
@@ -33,8 +32,8 @@ std::vector<TourStop> chooseStops(const MissionFile& mission, const PlanningSetu
   mission::ViewpointOptions viewpoint_options;
   viewpoint_options.mode = mode == PlanningMode::Ceiling ? mission::ViewpointMode::Ceiling : mission::ViewpointMode::Free;
   viewpoint_options.min_ceiling_gap_m = setup.arguments().min_ceiling_gap_m + kViewpointGapMarginM;
-  const environment::Environment& environment =
-      mode == PlanningMode::Ceiling ? setup.environment() : setup.standoffEnvironment();
+  viewpoint_options.standoff_m = setup.arguments().standoff_m;
+  const environment::Environment& environment = setup.environment();
   std::vector<TourStop> stops;
   for (const mission::InspectionTarget& target : mission.targets) {
     TourStop stop{target, {}};
@@ -125,8 +124,7 @@ constexpr double kRefinementTimeGuardS = 30.0;
 
 std::string legName(const TourResult& tour, int from, int to) { return tour.names[from] + " -> " + tour.names[to]; }
 
-// The rules, cost model and planner for the legs between two places (in free mode the rules
-// exempt the two from the standoff).
+// The rules, cost model and planner for the legs between two places.
 struct LegPlanner {
   PlanningSetup::Mode planning;
   std::unique_ptr<planner::FlightPlanner> planner;
@@ -207,16 +205,16 @@ TourLegs roadmapLegs(const TourResult& tour, const PlanningSetup& setup, Plannin
     for (int to = 0; to < places; ++to) {
       if (to == from) continue;
       const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
-      const planner::SafetyRules pair_rules = rules.withExemptions({a, b});
       std::optional<std::vector<Eigen::Vector3d>> best;
-      if (routes[to]) best = planner::shortcutPath(routes[to]->waypoints, pair_rules, objective);
-      if (options.straight_when_clear && pair_rules.isMotionValid(a, b) &&
+      if (routes[to]) best = planner::shortcutPath(routes[to]->waypoints, rules, objective);
+      if (options.straight_when_clear && rules.isMotionValid(a, b) &&
           (!best || objective.motionCost(a, b) < objective.pathCost(*best)))
         best = std::vector<Eigen::Vector3d>{a, b};
-      if (!best)
-        throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] +
-                          " on the roadmap (nodes every " + formatNumber(settings.spacing_m) +
-                          " m); if one exists through a narrower gap, try a smaller --lattice-spacing-m");
+      if (!best) {
+        const std::optional<planner::Blockage> blockage = roadmap.blockage(from, to);
+        throw NoPathError(tour.mode + " mode: no path between " + tour.names[from] + " and " + tour.names[to] + ": " +
+                          (blockage ? blockage->describe() : std::string("the roadmap does not join them")));
+      }
       paths[to] = std::move(*best);
     }
     return paths;
@@ -278,8 +276,7 @@ TourResult planTour(const MissionFile& mission, const PlanningSetup& setup, Plan
   tour.start_soc = mission.battery.start_soc;
   tour.reserve_soc = mission.battery.reserve_soc;
 
-  // Home as the planner would check a start: in free mode the approach zone around it exempts
-  // it from the standoff, so a home near the ground is accepted.
+  // Home as the planner would check a start (the same rules in both modes).
   const PlanningSetup::Mode home_mode = setup.mode(mode, mission.home_m, mission.home_m);
   if (!home_mode.rules->isStateValid(mission.home_m))
     throw ceilplan::InputError(mission.file.string() + ": home " + formatPoint(mission.home_m) +

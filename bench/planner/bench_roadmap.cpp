@@ -32,8 +32,8 @@ struct BridgeRoadmap {
     mission::ViewpointOptions options;
     options.mode = planning_mode == app::PlanningMode::Ceiling ? mission::ViewpointMode::Ceiling : mission::ViewpointMode::Free;
     options.min_ceiling_gap_m = setup.arguments().min_ceiling_gap_m + 0.01;
-    const environment::Environment& environment =
-        planning_mode == app::PlanningMode::Ceiling ? setup.environment() : setup.standoffEnvironment();
+    options.standoff_m = setup.arguments().standoff_m;
+    const environment::Environment& environment = setup.environment();
     for (mission::InspectionTarget target : mission.targets) {
       if (planning_mode == app::PlanningMode::Free) target.standoff_max_m = std::max(target.standoff_max_m, 3.0);
       places.push_back(mission::chooseViewpoint(target, environment, setup.energy(), options).position_m);

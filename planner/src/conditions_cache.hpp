@@ -1,6 +1,6 @@
 #pragma once
 // Map conditions at points of the cost model's sampling lattice near structure, computed once
-// each and stored compactly (2 numbers per rotor, 2 more); far from structure the model answers
+// each and stored compactly (2 numbers per rotor, 3 more); far from structure the model answers
 // without the map anyway. For one search on one thread.
 
 #include "ceilplan/planner/flight_cost_model.hpp"
@@ -27,7 +27,7 @@ class ConditionsCache {
     const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::int64_t>(rounded.x()) & 0x1FFFFF) << 42) |
                               (static_cast<std::uint64_t>(static_cast<std::int64_t>(rounded.y()) & 0x1FFFFF) << 21) |
                               (static_cast<std::uint64_t>(static_cast<std::int64_t>(rounded.z()) & 0x1FFFFF));
-    const std::size_t width = 2 * rotors_ + 2;
+    const std::size_t width = 2 * rotors_ + 3;
     const auto [found, inserted] = offsets_.try_emplace(key, values_.size());
     if (inserted) {
       const PointConditions conditions = model_.conditionsAt(point_m);
@@ -37,14 +37,16 @@ class ConditionsCache {
       }
       values_.push_back(conditions.ground_gap_m);
       values_.push_back(conditions.nearest_ceiling_gap_m);
+      values_.push_back(conditions.standoff_shortfall_m);
       return conditions;
     }
     const double* v = values_.data() + found->second;
     PointConditions conditions;
     conditions.rotor_count = rotors_;
     for (int r = 0; r < rotors_; ++r) conditions.rotors[r] = {v[2 * r], v[2 * r + 1]};
-    conditions.ground_gap_m = v[width - 2];
-    conditions.nearest_ceiling_gap_m = v[width - 1];
+    conditions.ground_gap_m = v[width - 3];
+    conditions.nearest_ceiling_gap_m = v[width - 2];
+    conditions.standoff_shortfall_m = v[width - 1];
     return conditions;
   }
 

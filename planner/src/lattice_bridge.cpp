@@ -3,6 +3,7 @@
 #include "ceilplan/core/format.hpp"
 
 
+#include <Eigen/Geometry>
 #include <ompl/datastructures/NearestNeighborsGNAT.h>
 
 #include <algorithm>
@@ -50,7 +51,7 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kCandidates = 24;           // pairs whose surroundings are measured
 constexpr int kAttempts = 6;              // pairs tried with a fine search
-constexpr double kCutStepM = 0.05;        // across a way, where its openings are measured
+constexpr double kShiftStepM = 0.2;       // between the parallel ways measured near a pair's
 constexpr double kPairSeparationM = 1.0;  // between the middles of two pairs tried
 constexpr double kReachM = 1.0;           // from the straight way between a pair, at least the vehicle's width
 constexpr std::size_t kMaxFineNodes = 2'000'000;
@@ -311,34 +312,40 @@ Opening openingAt(const environment::Environment& environment, const Eigen::Vect
   return opening;
 }
 
-// The bottleneck of the way between two points: cut across it every voxel, take each cut's
-// most open point within `reach_m` of the straight way (0: the straight way itself), and
-// return the tightest cut's.
+// The tightest opening on the straight way between two points, sampled every voxel.
 Opening constriction(const environment::Environment& environment, const Eigen::Vector3d& from_m,
-                     const Eigen::Vector3d& to_m, bool unknown_is_open, double reach_m = 0.0) {
+                     const Eigen::Vector3d& to_m, bool unknown_is_open) {
   const double length_m = (to_m - from_m).norm();
   const Eigen::Vector3d way = length_m > 0.0 ? Eigen::Vector3d((to_m - from_m) / length_m) : Eigen::Vector3d::UnitX();
-  const double resolution_m = environment.grid().frame().resolution_m();
-  const int steps = std::max(1, static_cast<int>(std::ceil(length_m / resolution_m)));
+  const int steps = std::max(1, static_cast<int>(std::ceil(length_m / environment.grid().frame().resolution_m())));
+  Opening tightest;
+  for (int k = 0; k <= steps; ++k) {
+    const Opening opening =
+        openingAt(environment, from_m + (to_m - from_m) * (static_cast<double>(k) / steps), way, unknown_is_open);
+    if (opening.ratio < tightest.ratio) tightest = opening;
+  }
+  return tightest;
+}
+
+// The most open of the straight ways parallel to the one between two points, shifted across
+// it by up to `reach_m`: its tightest opening (a gap beside the straight way is found there).
+Opening bottleneck(const environment::Environment& environment, const Eigen::Vector3d& from_m,
+                   const Eigen::Vector3d& to_m, bool unknown_is_open, double reach_m) {
+  const Eigen::Vector3d way = (to_m - from_m).norm() > 0.0 ? Eigen::Vector3d((to_m - from_m).normalized())
+                                                           : Eigen::Vector3d::UnitX();
   Eigen::Vector3d side = way.cross(Eigen::Vector3d::UnitZ());
   side = side.norm() > 1e-6 ? Eigen::Vector3d(side.normalized()) : Eigen::Vector3d::UnitY();
   const Eigen::Vector3d up = way.cross(side).normalized();
-  const double cut_step_m = std::max(resolution_m, kCutStepM);
-  const int reach = static_cast<int>(std::floor(reach_m / cut_step_m));
-  Opening tightest;
-  for (int k = 0; k <= steps; ++k) {
-    const Eigen::Vector3d centre = from_m + (to_m - from_m) * (static_cast<double>(k) / steps);
-    Opening best;
-    best.ratio = -1.0;
-    for (int j = -reach; j <= reach; ++j)
-      for (int i = -reach; i <= reach; ++i) {
-        if (i * i + j * j > reach * reach) continue;
-        const Opening opening = openingAt(environment, centre + cut_step_m * (i * side + j * up), way, unknown_is_open);
-        if (opening.ratio > best.ratio) best = opening;
-      }
-    if (best.ratio < tightest.ratio) tightest = best;
-  }
-  return tightest;
+  const int reach = static_cast<int>(std::floor(reach_m / kShiftStepM));
+  Opening best;
+  best.ratio = -1.0;
+  for (int j = -reach; j <= reach; ++j)
+    for (int i = -reach; i <= reach; ++i) {
+      const Eigen::Vector3d shift = kShiftStepM * (i * side + j * up);
+      const Opening opening = constriction(environment, from_m + shift, to_m + shift, unknown_is_open);
+      if (opening.ratio > best.ratio) best = opening;
+    }
+  return best;
 }
 
 }  // namespace
@@ -360,10 +367,20 @@ std::vector<Eigen::Vector3d> turningPoints(const std::vector<Eigen::Vector3d>& p
 Blockage diagnoseBlockage(const SafetyRules& rules, const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) {
   const environment::Environment& environment = rules.environment();
   const Eigen::Vector3d way = (to_m - from_m).normalized();
-  // The bottleneck near the way, counting unknown space open (so a gap it fills is found), then
-  // what the map's policy makes of it.
-  const Opening hopeful = constriction(environment, from_m, to_m, true, kReachM);
-  const Opening opening = openingAt(environment, hopeful.position_m, way, false);
+  // The bottleneck near the way, counting unknown space open (so a gap it fills is found).
+  const Eigen::Vector3d gap_m = bottleneck(environment, from_m, to_m, true, kReachM).position_m;
+  // Measured square to the gap: of the cuts through it turned about the vertical, the tightest
+  // (a cut askew across a slot measures it wider than it is).
+  Eigen::Vector3d cut_way = way;
+  Opening opening = openingAt(environment, gap_m, way, false);
+  for (int degrees = -60; degrees <= 60; degrees += 5) {
+    const Eigen::Vector3d turned = Eigen::AngleAxisd(degrees * M_PI / 180.0, Eigen::Vector3d::UnitZ()) * way;
+    const Opening cut = openingAt(environment, gap_m, turned, false);
+    if (cut.ratio < opening.ratio) {
+      opening = cut;
+      cut_way = turned;
+    }
+  }
   Blockage blockage;
   blockage.position_m = opening.position_m;
   blockage.width_m = opening.across_m[0];
@@ -373,9 +390,10 @@ Blockage diagnoseBlockage(const SafetyRules& rules, const Eigen::Vector3d& from_
   if (!environment.contains(opening.position_m) || opening.bound == CellKind::Edge) {
     blockage.rule = BlockingRule::MapEdge;
   } else if (opening.ratio < 1.0) {
-    // Counted open, unknown space would leave room: then the policy blocks the way.
-    blockage.rule = opening.bound == CellKind::Unknown || hopeful.ratio >= 1.0 ? BlockingRule::Unknown
-                                                                                : BlockingRule::Clearance;
+    // Unknown space blocks when it bounds the gap, or when counting it open widens the gap.
+    blockage.rule = opening.bound == CellKind::Unknown || openingAt(environment, gap_m, cut_way, true).ratio > opening.ratio
+                        ? BlockingRule::Unknown
+                        : BlockingRule::Clearance;
   } else {
     // Wide enough along the two directions measured, and still blocked: by something askew
     // (a corner, a lamp), a crooked or short opening, or a ceiling too close to the rotors.
@@ -384,9 +402,8 @@ Blockage diagnoseBlockage(const SafetyRules& rules, const Eigen::Vector3d& from_
     blockage.rule = BlockingRule::CeilingGap;
     const double step_m = environment.grid().frame().resolution_m();
     for (double s = 0.0; s <= kReachM; s += step_m) {
-      const Eigen::Vector3d ahead = opening.position_m + s * way, behind = opening.position_m - s * way;
       std::optional<environment::Violation> violation;
-      for (const Eigen::Vector3d& p : {ahead, behind})
+      for (const Eigen::Vector3d& p : {Eigen::Vector3d(gap_m + s * way), Eigen::Vector3d(gap_m - s * way)})
         if (!violation && environment.contains(p)) violation = environment.stateViolation(p);
       if (!violation) continue;
       blockage.rule = violation->kind == environment::ViolationKind::Unknown      ? BlockingRule::Unknown
@@ -442,7 +459,7 @@ BridgeOutcome findBridge(const SafetyRules& rules, const std::vector<Eigen::Vect
       candidates.push_back(pair);
   }
   for (Pair& pair : candidates)
-    pair.openness = constriction(rules.environment(), side_a[pair.a], side_b[pair.b], true, kReachM).ratio;
+    pair.openness = bottleneck(rules.environment(), side_a[pair.a], side_b[pair.b], true, kReachM).ratio;
   std::stable_sort(candidates.begin(), candidates.end(), moreOpen);
 
   const double vehicle_width_m = 2.0 * rules.environment().vehicle().inflatedRadius_m();

@@ -6,6 +6,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/planner/lattice_planner.hpp"
+#include "ceilplan/planner/lattice_roadmap.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 
 #include <gtest/gtest.h>
@@ -44,6 +45,18 @@ bool coarseLatticeHasANodeInTheDoorway(const planner::SafetyRules& rules) {
   return false;
 }
 
+// Whether a path crosses the wall's middle plane (x = 0.1) between y_lo and y_hi.
+bool crossesTheWallBetween(const std::vector<Eigen::Vector3d>& path, double y_lo, double y_hi) {
+  for (std::size_t k = 1; k < path.size(); ++k) {
+    const Eigen::Vector3d &a = path[k - 1], &b = path[k];
+    if ((a.x() < 0.1) != (b.x() < 0.1)) {
+      const Eigen::Vector3d crossing = a + (b - a) * ((0.1 - a.x()) / (b.x() - a.x()));
+      return crossing.y() > y_lo && crossing.y() < y_hi;
+    }
+  }
+  return false;
+}
+
 class DoorwayOneVoxelWiderThanTheVehicle : public ::testing::TestWithParam<double> {};
 
 // Doorways 1.0 m (the vehicle's width rounded up to whole voxels: 8 cm to spare) and 1.1 m
@@ -57,15 +70,7 @@ TEST_P(DoorwayOneVoxelWiderThanTheVehicle, TheLatticePlannerFindsTheWayThrough) 
   ASSERT_EQ(solved.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
   EXPECT_FALSE(scene.rules.checkPathDensely(solved.waypoints));
   EXPECT_NEAR(scene.planner.objective().pathCost(solved.waypoints), solved.cost, 1e-6 * solved.cost);
-  bool through_the_doorway = false;
-  for (std::size_t k = 1; k < solved.waypoints.size(); ++k) {
-    const Eigen::Vector3d &a = solved.waypoints[k - 1], &b = solved.waypoints[k];
-    if (a.x() < 0.1 && b.x() >= 0.1) {
-      const Eigen::Vector3d crossing = a + (b - a) * ((0.1 - a.x()) / (b.x() - a.x()));
-      through_the_doorway = crossing.y() > 0.4 && crossing.y() < 0.4 + width_m;
-    }
-  }
-  EXPECT_TRUE(through_the_doorway);
+  EXPECT_TRUE(crossesTheWallBetween(solved.waypoints, 0.4, 0.4 + width_m));
   // And through FlightPlanner, post-processed and re-checked, as `ceilplan plan` runs it.
   planner::PlanRequest request;
   request.start_m = kStart;
@@ -77,7 +82,67 @@ TEST_P(DoorwayOneVoxelWiderThanTheVehicle, TheLatticePlannerFindsTheWayThrough) 
   EXPECT_FALSE(scene.rules.checkPathDensely(plan.waypoints));
 }
 
+TEST_P(DoorwayOneVoxelWiderThanTheVehicle, TheRoadmapFindsTheWayThroughForEveryPlace) {
+  const double width_m = GetParam();
+  const CeilingScene scene(twoRooms(0.4, 0.4 + width_m));
+  ASSERT_FALSE(coarseLatticeHasANodeInTheDoorway(scene.rules));
+  // Home and a place in each room, one in a corner pocket the 0.4 m lattice does not reach.
+  const std::vector<Eigen::Vector3d> places{kStart, kGoal, {-1.0, 1.5, 1.5}, {1.72, -1.52, 0.45}};
+  planner::LatticeSettings settings;  // 0.4 m, the tour's spacing
+  settings.workers = 2;
+  planner::LatticeRoadmap roadmap(scene.planner.spaceInformation(), settings);
+  roadmap.build(scene.planner.objective(), places);
+  EXPECT_GT(roadmap.bridgeVertexCount(), 0u);
+  for (int from = 0; from < 4; ++from) {
+    const auto routes = roadmap.routesFrom(from);
+    for (int to = 0; to < 4; ++to) {
+      if (to == from) continue;
+      ASSERT_TRUE(routes[to]) << from << " -> " << to;
+      EXPECT_FALSE(scene.rules.checkPathDensely(routes[to]->waypoints)) << from << " -> " << to;
+      EXPECT_NEAR(scene.planner.objective().pathCost(routes[to]->waypoints), routes[to]->cost,
+                  1e-4 * routes[to]->cost);
+      EXPECT_FALSE(roadmap.blockage(from, to));
+    }
+    const int across = from % 2 == 0 ? 1 : 0;  // places 0 and 2 are left of the wall, 1 and 3 right
+    EXPECT_TRUE(crossesTheWallBetween(routes[across]->waypoints, 0.4, 0.4 + width_m)) << from;
+  }
+  // As an OMPL planner, one query at a time.
+  const ompl::base::PlannerPtr planner =
+      planner::makePlanner(planner::defaultTourPlannerName(), scene.planner.spaceInformation());
+  const Solved solved = solveOnce(*planner, scene.planner, kStart, kGoal);
+  ASSERT_EQ(solved.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
+  EXPECT_TRUE(crossesTheWallBetween(solved.waypoints, 0.4, 0.4 + width_m));
+}
+
 INSTANTIATE_TEST_SUITE_P(Widths, DoorwayOneVoxelWiderThanTheVehicle, ::testing::Values(1.0, 1.1));
+
+TEST(NoPath, TheRoadmapNamesTheGapBetweenPlacesItCannotJoin) {
+  const CeilingScene scene(twoRooms(0.3, 1.1));  // 0.8 m wide
+  planner::LatticeRoadmap roadmap(scene.planner.spaceInformation());
+  roadmap.build(scene.planner.objective(), {kStart, kGoal, {-1.0, 1.5, 1.5}});
+  EXPECT_FALSE(roadmap.routesFrom(0)[1]);
+  EXPECT_TRUE(roadmap.routesFrom(0)[2]);
+  EXPECT_FALSE(roadmap.blockage(0, 2));
+  for (const auto& [from, to] : std::vector<std::pair<int, int>>{{0, 1}, {1, 2}}) {
+    const std::optional<planner::Blockage> blockage = roadmap.blockage(from, to);
+    ASSERT_TRUE(blockage) << from << " -> " << to;
+    EXPECT_EQ(blockage->rule, planner::BlockingRule::Clearance);
+    EXPECT_NEAR(blockage->position_m.y(), 0.7, 0.01) << blockage->describe();
+    EXPECT_NEAR(blockage->width_m, 0.8, 0.005) << blockage->describe();
+  }
+  // The same, asked as one query.
+  planner::PlanRequest request;
+  request.start_m = kStart;
+  request.goal_m = kGoal;
+  request.planner = planner::defaultTourPlannerName();
+  request.lattice.spacing_m = 0.4;
+  try {
+    scene.planner.plan(request);
+    FAIL() << "expected no path";
+  } catch (const ceilplan::NoPathError& e) {
+    EXPECT_NE(std::string(e.what()).find("the opening there is 0.80 m wide"), std::string::npos) << e.what();
+  }
+}
 
 TEST(NoPath, TheErrorNamesTheGapTooNarrowForTheVehicle) {
   const CeilingScene scene(twoRooms(0.3, 1.1));  // 0.8 m wide
