@@ -2,7 +2,6 @@
 
 #include "ceilplan/core/format.hpp"
 
-
 #include <Eigen/Geometry>
 #include <ompl/datastructures/NearestNeighborsGNAT.h>
 
@@ -51,7 +50,7 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kCandidates = 24;           // pairs whose surroundings are measured
 constexpr int kAttempts = 6;              // pairs tried with a fine search
-constexpr double kShiftStepM = 0.2;       // between the parallel ways measured near a pair's
+constexpr double kShiftStepM = 0.2;       // between the ways measured parallel to a pair's
 constexpr double kPairSeparationM = 1.0;  // between the middles of two pairs tried
 constexpr double kReachM = 1.0;           // from the straight way between a pair, at least the vehicle's width
 constexpr std::size_t kMaxFineNodes = 2'000'000;

@@ -232,38 +232,18 @@ std::size_t CoarseSearch::idOf(const Eigen::Vector3d& position_m) const {
 
 }  // namespace
 
-void LatticeSettings::validate() const {
-  if (!(std::isfinite(spacing_m) && spacing_m > 0.0))
-    throw ceilplan::InputError("lattice spacing must be a positive number of metres");
-  if (workers < 1) throw ceilplan::InputError("the lattice planners need at least one worker thread");
-}
-
 LatticePlanner::LatticePlanner(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings)
-    : ompl::base::Planner(si, "lattice"), settings_(std::move(settings)), best_cost_(kInfinity) {
-  settings_.validate();
-  specs_.optimizingPaths = true;
-  specs_.directed = true;
-  declareParam<double>("spacing_m", this, &LatticePlanner::setSpacing, &LatticePlanner::getSpacing, "0.01:0.01:2.0");
-  addPlannerProgressProperty("best cost REAL", [this] { return std::to_string(best_cost_.load()); });
-}
-
-void LatticePlanner::setSpacing(double spacing_m) {
-  LatticeSettings settings = settings_;
-  settings.spacing_m = spacing_m;
-  settings.validate();
-  settings_ = settings;
-}
+    : LatticePlannerBase(si, "lattice", std::move(settings)) {}
 
 void LatticePlanner::clear() {
   ompl::base::Planner::clear();
   expansions_ = 0;
-  best_cost_ = kInfinity;
-  blockage_.reset();
+  forgetResult();
 }
 
 ompl::base::PlannerStatus LatticePlanner::solve(const ompl::base::PlannerTerminationCondition& ptc) {
   checkValidity();
-  blockage_.reset();
+  forgetResult();
   const SafetyRules& rules = detail::rulesOf(*si_, getName());
   const FlightObjective& objective = detail::objectiveOf(*pdef_, getName());
   ompl::base::PlannerStatus failure;

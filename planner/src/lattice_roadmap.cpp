@@ -31,28 +31,13 @@ std::array<int, 3> neighbour(const std::array<int, 3>& at, const std::array<int,
 }  // namespace
 
 LatticeRoadmap::LatticeRoadmap(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings)
-    : ompl::base::Planner(si, "roadmap"),
-      settings_(std::move(settings)),
-      best_cost_(std::numeric_limits<double>::infinity()) {
-  settings_.validate();
-  specs_.optimizingPaths = true;
-  specs_.directed = true;
+    : LatticePlannerBase(si, "roadmap", std::move(settings)) {
   specs_.multithreaded = true;
-  declareParam<double>("spacing_m", this, &LatticeRoadmap::setSpacing, &LatticeRoadmap::getSpacing, "0.01:0.01:2.0");
-  addPlannerProgressProperty("best cost REAL", [this] { return std::to_string(best_cost_.load()); });
-}
-
-void LatticeRoadmap::setSpacing(double spacing_m) {
-  LatticeSettings settings = settings_;
-  settings.spacing_m = spacing_m;
-  settings.validate();
-  settings_ = settings;
-  clear();
 }
 
 void LatticeRoadmap::clearQuery() {
   pis_.restart();  // not Planner::clearQuery(), which clears everything
-  best_cost_ = std::numeric_limits<double>::infinity();
+  forgetResult();
 }
 
 void LatticeRoadmap::clear() {
@@ -61,8 +46,7 @@ void LatticeRoadmap::clear() {
   places_m_.clear();
   places_.clear();
   place_blockages_.clear();
-  query_blockage_.reset();
-  best_cost_ = std::numeric_limits<double>::infinity();
+  forgetResult();
 }
 
 void LatticeRoadmap::dropGraph() {
@@ -431,16 +415,16 @@ ompl::base::PlannerStatus LatticeRoadmap::solve(const ompl::base::PlannerTermina
     if (!buildGraph(objective, [&ptc] { return ptc(); })) return ompl::base::PlannerStatus::TIMEOUT;
     places_ = joinPlaces(places_m_);
   }
-  query_blockage_.reset();
+  blockage_.reset();
   const std::vector<Eigen::Vector3d> ends{query->start_m, query->goal_m};
   std::vector<Place> ends_data = joinPlaces(ends);
   std::vector<std::optional<RoadmapRoute>> routes = search(ends, ends_data, 0);
   if (!routes[1]) {
-    query_blockage_ = connect(ends, ends_data, ptc)[1];
+    blockage_ = connect(ends, ends_data, ptc)[1];
     routes = search(ends, ends_data, 0);
   }
   if (!routes[1]) return ptc() ? ompl::base::PlannerStatus::TIMEOUT : ompl::base::PlannerStatus::ABORT;
-  query_blockage_.reset();
+  blockage_.reset();
   best_cost_ = routes[1]->cost;
   detail::addSolution(*this, routes[1]->waypoints, routes[1]->cost);
   return ompl::base::PlannerStatus::EXACT_SOLUTION;

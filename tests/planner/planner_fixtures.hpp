@@ -50,17 +50,21 @@ inline energy::EnergyModel paperEnergy() { return energy::EnergyModel(energy::pa
 // Start and goal under a ceiling at height h: the rotor plane 7 cm below it.
 inline double bodyHeightUnder(double ceiling_m) { return ceiling_m - 0.1; }
 
-// A map with the default vehicle, the paper's energy model, ceiling-mode rules (5 cm minimum
-// rotor gap) and a planner under the charge objective.
-struct CeilingScene {
-  explicit CeilingScene(environment::OccupancyMap scene_map) : map(std::move(scene_map)) {}
+// A map with the default vehicle, the paper's energy model, the rules of both modes (5 cm
+// minimum rotor gap) and a planner under the charge objective, with a mode's cost model
+// options (by default ceiling mode's).
+struct PlannerScene {
+  explicit PlannerScene(environment::OccupancyMap scene_map, planner::CostModelOptions cost = {})
+      : map(std::move(scene_map)), cost_options(cost) {}
   environment::OccupancyMap map;
+  planner::CostModelOptions cost_options;
   environment::Environment environment{map, quad()};
   energy::EnergyModel energy = paperEnergy();
   planner::SafetyRules rules{environment, 0.05};
-  planner::FlightCostModel model{environment, energy, planner::CostModelOptions{}};
+  planner::FlightCostModel model{environment, energy, cost_options};
   planner::FlightPlanner planner{rules, model, planner::ObjectiveChoice{}};
 };
+using CeilingScene = PlannerScene;
 
 // What an OMPL planner returned for one query.
 struct Solved {

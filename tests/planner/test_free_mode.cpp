@@ -32,14 +32,8 @@ planner::CostModelOptions freeModeCost() {
   return options;
 }
 
-struct FreeModeScene {
-  explicit FreeModeScene(environment::OccupancyMap scene_map) : map(std::move(scene_map)) {}
-  environment::OccupancyMap map;
-  environment::Environment environment{map, quad()};
-  energy::EnergyModel energy = paperEnergy();
-  planner::SafetyRules rules{environment, 0.05};
-  planner::FlightCostModel model{environment, energy, freeModeCost()};
-  planner::FlightPlanner planner{rules, model, planner::ObjectiveChoice{}};
+struct FreeModeScene : PlannerScene {
+  explicit FreeModeScene(environment::OccupancyMap scene_map) : PlannerScene(std::move(scene_map), freeModeCost()) {}
 
   planner::PlanResult plan(const Eigen::Vector3d& start, const Eigen::Vector3d& goal) const {
     planner::PlanRequest request;

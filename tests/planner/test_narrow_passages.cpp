@@ -57,6 +57,36 @@ bool crossesTheWallBetween(const std::vector<Eigen::Vector3d>& path, double y_lo
   return false;
 }
 
+// From kStart to kGoal with `planner_name`, the lattice planners at the tour's 0.4 m.
+planner::PlanRequest acrossTheWall(const std::string& planner_name) {
+  planner::PlanRequest request;
+  request.start_m = kStart;
+  request.goal_m = kGoal;
+  request.planner = planner_name;
+  request.lattice.spacing_m = 0.4;
+  request.time_limit_s = 120.0;
+  return request;
+}
+
+// The "no path" message of planning across the wall; empty when a path was found.
+std::string noPathMessage(const CeilingScene& scene, const std::string& planner_name) {
+  try {
+    scene.planner.plan(acrossTheWall(planner_name));
+  } catch (const ceilplan::NoPathError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Where the lattice A* finds the way across the wall blocked (it must find no path).
+planner::Blockage blockageAcrossTheWall(const CeilingScene& scene) {
+  planner::LatticePlanner lattice(scene.planner.spaceInformation());
+  EXPECT_EQ(solveOnce(lattice, scene.planner, kStart, kGoal).status, ompl::base::PlannerStatus::ABORT);
+  const std::optional<planner::Blockage> blockage = lattice.lastBlockage();
+  EXPECT_TRUE(blockage);
+  return blockage.value_or(planner::Blockage{});
+}
+
 class DoorwayOneVoxelWiderThanTheVehicle : public ::testing::TestWithParam<double> {};
 
 // Doorways 1.0 m (the vehicle's width rounded up to whole voxels: 8 cm to spare) and 1.1 m
@@ -72,13 +102,7 @@ TEST_P(DoorwayOneVoxelWiderThanTheVehicle, TheLatticePlannerFindsTheWayThrough) 
   EXPECT_NEAR(scene.planner.objective().pathCost(solved.waypoints), solved.cost, 1e-6 * solved.cost);
   EXPECT_TRUE(crossesTheWallBetween(solved.waypoints, 0.4, 0.4 + width_m));
   // And through FlightPlanner, post-processed and re-checked, as `ceilplan plan` runs it.
-  planner::PlanRequest request;
-  request.start_m = kStart;
-  request.goal_m = kGoal;
-  request.planner = planner::referencePlannerName();
-  request.lattice.spacing_m = 0.4;
-  request.time_limit_s = 120.0;
-  const planner::PlanResult plan = scene.planner.plan(request);
+  const planner::PlanResult plan = scene.planner.plan(acrossTheWall(planner::referencePlannerName()));
   EXPECT_FALSE(scene.rules.checkPathDensely(plan.waypoints));
 }
 
@@ -131,73 +155,46 @@ TEST(NoPath, TheRoadmapNamesTheGapBetweenPlacesItCannotJoin) {
     EXPECT_NEAR(blockage->width_m, 0.8, 0.005) << blockage->describe();
   }
   // The same, asked as one query.
-  planner::PlanRequest request;
-  request.start_m = kStart;
-  request.goal_m = kGoal;
-  request.planner = planner::defaultTourPlannerName();
-  request.lattice.spacing_m = 0.4;
-  try {
-    scene.planner.plan(request);
-    FAIL() << "expected no path";
-  } catch (const ceilplan::NoPathError& e) {
-    EXPECT_NE(std::string(e.what()).find("the opening there is 0.80 m wide"), std::string::npos) << e.what();
-  }
+  const std::string message = noPathMessage(scene, planner::defaultTourPlannerName());
+  EXPECT_NE(message.find("the opening there is 0.80 m wide"), std::string::npos) << message;
 }
 
 TEST(NoPath, TheErrorNamesTheGapTooNarrowForTheVehicle) {
   const CeilingScene scene(twoRooms(0.3, 1.1));  // 0.8 m wide
-  planner::LatticePlanner lattice(scene.planner.spaceInformation());
-  ASSERT_EQ(solveOnce(lattice, scene.planner, kStart, kGoal).status, ompl::base::PlannerStatus::ABORT);
-  const std::optional<planner::Blockage> blockage = lattice.lastBlockage();
-  ASSERT_TRUE(blockage);
-  EXPECT_EQ(blockage->rule, planner::BlockingRule::Clearance);
+  const planner::Blockage blockage = blockageAcrossTheWall(scene);
+  EXPECT_EQ(blockage.rule, planner::BlockingRule::Clearance);
   // The middle of the doorway: in the wall, halfway across it and up it.
-  EXPECT_NEAR(blockage->position_m.x(), 0.1, 0.1) << blockage->describe();
-  EXPECT_NEAR(blockage->position_m.y(), 0.7, 0.01) << blockage->describe();
-  EXPECT_NEAR(blockage->position_m.z(), 1.3, 0.01) << blockage->describe();
-  EXPECT_NEAR(blockage->width_m, 0.8, 0.005) << blockage->describe();
-  EXPECT_NEAR(blockage->needed_width_m, kVehicleWidthM, 1e-9);
+  EXPECT_NEAR(blockage.position_m.x(), 0.1, 0.1) << blockage.describe();
+  EXPECT_NEAR(blockage.position_m.y(), 0.7, 0.01) << blockage.describe();
+  EXPECT_NEAR(blockage.position_m.z(), 1.3, 0.01) << blockage.describe();
+  EXPECT_NEAR(blockage.width_m, 0.8, 0.005) << blockage.describe();
+  EXPECT_NEAR(blockage.needed_width_m, kVehicleWidthM, 1e-9);
 
-  planner::PlanRequest request;
-  request.start_m = kStart;
-  request.goal_m = kGoal;
-  request.planner = planner::referencePlannerName();
-  try {
-    scene.planner.plan(request);
-    FAIL() << "expected no path";
-  } catch (const ceilplan::NoPathError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("by the vehicle's clearance: the opening there is 0.80 m wide and 2.20 m high"), std::string::npos)
-        << message;
-    EXPECT_NE(message.find("the vehicle needs 0.92 x 0.30 m with its margins"), std::string::npos) << message;
-    EXPECT_EQ(message.find("stride"), std::string::npos) << message;
-  }
+  const std::string message = noPathMessage(scene, planner::referencePlannerName());
+  EXPECT_NE(message.find("by the vehicle's clearance: the opening there is 0.80 m wide and 2.20 m high"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("the vehicle needs 0.92 x 0.30 m with its margins"), std::string::npos) << message;
+  EXPECT_EQ(message.find("stride"), std::string::npos) << message;
 }
 
 TEST(NoPath, TheErrorNamesUnknownSpaceWhenItFillsTheGap) {
   const CeilingScene scene(twoRooms(0.3, 1.5, CellState::Unknown));  // wide enough, but never scanned
-  planner::LatticePlanner lattice(scene.planner.spaceInformation());
-  ASSERT_EQ(solveOnce(lattice, scene.planner, kStart, kGoal).status, ompl::base::PlannerStatus::ABORT);
-  const std::optional<planner::Blockage> blockage = lattice.lastBlockage();
-  ASSERT_TRUE(blockage);
-  EXPECT_EQ(blockage->rule, planner::BlockingRule::Unknown) << blockage->describe();
-  EXPECT_NEAR(blockage->position_m.x(), 0.1, 0.1) << blockage->describe();
-  EXPECT_GT(blockage->position_m.y(), 0.3) << blockage->describe();
-  EXPECT_LT(blockage->position_m.y(), 1.5) << blockage->describe();
-  EXPECT_NE(blockage->describe().find("by unknown space"), std::string::npos) << blockage->describe();
+  const planner::Blockage blockage = blockageAcrossTheWall(scene);
+  EXPECT_EQ(blockage.rule, planner::BlockingRule::Unknown) << blockage.describe();
+  EXPECT_NEAR(blockage.position_m.x(), 0.1, 0.1) << blockage.describe();
+  EXPECT_GT(blockage.position_m.y(), 0.3) << blockage.describe();
+  EXPECT_LT(blockage.position_m.y(), 1.5) << blockage.describe();
+  EXPECT_NE(blockage.describe().find("by unknown space"), std::string::npos) << blockage.describe();
 }
 
 TEST(NoPath, TheErrorNamesTheMapsEdgeWhenTheWayWouldLeaveTheMap) {
   // The wall's doorway is a notch 0.6 m wide at the map's edge (y up to 2.0): open beyond,
   // but there the map ends.
   const CeilingScene scene(twoRooms(1.4, 2.5));
-  planner::LatticePlanner lattice(scene.planner.spaceInformation());
-  ASSERT_EQ(solveOnce(lattice, scene.planner, kStart, kGoal).status, ompl::base::PlannerStatus::ABORT);
-  const std::optional<planner::Blockage> blockage = lattice.lastBlockage();
-  ASSERT_TRUE(blockage);
-  EXPECT_EQ(blockage->rule, planner::BlockingRule::MapEdge) << blockage->describe();
-  EXPECT_NEAR(blockage->position_m.x(), 0.1, 0.1) << blockage->describe();
-  EXPECT_GT(blockage->position_m.y(), 1.4) << blockage->describe();
+  const planner::Blockage blockage = blockageAcrossTheWall(scene);
+  EXPECT_EQ(blockage.rule, planner::BlockingRule::MapEdge) << blockage.describe();
+  EXPECT_NEAR(blockage.position_m.x(), 0.1, 0.1) << blockage.describe();
+  EXPECT_GT(blockage.position_m.y(), 1.4) << blockage.describe();
 }
 
 }  // namespace

@@ -11,18 +11,13 @@
 // and plans again with that passage as one more edge (the route is then the cheapest through
 // it). When there is none, blockage() says where and by which rule the way is blocked.
 
-#include "ceilplan/planner/blockage.hpp"
-#include "ceilplan/planner/lattice_settings.hpp"
+#include "ceilplan/planner/lattice_planner_base.hpp"
 
-#include <ompl/base/Planner.h>
-
-#include <atomic>
 #include <cstddef>
-#include <optional>
 
 namespace ceilplan::planner {
 
-class LatticePlanner : public ompl::base::Planner, public BlockageReporter {
+class LatticePlanner : public LatticePlannerBase {
  public:
   // Throws ceilplan::InputError for bad settings.
   explicit LatticePlanner(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings = {});
@@ -35,18 +30,10 @@ class LatticePlanner : public ompl::base::Planner, public BlockageReporter {
   void clear() override;
   void getPlannerData(ompl::base::PlannerData& data) const override;
 
-  const LatticeSettings& settings() const { return settings_; }
-  void setSpacing(double spacing_m);
-  double getSpacing() const { return settings_.spacing_m; }
   std::size_t expansions() const { return expansions_; }
-  // After an ABORT: where the most open gap between the start's and the goal's regions is blocked.
-  std::optional<Blockage> lastBlockage() const override { return blockage_; }
 
  private:
-  LatticeSettings settings_;
   std::size_t expansions_ = 0;
-  std::atomic<double> best_cost_;
-  std::optional<Blockage> blockage_;
 };
 
 }  // namespace ceilplan::planner

@@ -13,15 +13,12 @@
 // closest points; a passage found joins the roadmap as extra vertices and edges. Places still
 // apart get a blockage saying where and by which rule the way is blocked.
 
-#include "ceilplan/planner/blockage.hpp"
 #include "ceilplan/planner/flight_objective.hpp"
-#include "ceilplan/planner/lattice_settings.hpp"
+#include "ceilplan/planner/lattice_planner_base.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
 
 #include <Eigen/Core>
-#include <ompl/base/Planner.h>
 
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -34,7 +31,7 @@ struct RoadmapRoute {
   double cost = 0.0;                       // under the objective
 };
 
-class LatticeRoadmap : public ompl::base::Planner, public BlockageReporter {
+class LatticeRoadmap : public LatticePlannerBase {
  public:
   // The space's validity checker must be a FlightStateValidityChecker. Throws
   // ceilplan::InputError for bad settings.
@@ -61,12 +58,6 @@ class LatticeRoadmap : public ompl::base::Planner, public BlockageReporter {
   void clearQuery() override;  // keeps the roadmap and the places
   void clear() override;       // forgets everything
   void getPlannerData(ompl::base::PlannerData& data) const override;
-
-  std::optional<Blockage> lastBlockage() const override { return query_blockage_; }
-
-  const LatticeSettings& settings() const { return settings_; }
-  void setSpacing(double spacing_m);
-  double getSpacing() const { return settings_.spacing_m; }
 
   bool built() const { return objective_ != nullptr; }
   const std::vector<Eigen::Vector3d>& places() const { return places_m_; }
@@ -111,7 +102,8 @@ class LatticeRoadmap : public ompl::base::Planner, public BlockageReporter {
   std::vector<std::optional<RoadmapRoute>> search(const std::vector<Eigen::Vector3d>& places_m,
                                                   const std::vector<Place>& places, int from) const;
 
-  LatticeSettings settings_;
+  void settingsChanged() override { clear(); }
+
   const SafetyRules* rules_ = nullptr;           // behind the space's validity checker
   const FlightObjective* objective_ = nullptr;   // the roadmap's costs; null until built
   std::size_t node_count_ = 0;
@@ -124,8 +116,6 @@ class LatticeRoadmap : public ompl::base::Planner, public BlockageReporter {
   std::vector<Eigen::Vector3d> places_m_;   // build()'s places
   std::vector<Place> places_;
   std::vector<std::optional<Blockage>> place_blockages_;  // of build()'s places left apart
-  std::optional<Blockage> query_blockage_;
-  std::atomic<double> best_cost_;
 };
 
 }  // namespace ceilplan::planner
