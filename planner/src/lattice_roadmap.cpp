@@ -423,6 +423,11 @@ ompl::base::PlannerStatus LatticeRoadmap::solve(const ompl::base::PlannerTermina
     blockage_ = connect(ends, ends_data, ptc)[1];
     routes = search(ends, ends_data, 0);
   }
+  // As the lattice A* does, the straight motion when it is valid and cheaper.
+  if (rules_->isMotionValid(query->start_m, query->goal_m)) {
+    const double direct = objective.motionCost(query->start_m, query->goal_m);
+    if (!routes[1] || direct < routes[1]->cost) routes[1] = RoadmapRoute{{query->start_m, query->goal_m}, direct};
+  }
   if (!routes[1]) return ptc() ? ompl::base::PlannerStatus::TIMEOUT : ompl::base::PlannerStatus::ABORT;
   blockage_.reset();
   best_cost_ = routes[1]->cost;

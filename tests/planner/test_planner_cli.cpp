@@ -134,8 +134,10 @@ TEST(BenchPlannersCli, TablesEachPlannerAgainstTheLatticeReference) {
     EXPECT_EQ(planner["solved"], 2) << planner["planner"];
     EXPECT_GE(planner["median_cost_ratio"].get<double>(), 0.9);  // cannot beat the lattice by much
   }
-  // The lattice planners reproduce the reference: the same lattice, post-processed alike.
-  for (std::size_t k : {2u, 3u}) EXPECT_NEAR(json["planners"][k]["median_cost_ratio"].get<double>(), 1.0, 1e-3);
+  // The lattice A* and the roadmap find the same lattice route (the roadmap stores its edge
+  // costs in single precision); post-processing, stopped by a clock, may differ.
+  EXPECT_NEAR(json["planners"][2]["median_raw_cost_ratio"].get<double>(),
+              json["planners"][3]["median_raw_cost_ratio"].get<double>(), 1e-4);
   const CommandResult unknown = runCeilplan("bench-planners --map " + (dir / "corridor.bt").string() + kVehicle +
                                             " --start 0.5,0,3.4 --goal 5.5,0,3.4 --planners FastestStar");
   EXPECT_EQ(unknown.exit_code, 1);

@@ -52,7 +52,8 @@ class LatticeRoadmap : public LatticePlannerBase {
 
   // OMPL: builds the roadmap on first use (or for a new objective; `ptc` may stop the build:
   // TIMEOUT), joins start and goal (a GoalState), refining where needed, and returns the
-  // cheapest route (EXACT_SOLUTION) or ABORT when they stay apart (lastBlockage() says where).
+  // cheapest route, or the straight motion where valid and cheaper, as the lattice A* does
+  // (EXACT_SOLUTION), or ABORT when they stay apart (lastBlockage() says where).
   ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition& ptc) override;
   using ompl::base::Planner::solve;
   void clearQuery() override;  // keeps the roadmap and the places
