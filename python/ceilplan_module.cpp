@@ -44,14 +44,16 @@ Eigen::Vector3d point(const std::vector<double>& xyz, const char* what) {
   return {xyz[0], xyz[1], xyz[2]};
 }
 
-environment::EnvironmentOptions unknownPolicy(const std::string& unknown) {
-  environment::EnvironmentOptions options;
-  if (unknown == "occupied") return options;
-  if (unknown == "free") {
-    options.unknown_is_occupied = false;
-    return options;
+environment::UnknownSpace unknownSpace(const std::string& policy, std::optional<double> fill_max_m) {
+  environment::UnknownSpace unknown;
+  unknown.policy = environment::unknownPolicyFromName(policy);
+  if (fill_max_m) {
+    if (unknown.policy != environment::UnknownPolicy::Fill)
+      throw InputError("unknown_fill_max_m applies only to unknown=\"fill\"");
+    unknown.fill_max_m = *fill_max_m;
   }
-  throw InputError("unknown space policy '" + unknown + "': choose occupied or free");
+  unknown.validate();
+  return unknown;
 }
 
 py::dict gapsDict(const environment::SurfaceGaps& gaps) {
@@ -148,15 +150,16 @@ PYBIND11_MODULE(ceilplan, m) {
       .def_static(
           "load",
           [](const std::filesystem::path& path, std::optional<mission::Vehicle> vehicle,
-             std::optional<std::filesystem::path> battery, const std::string& unknown) {
+             std::optional<std::filesystem::path> battery, const std::string& unknown,
+             std::optional<double> unknown_fill_max_m) {
             mission::PlanningOptions options;
-            options.environment = unknownPolicy(unknown);
+            options.unknown = unknownSpace(unknown, unknown_fill_max_m);
             return PyEnvironment{std::make_shared<mission::PlanningContext>(
                 environment::OccupancyMap::load(path), vehicle.value_or(mission::Vehicle::defaultQuad()),
                 battery ? io::readBattery(*battery) : mission::BatterySpec{}, options)};
           },
           py::arg("path"), py::arg("vehicle") = py::none(), py::arg("battery") = py::none(),
-          py::arg("unknown") = "occupied")
+          py::arg("unknown") = "occupied", py::arg("unknown_fill_max_m") = py::none())
       .def(
           "probe",
           [](const PyEnvironment& self, double x, double y, double z) {
@@ -302,7 +305,6 @@ PYBIND11_MODULE(ceilplan, m) {
         const mission::FlightMode flight_mode = mission::flightModeFromName(mode);
         py::gil_scoped_release release;
         auto context = std::make_shared<const mission::PlanningContext>(*shared_mission);
-        if (flight_mode == mission::FlightMode::Free) context->standoffEnvironment();
         mission::TourResult tour = mission::planTour(*shared_mission, *context, flight_mode, options);
         return PyTour{std::move(tour), shared_mission, context};
       },

@@ -1,5 +1,6 @@
-// `ceilplan bench-planners`: OMPL's benchmark harness on one query, with ceilplan's objective
-// cost logged per run (raw and post-processed) and compared with the lattice reference.
+// `ceilplan bench-planners`: OMPL's benchmark harness on one query, every planner from the one
+// factory (OMPL's and the lattice ones), with ceilplan's objective cost logged per run (raw and
+// post-processed) and compared with the lattice reference.
 
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
@@ -10,6 +11,7 @@
 #include "ceilplan/planner/ompl_state.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -30,10 +32,18 @@ namespace {
 
 constexpr double kNotReached = std::numeric_limits<double>::infinity();
 
+// OMPL's sampling planners, comma-separated: the default list.
+std::string samplingPlanners() {
+  std::string list;
+  for (const planner::PlannerInfo& info : planner::plannerCatalogue())
+    if (info.kind == planner::PlannerKind::Sampling) list += (list.empty() ? "" : ",") + info.name;
+  return list;
+}
+
 struct BenchArguments {
   PlanningFlags planning;
   SearchArguments search;
-  std::string start, goal, planners = "BITstar,AITstar,RRTstar,InformedRRTstar,PRMstar,LazyPRMstar";
+  std::string start, goal, planners = samplingPlanners();
   std::string mode = "ceiling";
   unsigned runs = 10;
   double reference_time_limit_s = 600.0;
@@ -77,21 +87,24 @@ std::string text(double value, int decimals) {
 void runBench(const BenchArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
   const std::vector<std::string> names = splitNames(a.planners);
-  for (const std::string& name : names)
-    if (name == "lattice" || std::find(planner::plannerNames().begin(), planner::plannerNames().end(), name) ==
-                                 planner::plannerNames().end())
-      throw ceilplan::InputError("--planners: '" + name + "' is not an OMPL planner ceilplan knows");
+  for (const std::string& name : names) {
+    try {
+      planner::plannerInfo(name);
+    } catch (const ceilplan::InputError& e) {
+      throw ceilplan::InputError(std::string("--planners: ") + e.what());
+    }
+  }
   planner::seedOmpl(a.search.seed);
   const auto context = makePlanningContext(a.planning);
-  const mission::PlanningContext::Mode planning = context->mode(mission::flightModeFromName(a.mode), start, goal);
+  const mission::PlanningContext::Mode planning = context->mode(mission::flightModeFromName(a.mode));
   const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, context->objective(start, goal));
   const planner::FlightObjective& objective = flight_planner.objective();
   std::printf("bench-planners: %s mode, objective %s (%s), %u runs of %.1f s per planner, seed %u\n", a.mode.c_str(),
               a.planning.options.objective.c_str(), objective.unit().c_str(), a.runs, a.search.time_limit_s, a.search.seed);
 
-  // The reference: the lattice optimum, post-processed like every OMPL path.
+  // The reference: the lattice optimum, post-processed like every other path.
   planner::PlanRequest reference_request = a.search.request(start, goal);
-  reference_request.planner = "lattice";
+  reference_request.planner = planner::referencePlannerName();
   reference_request.time_limit_s = a.reference_time_limit_s;
   planner::PlanResult reference;
   try {
@@ -99,8 +112,9 @@ void runBench(const BenchArguments& a) {
   } catch (const ceilplan::NoPathError& e) {
     throw NoPathError(std::string("lattice reference: ") + e.what());
   }
-  std::printf("lattice reference (stride %d): %.6g raw, %.6g post-processed, %.1f s\n", a.search.lattice_stride,
-              reference.search_cost, reference.cost, reference.total_time_s);
+  std::printf("lattice reference (spacing %s m): %.6g raw, %.6g post-processed, %.1f s\n",
+              formatNumber(a.search.lattice_spacing_m).c_str(), reference.search_cost, reference.cost,
+              reference.total_time_s);
   std::fflush(stdout);
 
   ompl::geometric::SimpleSetup simple(flight_planner.spaceInformation());
@@ -111,7 +125,8 @@ void runBench(const BenchArguments& a) {
   simple.setOptimizationObjective(flight_planner.objectivePtr());
   flight_planner.installBandSampler(a.search.band_fraction);
   ompl::tools::Benchmark benchmark(simple, "ceilplan " + a.planning.map);
-  for (const std::string& name : names) benchmark.addPlanner(planner::makeOmplPlanner(name, simple.getSpaceInformation()));
+  for (const std::string& name : names)
+    benchmark.addPlanner(planner::makePlanner(name, simple.getSpaceInformation(), reference_request.lattice));
   // OMPL's logs have no column for our objective: add the raw and post-processed costs.
   planner::RefinementOptions refinement;
   benchmark.setPostRunEvent([&](const ompl::base::PlannerPtr& p, ompl::tools::Benchmark::RunProperties& run) {
@@ -132,7 +147,9 @@ void runBench(const BenchArguments& a) {
   std::printf("\n%-16s %7s %11s %12s %12s %12s %13s\n", "planner", "solved", "first [s]", "raw / ref", "final / ref",
               "best final", "to 5 % [s]");
   nlohmann::json json;
-  json["reference"] = {{"planner", "lattice"}, {"stride_voxels", a.search.lattice_stride}, {"time_s", reference.total_time_s},
+  json["reference"] = {{"planner", planner::referencePlannerName()},
+                       {"spacing_m", a.search.lattice_spacing_m},
+                       {"time_s", reference.total_time_s},
                        {"raw_cost", reference.search_cost}, {"cost", reference.cost}};
   json["planners"] = nlohmann::json::array();
   for (const auto& experiment : benchmark.getRecordedExperimentData().planners) {
@@ -184,13 +201,14 @@ void runBench(const BenchArguments& a) {
 const CommandRegistration registration(43, [](CLI::App& parent) {
   auto arguments = std::make_shared<BenchArguments>();
   CLI::App* command = parent.add_subcommand(
-      "bench-planners", "Benchmark OMPL planners on one query against the lattice reference (ompl::tools::Benchmark)");
+      "bench-planners", "Benchmark planners on one query against the lattice reference (ompl::tools::Benchmark)");
   addPlanningOptions(command, arguments->planning);
   command->add_option("--start", arguments->start, "start body position x,y,z (m)")->required();
   command->add_option("--goal", arguments->goal, "goal body position x,y,z (m)")->required();
   command->add_option("--mode", arguments->mode)->capture_default_str()->check(CLI::IsMember({"ceiling", "free"}));
   addSearchOptions(command, arguments->search);
-  command->add_option("--planners", arguments->planners, "comma-separated OMPL planner names")->capture_default_str();
+  command->add_option("--planners", arguments->planners, "comma-separated planner names (lattice and roadmap too)")
+      ->capture_default_str();
   command->add_option("--runs", arguments->runs, "runs per planner")->capture_default_str()->check(CLI::Range(1u, 10000u));
   command->add_option("--reference-time-limit-s", arguments->reference_time_limit_s, "lattice reference search time")
       ->capture_default_str()->check(positiveFinite());

@@ -8,6 +8,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
 #include "ceilplan/mission/route_planning.hpp"
 
 #include <CLI/CLI.hpp>
@@ -40,6 +41,7 @@ void runEvaluate(const EvaluateArguments& a) {
   std::printf("%zu points: %s\n%s cost %.6g %s\nvalid: %s\n", waypoints.size(), io::figuresLine(check.evaluation).c_str(),
               a.planning.options.objective.c_str(), check.cost, check.cost_unit.c_str(), check.violation ? "false" : "true");
   if (check.violation) std::printf("violation: %s\n", check.violation->c_str());
+  std::printf("unknown space: %s\n", io::unknownSpaceLine(context->environment()).c_str());
   if (!a.json.empty()) {
     nlohmann::json out = io::figuresJson(check.evaluation);
     out["valid"] = !check.violation;
@@ -48,6 +50,7 @@ void runEvaluate(const EvaluateArguments& a) {
     out["cost"] = check.cost;
     out["cost_unit"] = check.cost_unit;
     out["waypoints"] = io::waypointsJson(waypoints);
+    out["unknown_space"] = io::unknownSpaceJson(context->environment());
     io::Provenance provenance = planningProvenance(a.planning, std::nullopt);
     provenance.input("path", a.path);
     out["provenance"] = provenance.json();

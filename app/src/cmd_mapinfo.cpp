@@ -2,6 +2,8 @@
 
 #include "command_registry.hpp"
 #include "map_options.hpp"
+
+#include "ceilplan/io/unknown_space_report.hpp"
 #include "output.hpp"
 
 #include "ceilplan/environment/environment.hpp"
@@ -89,7 +91,7 @@ void runMapinfo(const MapinfoOptions& options) {
   std::printf("leaves: %zu occupied, %zu free\n", stats.occupied_leaves, stats.free_leaves);
   std::printf("volume_m3: %.1f occupied, %.1f free, %.1f unknown (within the extent)\n", stats.occupied_volume_m3,
               stats.free_volume_m3, stats.unknown_volume_m3);
-  std::printf("unknown: %s\n", unknownSpaceLine(stats.unknown, stats.unknown_summary).c_str());
+  std::printf("unknown: %s\n", io::unknownSpaceLine(stats.unknown, stats.unknown_summary).c_str());
   std::printf("ceiling_area_share: %.3f of the floor area lies under a ceiling (an occupied surface with %s m or more "
               "of free space below, in patches of %s m2 or more)\n",
               stats.ceiling_area_share, formatNumber(stats.ceiling.min_headroom_m).c_str(),
@@ -101,7 +103,7 @@ void runMapinfo(const MapinfoOptions& options) {
       {"extent_m", {{"min", point(lo)}, {"max", point(hi)}}},
       {"leaves", {{"occupied", stats.occupied_leaves}, {"free", stats.free_leaves}}},
       {"volume_m3", {{"occupied", stats.occupied_volume_m3}, {"free", stats.free_volume_m3}, {"unknown", stats.unknown_volume_m3}}},
-      {"unknown", unknownSpaceJson(stats.unknown, stats.unknown_summary)},
+      {"unknown", io::unknownSpaceJson(stats.unknown, stats.unknown_summary)},
       {"ceiling", {{"min_headroom_m", stats.ceiling.min_headroom_m}, {"min_area_m2", stats.ceiling.min_area_m2}}},
       {"ceiling_area_share", stats.ceiling_area_share}};
   writeTextAtomically(options.json, [&](std::ostream& out) { out << report.dump(2) << '\n'; });

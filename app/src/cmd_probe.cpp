@@ -2,6 +2,8 @@
 
 #include "command_registry.hpp"
 #include "map_options.hpp"
+
+#include "ceilplan/io/unknown_space_report.hpp"
 #include "output.hpp"
 
 #include "ceilplan/io/json_values.hpp"
@@ -79,7 +81,7 @@ void runProbe(const ProbeOptions& options) {
               ground.coverage, text(ground.mean_gap_m).c_str());
   std::printf("clearance_m: %s\nvalid: %s\n", text(clearance).c_str(), violation ? "false" : "true");
   if (violation) std::printf("violation: %s\n", violation->describe().c_str());
-  std::printf("unknown: %s\n", unknownSpaceLine(index_options.unknown, unknown).c_str());
+  std::printf("unknown: %s\n", io::unknownSpaceLine(index_options.unknown, unknown).c_str());
   std::printf("assumed_free: %s\n", assumes_free ? "true (the vehicle overlaps unknown space the policy assumed free)" : "false");
   for (std::size_t r = 0; r < vehicle.rotor_positions_m.size(); ++r)
     std::printf("rotor %zu: ceiling gap %s coverage %.4f | ground gap %s coverage %.4f\n", r,
@@ -98,7 +100,7 @@ void runProbe(const ProbeOptions& options) {
       {"map", options.map},
       {"vehicle", options.vehicle.empty() ? std::string("built-in: ") + vehicle.name : options.vehicle},
       {"at", {body.x(), body.y(), body.z()}},
-      {"unknown", unknownSpaceJson(index_options.unknown, unknown)},
+      {"unknown", io::unknownSpaceJson(index_options.unknown, unknown)},
       {"assumed_free", assumes_free},
       {"point_assumed_free", environment.index()->isAssumedFree(body)},
       {"ceiling_gap_m", io::finiteOrNull(ceiling.nearest_gap_m)},

@@ -36,22 +36,4 @@ environment::UnknownSpace UnknownSpaceFlags::value() const {
   return unknown;
 }
 
-nlohmann::json unknownSpaceJson(const environment::UnknownSpace& unknown, const environment::UnknownSpaceSummary& summary) {
-  const bool fill = unknown.policy == environment::UnknownPolicy::Fill;
-  return {{"policy", environment::unknownPolicyName(unknown.policy)},
-          {"fill_max_m", fill ? nlohmann::json(unknown.fill_max_m) : nlohmann::json(nullptr)},
-          {"unknown_volume_m3", summary.unknown_volume_m3},
-          {"assumed_free_volume_m3", summary.assumed_free_volume_m3},
-          {"regions", fill ? nlohmann::json(summary.regions) : nlohmann::json(nullptr)},
-          {"filled_regions", fill ? nlohmann::json(summary.filled_regions) : nlohmann::json(nullptr)}};
-}
-
-std::string unknownSpaceLine(const environment::UnknownSpace& unknown, const environment::UnknownSpaceSummary& summary) {
-  std::string line = unknown.describe() + ": " + formatFixed(summary.assumed_free_volume_m3, 2) + " of " +
-                     formatFixed(summary.unknown_volume_m3, 2) + " m3 unknown assumed free";
-  if (unknown.policy == environment::UnknownPolicy::Fill)
-    line += " (" + std::to_string(summary.filled_regions) + " of " + std::to_string(summary.regions) + " regions)";
-  return line;
-}
-
 }  // namespace ceilplan::app

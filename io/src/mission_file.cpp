@@ -111,12 +111,24 @@ std::filesystem::path existingFile(const Section& root, const std::string& key) 
   return path;
 }
 
+environment::UnknownSpace readUnknownSpace(const Section& node) {
+  node.allowOnly({"policy", "fill_max_m"});
+  environment::UnknownSpace unknown;
+  unknown.policy = environment::unknownPolicyFromName(node.choice("policy", {"occupied", "free", "fill"}, "occupied"));
+  if (node.has("fill_max_m")) {
+    if (unknown.policy != environment::UnknownPolicy::Fill)
+      node.fail("'" + node.keyPath("fill_max_m") + "' applies only to policy: fill");
+    unknown.fill_max_m = node.number("fill_max_m", Range::above(0.0, 1000.0, "m"));
+  }
+  return unknown;
+}
+
 }  // namespace
 
 mission::Mission readMission(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Mission);
   const Section root(yaml, yaml.root(), "");
-  root.allowOnly({"map", "vehicle", "battery", "home", "origin", "speeds", "mode", "seed", "targets"});
+  root.allowOnly({"map", "vehicle", "battery", "home", "origin", "speeds", "mode", "seed", "unknown", "targets"});
   mission::Mission mission;
   mission.file = file;
   mission.map_file = existingFile(root, "map");
@@ -129,6 +141,7 @@ mission::Mission readMission(const std::filesystem::path& file) {
     mission.speeds = readSpeeds(*speeds, mission.vehicle.energy.airframe.max_speed_m_s);
   mission.mode = root.choice("mode", {"ceiling", "free", "both"}, "");
   mission.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, 1));
+  if (const std::optional<Section> unknown = root.optionalSection("unknown")) mission.unknown = readUnknownSpace(*unknown);
   mission.targets = readTargets(root);
   return mission;
 }

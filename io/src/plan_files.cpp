@@ -24,7 +24,8 @@ nlohmann::json figuresJson(const planner::PathEvaluation& e) {
           {"min_soc", e.min_soc},
           {"min_clearance_m", finiteOrNull(e.min_clearance_m)},
           {"min_ceiling_gap_m", finiteOrNull(e.min_ceiling_gap_m)},
-          {"time_under_ceiling_s", e.time_under_ceiling_s}};
+          {"time_under_ceiling_s", e.time_under_ceiling_s},
+          {"assumed_free_m", e.assumed_free_m}};
 }
 
 nlohmann::json waypointsJson(const std::vector<Eigen::Vector3d>& waypoints_m) {
@@ -36,7 +37,7 @@ nlohmann::json waypointsJson(const std::vector<Eigen::Vector3d>& waypoints_m) {
 void writePathCsv(const std::filesystem::path& file, const planner::PathEvaluation& evaluation,
                   const Provenance& provenance) {
   writeTextAtomically(file, [&](std::ostream& out) {
-    out << provenance.csvComment() << '\n' << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,ground_gap_m\n"
+    out << provenance.csvComment() << '\n' << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,ground_gap_m,assumed_free\n"
         << std::setprecision(12);
     for (const planner::PathSample& s : evaluation.samples) {
       out << s.t_s << ',' << s.position_m.x() << ',' << s.position_m.y() << ',' << s.position_m.z() << ','
@@ -44,7 +45,7 @@ void writePathCsv(const std::filesystem::path& file, const planner::PathEvaluati
       if (std::isfinite(s.ceiling_gap_m)) out << s.ceiling_gap_m;
       out << ',' << s.current_a << ',' << s.soc << ',';
       if (std::isfinite(s.ground_gap_m)) out << s.ground_gap_m;
-      out << '\n';
+      out << ',' << (s.assumed_free ? 1 : 0) << '\n';
     }
   });
 }
@@ -88,7 +89,9 @@ std::string figuresLine(const planner::PathEvaluation& e) {
                 "%.1f s under the ceiling",
                 e.length_m, e.duration_s, e.charge_ah, e.energy_wh, e.fec, e.mean_current_a, 100.0 * e.min_soc,
                 e.time_under_ceiling_s);
-  return line;
+  std::string text = line;
+  if (e.assumed_free_m > 0.0) text += ", " + formatFixed(e.assumed_free_m, 2) + " m through space assumed free";
+  return text;
 }
 
 namespace {

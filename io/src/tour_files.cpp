@@ -5,6 +5,7 @@
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/map_views.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -61,6 +62,8 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   json["ageing_model"] = tour.plan.ageing_model;
   json["order_method"] = tour.order.method;
   json["between_sorties"] = mission.battery.between_sorties == mission::Turnaround::Swap ? "swap" : "recharge";
+  json["unknown_space"] = unknownSpaceJson(tour.unknown_space, tour.unknown_summary);
+  json["assumed_free_m"] = tour.assumed_free_m;
   json["targets_total"] = tour.stops.size();
   int visited = 0;
   for (const mission::Sortie& sortie : tour.plan.sorties) visited += static_cast<int>(sortie.targets.size());
@@ -125,7 +128,7 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
 void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour, const Provenance& provenance) {
   writeTextAtomically(file, [&](std::ostream& out) {
     out << provenance.csvComment() << '\n'
-        << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie,ground_gap_m,phase\n"
+        << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie,ground_gap_m,phase,assumed_free\n"
         << std::setprecision(12);
     for (std::size_t k = 0; k < tour.record.sorties.size(); ++k) {
       const mission::SortieRecord& sortie = tour.record.sorties[k];
@@ -136,14 +139,14 @@ void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResu
         if (std::isfinite(s.ceiling_gap_m)) out << s.ceiling_gap_m;
         out << ',' << s.current_a << ',' << s.soc << ',' << k + 1 << ',';
         if (std::isfinite(s.ground_gap_m)) out << s.ground_gap_m;
-        out << ',' << phaseName(sortie.phases[i]) << '\n';
+        out << ',' << phaseName(sortie.phases[i]) << ',' << (s.assumed_free ? 1 : 0) << '\n';
       }
       // The pack's recharge to the start SOC, on its own clock: where the wear models see it.
       const planner::PathSample& landed = sortie.samples.back();
       out << sortie.takeoff_s + landed.t_s + sortie.recharge_s << ',' << landed.position_m.x() << ','
           << landed.position_m.y() << ',' << landed.position_m.z() << ",0,,"
           << -tour.plan.sorties[k].charge_ah * 3600.0 / std::max(sortie.recharge_s, 1e-9) << ',' << tour.start_soc << ','
-          << k + 1 << ",,recharge\n";
+          << k + 1 << ",,recharge,0\n";
     }
   });
 }

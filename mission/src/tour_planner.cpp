@@ -28,9 +28,8 @@ FractionCallback stageProgress(const TourOptions& options, const std::string& st
 // minimum gap, so the leg's end passes the dense re-check with its rounding.
 constexpr double kViewpointGapMarginM = 0.01;
 
-// A leg an OMPL planner misses is searched again this many times longer, twice: BIT* finds the
-// free-mode bridge's long legs through the standoff environment in a few seconds, but not
-// always in 0.5 s.
+// A leg an OMPL planner misses is searched again this many times longer, twice: BIT* finds
+// long legs round the bridge's girders in a few seconds, but not always in 0.5 s.
 constexpr double kRetryTimeFactors[] = {10.0, 40.0};
 
 // Hovering at a viewpoint under the full model: the sample the record repeats over the dwell.
@@ -52,8 +51,8 @@ std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext&
   ViewpointOptions viewpoint_options;
   viewpoint_options.mode = mode;
   viewpoint_options.min_ceiling_gap_m = context.options().min_ceiling_gap_m + kViewpointGapMarginM;
-  const environment::Environment& environment =
-      mode == FlightMode::Ceiling ? context.environment() : context.standoffEnvironment();
+  viewpoint_options.standoff_m = context.options().standoff_m;
+  const environment::Environment& environment = context.environment();
   std::vector<TourStop> stops;
   for (const InspectionTarget& target : mission.targets) {
     TourStop stop{target, {}, {}};
@@ -167,32 +166,37 @@ DutyProjection projectDuty(const TourResult& tour, const BatterySpec& battery, c
   return projection;
 }
 
-// The leg planner that searches one roadmap from each place (docs/tours.md).
-const std::string kRoadmapPlanner = "roadmap";
-
 // Refinement of roadmap legs stops at its evaluation budget; this time limit only guards
 // against a pathological case, so refined legs do not depend on the machine's speed.
 constexpr double kRefinementTimeGuardS = 30.0;
 
 std::string legName(const TourResult& tour, int from, int to) { return tour.names[from] + " -> " + tour.names[to]; }
 
-// The rules, cost model and planner for the legs between two places (in free mode the rules
-// exempt the two from the standoff).
+// The rules, cost model and planner for the legs between two places.
 struct LegPlanner {
   PlanningContext::Mode planning;
   std::unique_ptr<planner::FlightPlanner> planner;
 };
 
+planner::LatticeSettings latticeSettings(const PlanningContext& context, const TourOptions& options) {
+  planner::LatticeSettings settings;
+  settings.spacing_m = options.lattice_stride > 0
+                           ? options.lattice_stride * context.environment().grid().frame().resolution_m()
+                           : options.lattice_spacing_m;
+  settings.workers = options.workers;
+  return settings;
+}
+
 LegPlanner legPlanner(const PlanningContext& context, FlightMode mode, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  LegPlanner leg{context.mode(mode, a, b), nullptr};
+  LegPlanner leg{context.mode(mode), nullptr};
   leg.planner = std::make_unique<planner::FlightPlanner>(*leg.planning.rules, *leg.planning.model, context.objective(a, b));
   return leg;
 }
 
 // One search between two places with a pairwise planner (OMPL's or the lattice A*), the path
 // post-processed.
-std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner& leg, const TourOptions& options,
-                                       int from, int to) {
+std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const PlanningContext& context, const LegPlanner& leg,
+                                       const TourOptions& options, int from, int to) {
   const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
   planner::PlanRequest request;
   request.start_m = a;
@@ -200,7 +204,8 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
   request.planner = options.planner;
   request.time_limit_s = options.time_limit_s;
   request.refinement.time_limit_s = options.time_limit_s;
-  request.lattice.stride_voxels = options.lattice_stride;
+  request.lattice = latticeSettings(context, options);
+  request.lattice.workers = 1;
   // A clear straight line needs no search: the refinement bends it where that saves charge
   // (up towards a ceiling), and the dense re-check still applies.
   if (options.straight_when_clear && leg.planning.rules->isMotionValid(a, b)) {
@@ -209,7 +214,8 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
   }
   // An anytime planner may miss a narrow passage in a short search: search again, longer.
   std::string failures;
-  const int attempts = options.planner == "lattice" ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
+  const int attempts =
+      planner::plannerInfo(options.planner).deterministic() ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
   for (int attempt = 0; attempt < attempts; ++attempt) {
     if (attempt > 0) request.time_limit_s = kRetryTimeFactors[attempt - 1] * options.time_limit_s;
     try {
@@ -233,12 +239,10 @@ LegTable roadmapLegs(const TourResult& tour, const PlanningContext& context, Fli
   const LegPlanner roadmap_planner = legPlanner(context, mode, home, home);
   const planner::SafetyRules& rules = *roadmap_planner.planning.rules;
   const planner::FlightObjective& objective = roadmap_planner.planner->objective();
-
-  planner::RoadmapOptions roadmap_options;
-  roadmap_options.stride_voxels = options.lattice_stride;
-  roadmap_options.workers = options.workers;
-  roadmap_options.progress = stageProgress(options, flightModeName(tour.mode) + " mode: building the roadmap");
-  const planner::LatticeRoadmap roadmap(rules, objective, tour.places_m, roadmap_options);
+  planner::LatticeSettings settings = latticeSettings(context, options);
+  settings.progress = stageProgress(options, flightModeName(tour.mode) + " mode: building the roadmap");
+  planner::LatticeRoadmap roadmap(roadmap_planner.planner->spaceInformation(), settings);
+  roadmap.build(objective, tour.places_m);
 
   const int places = static_cast<int>(tour.places_m.size());
   const RoutesFrom routes_from = [&](int from) {
@@ -247,16 +251,17 @@ LegTable roadmapLegs(const TourResult& tour, const PlanningContext& context, Fli
     for (int to = 0; to < places; ++to) {
       if (to == from) continue;
       const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
-      const planner::SafetyRules pair_rules = rules.withExemptions({a, b});
       std::optional<std::vector<Eigen::Vector3d>> best;
-      if (routes[to]) best = planner::shortcutPath(routes[to]->waypoints, pair_rules, objective);
-      if (options.straight_when_clear && pair_rules.isMotionValid(a, b) &&
+      if (routes[to]) best = planner::shortcutPath(routes[to]->waypoints, rules, objective);
+      if (options.straight_when_clear && rules.isMotionValid(a, b) &&
           (!best || objective.motionCost(a, b) < objective.pathCost(*best)))
         best = std::vector<Eigen::Vector3d>{a, b};
-      if (!best)
-        throw NoPathError(flightModeName(tour.mode) + " mode: no path between " + tour.names[from] + " and " + tour.names[to] +
-                          " on the roadmap (every " + std::to_string(options.lattice_stride) +
-                          " voxels); if one exists through a narrower gap, try a smaller --lattice-stride");
+      if (!best) {
+        const std::optional<planner::Blockage> blockage = roadmap.blockage(from, to);
+        throw NoPathError(flightModeName(tour.mode) + " mode: no path between " + tour.names[from] + " and " +
+                          tour.names[to] + ": " +
+                          (blockage ? blockage->describe() : std::string("the roadmap does not join them")));
+      }
       paths[to] = std::move(*best);
     }
     return paths;
@@ -306,9 +311,8 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   tour.start_soc = context.battery().start_soc;
   tour.reserve_soc = context.battery().reserve_soc;
 
-  // Home as the planner would check a start: in free mode the approach zone around it exempts
-  // it from the standoff, so a home near the ground is accepted.
-  const PlanningContext::Mode home_mode = context.mode(mode, mission.home_m, mission.home_m);
+  // Home as the planner would check a start (the same rules in both modes).
+  const PlanningContext::Mode home_mode = context.mode(mode);
   if (!home_mode.rules->isStateValid(mission.home_m))
     throw ceilplan::InputError(mission.name() + ": home " + formatPoint(mission.home_m) +
                                 " is not a valid position for the vehicle (inside or too close to a structure, or "
@@ -331,12 +335,14 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   };
   const int places = static_cast<int>(tour.places_m.size());
   planner::RefinementOptions refinement;
-  if (options.planner == kRoadmapPlanner) {
+  if (planner::plannerInfo(options.planner).multiQuery()) {
     tour.legs = roadmapLegs(tour, context, mode, options, score);
     refinement.time_limit_s = kRefinementTimeGuardS;
   } else {
     refinement.time_limit_s = options.time_limit_s;
-    const PairPlanner plan_pair = [&](int from, int to) { return searchLeg(tour, legPlannerFor(from, to), options, from, to); };
+    const PairPlanner plan_pair = [&](int from, int to) {
+      return searchLeg(tour, context, legPlannerFor(from, to), options, from, to);
+    };
     tour.legs = planLegsByPair(places, plan_pair, score, options.workers,
                                stageProgress(options, flightModeName(tour.mode) + " mode: planning legs"));
   }
@@ -384,6 +390,10 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
         throw Error(flightModeName(tour.mode) + " mode: leg " + legName(tour, leg.from, leg.to) +
                                  " fails the dense re-check: " + *violation);
 
+  tour.unknown_space = context.environment().index()->unknownSpace();
+  tour.unknown_summary = context.environment().index()->unknownSummary();
+  for (const Sortie& sortie : tour.plan.sorties)
+    for (const SortieLeg& leg : sortie.legs) tour.assumed_free_m += tour.legs[leg.from][leg.to].evaluation.assumed_free_m;
   tour.record = recordFlight(tour, context);
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
     tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));

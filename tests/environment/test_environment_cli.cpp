@@ -90,7 +90,7 @@ TEST(UnknownSpaceFlags, BadValuesGiveOneLineNamingTheFlag) {
       {probe + " --unknown maybe", 2, "--unknown"},
       {probe + " --unknown fill --unknown-fill-max-m -1", 2, "--unknown-fill-max-m"},
       {probe + " --unknown fill --unknown-fill-max-m nan", 2, "--unknown-fill-max-m"},
-      {probe + " --unknown-fill-max-m 0.5", 1, "applies only to --unknown fill"},
+      {probe + " --unknown-fill-max-m 0.5", 2, "applies only to --unknown fill"},
       {probe + " --unknown-free", 2, "--unknown-free"},  // the old switch: replaced by --unknown free
       {"mapinfo --map " + kBridge + " --unknown sometimes", 2, "--unknown"},
   };
@@ -118,7 +118,7 @@ TEST(MapinfoCommand, ReportsThePolicyAndWritesASlice) {
   EXPECT_NE(slice.find(",assumed_free,"), std::string::npos);  // above the deck
   EXPECT_NE(slice.find(",free,"), std::string::npos);          // beside the deck
   const auto outside = testing::runCeilplan("mapinfo --map " + kBridge + " --slice-z 9 --slice-csv " + (dir / "x.csv").string());
-  EXPECT_EQ(outside.exit_code, 1);
+  EXPECT_EQ(outside.exit_code, 2);  // bad input (docs/cli.md)
   EXPECT_NE(outside.err.find("--slice-z 9 lies outside the map"), std::string::npos) << outside.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "x.csv"));
 }
@@ -138,7 +138,7 @@ TEST(MapgenCommand, BuildsALongerBridgeAndRefusesALengthElsewhere) {
   for (const char* bad : {"--scene bridge --bridge-length-m 50", "--scene tunnel --bridge-length-m 96",
                                  "--scene bridge --bridge-length-m 8"}) {
     const auto refused = testing::runCeilplan(std::string("mapgen ") + bad + " --out " + (dir / "x.bt").string());
-    EXPECT_EQ(refused.exit_code, 1) << bad;
+    EXPECT_EQ(refused.exit_code, 2) << bad;
     EXPECT_NE(refused.err.find("bridge length"), std::string::npos) << refused.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "x.bt"));
   }

@@ -121,7 +121,7 @@ void visitsEveryTargetWithItsDwellAboveTheReserve(const BothModesRun& run) {
     const io::CsvColumns csv =
         io::CsvColumns::read(run.dir / "out" / mode / "path.csv", {"t_s", "x", "y", "z", "speed_m_s"});
     EXPECT_EQ(csv.columnNames(), (std::vector<std::string>{"t_s", "x", "y", "z", "speed_m_s", "ceiling_gap_m", "current_a",
-                                                           "soc", "sortie", "ground_gap_m", "phase"}));
+                                                           "soc", "sortie", "ground_gap_m", "phase", "assumed_free"}));
     const auto& t = csv.column("t_s");
     const auto& speed = csv.column("speed_m_s");
     for (const auto& target : tour["targets"]) {

@@ -5,6 +5,7 @@
 
 #include "ceilplan/battery/duty_cycle.hpp"
 #include "ceilplan/core/progress.hpp"
+#include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/mission/flight_mode.hpp"
 #include "ceilplan/mission/flight_record.hpp"
 #include "ceilplan/mission/mission.hpp"
@@ -13,6 +14,7 @@
 #include "ceilplan/mission/tour_legs.hpp"
 #include "ceilplan/mission/tour_order.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
+#include "ceilplan/planner/planner_factory.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -26,11 +28,12 @@ inline constexpr int kDefaultToursPerDay = 15;
 
 struct TourOptions {
   std::uint32_t seed = 1;               // the order heuristic's; OMPL's when an OMPL planner plans the legs
-  // The leg planner: "roadmap" (the default) searches one lattice roadmap from each place,
-  // deterministic; OMPL's planners and "lattice" (A*) search each pair of places.
-  std::string planner = "roadmap";
+  // The leg planner, by the factory's name: the roadmap (the default) searches one lattice
+  // roadmap from each place, deterministic; the other planners search each pair of places.
+  std::string planner = planner::defaultTourPlannerName();
   double time_limit_s = 0.5;            // pairwise planners: search time per leg, and as much again for refinement
-  int lattice_stride = 4;               // roadmap and lattice: voxels between lattice nodes
+  double lattice_spacing_m = 0.4;       // roadmap and lattice: between lattice nodes
+  int lattice_stride = 0;               // when > 0, the spacing in voxels of the map instead
   bool straight_when_clear = true;      // a pair joined by a valid straight motion skips the search
   std::string ageing_model = "xu";      // the split minimises this model's wear
   double free_standoff_max_m = 3.0;     // free mode: farthest viewpoint (a conventional planner zooms)
@@ -73,6 +76,9 @@ struct TourResult {
   DutyProjection duty;
   double start_soc = 0.0;
   double reserve_soc = 0.0;
+  environment::UnknownSpace unknown_space;             // the map's policy, as planned
+  environment::UnknownSpaceSummary unknown_summary;    // what it assumed free in the map
+  double assumed_free_m = 0.0;                         // of the flown route, relying on the policy
 };
 
 // Plans the mission's tour in one mode with the context's map, vehicle and battery. Throws
