@@ -1,12 +1,13 @@
-#include "csv_table.hpp"
+#include "ceilplan/io/csv_table.hpp"
+
+#include "ceilplan/core/error.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <stdexcept>
 
-namespace ceilplan::app {
+namespace ceilplan::io {
 namespace {
 
 std::string trimmed(const std::string& text) {
@@ -43,7 +44,7 @@ bool skipped(const std::string& line) {
 CsvTable CsvTable::read(const std::filesystem::path& path) {
   std::ifstream input(path);
   if (!input)
-    throw std::runtime_error("cannot open " + path.string() + "; check the path and permissions");
+    throw InputError("cannot open " + path.string() + "; check the path and permissions");
   return parse(input, path.string());
 }
 
@@ -65,9 +66,9 @@ CsvTable CsvTable::parse(std::istream& input, const std::string& source) {
       for (std::string& field : fields) {
         const std::string name = unquoted(field);
         if (name.empty())
-          throw std::runtime_error(where(table.names_.size()) + ": empty column name in the header");
+          throw InputError(where(table.names_.size()) + ": empty column name in the header");
         if (std::find(table.names_.begin(), table.names_.end(), name) != table.names_.end())
-          throw std::runtime_error(where(table.names_.size()) + ": column '" + name +
+          throw InputError(where(table.names_.size()) + ": column '" + name +
                                    "' appears twice in the header");
         table.names_.push_back(name);
       }
@@ -76,23 +77,27 @@ CsvTable CsvTable::parse(std::istream& input, const std::string& source) {
       continue;
     }
     if (fields.size() != table.names_.size())
-      throw std::runtime_error(where(table.names_.size()) + ": " + std::to_string(fields.size()) +
+      throw InputError(where(table.names_.size()) + ": " + std::to_string(fields.size()) +
                                " fields, but the header names " +
                                std::to_string(table.names_.size()) + " columns");
     for (std::size_t c = 0; c < fields.size(); ++c) {
       const std::string& field = fields[c];
       char* end = nullptr;
       const double value = std::strtod(field.c_str(), &end);
-      if (field.empty() || end != field.c_str() + field.size())
-        throw std::runtime_error(where(c) + ": '" + field + "' is not a number");
+      if (field.empty()) {
+        table.columns_[c].push_back(std::nan(""));
+        continue;
+      }
+      if (end != field.c_str() + field.size())
+        throw InputError(where(c) + ": '" + field + "' is not a number");
       if (!std::isfinite(value))
-        throw std::runtime_error(where(c) + ": '" + field + "' is not a finite number");
+        throw InputError(where(c) + ": '" + field + "' is not a finite number");
       table.columns_[c].push_back(value);
     }
     table.lines_.push_back(line_number);
   }
-  if (input.bad()) throw std::runtime_error("failed while reading " + source);
-  if (!have_header) throw std::runtime_error(source + " is empty; expected a header row of column names");
+  if (input.bad()) throw InputError("failed while reading " + source);
+  if (!have_header) throw InputError(source + " is empty; expected a header row of column names");
   return table;
 }
 
@@ -100,14 +105,22 @@ bool CsvTable::hasColumn(const std::string& name) const {
   return std::find(names_.begin(), names_.end(), name) != names_.end();
 }
 
-const std::vector<double>& CsvTable::column(const std::string& name) const {
+const std::vector<double>& CsvTable::columnWithGaps(const std::string& name) const {
   const auto it = std::find(names_.begin(), names_.end(), name);
   if (it == names_.end()) {
     std::string available;
     for (const auto& n : names_) available += (available.empty() ? "" : ", ") + n;
-    throw std::runtime_error(source_ + " has no column '" + name + "'; columns: " + available);
+    throw InputError(source_ + " has no column '" + name + "'; columns: " + available);
   }
   return columns_[static_cast<std::size_t>(it - names_.begin())];
 }
 
-}  // namespace ceilplan::app
+const std::vector<double>& CsvTable::column(const std::string& name) const {
+  const std::vector<double>& values = columnWithGaps(name);
+  for (std::size_t row = 0; row < values.size(); ++row)
+    if (std::isnan(values[row]))
+      throw InputError(source_ + " line " + std::to_string(lines_[row]) + ", column '" + name + "': empty field");
+  return values;
+}
+
+}  // namespace ceilplan::io
