@@ -108,8 +108,10 @@ mission::TrajectoryLimits trajectoryLimits(const MissionFacts& facts) {
   return limits;
 }
 
-MapCheck::MapCheck(const MissionFacts& facts) : map(environment::OccupancyMap::load(facts.map)) {
-  environment = std::make_unique<environment::Environment>(map, app::readVehicleGeometry(facts.vehicle));
+MapCheck::MapCheck(const MissionFacts& facts, bool unknown_is_free) : map(environment::OccupancyMap::load(facts.map)) {
+  environment::EnvironmentOptions options;
+  options.unknown_is_occupied = !unknown_is_free;
+  environment = std::make_unique<environment::Environment>(map, app::readVehicleGeometry(facts.vehicle), options);
   rules = std::make_unique<planner::SafetyRules>(*environment, 0.05);
 }
 

@@ -54,9 +54,9 @@ std::vector<TourOutput> readTourOutputs(const std::filesystem::path& dir, const 
 mission::TrajectoryLimits trajectoryLimits(const MissionFacts& facts);
 
 // The map indexed for the mission's vehicle, and the tour's dense re-check (planner rules with
-// the default 0.05 m rotor-to-ceiling gap).
+// the default 0.05 m rotor-to-ceiling gap). Unknown space is an obstacle unless `unknown_is_free`.
 struct MapCheck {
-  explicit MapCheck(const MissionFacts& facts);
+  explicit MapCheck(const MissionFacts& facts, bool unknown_is_free = false);
   environment::OccupancyMap map;
   std::unique_ptr<environment::Environment> environment;
   std::unique_ptr<planner::SafetyRules> rules;

@@ -18,6 +18,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <chrono>
 
 namespace ceilplan::testing {
@@ -229,6 +232,73 @@ TEST_F(BridgeExports, ReportShowsBothModesTheStructureNearTheRoutesAndTheCompari
   }
   EXPECT_GE(data["comparison"]["rows"].size(), 4u);
   EXPECT_EQ(data["comparison"]["header"].size(), 4u);
+}
+
+// A scan nobody here made: OctoMap's own geb079 (a corridor of building 079, Freiburg, 0.08 m).
+// A route between free places found in it is flown within limits through the dense re-check,
+// and the report shows the scanned structure near it. The scan leaves most of the corridor
+// unknown, so here unknown space counts as free (the user's policy, `--unknown-free`).
+TEST(RealScan, Geb079RouteFlownAndReported) {
+  const std::filesystem::path scan = "/usr/share/doc/liboctomap-dev/examples/data/geb079.bt";
+  ASSERT_TRUE(std::filesystem::exists(scan)) << "liboctomap-dev ships " << scan;
+  MissionFacts facts;
+  facts.map = scan;
+  facts.vehicle = kMaps / "vehicles" / "quad.yaml";
+  const MapCheck map(facts, true);
+  const environment::Environment& env = *map.environment;
+  // Free places every half metre at 1.2 m, then a chain of them joined by valid straight motions.
+  std::vector<Eigen::Vector3d> places;
+  const Eigen::AlignedBox3d box = env.grid().frame().bounds();
+  for (double x = box.min().x() + 0.5; x < box.max().x(); x += 0.5)
+    for (double y = box.min().y() + 0.5; y < box.max().y(); y += 0.5)
+      if (env.isStateValid({x, y, 1.2})) places.emplace_back(x, y, 1.2);
+  ASSERT_GT(places.size(), 10u);
+  std::vector<Eigen::Vector3d> chain;
+  for (std::size_t start = 0; start < places.size() && chain.size() < 4; start += 7) {
+    chain = {places[start]};
+    for (int hop = 0; hop < 6; ++hop) {
+      const Eigen::Vector3d from = chain.back();
+      const Eigen::Vector3d* best = nullptr;
+      for (const Eigen::Vector3d& p : places) {
+        const double d = (p - from).norm();
+        const bool visited =
+            std::any_of(chain.begin(), chain.end(), [&](const Eigen::Vector3d& c) { return (c - p).norm() < 1.0; });
+        if (!visited && d > 1.5 && d < 6.0 && (!best || d > (*best - from).norm()) && !map.rules->checkPathDensely({from, p}))
+          best = &p;
+      }
+      if (!best) break;
+      chain.push_back(*best);
+    }
+  }
+  ASSERT_GE(chain.size(), 4u) << "no route through the scan's free space";
+  mission::SortieRoute route;
+  route.home_m = chain.front();
+  for (std::size_t k = 1; k < chain.size(); ++k) route.waypoints.emplace_back(chain[k]);
+  route.waypoints.back().hold_s = 5.0;
+  route.waypoints.back().yaw_deg = 180.0;
+  mission::TrajectoryOptions options;
+  options.path_is_safe = [&](const std::vector<Eigen::Vector3d>& p) { return map.safe(p); };
+  const mission::Trajectory t = mission::timeScale(route, trajectoryLimits(facts), options);
+  expectWithinLimits(t, route.cruise_speed_m_s);
+  std::vector<Eigen::Vector3d> positions;
+  for (const auto& s : t.setpoints) positions.push_back(s.position_m);
+  const auto violation = env.checkPathDensely(positions);
+  EXPECT_FALSE(violation) << violation->describe();
+
+  io::ReportModel model;
+  model.title = "geb079";
+  model.home_m = route.home_m;
+  io::ReportPlan plan;
+  plan.name = "scan";
+  for (const auto& s : t.setpoints) plan.samples.push_back({s.t_s, s.position_m, 9.5, 0.95 - 0.0001 * s.t_s, 1});
+  model.plans.push_back(plan);
+  model.structure = io::structureNear(env.grid(), positions, 2.0);
+  EXPECT_GT(model.structure.centres_m.size(), 500u);
+  const std::filesystem::path dir = scratchDirectory("geb079");
+  io::writeReportHtml(dir / "report.html", model);
+  EXPECT_GT(std::filesystem::file_size(dir / "report.html"), 800000u);
+  std::printf("geb079: %zu-waypoint route, %zu setpoints, %d blended corners, %zu structure voxels\n",
+              route.waypoints.size(), t.setpoints.size(), t.blended_corners, model.structure.centres_m.size());
 }
 
 }  // namespace
