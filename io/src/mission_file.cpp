@@ -128,7 +128,8 @@ environment::UnknownSpace readUnknownSpace(const Section& node) {
 mission::Mission readMission(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Mission);
   const Section root(yaml, yaml.root(), "");
-  root.allowOnly({"map", "vehicle", "battery", "home", "origin", "speeds", "mode", "seed", "unknown", "targets"});
+  root.allowOnly(
+      {"map", "vehicle", "battery", "home", "origin", "speeds", "mode", "seed", "unknown", "trajectory", "targets"});
   mission::Mission mission;
   mission.file = file;
   mission.map_file = existingFile(root, "map");
@@ -142,6 +143,14 @@ mission::Mission readMission(const std::filesystem::path& file) {
   mission.mode = root.choice("mode", {"ceiling", "free", "both"}, "");
   mission.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, 1));
   if (const std::optional<Section> unknown = root.optionalSection("unknown")) mission.unknown = readUnknownSpace(*unknown);
+  if (const std::optional<Section> trajectory = root.optionalSection("trajectory")) {
+    trajectory->allowOnly({"rate_hz", "corner_tolerance_m", "stop_turn_deg", "frame"});
+    mission::TrajectoryOptions& t = mission.trajectory;
+    t.rate_hz = trajectory->number("rate_hz", Range::closed(1.0, 1000.0, "Hz"), t.rate_hz);
+    t.corner_tolerance_m = trajectory->number("corner_tolerance_m", Range::closed(0.0, 5.0, "m"), t.corner_tolerance_m);
+    t.stop_turn_deg = trajectory->number("stop_turn_deg", Range::closed(0.0, 90.0, "deg"), t.stop_turn_deg);
+    mission.trajectory_ned = trajectory->choice("frame", {"enu", "ned"}, "enu") == "ned";
+  }
   mission.targets = readTargets(root);
   return mission;
 }

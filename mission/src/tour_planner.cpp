@@ -395,6 +395,10 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   for (const Sortie& sortie : tour.plan.sorties)
     for (const SortieLeg& leg : sortie.legs) tour.assumed_free_m += tour.legs[leg.from][leg.to].evaluation.assumed_free_m;
   tour.record = recordFlight(tour, context);
+  std::vector<RouteStop> route_stops;
+  for (const TourStop& stop : tour.stops) route_stops.push_back({stop.target.name, stop.target.point_m, stop.target.dwell_s});
+  tour.routes = sortieRoutes(tour.plan, tour.legs, route_stops, mission);
+  tour.trajectories = routeTrajectories(tour.routes, mission, context.baseRules());
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
     tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));
   tour.duty = projectDuty(tour, context.battery(), options);
