@@ -107,10 +107,13 @@ DutyCycle DutyStudyOptions::dutyCycle(double flight_current_a) const {
 double DutyStudyOptions::studyMissions() const { return static_cast<double>(missions_per_day) * studyDays(); }
 
 double DutyStudyOptions::recordedRunSamples() const {
-  // Each mission records a start and an end point per segment, its steps, and the rest to its
-  // slot's end; each day one more.
-  const MissionTemplate one = mission(flight_currents_a.empty() ? 0.0 : flight_currents_a.front());
-  return studyMissions() * (stepsPerMission(one, step_s) + 2.0 * (one.segments.size() + 1)) + studyDays();
+  // Each mission records its steps and a start and an end point per segment and for the rest to
+  // its slot's end; each night its steps and a start and an end point.
+  const DutyCycle duty = dutyCycle(flight_currents_a.empty() ? 0.0 : flight_currents_a.front());
+  const double night_s = std::max(0.0, duty.day_s - missions_per_day * duty.mission.periodS());
+  const double per_night = (step_s > 0.0 ? std::ceil(night_s / step_s) : 0.0) + 2.0;
+  return studyMissions() * (stepsPerMission(duty.mission, step_s) + 2.0 * (duty.mission.segments.size() + 1)) +
+         studyDays() * per_night;
 }
 
 void DutyStudyOptions::validate() const {
