@@ -175,6 +175,11 @@ DutyStudyResult runDutyStudy(const DutyStudyOptions& options) {
       throw InfeasibleError("case " + caseLabel(flight_current_a) + ": " + e.what() +
                             "; fly less, charge longer or start fuller");
     }
+    double start_soc = options.soc_start;
+    for (const MissionTally& mission : study_case.run.missions) {
+      study_case.max_dod = std::max(study_case.max_dod, start_soc - mission.min_soc);
+      start_soc = mission.end_soc;  // the pack rests overnight without self-discharge
+    }
     study_case.ageing = projectAgeing(options, duty, flight_current_a);
     result.cases.push_back(std::move(study_case));
   }

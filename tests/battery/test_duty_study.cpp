@@ -52,6 +52,7 @@ TEST(DutyStudy, ReproducesThePapersTable) {
     EXPECT_NEAR(c.run.minSoc(), 0.95 - i / 3.0 / 5.2, 1e-12);
     EXPECT_NEAR(c.run.fecTotal(), 450 * i / 3.0 / 5.2, 1e-9);  // 274.04 and 230.77
     EXPECT_NEAR(c.run.fecPerDay(), 15 * i / 3.0 / 5.2, 1e-9);
+    EXPECT_NEAR(c.max_dod, i / 3.0 / 5.2, 1e-12);  // every mission charges back to 95 %
     EXPECT_TRUE(c.ageing.empty());
   }
   EXPECT_NEAR(result.cases[0].run.missions.back().charge_end_s / 60.0, 43.5, 1e-9);  // 30 s steps

@@ -7,10 +7,12 @@
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/duty_cycle.hpp"
+#include "ceilplan/battery/duty_study.hpp"
 #include "ceilplan/battery/lifetime.hpp"
 #include "ceilplan/battery/rainflow.hpp"
 
 #include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
@@ -24,6 +26,7 @@
 #include "ceilplan/mission/tour_planner.hpp"
 
 #include "ceilplan/io/autopilot_export.hpp"
+#include "ceilplan/io/duty_study_files.hpp"
 #include "ceilplan/io/mission_file.hpp"
 #include "ceilplan/io/plan_files.hpp"
 #include "ceilplan/io/tour_files.hpp"

@@ -74,6 +74,7 @@ struct DutyStudyAgeing {
 struct DutyStudyCase {
   double flight_current_a = 0.0;
   DutyResult run;                  // the duty cycle over the whole study, pack held new
+  double max_dod = 0.0;            // the deepest mission's start SOC minus its lowest
   double fec_reduction_pct = 0.0;  // 100 (1 - this FEC / the first case's)
   std::vector<DutyStudyAgeing> ageing;  // one per DutyStudyOptions::ageing_models, in order
 };
