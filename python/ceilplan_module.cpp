@@ -232,15 +232,14 @@ PYBIND11_MODULE(ceilplan, m) {
       .def(
           "probe",
           [](const PyEnvironment& self, double x, double y, double z) {
-            const environment::Environment& environment = self.context->environment();
-            const Eigen::Vector3d body(x, y, z);
+            const environment::PositionProbe probe =
+                environment::probePosition(self.context->environment(), Eigen::Vector3d(x, y, z));
             py::dict d;
-            d["ceiling"] = gapsDict(environment.ceiling(body));
-            d["ground"] = gapsDict(environment.ground(body));
-            d["clearance_m"] = infinityAsNone(environment.clearance_m(body));
-            const auto violation = environment.stateViolation(body);
-            d["valid"] = !violation;
-            d["violation"] = violation ? py::object(py::str(violation->describe())) : py::none();
+            d["ceiling"] = gapsDict(probe.ceiling);
+            d["ground"] = gapsDict(probe.ground);
+            d["clearance_m"] = infinityAsNone(probe.clearance_m);
+            d["valid"] = !probe.violation;
+            d["violation"] = probe.violation ? py::object(py::str(probe.violation->describe())) : py::none();
             return d;
           },
           "Gaps above and below each rotor, clearance and validity with the body centre at (x, y, z)", py::arg("x"),

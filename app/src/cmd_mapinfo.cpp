@@ -3,11 +3,10 @@
 #include "command_registry.hpp"
 #include "output.hpp"
 
-#include "ceilplan/environment/column_index.hpp"
 #include "ceilplan/environment/map_statistics.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
-
-#include <nlohmann/json.hpp>
+#include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/report_json.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -21,14 +20,10 @@ struct MapinfoOptions {
   std::string json;
 };
 
-nlohmann::json point(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
-
 void runMapinfo(const MapinfoOptions& options) {
   using namespace environment;
   const OccupancyMap map = OccupancyMap::load(options.map);
-  const VoxelGrid grid = VoxelGrid::fromTree(map.tree());
-  const ColumnIndex columns(grid);
-  const MapStatistics stats = computeStatistics(map, grid, columns);
+  const MapStatistics stats = computeStatistics(map);
   const Eigen::Vector3d lo = stats.extent_m.min(), hi = stats.extent_m.max();
   std::printf("map: %s\n", options.map.c_str());
   std::printf("resolution_m: %g\n", stats.resolution_m);
@@ -40,15 +35,9 @@ void runMapinfo(const MapinfoOptions& options) {
   std::printf("ceiling_area_share: %.3f of the floor area has a ceiling within %g m\n", stats.ceiling_area_share,
               stats.ceiling_within_m);
   if (options.json.empty()) return;
-  const nlohmann::json report = {
-      {"map", options.map},
-      {"resolution_m", stats.resolution_m},
-      {"extent_m", {{"min", point(lo)}, {"max", point(hi)}}},
-      {"leaves", {{"occupied", stats.occupied_leaves}, {"free", stats.free_leaves}}},
-      {"volume_m3", {{"occupied", stats.occupied_volume_m3}, {"free", stats.free_volume_m3}, {"unknown", stats.unknown_volume_m3}}},
-      {"ceiling_within_m", stats.ceiling_within_m},
-      {"ceiling_area_share", stats.ceiling_area_share}};
-  writeTextAtomically(options.json, [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+  nlohmann::json report = io::mapStatisticsJson(stats);
+  report["map"] = options.map;
+  io::writeJsonFile(options.json, report);
 }
 
 const CommandRegistration registration(21, [](CLI::App& parent) {

@@ -47,4 +47,9 @@ MapStatistics computeStatistics(const OccupancyMap& map, const VoxelGrid& grid, 
   return stats;
 }
 
+MapStatistics computeStatistics(const OccupancyMap& map, double ceiling_within_m) {
+  const VoxelGrid grid = VoxelGrid::fromTree(map.tree());
+  return computeStatistics(map, grid, ColumnIndex(grid), ceiling_within_m);
+}
+
 }  // namespace ceilplan::environment

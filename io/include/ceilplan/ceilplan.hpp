@@ -16,6 +16,7 @@
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
+#include "ceilplan/environment/position_probe.hpp"
 
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"

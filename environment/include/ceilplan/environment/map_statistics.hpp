@@ -28,5 +28,7 @@ struct MapStatistics {
 
 MapStatistics computeStatistics(const OccupancyMap& map, const VoxelGrid& grid, const ColumnIndex& columns,
                                 double ceiling_within_m = 2.0);
+// Same, indexing the map first.
+MapStatistics computeStatistics(const OccupancyMap& map, double ceiling_within_m = 2.0);
 
 }  // namespace ceilplan::environment

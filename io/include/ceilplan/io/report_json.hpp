@@ -1,0 +1,32 @@
+#pragma once
+// The JSON reports of the commands that look at one thing: a position in a map (`probe`), a map
+// (`mapinfo`) and the current model (`current`). Infinite gaps ("no surface") are null.
+
+#include "ceilplan/energy/ceiling_gap_sweep.hpp"
+#include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/environment/map_statistics.hpp"
+#include "ceilplan/environment/position_probe.hpp"
+#include "ceilplan/environment/vehicle_geometry.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <vector>
+
+namespace ceilplan::io {
+
+// at, ceiling_gap_m, ceiling_coverage, ceiling_mean_gap_m, the same for the ground, clearance_m,
+// valid, violation (null when valid) and rotors: [{offset_m, ceiling, ground}] in `vehicle`'s
+// rotor order, each gap {nearest_gap_m, coverage, mean_gap_m}.
+nlohmann::json positionProbeJson(const environment::PositionProbe& probe, const environment::VehicleGeometry& vehicle);
+
+// resolution_m, extent_m {min, max}, leaves {occupied, free}, volume_m3 {occupied, free,
+// unknown}, ceiling_within_m, ceiling_area_share.
+nlohmann::json mapStatisticsJson(const environment::MapStatistics& statistics);
+
+// current_a, power_w, terminal_voltage_v, the powers (induced_w, profile_w, parasitic_w, climb_w,
+// avionics_w) and the factors (ceiling_factor, ground_factor, induced_power_factor).
+nlohmann::json currentBreakdownJson(const energy::CurrentBreakdown& breakdown);
+// One currentBreakdownJson per point, each with its gap_m.
+nlohmann::json ceilingGapSweepJson(const std::vector<energy::GapPoint>& sweep);
+
+}  // namespace ceilplan::io

@@ -1,0 +1,74 @@
+#include "ceilplan/io/report_json.hpp"
+
+#include "ceilplan/io/json_values.hpp"
+
+namespace ceilplan::io {
+namespace {
+
+nlohmann::json rotorGapJson(const environment::RotorGap& gap) {
+  return {{"nearest_gap_m", finiteOrNull(gap.nearest_gap_m)}, {"coverage", gap.coverage},
+          {"mean_gap_m", finiteOrNull(gap.mean_gap_m)}};
+}
+
+nlohmann::json pointJson(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
+
+}  // namespace
+
+nlohmann::json positionProbeJson(const environment::PositionProbe& probe, const environment::VehicleGeometry& vehicle) {
+  nlohmann::json rotors = nlohmann::json::array();
+  for (std::size_t r = 0; r < vehicle.rotor_positions_m.size(); ++r) {
+    const Eigen::Vector2d& offset = vehicle.rotor_positions_m[r];
+    rotors.push_back({{"offset_m", {offset.x(), offset.y()}},
+                      {"ceiling", rotorGapJson(probe.ceiling.rotors[r])},
+                      {"ground", rotorGapJson(probe.ground.rotors[r])}});
+  }
+  return {{"at", pointJson(probe.body_m)},
+          {"ceiling_gap_m", finiteOrNull(probe.ceiling.nearest_gap_m)},
+          {"ceiling_coverage", probe.ceiling.coverage},
+          {"ceiling_mean_gap_m", finiteOrNull(probe.ceiling.mean_gap_m)},
+          {"ground_gap_m", finiteOrNull(probe.ground.nearest_gap_m)},
+          {"ground_coverage", probe.ground.coverage},
+          {"ground_mean_gap_m", finiteOrNull(probe.ground.mean_gap_m)},
+          {"clearance_m", finiteOrNull(probe.clearance_m)},
+          {"valid", !probe.violation},
+          {"violation", probe.violation ? nlohmann::json(probe.violation->describe()) : nlohmann::json(nullptr)},
+          {"rotors", rotors}};
+}
+
+nlohmann::json mapStatisticsJson(const environment::MapStatistics& statistics) {
+  return {{"resolution_m", statistics.resolution_m},
+          {"extent_m", {{"min", pointJson(statistics.extent_m.min())}, {"max", pointJson(statistics.extent_m.max())}}},
+          {"leaves", {{"occupied", statistics.occupied_leaves}, {"free", statistics.free_leaves}}},
+          {"volume_m3",
+           {{"occupied", statistics.occupied_volume_m3},
+            {"free", statistics.free_volume_m3},
+            {"unknown", statistics.unknown_volume_m3}}},
+          {"ceiling_within_m", statistics.ceiling_within_m},
+          {"ceiling_area_share", statistics.ceiling_area_share}};
+}
+
+nlohmann::json currentBreakdownJson(const energy::CurrentBreakdown& breakdown) {
+  return {{"current_a", breakdown.current_a},
+          {"power_w", breakdown.power_w},
+          {"terminal_voltage_v", breakdown.terminal_voltage_v},
+          {"induced_w", breakdown.induced_w},
+          {"profile_w", breakdown.profile_w},
+          {"parasitic_w", breakdown.parasitic_w},
+          {"climb_w", breakdown.climb_w},
+          {"avionics_w", breakdown.avionics_w},
+          {"ceiling_factor", breakdown.ceiling_factor},
+          {"ground_factor", breakdown.ground_factor},
+          {"induced_power_factor", breakdown.induced_power_factor}};
+}
+
+nlohmann::json ceilingGapSweepJson(const std::vector<energy::GapPoint>& sweep) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const energy::GapPoint& point : sweep) {
+    nlohmann::json row = currentBreakdownJson(point.breakdown);
+    row["gap_m"] = point.gap_m;
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+}  // namespace ceilplan::io

@@ -1,0 +1,70 @@
+// The JSON reports of probe, mapinfo and current (io/report_json.hpp).
+
+#include "ceilplan/io/report_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace ceilplan::io {
+namespace {
+
+constexpr double kNone = std::numeric_limits<double>::infinity();
+
+TEST(ReportJson, AProbeWritesNoSurfaceAsNullAndEachRotorWithItsOffset) {
+  environment::VehicleGeometry vehicle;
+  vehicle.rotor_positions_m = {{0.2, 0.1}, {-0.2, -0.1}};
+  environment::PositionProbe probe;
+  probe.body_m = {1.0, 2.0, 3.0};
+  probe.ceiling = {{{0.25, 1.0, 0.3}, {kNone, 0.0, kNone}}, 0.25, 0.5, 0.3};
+  probe.ground = {{{2.0, 1.0, 2.0}, {2.0, 1.0, 2.0}}, 2.0, 1.0, 2.0};
+  probe.clearance_m = kNone;
+  const nlohmann::json json = positionProbeJson(probe, vehicle);
+  EXPECT_EQ(json["at"], nlohmann::json({1.0, 2.0, 3.0}));
+  EXPECT_EQ(json["ceiling_gap_m"].get<double>(), 0.25);
+  EXPECT_EQ(json["ceiling_coverage"].get<double>(), 0.5);
+  EXPECT_TRUE(json["clearance_m"].is_null());
+  EXPECT_TRUE(json["valid"].get<bool>());
+  EXPECT_TRUE(json["violation"].is_null());
+  ASSERT_EQ(json["rotors"].size(), 2u);
+  EXPECT_EQ(json["rotors"][0]["offset_m"], nlohmann::json({0.2, 0.1}));
+  EXPECT_TRUE(json["rotors"][1]["ceiling"]["nearest_gap_m"].is_null());
+  EXPECT_EQ(json["rotors"][1]["ground"]["mean_gap_m"].get<double>(), 2.0);
+
+  probe.violation = environment::Violation{0, {1.0, 2.0, 3.0}, environment::ViolationKind::Occupied};
+  const nlohmann::json invalid = positionProbeJson(probe, vehicle);
+  EXPECT_FALSE(invalid["valid"].get<bool>());
+  EXPECT_EQ(invalid["violation"], probe.violation->describe());
+}
+
+TEST(ReportJson, MapStatisticsGroupExtentLeavesAndVolumes) {
+  environment::MapStatistics stats{0.1, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -2, 0), Eigen::Vector3d(1, 2, 3)),
+                                   10, 20, 1.5, 2.5, 0.5, 2.0, 0.25};
+  const nlohmann::json json = mapStatisticsJson(stats);
+  EXPECT_EQ(json["resolution_m"].get<double>(), 0.1);
+  EXPECT_EQ(json["extent_m"]["min"], nlohmann::json({-1.0, -2.0, 0.0}));
+  EXPECT_EQ(json["extent_m"]["max"], nlohmann::json({1.0, 2.0, 3.0}));
+  EXPECT_EQ(json["leaves"]["free"].get<int>(), 20);
+  EXPECT_EQ(json["volume_m3"]["unknown"].get<double>(), 0.5);
+  EXPECT_EQ(json["ceiling_area_share"].get<double>(), 0.25);
+}
+
+TEST(ReportJson, ACurrentBreakdownAndASweepKeepEveryTerm) {
+  energy::CurrentBreakdown b;
+  b.current_a = 8.0;
+  b.power_w = 120.0;
+  b.climb_w = -3.0;
+  b.ceiling_factor = 1.2;
+  const nlohmann::json json = currentBreakdownJson(b);
+  EXPECT_EQ(json.size(), 11u);
+  EXPECT_EQ(json["current_a"].get<double>(), 8.0);
+  EXPECT_EQ(json["climb_w"].get<double>(), -3.0);
+  EXPECT_EQ(json["ceiling_factor"].get<double>(), 1.2);
+  const nlohmann::json sweep = ceilingGapSweepJson({{0.0, b}, {0.05, b}});
+  ASSERT_EQ(sweep.size(), 2u);
+  EXPECT_EQ(sweep[1]["gap_m"].get<double>(), 0.05);
+  EXPECT_EQ(sweep[1]["power_w"].get<double>(), 120.0);
+}
+
+}  // namespace
+}  // namespace ceilplan::io
