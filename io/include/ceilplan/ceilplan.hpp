@@ -27,8 +27,13 @@
 #include "ceilplan/mission/tour_planner.hpp"
 
 #include "ceilplan/io/autopilot_export.hpp"
+#include "ceilplan/io/calibration_file.hpp"
 #include "ceilplan/io/duty_study_files.hpp"
+#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/io/octomap_file.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/report_json.hpp"
+#include "ceilplan/io/soc_series_file.hpp"
 #include "ceilplan/io/tour_files.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
