@@ -30,6 +30,7 @@
 #include "ceilplan/io/calibration_file.hpp"
 #include "ceilplan/io/duty_study_files.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/map_import.hpp"
 #include "ceilplan/io/mission_file.hpp"
 #include "ceilplan/io/octomap_file.hpp"
 #include "ceilplan/io/plan_files.hpp"
