@@ -71,4 +71,22 @@ nlohmann::json ceilingGapSweepJson(const std::vector<energy::GapPoint>& sweep) {
   return rows;
 }
 
+nlohmann::json plannerBenchmarkJson(const planner::PlanResult& reference, int lattice_stride,
+                                    const std::vector<planner::PlannerBenchmarkRow>& rows) {
+  nlohmann::json json;
+  json["reference"] = {{"planner", reference.planner},       {"stride_voxels", lattice_stride},
+                       {"time_s", reference.total_time_s},   {"raw_cost", reference.search_cost},
+                       {"cost", reference.cost}};
+  json["planners"] = nlohmann::json::array();
+  for (const planner::PlannerBenchmarkRow& row : rows)
+    json["planners"].push_back({{"planner", row.planner},
+                                {"runs", row.runs},
+                                {"solved", row.solved},
+                                {"median_first_solution_s", row.median_first_solution_s},
+                                {"median_raw_cost_ratio", row.median_raw_cost_ratio},
+                                {"median_cost_ratio", row.median_cost_ratio},
+                                {"median_time_to_5pct_s", row.median_time_to_5pct_s}});
+  return json;
+}
+
 }  // namespace ceilplan::io

@@ -66,5 +66,24 @@ TEST(ReportJson, ACurrentBreakdownAndASweepKeepEveryTerm) {
   EXPECT_EQ(sweep[1]["power_w"].get<double>(), 120.0);
 }
 
+TEST(ReportJson, APlannerBenchmarkKeepsTheReferenceAndWritesNoSolutionAsNull) {
+  planner::PlanResult reference;
+  reference.planner = "lattice";
+  reference.cost = 0.02;
+  reference.search_cost = 0.021;
+  reference.total_time_s = 3.0;
+  planner::PlannerBenchmarkRow solved{"PRMstar", 10, 9, 0.05, 1.07, 1.02, 1.01, 0.1};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  planner::PlannerBenchmarkRow never{"RRTstar", 10, 0, nan, nan, nan, nan, nan};
+  const nlohmann::json json = plannerBenchmarkJson(reference, 2, {solved, never});
+  EXPECT_EQ(json["reference"]["planner"], "lattice");
+  EXPECT_EQ(json["reference"]["stride_voxels"].get<int>(), 2);
+  EXPECT_EQ(json["reference"]["raw_cost"].get<double>(), 0.021);
+  ASSERT_EQ(json["planners"].size(), 2u);
+  EXPECT_EQ(json["planners"][0]["solved"].get<int>(), 9);
+  EXPECT_EQ(json["planners"][0]["median_cost_ratio"].get<double>(), 1.02);
+  EXPECT_EQ(nlohmann::json::parse(json.dump())["planners"][1]["median_cost_ratio"], nullptr);
+}
+
 }  // namespace
 }  // namespace ceilplan::io

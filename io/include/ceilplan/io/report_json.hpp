@@ -1,12 +1,14 @@
 #pragma once
 // The JSON reports of the commands that look at one thing: a position in a map (`probe`), a map
-// (`mapinfo`) and the current model (`current`). Infinite gaps ("no surface") are null.
+// (`mapinfo`), the current model (`current`) and planners against a reference
+// (`bench-planners`). Infinite gaps ("no surface") are null.
 
 #include "ceilplan/energy/ceiling_gap_sweep.hpp"
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/environment/map_statistics.hpp"
 #include "ceilplan/environment/position_probe.hpp"
 #include "ceilplan/environment/vehicle_geometry.hpp"
+#include "ceilplan/planner/planner_benchmark.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -28,5 +30,11 @@ nlohmann::json mapStatisticsJson(const environment::MapStatistics& statistics);
 nlohmann::json currentBreakdownJson(const energy::CurrentBreakdown& breakdown);
 // One currentBreakdownJson per point, each with its gap_m.
 nlohmann::json ceilingGapSweepJson(const std::vector<energy::GapPoint>& sweep);
+
+// reference {planner, stride_voxels, time_s, raw_cost, cost} and planners [{planner, runs,
+// solved, median_first_solution_s, median_raw_cost_ratio, median_cost_ratio,
+// median_time_to_5pct_s}] (null where no run solved, or never came within 5 %).
+nlohmann::json plannerBenchmarkJson(const planner::PlanResult& reference, int lattice_stride,
+                                    const std::vector<planner::PlannerBenchmarkRow>& rows);
 
 }  // namespace ceilplan::io
