@@ -67,15 +67,10 @@ void runCurrent(const CurrentOptions& options) {
   const double gap_m = options.gap_m.value_or(energy::kNoSurface);
   const energy::CurrentBreakdown at_point = model.breakdown(gap_m, options.coverage, flight);  // validates input
 
-  nlohmann::json report = {{"vehicle", vehicle.name},
-                           {"soc", flight.soc},
-                           {"coverage", options.coverage},
-                           {"ground_gap_m", options.ground_gap_m ? nlohmann::json(*options.ground_gap_m) : nullptr},
-                           {"speed_m_s", flight.speed_m_s},
-                           {"climb_m_s", flight.climb_m_s}};
   std::printf("vehicle               %s\n", vehicle.name.c_str());
   std::printf("soc %.3f  coverage %.3f  ground gap %s  speed %.3g m/s  climb %.3g m/s\n", flight.soc,
               options.coverage, gapText(options.ground_gap_m).c_str(), flight.speed_m_s, flight.climb_m_s);
+  nlohmann::json report;
   if (options.sweep) {
     const double radius_m = model.rotorRadiusM();
     const double free_air_a = model.currentA(energy::kNoSurface, options.coverage, flight);
@@ -85,14 +80,11 @@ void runCurrent(const CurrentOptions& options) {
     for (const energy::GapPoint& point : sweep)
       std::printf("%10.4f %8.3f %10.4f %10.3f %14.5f\n", point.gap_m, point.gap_m / radius_m,
                   point.breakdown.current_a, point.breakdown.power_w, point.breakdown.ceiling_factor);
-    report["rotor_radius_m"] = radius_m;
-    report["free_air_current_a"] = free_air_a;
-    report["sweep"] = io::ceilingGapSweepJson(sweep);
+    report = io::currentSweepReportJson(vehicle.name, options.coverage, flight, radius_m, free_air_a, sweep);
   } else {
     std::printf("ceiling gap           %s\n", gapText(options.gap_m).c_str());
     printBreakdown(at_point);
-    report["gap_m"] = options.gap_m ? nlohmann::json(*options.gap_m) : nullptr;
-    report.update(io::currentBreakdownJson(at_point));
+    report = io::currentReportJson(vehicle.name, gap_m, options.coverage, flight, at_point);
   }
   if (!options.json_path.empty()) {
     io::writeJsonFile(options.json_path, report);

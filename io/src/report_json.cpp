@@ -12,6 +12,29 @@ nlohmann::json rotorGapJson(const environment::RotorGap& gap) {
 
 nlohmann::json pointJson(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 
+nlohmann::json currentBreakdownJson(const energy::CurrentBreakdown& breakdown) {
+  return {{"current_a", breakdown.current_a},
+          {"power_w", breakdown.power_w},
+          {"terminal_voltage_v", breakdown.terminal_voltage_v},
+          {"induced_w", breakdown.induced_w},
+          {"profile_w", breakdown.profile_w},
+          {"parasitic_w", breakdown.parasitic_w},
+          {"climb_w", breakdown.climb_w},
+          {"avionics_w", breakdown.avionics_w},
+          {"ceiling_factor", breakdown.ceiling_factor},
+          {"ground_factor", breakdown.ground_factor},
+          {"induced_power_factor", breakdown.induced_power_factor}};
+}
+
+nlohmann::json flightConditionJson(const std::string& vehicle, double coverage, const energy::FlightCondition& flight) {
+  return {{"vehicle", vehicle},
+          {"soc", flight.soc},
+          {"coverage", coverage},
+          {"ground_gap_m", finiteOrNull(flight.ground_gap_m)},
+          {"speed_m_s", flight.speed_m_s},
+          {"climb_m_s", flight.climb_m_s}};
+}
+
 }  // namespace
 
 nlohmann::json positionProbeJson(const environment::PositionProbe& probe, const environment::VehicleGeometry& vehicle) {
@@ -47,28 +70,27 @@ nlohmann::json mapStatisticsJson(const environment::MapStatistics& statistics) {
           {"ceiling_area_share", statistics.ceiling_area_share}};
 }
 
-nlohmann::json currentBreakdownJson(const energy::CurrentBreakdown& breakdown) {
-  return {{"current_a", breakdown.current_a},
-          {"power_w", breakdown.power_w},
-          {"terminal_voltage_v", breakdown.terminal_voltage_v},
-          {"induced_w", breakdown.induced_w},
-          {"profile_w", breakdown.profile_w},
-          {"parasitic_w", breakdown.parasitic_w},
-          {"climb_w", breakdown.climb_w},
-          {"avionics_w", breakdown.avionics_w},
-          {"ceiling_factor", breakdown.ceiling_factor},
-          {"ground_factor", breakdown.ground_factor},
-          {"induced_power_factor", breakdown.induced_power_factor}};
+nlohmann::json currentReportJson(const std::string& vehicle, double ceiling_gap_m, double coverage,
+                                 const energy::FlightCondition& flight, const energy::CurrentBreakdown& breakdown) {
+  nlohmann::json report = flightConditionJson(vehicle, coverage, flight);
+  report["gap_m"] = finiteOrNull(ceiling_gap_m);
+  report.update(currentBreakdownJson(breakdown));
+  return report;
 }
 
-nlohmann::json ceilingGapSweepJson(const std::vector<energy::GapPoint>& sweep) {
-  nlohmann::json rows = nlohmann::json::array();
+nlohmann::json currentSweepReportJson(const std::string& vehicle, double coverage, const energy::FlightCondition& flight,
+                                      double rotor_radius_m, double free_air_current_a,
+                                      const std::vector<energy::GapPoint>& sweep) {
+  nlohmann::json report = flightConditionJson(vehicle, coverage, flight);
+  report["rotor_radius_m"] = rotor_radius_m;
+  report["free_air_current_a"] = free_air_current_a;
+  report["sweep"] = nlohmann::json::array();
   for (const energy::GapPoint& point : sweep) {
     nlohmann::json row = currentBreakdownJson(point.breakdown);
     row["gap_m"] = point.gap_m;
-    rows.push_back(std::move(row));
+    report["sweep"].push_back(std::move(row));
   }
-  return rows;
+  return report;
 }
 
 nlohmann::json plannerBenchmarkJson(const planner::PlanResult& reference, int lattice_stride,

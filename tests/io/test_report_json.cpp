@@ -49,21 +49,36 @@ TEST(ReportJson, MapStatisticsGroupExtentLeavesAndVolumes) {
   EXPECT_EQ(json["ceiling_area_share"].get<double>(), 0.25);
 }
 
-TEST(ReportJson, ACurrentBreakdownAndASweepKeepEveryTerm) {
+TEST(ReportJson, ACurrentReportKeepsTheConditionAndEveryTermOfTheBreakdown) {
   energy::CurrentBreakdown b;
   b.current_a = 8.0;
   b.power_w = 120.0;
   b.climb_w = -3.0;
   b.ceiling_factor = 1.2;
-  const nlohmann::json json = currentBreakdownJson(b);
-  EXPECT_EQ(json.size(), 11u);
+  energy::FlightCondition flight;
+  flight.soc = 0.7;
+  flight.speed_m_s = 2.0;
+  const nlohmann::json json = currentReportJson("quad", 0.05, 0.8, flight, b);
+  EXPECT_EQ(json.size(), 6u + 1u + 11u);  // the condition, gap_m and the breakdown
+  EXPECT_EQ(json["vehicle"], "quad");
+  EXPECT_EQ(json["soc"].get<double>(), 0.7);
+  EXPECT_EQ(json["coverage"].get<double>(), 0.8);
+  EXPECT_TRUE(json["ground_gap_m"].is_null());  // no ground
+  EXPECT_EQ(json["gap_m"].get<double>(), 0.05);
   EXPECT_EQ(json["current_a"].get<double>(), 8.0);
   EXPECT_EQ(json["climb_w"].get<double>(), -3.0);
   EXPECT_EQ(json["ceiling_factor"].get<double>(), 1.2);
-  const nlohmann::json sweep = ceilingGapSweepJson({{0.0, b}, {0.05, b}});
-  ASSERT_EQ(sweep.size(), 2u);
-  EXPECT_EQ(sweep[1]["gap_m"].get<double>(), 0.05);
-  EXPECT_EQ(sweep[1]["power_w"].get<double>(), 120.0);
+  EXPECT_TRUE(currentReportJson("quad", kNone, 1.0, flight, b)["gap_m"].is_null());
+
+  flight.ground_gap_m = 1.5;
+  const nlohmann::json sweep = currentSweepReportJson("quad", 1.0, flight, 0.127, 9.5, {{0.0, b}, {0.05, b}});
+  EXPECT_EQ(sweep["ground_gap_m"].get<double>(), 1.5);
+  EXPECT_EQ(sweep["rotor_radius_m"].get<double>(), 0.127);
+  EXPECT_EQ(sweep["free_air_current_a"].get<double>(), 9.5);
+  EXPECT_FALSE(sweep.contains("gap_m"));
+  ASSERT_EQ(sweep["sweep"].size(), 2u);
+  EXPECT_EQ(sweep["sweep"][1]["gap_m"].get<double>(), 0.05);
+  EXPECT_EQ(sweep["sweep"][1]["power_w"].get<double>(), 120.0);
 }
 
 TEST(ReportJson, APlannerBenchmarkKeepsTheReferenceAndWritesNoSolutionAsNull) {

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string>
 #include <vector>
 
 namespace ceilplan::io {
@@ -25,11 +26,17 @@ nlohmann::json positionProbeJson(const environment::PositionProbe& probe, const 
 // unknown}, ceiling_within_m, ceiling_area_share.
 nlohmann::json mapStatisticsJson(const environment::MapStatistics& statistics);
 
-// current_a, power_w, terminal_voltage_v, the powers (induced_w, profile_w, parasitic_w, climb_w,
-// avionics_w) and the factors (ceiling_factor, ground_factor, induced_power_factor).
-nlohmann::json currentBreakdownJson(const energy::CurrentBreakdown& breakdown);
-// One currentBreakdownJson per point, each with its gap_m.
-nlohmann::json ceilingGapSweepJson(const std::vector<energy::GapPoint>& sweep);
+// `current` at one condition: vehicle, soc, coverage, ground_gap_m, speed_m_s, climb_m_s, gap_m
+// and the breakdown's terms: current_a, power_w, terminal_voltage_v, the powers (induced_w,
+// profile_w, parasitic_w, climb_w, avionics_w) and the factors (ceiling_factor, ground_factor,
+// induced_power_factor).
+nlohmann::json currentReportJson(const std::string& vehicle, double ceiling_gap_m, double coverage,
+                                 const energy::FlightCondition& flight, const energy::CurrentBreakdown& breakdown);
+// `current --sweep`: the condition, rotor_radius_m, free_air_current_a and sweep, one breakdown
+// per point with its gap_m.
+nlohmann::json currentSweepReportJson(const std::string& vehicle, double coverage, const energy::FlightCondition& flight,
+                                      double rotor_radius_m, double free_air_current_a,
+                                      const std::vector<energy::GapPoint>& sweep);
 
 // reference {planner, stride_voxels, time_s, raw_cost, cost} and planners [{planner, runs,
 // solved, median_first_solution_s, median_raw_cost_ratio, median_cost_ratio,
