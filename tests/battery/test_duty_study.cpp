@@ -4,6 +4,7 @@
 
 #include "ceilplan/battery/duty_study.hpp"
 #include "ceilplan/core/error.hpp"
+#include "input_error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,12 +25,7 @@ DutyStudyOptions withoutAgeing() {
 }
 
 std::string errorOf(const DutyStudyOptions& options) {
-  try {
-    options.validate();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return testing::inputErrorOf([&] { options.validate(); });
 }
 
 TEST(DutyStudy, DefaultsAreThePapersMonth) {

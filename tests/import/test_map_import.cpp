@@ -6,6 +6,7 @@
 
 #include "run_command.hpp"
 #include "scan_files.hpp"
+#include "input_error.hpp"
 
 #include <gtest/gtest.h>
 #include <octomap/OcTree.h>
@@ -19,12 +20,7 @@ namespace ceilplan::io {
 namespace {
 
 std::string errorOf(const MapImportOptions& options) {
-  try {
-    options.validate();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return testing::inputErrorOf([&] { options.validate(); });
 }
 
 // A 4 x 3 m deck 3 m up, sampled every 5 cm.

@@ -5,6 +5,7 @@
 #include "ceilplan/core/error.hpp"
 
 #include "run_command.hpp"
+#include "input_error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,12 +23,7 @@ std::filesystem::path dataFile(const std::string& name, const std::string& text)
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    readCalibrationSamples(dataFile("bad.csv", text), 0.65);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return testing::inputErrorOf([&] { readCalibrationSamples(dataFile("bad.csv", text), 0.65); });
 }
 
 TEST(CalibrationFile, ReadsTheNamedColumnsAndKeepsTheOthersDefault) {

@@ -6,6 +6,7 @@
 #include "ceilplan/core/error.hpp"
 
 #include "run_command.hpp"
+#include "input_error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,12 +24,7 @@ std::filesystem::path csv(const std::string& name, const std::string& text) {
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    readSocSeries(csv("bad.csv", text), "soc");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return testing::inputErrorOf([&] { readSocSeries(csv("bad.csv", text), "soc"); });
 }
 
 TEST(SocSeriesFile, ReadsTheColumnWhateverTheOthersHold) {

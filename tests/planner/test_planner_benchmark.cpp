@@ -5,6 +5,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/planner/planner_benchmark.hpp"
+#include "input_error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,12 +17,7 @@ namespace ceilplan::planner {
 namespace {
 
 std::string errorOf(const PlannerBenchmarkOptions& options) {
-  try {
-    options.validate();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return testing::inputErrorOf([&] { options.validate(); });
 }
 
 TEST(PlannerBenchmark, RefusesNoPlannerTheLatticeAndUnknownNames) {
