@@ -61,8 +61,8 @@ void runImport(const ImportArguments& args) {
     std::printf("crs: %s (%s); local origin at %s in it\n", frame.crs.c_str(), frame.crs_name.c_str(),
                 formatPoint(frame.origin_projected, 3).c_str());
     std::printf("origin: {lat: %s, lon: %s, alt: %s}   # for the mission file\n",
-                formatFixed(frame.origin.lat_deg, 8).c_str(), formatFixed(frame.origin.lon_deg, 8).c_str(),
-                formatFixed(frame.origin.alt_m, 3).c_str());
+                formatFixed(frame.origin.latitude_deg, 8).c_str(), formatFixed(frame.origin.longitude_deg, 8).c_str(),
+                formatFixed(frame.origin.altitude_m, 3).c_str());
   }
   std::printf("wrote %s (%zu octree nodes, %ju bytes) and %s.json\n", out.string().c_str(), tree.size(),
               static_cast<std::uintmax_t>(std::filesystem::file_size(out)), out.string().c_str());

@@ -133,7 +133,7 @@ nlohmann::json mapImportJson(const MapImport& imported, const MapImportOptions& 
     summary["crs"] = {{"code", frame.crs},
                       {"name", frame.crs_name},
                       {"local_origin_in_crs", pointJson(frame.origin_projected)},
-                      {"origin", {{"lat", frame.origin.lat_deg}, {"lon", frame.origin.lon_deg}, {"alt", frame.origin.alt_m}}}};
+                      {"origin", {{"lat", frame.origin.latitude_deg}, {"lon", frame.origin.longitude_deg}, {"alt", frame.origin.altitude_m}}}};
   }
   return summary;
 }
