@@ -2,6 +2,7 @@
 // for samples. docs/python.md walks through a session.
 
 #include "ceilplan/ceilplan.hpp"
+#include "ceilplan/io/output_set.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -43,14 +44,16 @@ Eigen::Vector3d point(const std::vector<double>& xyz, const char* what) {
   return {xyz[0], xyz[1], xyz[2]};
 }
 
-environment::EnvironmentOptions unknownPolicy(const std::string& unknown) {
-  environment::EnvironmentOptions options;
-  if (unknown == "occupied") return options;
-  if (unknown == "free") {
-    options.unknown_is_occupied = false;
-    return options;
+environment::UnknownSpace unknownSpace(const std::string& policy, std::optional<double> fill_max_m) {
+  environment::UnknownSpace unknown;
+  unknown.policy = environment::unknownPolicyFromName(policy);
+  if (fill_max_m) {
+    if (unknown.policy != environment::UnknownPolicy::Fill)
+      throw InputError("unknown_fill_max_m applies only to unknown=\"fill\"");
+    unknown.fill_max_m = *fill_max_m;
   }
-  throw InputError("unknown space policy '" + unknown + "': choose occupied or free");
+  unknown.validate();
+  return unknown;
 }
 
 py::dict gapsDict(const environment::SurfaceGaps& gaps) {
@@ -220,15 +223,16 @@ PYBIND11_MODULE(ceilplan, m) {
       .def_static(
           "load",
           [](const std::filesystem::path& path, std::optional<mission::Vehicle> vehicle,
-             std::optional<std::filesystem::path> battery, const std::string& unknown) {
+             std::optional<std::filesystem::path> battery, const std::string& unknown,
+             std::optional<double> unknown_fill_max_m) {
             mission::PlanningOptions options;
-            options.environment = unknownPolicy(unknown);
+            options.unknown = unknownSpace(unknown, unknown_fill_max_m);
             return PyEnvironment{std::make_shared<mission::PlanningContext>(
                 environment::OccupancyMap::load(path), vehicle.value_or(mission::Vehicle::defaultQuad()),
                 battery ? io::readBattery(*battery) : mission::BatterySpec{}, options)};
           },
           py::arg("path"), py::arg("vehicle") = py::none(), py::arg("battery") = py::none(),
-          py::arg("unknown") = "occupied")
+          py::arg("unknown") = "occupied", py::arg("unknown_fill_max_m") = py::none())
       .def(
           "probe",
           [](const PyEnvironment& self, double x, double y, double z) {
@@ -338,20 +342,25 @@ PYBIND11_MODULE(ceilplan, m) {
                              })
       .def_property_readonly("samples",
                              [](const PyTour& t) {
+                               std::vector<std::vector<planner::PathSample>> sorties;
                                std::vector<double> offsets;
-                               double t0 = 0.0;
-                               for (const mission::Sortie& sortie : t.tour.plan.sorties) {
-                                 offsets.push_back(t0);
-                                 t0 += sortie.flight_s + sortie.recharge_s;
+                               for (const mission::SortieRecord& sortie : t.tour.record.sorties) {
+                                 sorties.push_back(sortie.samples);
+                                 offsets.push_back(sortie.takeoff_s);
                                }
-                               return sampleArrays(t.tour.sortie_samples, offsets);
+                               return sampleArrays(sorties, offsets);
                              })
       .def(
           "write",
           [](const PyTour& t, const std::filesystem::path& dir, bool export_autopilot) {
             std::optional<io::Autopilot> autopilot;
             if (export_autopilot) autopilot = io::Autopilot::PX4;
-            io::writeTourDirectory(dir, t.tour, *t.mission, t.context->environment(), autopilot);
+            io::Provenance provenance = io::Provenance::of("python: ceilplan.plan_tour");
+            provenance.input("mission", t.mission->file).input("map", t.mission->map_file).input("vehicle", t.mission->vehicle_file);
+            provenance.seed = t.tour.options.seed;
+            io::OutputSet out(dir);
+            io::writeTourDirectory(out.path(), t.tour, *t.mission, t.context->environment(), autopilot, provenance);
+            out.commit();
           },
           "Writes tour.json, path.csv, map views and (with an origin) mission.plan and mission.waypoints, as `ceilplan tour`",
           py::arg("dir"), py::arg("autopilot") = true);
@@ -368,7 +377,6 @@ PYBIND11_MODULE(ceilplan, m) {
         const mission::FlightMode flight_mode = mission::flightModeFromName(mode);
         py::gil_scoped_release release;
         auto context = std::make_shared<const mission::PlanningContext>(*shared_mission);
-        if (flight_mode == mission::FlightMode::Free) context->standoffEnvironment();
         mission::TourResult tour = mission::planTour(*shared_mission, *context, flight_mode, options);
         return PyTour{std::move(tour), shared_mission, context};
       },

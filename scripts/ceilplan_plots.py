@@ -11,11 +11,20 @@ from matplotlib.collections import LineCollection  # noqa: E402
 
 
 def read_columns(path):
+    """Columns of a ceilplan CSV by name: numbers as floats (empty fields NaN), text columns
+    such as path.csv's `phase` as strings; the leading `#` provenance comment is skipped."""
     with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
     if not rows:
         return {}
-    return {key: [float(r[key]) if r[key] != "" else float("nan") for r in rows] for key in rows[0]}
+    columns = {}
+    for key in rows[0]:
+        values = [r[key] for r in rows]
+        try:
+            columns[key] = [float(v) if v != "" else float("nan") for v in values]
+        except ValueError:
+            columns[key] = values
+    return columns
 
 
 def coloured_line(ax, xs, ys, values, norm, style, label):

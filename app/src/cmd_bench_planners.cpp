@@ -1,5 +1,6 @@
-// `ceilplan bench-planners`: OMPL's benchmark harness on one query, with ceilplan's objective
-// cost logged per run (raw and post-processed) and compared with the lattice reference.
+// `ceilplan bench-planners`: OMPL's benchmark harness on one query, every planner from the one
+// factory (OMPL's and the lattice ones), with ceilplan's objective cost logged per run (raw and
+// post-processed) and compared with the lattice reference.
 
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
@@ -12,6 +13,7 @@
 #include "ceilplan/io/report_json.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/planner_benchmark.hpp"
+#include "ceilplan/planner/planner_factory.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -24,10 +26,16 @@
 namespace ceilplan::app {
 namespace {
 
+std::string joined(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ",") + name;
+  return list;
+}
+
 struct BenchArguments {
   PlanningFlags planning;
   SearchArguments search;
-  std::string start, goal, planners = "BITstar,AITstar,RRTstar,InformedRRTstar,PRMstar,LazyPRMstar";
+  std::string start, goal, planners = joined(planner::samplingPlannerNames());
   std::string mode = "ceiling";
   unsigned runs = 10;
   double reference_time_limit_s = 600.0;
@@ -67,15 +75,15 @@ void runBench(const BenchArguments& a) {
   }
   planner::seedOmpl(a.search.seed);
   const auto context = makePlanningContext(a.planning);
-  const mission::PlanningContext::Mode planning = context->mode(mission::flightModeFromName(a.mode), start, goal);
+  const mission::PlanningContext::Mode planning = context->mode(mission::flightModeFromName(a.mode));
   const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, context->objective(start, goal));
   std::printf("bench-planners: %s mode, objective %s (%s), %u runs of %.1f s per planner, seed %u\n", a.mode.c_str(),
               a.planning.options.objective.c_str(), flight_planner.objective().unit().c_str(), a.runs,
               a.search.time_limit_s, a.search.seed);
 
-  // The reference: the lattice optimum, post-processed like every OMPL path.
+  // The reference: the lattice optimum, post-processed like every other path.
   planner::PlanRequest reference_request = a.search.request(start, goal);
-  reference_request.planner = "lattice";
+  reference_request.planner = planner::referencePlannerName();
   reference_request.time_limit_s = a.reference_time_limit_s;
   planner::PlanResult reference;
   try {
@@ -83,10 +91,12 @@ void runBench(const BenchArguments& a) {
   } catch (const ceilplan::NoPathError&) {
     rethrowWithContext("lattice reference: ");
   }
-  std::printf("lattice reference (stride %d): %.6g raw, %.6g post-processed, %.1f s\n", a.search.lattice_stride,
-              reference.search_cost, reference.cost, reference.total_time_s);
+  std::printf("lattice reference (spacing %s m): %.6g raw, %.6g post-processed, %.1f s\n",
+              formatNumber(a.search.lattice_spacing_m).c_str(), reference.search_cost, reference.cost,
+              reference.total_time_s);
   std::fflush(stdout);
 
+  options.lattice = reference_request.lattice;
   const std::vector<planner::PlannerBenchmarkRow> rows =
       planner::benchmarkPlanners(flight_planner, start, goal, reference, options);
   std::printf("\n%-16s %7s %11s %12s %12s %12s %13s\n", "planner", "solved", "first [s]", "raw / ref", "final / ref",
@@ -100,19 +110,20 @@ void runBench(const BenchArguments& a) {
               "post-processed lattice reference; 'to 5 %%': when the planner's own best cost first came within 5 %% of\n"
               "the raw lattice optimum ('never': not within %s s)\n",
               formatNumber(a.search.time_limit_s).c_str());
-  if (!a.json.empty()) io::writeJsonFile(a.json, io::plannerBenchmarkJson(reference, a.search.lattice_stride, rows));
+  if (!a.json.empty()) io::writeJsonFile(a.json, io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows));
 }
 
 const CommandRegistration registration(43, [](CLI::App& parent) {
   auto arguments = std::make_shared<BenchArguments>();
   CLI::App* command = parent.add_subcommand(
-      "bench-planners", "Benchmark OMPL planners on one query against the lattice reference (ompl::tools::Benchmark)");
+      "bench-planners", "Benchmark planners on one query against the lattice reference (ompl::tools::Benchmark)");
   addPlanningOptions(command, arguments->planning);
   command->add_option("--start", arguments->start, "start body position x,y,z (m)")->required();
   command->add_option("--goal", arguments->goal, "goal body position x,y,z (m)")->required();
   command->add_option("--mode", arguments->mode)->capture_default_str()->check(CLI::IsMember({"ceiling", "free"}));
   addSearchOptions(command, arguments->search);
-  command->add_option("--planners", arguments->planners, "comma-separated OMPL planner names")->capture_default_str();
+  command->add_option("--planners", arguments->planners, "comma-separated planner names (lattice and roadmap too)")
+      ->capture_default_str();
   command->add_option("--runs", arguments->runs, "runs per planner")->capture_default_str()->check(CLI::Range(1u, 10000u));
   command->add_option("--reference-time-limit-s", arguments->reference_time_limit_s, "lattice reference search time")
       ->capture_default_str()->check(positiveFinite());

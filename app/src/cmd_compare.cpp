@@ -5,7 +5,9 @@
 #include "command_registry.hpp"
 #include "planning_flags.hpp"
 
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
 #include "ceilplan/mission/route_planning.hpp"
 
 #include <CLI/CLI.hpp>
@@ -26,21 +28,25 @@ struct CompareArguments {
 
 void runCompare(const CompareArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
+  io::OutputSet out(a.out);  // checked and staged before any work
   planner::seedOmpl(a.search.seed);
   const auto context = makePlanningContext(a.planning);
-  std::printf("comparing ceiling and free modes: objective %s, planner %s, seed %u, %.1f s each\n",
-              a.planning.options.objective.c_str(), a.search.plannerName().c_str(), a.search.seed, a.search.time_limit_s);
+  std::printf("comparing ceiling and free modes: objective %s, %s\nunknown space: %s\n",
+              a.planning.options.objective.c_str(), a.search.describe().c_str(),
+              io::unknownSpaceLine(context->environment()).c_str());
   std::fflush(stdout);
   const mission::RouteComparison comparison = mission::compareRoutes(*context, a.search.request(start, goal), a.duty);
   if (comparison.ceiling.plan.from_candidate)
     std::printf("ceiling mode found nothing better than the free-mode route: it flies that route, post-processed\n");
   std::printf("\n%s", io::routeComparisonTable(comparison, a.duty, context->battery()).c_str());
   const nlohmann::json extra{
-      {"objective", a.planning.options.objective}, {"seed", a.search.seed}, {"planner", a.search.plannerName()}};
-  const std::filesystem::path out(a.out);
-  io::writeRouteComparison(out, comparison, a.duty, extra, context->environment());
+      {"objective", a.planning.options.objective}, {"seed", a.search.seed}, {"planner", a.search.plannerName()},
+      {"unknown_space", io::unknownSpaceJson(context->environment())}};
+  io::writeRouteComparison(out.path(), comparison, a.duty, extra, context->environment(),
+                           planningProvenance(a.planning, a.search.seed));
+  out.commit();
   std::printf("\nwrote %s/{compare.json, ceiling/, free/, map_top.csv, map_side.csv}; figures: scripts/plot-compare %s\n",
-              out.c_str(), out.c_str());
+              a.out.c_str(), a.out.c_str());
 }
 
 const CommandRegistration registration(42, [](CLI::App& parent) {

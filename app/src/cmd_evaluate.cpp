@@ -6,7 +6,9 @@
 #include "planning_flags.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
 #include "ceilplan/mission/route_planning.hpp"
 
 #include <CLI/CLI.hpp>
@@ -27,6 +29,7 @@ struct EvaluateArguments {
 };
 
 void runEvaluate(const EvaluateArguments& a) {
+  if (!a.json.empty()) io::OutputSet::checkWritable(std::filesystem::path(a.json).parent_path());
   const std::vector<Eigen::Vector3d> waypoints = io::readPathWaypoints(a.path);
   const auto context = makePlanningContext(a.planning);
   mission::RouteCheck check;
@@ -38,6 +41,7 @@ void runEvaluate(const EvaluateArguments& a) {
   std::printf("%zu points: %s\n%s cost %.6g %s\nvalid: %s\n", waypoints.size(), io::figuresLine(check.evaluation).c_str(),
               a.planning.options.objective.c_str(), check.cost, check.cost_unit.c_str(), check.violation ? "false" : "true");
   if (check.violation) std::printf("violation: %s\n", check.violation->c_str());
+  std::printf("unknown space: %s\n", io::unknownSpaceLine(context->environment()).c_str());
   if (!a.json.empty()) {
     nlohmann::json out = io::figuresJson(check.evaluation);
     out["valid"] = !check.violation;
@@ -46,6 +50,10 @@ void runEvaluate(const EvaluateArguments& a) {
     out["cost"] = check.cost;
     out["cost_unit"] = check.cost_unit;
     out["waypoints"] = io::waypointsJson(waypoints);
+    out["unknown_space"] = io::unknownSpaceJson(context->environment());
+    io::Provenance provenance = planningProvenance(a.planning, std::nullopt);
+    provenance.input("path", a.path);
+    out["provenance"] = provenance.json();
     writeTextAtomically(a.json, [&](std::ostream& stream) { stream << std::setw(2) << out << '\n'; });
   }
 }

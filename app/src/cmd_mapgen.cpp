@@ -3,6 +3,7 @@
 #include "command_registry.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/environment/scenes.hpp"
 #include "ceilplan/io/octomap_file.hpp"
 
@@ -17,8 +18,7 @@ namespace {
 struct MapgenOptions {
   std::string scene;
   std::string out;
-  double resolution_m = 0.1;
-  std::uint64_t seed = 1;
+  environment::SceneOptions scene_options;
 };
 
 void runMapgen(const MapgenOptions& options) {
@@ -27,12 +27,16 @@ void runMapgen(const MapgenOptions& options) {
   const std::filesystem::path out(options.out);
   if (!io::isOctoMapFileName(out))
     throw ceilplan::InputError("--out " + options.out + ": the map file must end in .bt (or .ot)");
-  const VoxelGrid grid = generateScene(scene, options.resolution_m, options.seed);
+  const VoxelGrid grid = generateScene(scene, options.scene_options);
   const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
   io::writeOctoMapFile(out, *tree);
   const auto& size = grid.frame().size();
-  std::printf("scene %s, resolution %g m, seed %llu: %d x %d x %d voxels, %zu octree nodes -> %s (%ju bytes)\n",
-              options.scene.c_str(), options.resolution_m, static_cast<unsigned long long>(options.seed), size[0],
+  const std::string length = scene == Scene::Bridge && options.scene_options.bridge_length_m != kShippedBridgeLength_m
+                                 ? ", length " + formatNumber(options.scene_options.bridge_length_m) + " m"
+                                 : "";
+  std::printf("scene %s%s, resolution %g m, seed %llu: %d x %d x %d voxels, %zu octree nodes -> %s (%ju bytes)\n",
+              options.scene.c_str(), length.c_str(), options.scene_options.resolution_m,
+              static_cast<unsigned long long>(options.scene_options.seed), size[0],
               size[1], size[2], tree->size(), out.string().c_str(),
               static_cast<std::uintmax_t>(std::filesystem::file_size(out)));
 }
@@ -42,8 +46,12 @@ const CommandRegistration registration(20, [](CLI::App& parent) {
   CLI::App* command = parent.add_subcommand("mapgen", "Generate a shipped inspection scene as an OctoMap (.bt)");
   command->add_option("--scene", options->scene, "bridge, tunnel, warehouse or open")->required();
   command->add_option("--out", options->out, "Output file (.bt, or .ot for OctoMap's full format)")->required();
-  command->add_option("--resolution", options->resolution_m, "Voxel size in metres")->capture_default_str();
-  command->add_option("--seed", options->seed, "Seed placing the scene's clutter")->capture_default_str();
+  command->add_option("--resolution", options->scene_options.resolution_m, "Voxel size in metres (0.02 to 1)")
+      ->capture_default_str();
+  command->add_option("--seed", options->scene_options.seed, "Seed placing the scene's clutter")->capture_default_str();
+  command->add_option("--bridge-length-m", options->scene_options.bridge_length_m,
+                      "Bridge only: span between the abutments, a multiple of 4 m from 16 to 2000 (piers every 16 m)")
+      ->capture_default_str();
   command->callback([options] { runMapgen(*options); });
 });
 

@@ -1,12 +1,19 @@
 // `ceilplan mapinfo`: what a map holds, and how much of it has a ceiling close overhead.
 
 #include "command_registry.hpp"
+#include "map_options.hpp"
 #include "output.hpp"
 
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/environment/environment.hpp"
+#include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/map_statistics.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/map_slice_file.hpp"
 #include "ceilplan/io/report_json.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
+#include "ceilplan/io/vehicle_file.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -18,12 +25,28 @@ namespace {
 struct MapinfoOptions {
   std::string map;
   std::string json;
+  UnknownSpaceFlags unknown;
+  double slice_z_m = 0.0;
+  std::string slice_csv;
+  std::string vehicle;
 };
 
 void runMapinfo(const MapinfoOptions& options) {
   using namespace environment;
+  MapIndexOptions index_options;
+  index_options.unknown = options.unknown.value();
   const OccupancyMap map = OccupancyMap::load(options.map);
-  const MapStatistics stats = computeStatistics(map);
+  if (!options.vehicle.empty() && options.slice_csv.empty())
+    throw ceilplan::InputError("--vehicle applies only to --slice-csv; add --slice-csv FILE or drop it");
+  Progress progress("indexing " + options.map);
+  const auto index = MapIndex::build(map, index_options, [&](double f) { progress.update(f); });
+  progress.finish();
+  const MapStatistics stats = computeStatistics(map, *index);
+  if (!options.slice_csv.empty()) {
+    std::unique_ptr<Environment> environment;
+    if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
+    io::writeMapSliceCsv(options.slice_csv, *index, options.slice_z_m, environment.get(), "--slice-z");
+  }
   const Eigen::Vector3d lo = stats.extent_m.min(), hi = stats.extent_m.max();
   std::printf("map: %s\n", options.map.c_str());
   std::printf("resolution_m: %g\n", stats.resolution_m);
@@ -32,8 +55,11 @@ void runMapinfo(const MapinfoOptions& options) {
   std::printf("leaves: %zu occupied, %zu free\n", stats.occupied_leaves, stats.free_leaves);
   std::printf("volume_m3: %.1f occupied, %.1f free, %.1f unknown (within the extent)\n", stats.occupied_volume_m3,
               stats.free_volume_m3, stats.unknown_volume_m3);
-  std::printf("ceiling_area_share: %.3f of the floor area has a ceiling within %g m\n", stats.ceiling_area_share,
-              stats.ceiling_within_m);
+  std::printf("unknown: %s\n", io::unknownSpaceLine(stats.unknown, stats.unknown_summary).c_str());
+  std::printf("ceiling_area_share: %.3f of the floor area lies under a ceiling (an occupied surface with %s m or more "
+              "of free space below, in patches of %s m2 or more)\n",
+              stats.ceiling_area_share, formatNumber(stats.ceiling.min_headroom_m).c_str(),
+              formatNumber(stats.ceiling.min_area_m2).c_str());
   if (options.json.empty()) return;
   nlohmann::json report = io::mapStatisticsJson(stats);
   report["map"] = options.map;
@@ -45,6 +71,14 @@ const CommandRegistration registration(21, [](CLI::App& parent) {
   CLI::App* command = parent.add_subcommand("mapinfo", "Summarise an OctoMap (.bt or .ot)");
   command->add_option("--map", options->map, "OctoMap file (.bt or .ot)")->required();
   command->add_option("--json", options->json, "Also write the summary as JSON to this file");
+  options->unknown.addTo(*command);
+  CLI::Option* slice_z =
+      command->add_option("--slice-z", options->slice_z_m, "Height of the slice --slice-csv writes, in metres");
+  command->add_option("--slice-csv", options->slice_csv,
+                      "Write one row per map column at --slice-z: x_m, y_m, state (occupied, free, unknown, "
+                      "assumed_free), under_ceiling, and with --vehicle valid and assumes_free")
+      ->needs(slice_z);
+  command->add_option("--vehicle", options->vehicle, "Vehicle file for --slice-csv's valid and assumes_free columns");
   command->callback([options] { runMapinfo(*options); });
 });
 

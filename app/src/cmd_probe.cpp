@@ -1,13 +1,16 @@
 // `ceilplan probe`: what the planner and the energy model see at one body position.
 
 #include "command_registry.hpp"
+#include "map_options.hpp"
 #include "output.hpp"
 #include "planning_flags.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/position_probe.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/report_json.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
 #include <nlohmann/json.hpp>
@@ -25,8 +28,7 @@ struct ProbeOptions {
   std::string at;
   std::string vehicle;
   std::string json;
-  bool unknown_free = false;
-  bool unknown_ceiling = false;
+  UnknownSpaceFlags unknown;
 };
 
 std::string text(double value) {
@@ -41,13 +43,13 @@ void runProbe(const ProbeOptions& options) {
   const Eigen::Vector3d body = parsePoint(options.at, "--at");
   const VehicleGeometry vehicle =
       (options.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle)).geometry;
-  EnvironmentOptions environment_options;
-  environment_options.unknown_is_occupied = !options.unknown_free;
-  environment_options.unknown_is_surface = options.unknown_ceiling;
+  MapIndexOptions index_options;
+  index_options.unknown = options.unknown.value();
   const OccupancyMap map = OccupancyMap::load(options.map);
   Progress progress("indexing " + options.map);
-  const Environment environment(map, vehicle, environment_options, [&](double f) { progress.update(f); });
+  const Environment environment(MapIndex::build(map, index_options, [&](double f) { progress.update(f); }), vehicle);
   progress.finish();
+  const UnknownSpaceSummary& unknown = environment.index()->unknownSummary();
 
   const PositionProbe probe = probePosition(environment, body);
   const SurfaceGaps &ceiling = probe.ceiling, &ground = probe.ground;
@@ -59,6 +61,9 @@ void runProbe(const ProbeOptions& options) {
               ground.coverage, text(ground.mean_gap_m).c_str());
   std::printf("clearance_m: %s\nvalid: %s\n", text(probe.clearance_m).c_str(), probe.violation ? "false" : "true");
   if (probe.violation) std::printf("violation: %s\n", probe.violation->describe().c_str());
+  std::printf("unknown: %s\n", io::unknownSpaceLine(index_options.unknown, unknown).c_str());
+  std::printf("assumed_free: %s\n",
+              probe.assumes_free ? "true (the vehicle overlaps unknown space the policy assumed free)" : "false");
   for (std::size_t r = 0; r < vehicle.rotor_positions_m.size(); ++r)
     std::printf("rotor %zu: ceiling gap %s coverage %.4f | ground gap %s coverage %.4f\n", r,
                 text(ceiling.rotors[r].nearest_gap_m).c_str(), ceiling.rotors[r].coverage,
@@ -68,8 +73,7 @@ void runProbe(const ProbeOptions& options) {
   nlohmann::json report = io::positionProbeJson(probe, vehicle);
   report["map"] = options.map;
   report["vehicle"] = options.vehicle.empty() ? std::string("built-in: ") + vehicle.name : options.vehicle;
-  report["unknown_is_occupied"] = environment_options.unknown_is_occupied;
-  report["unknown_is_surface"] = environment_options.unknown_is_surface;
+  report["unknown"] = io::unknownSpaceJson(index_options.unknown, unknown);
   io::writeJsonFile(options.json, report);
 }
 
@@ -80,8 +84,7 @@ const CommandRegistration registration(22, [](CLI::App& parent) {
   command->add_option("--at", options->at, "Body centre x,y,z in metres (map frame)")->required();
   command->add_option("--vehicle", options->vehicle, "Vehicle file (default: maps/vehicles/quad.yaml)");
   command->add_option("--json", options->json, "Also write the answer as JSON to this file");
-  command->add_flag("--unknown-free", options->unknown_free, "Treat unknown space as free for validity and clearance");
-  command->add_flag("--unknown-ceiling", options->unknown_ceiling, "Treat unknown space as a surface for the gaps");
+  options->unknown.addTo(*command);
   command->callback([options] { runProbe(*options); });
 });
 

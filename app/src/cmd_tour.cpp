@@ -4,10 +4,14 @@
 
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
+#include "map_options.hpp"
 #include "output.hpp"
 
 #include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/io/output_set.hpp"
+#include "ceilplan/io/provenance.hpp"
 #include "ceilplan/io/tour_files.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
 #include "ceilplan/mission/tour_planner.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
@@ -30,11 +34,13 @@ struct TourArguments {
   std::optional<std::uint32_t> seed;
   bool no_export = false;
   double standoff_m = 1.0;
+  UnknownSpaceFlags unknown;  // given: overrides the mission's `unknown:`
   mission::TourOptions options;
 };
 
 void runTour(TourArguments a) {
   const mission::Mission mission = io::readMission(a.mission);
+  io::OutputSet out(a.out);  // checked and staged before any work; in place only when complete
   std::optional<io::Autopilot> autopilot;
   if (!a.no_export) {
     try {
@@ -48,36 +54,41 @@ void runTour(TourArguments a) {
   a.options.seed = a.seed ? *a.seed : mission.seed;
   // OMPL's generators are seeded once per process from the tour seed; the queries draw from
   // them in scheduling order and stop at a wall-clock limit, so OMPL legs are not bit-reproducible.
-  if (a.options.planner != "lattice" && a.options.planner != "roadmap") planner::seedOmpl(a.options.seed);
+  if (!planner::plannerInfo(a.options.planner).deterministic()) planner::seedOmpl(a.options.seed);
   mission::PlanningOptions planning = mission::planningOptions(mission);
   planning.standoff_m = a.standoff_m;
+  if (a.unknown.given()) planning.unknown = a.unknown.value();
   const ProgressCallback progress = terminalProgress();
   const mission::PlanningContext context(environment::OccupancyMap::load(mission.map_file), mission.vehicle,
                                          mission.battery, planning, progress);
   std::vector<mission::FlightMode> modes{mission::FlightMode::Ceiling, mission::FlightMode::Free};
   if (a.mode != "both") modes = {mission::flightModeFromName(a.mode)};
-  if (a.mode != "ceiling") context.standoffEnvironment();  // built before threads share the context
   a.options.progress = progress;
+
+  io::Provenance provenance = io::Provenance::of(invocation());
+  provenance.input("mission", mission.file).input("map", mission.map_file).input("vehicle", mission.vehicle_file);
+  provenance.seed = a.options.seed;
 
   std::printf("tour of %s: %zu targets, mode %s, planner %s, seed %u, split for least %s wear\n",
               mission.file.c_str(), mission.targets.size(), a.mode.c_str(), a.options.planner.c_str(), a.options.seed,
               a.options.ageing_model.c_str());
+  std::printf("unknown space: %s\n", io::unknownSpaceLine(context.environment()).c_str());
   std::fflush(stdout);
-  const std::filesystem::path out(a.out);
   std::vector<mission::TourResult> tours;
   for (mission::FlightMode mode : modes) {
     tours.push_back(mission::planTour(mission, context, mode, a.options));
-    const std::filesystem::path dir = modes.size() > 1 ? out / mission::flightModeName(mode) : out;
-    io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot);
+    const std::filesystem::path dir = modes.size() > 1 ? out.path() / mission::flightModeName(mode) : out.path();
+    io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot, provenance);
     std::printf("%s", io::tourSummary(tours.back()).c_str());
     std::fflush(stdout);
   }
   if (tours.size() == 2) {
     std::printf("\n%s", io::comparisonTable(tours[0], tours[1]).c_str());
-    io::writeTourComparison(out, tours[0], tours[1], context.environment());
+    io::writeTourComparison(out.path(), tours[0], tours[1], mission, context.environment(), provenance);
   }
-  std::printf("\nwrote %s (tour.json, path.csv%s); figures: scripts/plot-tour %s\n", out.c_str(),
-              autopilot ? ", mission.plan, mission.waypoints" : "", out.c_str());
+  out.commit();
+  std::printf("\nwrote %s (tour.json, path.csv%s); figures: scripts/plot-tour %s\n", a.out.c_str(),
+              autopilot ? ", mission.plan, mission.waypoints" : "", a.out.c_str());
 }
 
 const CommandRegistration registration(50, [](CLI::App& parent) {
@@ -90,23 +101,27 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
       ->check(CLI::IsMember({"ceiling", "free", "both"}));
   command->add_option("--seed", a->seed, "seed of the order heuristic (default: the mission's)")
       ->check(CLI::Range(1u, 4294967295u));
-  std::vector<std::string> leg_planners{"roadmap"};
-  leg_planners.insert(leg_planners.end(), planner::plannerNames().begin(), planner::plannerNames().end());
   command->add_option("--planner", a->options.planner,
-                      "leg planner: roadmap (one lattice roadmap for all legs, deterministic), or a planner searching "
-                      "each pair of places (OMPL's, or lattice A*; slow on large maps)")
+                      "leg planner: " + planner::defaultTourPlannerName() +
+                          " (one lattice roadmap for all legs, deterministic), or a planner searching each pair of "
+                          "places (OMPL's, or the lattice A*; slow on large maps)")
       ->capture_default_str()
-      ->check(CLI::IsMember(leg_planners));
+      ->check(CLI::IsMember(planner::plannerNames()));
   command->add_option("--time-limit-s", a->options.time_limit_s,
                       "pairwise planners: search time per leg (refinement may take as long again)")
       ->capture_default_str()->check(positiveFinite());
-  command->add_option("--lattice-stride", a->options.lattice_stride, "roadmap and lattice: node spacing in voxels")
-      ->capture_default_str()->check(CLI::Range(1, 16));
+  command->add_option("--lattice-spacing-m", a->options.lattice_spacing_m, "roadmap and lattice: node spacing")
+      ->capture_default_str()->check(CLI::Range(0.01, 2.0));
+  command->add_option("--lattice-stride", a->options.lattice_stride,
+                      "roadmap and lattice: node spacing in voxels of the map instead (to be retired)")
+      ->check(CLI::Range(1, 16));
   command->add_option("--workers", a->options.workers, "threads planning legs")->capture_default_str()->check(CLI::Range(1, 64));
   command->add_option("--ageing-model", a->options.ageing_model, "the sortie split minimises this model's wear")
       ->capture_default_str()
       ->check(CLI::IsMember(battery::ageingModelNames()));
-  command->add_option("--standoff-m", a->standoff_m, "free mode: conventional distance kept from every structure")
+  a->unknown.addTo(*command);
+  command->add_option("--standoff-m", a->standoff_m,
+                      "free mode: the conventional distance from every structure, kept where it fits")
       ->capture_default_str()->check(nonNegativeFinite());
   command->add_option("--free-standoff-max-m", a->options.free_standoff_max_m,
                       "free mode: farthest viewpoint from a target (a conventional planner inspects from where its "
@@ -118,6 +133,15 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                     "never take a clear straight line in place of the searched route (default: take it where it is valid and "
                     "cheaper)");
   command->add_flag("--no-export", a->no_export, "skip mission.plan / mission.waypoints (no geodetic origin needed)");
+  command->add_option("--missions-per-day", a->options.missions_per_day,
+                      "duty projection: tours a day (default: as many as fit in a day, at most 15)")
+      ->check(CLI::Range(1, 1000));
+  command->add_option("--days", a->options.days, "duty projection: days")->capture_default_str()->check(CLI::Range(1, 3650));
+  command->add_option("--idle-min", a->options.idle_min, "duty projection: idle after each tour")
+      ->capture_default_str()->check(finiteAtLeast(0.0));
+  command->add_option("--charge-max-min", a->options.charge_max_min,
+                      "duty projection: longest charge back to the start SOC after each sortie")
+      ->capture_default_str()->check(positiveFinite());
   command->callback([a] { runTour(*a); });
 });
 

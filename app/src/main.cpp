@@ -1,5 +1,6 @@
 #include "command_registry.hpp"
 #include "errors.hpp"
+#include "output.hpp"
 #include "yaml_config.hpp"
 
 #include "ceilplan/core/error.hpp"
@@ -16,6 +17,7 @@
 int main(int argc, char** argv) {
   using namespace ceilplan::app;
   ceilplan::io::installSignalCleanup();  // before any thread: Ctrl-C leaves no partial output
+  recordInvocation(argc, argv);
   CLI::App app{"ceilplan: battery-wear-aware inspection planning for multirotors flying under ceilings"};
   app.require_subcommand(1);
   app.config_formatter(std::make_shared<YamlConfig>(app));

@@ -1,5 +1,7 @@
 #include "output.hpp"
 
+#include "ceilplan/io/provenance.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -29,6 +31,17 @@ void Progress::finish() {
   if (enabled_ && last_percent_ >= 0) std::cerr << "\r\033[K" << std::flush;  // a finished line leaves nothing behind
   enabled_ = false;
 }
+
+namespace {
+std::string& invocationText() {
+  static std::string text = "ceilplan";
+  return text;
+}
+}  // namespace
+
+void recordInvocation(int argc, const char* const* argv) { invocationText() = io::commandLine(argc, argv); }
+
+const std::string& invocation() { return invocationText(); }
 
 ProgressCallback terminalProgress() {
   struct Lines {

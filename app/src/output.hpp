@@ -32,6 +32,10 @@ class Progress {
   int last_percent_ = -1;
 };
 
+// The command line as typed (main records it), for the outputs' provenance.
+void recordInvocation(int argc, const char* const* argv);
+const std::string& invocation();
+
 // A library progress callback drawn as Progress lines, one per stage, when stderr is a
 // terminal; the last line is cleared when the callback and its copies are gone.
 ProgressCallback terminalProgress();

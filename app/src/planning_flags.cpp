@@ -7,6 +7,7 @@
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <sstream>
 
@@ -18,6 +19,7 @@ void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objec
   command->add_option("--vehicle", flags.vehicle, "vehicle file (default: the built-in quadrotor, as maps/vehicles/quad.yaml)");
   command->add_option("--battery", flags.battery,
                       "battery YAML: capacity_ah, start_soc, charge_current_a, ... (default: the paper's pack at 95 %)");
+  flags.unknown.addTo(*command);
   if (with_objective) {
     command->add_option("--objective", a.objective, "what to minimise")
         ->capture_default_str()
@@ -42,7 +44,7 @@ void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objec
       ->capture_default_str()->check(positiveFinite());
   command->add_option("--min-ceiling-gap-m", a.min_ceiling_gap_m, "rotor plane to ceiling, never less")
       ->capture_default_str()->check(nonNegativeFinite());
-  command->add_option("--standoff-m", a.standoff_m, "free mode: distance kept from every structure")
+  command->add_option("--standoff-m", a.standoff_m, "free mode: the conventional distance from every structure, kept where it fits")
       ->capture_default_str()->check(nonNegativeFinite());
   command->add_option("--temperature-c", a.temperature_c, "cell temperature for the ageing model")
       ->capture_default_str()->check(CLI::Range(-40.0, 80.0));
@@ -56,8 +58,8 @@ void addSearchOptions(CLI::App* command, SearchArguments& a) {
   command->add_option("--band-fraction", a.band_fraction, "share of samples aimed under ceilings")
       ->capture_default_str()->check(CLI::Range(0.0, 1.0));
   command->add_flag("--no-refine", a.no_refine, "skip shortcutting and NLopt refinement");
-  command->add_option("--lattice-stride", a.lattice_stride, "lattice planner: spacing in voxels")
-      ->capture_default_str()->check(CLI::Range(1, 16));
+  command->add_option("--lattice-spacing-m", a.lattice_spacing_m, "lattice and roadmap planners: node spacing")
+      ->capture_default_str()->check(CLI::Range(0.01, 2.0));
 }
 
 planner::PlanRequest SearchArguments::request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const {
@@ -68,11 +70,19 @@ planner::PlanRequest SearchArguments::request(const Eigen::Vector3d& start_m, co
   request.time_limit_s = time_limit_s;
   request.band_fraction = band_fraction;
   request.refine = !no_refine;
-  request.lattice.stride_voxels = lattice_stride;
+  request.lattice.spacing_m = lattice_spacing_m;
   return request;
 }
 
 std::string SearchArguments::plannerName() const { return planner.empty() ? planner::defaultPlannerName() : planner; }
+
+std::string SearchArguments::describe() const {
+  const std::string name = plannerName();
+  // The lattice planners are deterministic and run to completion: no seed, no clock.
+  if (planner::plannerInfo(name).deterministic())
+    return "planner " + name + " (lattice spacing " + formatNumber(lattice_spacing_m) + " m)";
+  return "planner " + name + ", seed " + std::to_string(seed) + ", " + formatNumber(time_limit_s) + " s";
+}
 
 Eigen::Vector3d parsePoint(const std::string& text, const std::string& flag) {
   std::istringstream in(text);
@@ -84,12 +94,21 @@ Eigen::Vector3d parsePoint(const std::string& text, const std::string& flag) {
   return point;
 }
 
+io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std::uint64_t> seed) {
+  io::Provenance provenance = io::Provenance::of(invocation());
+  provenance.input("map", flags.map).input("vehicle", flags.vehicle).input("battery", flags.battery);
+  provenance.seed = seed;
+  return provenance;
+}
+
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags) {
   const mission::Vehicle vehicle =
       flags.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(flags.vehicle);
   const mission::BatterySpec battery = flags.battery.empty() ? mission::BatterySpec{} : io::readBattery(flags.battery);
+  mission::PlanningOptions options = flags.options;
+  options.unknown = flags.unknown.value();
   return std::make_unique<mission::PlanningContext>(environment::OccupancyMap::load(flags.map), vehicle, battery,
-                                                    flags.options, terminalProgress());
+                                                    options, terminalProgress());
 }
 
 }  // namespace ceilplan::app

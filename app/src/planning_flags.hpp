@@ -3,8 +3,10 @@
 // speeds and safety rules into mission::PlanningOptions, and the search flags into a
 // planner::PlanRequest.
 
+#include "map_options.hpp"
 #include "output.hpp"
 
+#include "ceilplan/io/provenance.hpp"
 #include "ceilplan/mission/planning_context.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 
@@ -13,6 +15,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace ceilplan::app {
@@ -21,12 +24,16 @@ struct PlanningFlags {
   std::string map;
   std::string vehicle;  // empty: the built-in vehicle (maps/vehicles/quad.yaml)
   std::string battery;  // empty: the paper's pack at 95 %
-  mission::PlanningOptions options;
+  mission::PlanningOptions options;  // its unknown-space policy comes from `unknown`
+  UnknownSpaceFlags unknown;
 };
 
-// Registers --map, --vehicle, --battery, --objective and the model flags on `command`.
+// Registers --map, --vehicle, --battery, --objective, --unknown and the model flags on `command`.
 // `with_objective` false leaves --objective out (commands that report every objective).
 void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objective = true);
+
+// The outputs' provenance: the command line, the map, vehicle and battery files, the seed.
+io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std::uint64_t> seed);
 
 // The map, vehicle and battery the flags name, indexed with progress on the terminal.
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags);
@@ -38,10 +45,12 @@ struct SearchArguments {
   std::uint32_t seed = 1;
   double band_fraction = 0.0;  // uniform by default: the band did not help BIT* in the study (docs/planner.md)
   bool no_refine = false;
-  int lattice_stride = 2;
+  double lattice_spacing_m = 0.2;  // the lattice planners' node spacing
 
   planner::PlanRequest request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
   std::string plannerName() const;
+  // "planner BITstar, seed 3, 5 s", or for a lattice planner its spacing (it has no seed or clock).
+  std::string describe() const;
 };
 void addSearchOptions(CLI::App* command, SearchArguments& arguments);
 

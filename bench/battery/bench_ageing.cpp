@@ -1,4 +1,4 @@
-// Speed targets of the ageing models (issue 5): rainflow over 10 million samples in under 1 s;
+// Speed targets of the ageing models (docs/ageing.md, "Speed"): rainflow over 10 million samples in under 1 s;
 // a 10-year history (15 missions a day, 6 samples each) fed mission by mission to the Xu model,
 // reading the capacity loss after every mission as a duty simulation would, in under 1 s.
 #include "ceilplan/battery/ageing_factory.hpp"

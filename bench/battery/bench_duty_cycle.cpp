@@ -1,6 +1,6 @@
 // Duty-cycle simulation speed. Targets: an event-driven 10-year run of 15 missions a day well
-// under a second (issue 2); the same with capacity fade fed back through the Xu model under a
-// second (issue 5).
+// under a second (docs/battery.md, "Speed"); the same with capacity fade fed back through the Xu
+// model under a second (docs/ageing.md).
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/duty_cycle.hpp"

@@ -1,5 +1,5 @@
 // One current evaluation with the gaps known: the planner's cost calls this per state.
-// Target (issue 4): under 100 ns.
+// Target (docs/energy.md, "Performance"): under 100 ns.
 
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/energy/paper_quad.hpp"

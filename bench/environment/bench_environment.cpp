@@ -80,6 +80,20 @@ void BM_CeilingGapVehicle(benchmark::State& state) {
 }
 BENCHMARK(BM_CeilingGapVehicle);
 
+// Rotor discs straddling a girder's edge (y = -1.2 m) under the deck: the columns under each
+// disc give different gaps, so every column's exact share of the disc is weighed.
+void BM_CeilingGapVehicleAtEdges(benchmark::State& state) {
+  const Environment& environment = bridge();
+  std::size_t n = 0;
+  for (auto _ : state) {
+    const Eigen::Vector3d& p = samples()[n++ & 4095];
+    const SurfaceGaps gaps = environment.ceiling({p.x(), -1.2 + 0.159, 4.7});
+    benchmark::DoNotOptimize(gaps.coverage);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_CeilingGapVehicleAtEdges);
+
 // The naive footprint: castRay on a 5 x 5 grid over each rotor disc (inside points only, 21 per
 // disc). Argument 0: rays run to the top of the map, to find the nearest surface as
 // Environment::ceiling does; argument 1: rays stop at the 4 R reach (coverage only).

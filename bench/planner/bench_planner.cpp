@@ -5,6 +5,10 @@
 
 #include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
+#include "ceilplan/planner/lattice_planner.hpp"
+#include "ceilplan/planner/ompl_state.hpp"
+
+#include <ompl/base/ProblemDefinition.h>
 
 #include <benchmark/benchmark.h>
 
@@ -67,16 +71,26 @@ void BM_MotionValidity1mUnderDeck(benchmark::State& state) {
 }
 BENCHMARK(BM_MotionValidity1mUnderDeck);
 
-// The warehouse query of the quality study, lattice stride 2 (docs/planner.md).
+// The warehouse query of the quality study, lattice spacing 0.2 m (docs/planner.md).
 void BM_LatticeWarehouse(benchmark::State& state) {
   const Scene& scene = warehouse();
   planner::seedOmpl(1);
   const planner::FlightPlanner flight_planner(scene.rules, scene.model, planner::ObjectiveChoice{});
+  const ompl::base::SpaceInformationPtr& si = flight_planner.spaceInformation();
   for (auto _ : state) {
-    planner::LatticePlanner lattice(scene.rules, flight_planner.objective());
-    const auto result = lattice.plan({7.5, 6, 7.9}, {22.5, 14, 7.9});
-    state.counters["expansions"] = result ? static_cast<double>(result->expansions) : 0.0;
-    benchmark::DoNotOptimize(result);
+    planner::LatticeSettings settings;
+    settings.spacing_m = 0.2;
+    planner::LatticePlanner lattice(si, settings);
+    auto definition = std::make_shared<ompl::base::ProblemDefinition>(si);
+    ompl::base::ScopedState<> start(si), goal(si);
+    planner::setPosition(start.get(), {7.5, 6, 7.9});
+    planner::setPosition(goal.get(), {22.5, 14, 7.9});
+    definition->setStartAndGoalStates(start, goal, 1e-6);
+    definition->setOptimizationObjective(flight_planner.objectivePtr());
+    lattice.setProblemDefinition(definition);
+    const ompl::base::PlannerStatus status = lattice.solve(600.0);
+    state.counters["expansions"] = static_cast<double>(lattice.expansions());
+    state.counters["solved"] = status == ompl::base::PlannerStatus::EXACT_SOLUTION;
   }
 }
 BENCHMARK(BM_LatticeWarehouse)->Unit(benchmark::kSecond)->Iterations(1);

@@ -25,15 +25,15 @@ struct BridgeRoadmap {
   std::vector<Eigen::Vector3d> places;
 
   explicit BridgeRoadmap(mission::FlightMode planning_mode) {
-    mode = setup.mode(planning_mode, mission.home_m, mission.home_m);
+    mode = setup.mode(planning_mode);
     planner = std::make_unique<planner::FlightPlanner>(*mode.rules, *mode.model,
                                                        setup.objective(mission.home_m, mission.home_m));
     places.push_back(mission.home_m);
     mission::ViewpointOptions options;
     options.mode = planning_mode;
     options.min_ceiling_gap_m = setup.options().min_ceiling_gap_m + 0.01;
-    const environment::Environment& environment =
-        planning_mode == mission::FlightMode::Ceiling ? setup.environment() : setup.standoffEnvironment();
+    options.standoff_m = setup.options().standoff_m;
+    const environment::Environment& environment = setup.environment();
     for (mission::InspectionTarget target : mission.targets) {
       if (planning_mode == mission::FlightMode::Free) target.standoff_max_m = std::max(target.standoff_max_m, 3.0);
       places.push_back(mission::chooseViewpoint(target, environment, setup.energy(), options).position_m);
@@ -41,10 +41,18 @@ struct BridgeRoadmap {
   }
 };
 
+// The tour's settings: 0.4 m, two threads.
+planner::LatticeSettings tourSettings() {
+  planner::LatticeSettings settings;
+  settings.workers = 2;
+  return settings;
+}
+
 void roadmapBuild(benchmark::State& state, mission::FlightMode planning_mode) {
   BridgeRoadmap bridge(planning_mode);
   for (auto _ : state) {
-    const planner::LatticeRoadmap roadmap(*bridge.mode.rules, bridge.planner->objective(), bridge.places);
+    planner::LatticeRoadmap roadmap(bridge.planner->spaceInformation(), tourSettings());
+    roadmap.build(bridge.planner->objective(), bridge.places);
     state.counters["nodes"] = static_cast<double>(roadmap.validNodeCount());
     state.counters["edges"] = static_cast<double>(roadmap.edgeCount());
     state.counters["MB"] = static_cast<double>(roadmap.memoryBytes()) / 1e6;
@@ -57,7 +65,8 @@ void roadmapBuild(benchmark::State& state, mission::FlightMode planning_mode) {
 
 void roadmapSearch(benchmark::State& state, mission::FlightMode planning_mode) {
   BridgeRoadmap bridge(planning_mode);
-  const planner::LatticeRoadmap roadmap(*bridge.mode.rules, bridge.planner->objective(), bridge.places);
+  planner::LatticeRoadmap roadmap(bridge.planner->spaceInformation(), tourSettings());
+  roadmap.build(bridge.planner->objective(), bridge.places);
   int from = 0;
   for (auto _ : state) {
     const auto routes = roadmap.routesFrom(from);

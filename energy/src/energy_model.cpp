@@ -126,7 +126,8 @@ CurrentBreakdown EnergyModel::combine(double ceiling_factor, double induced_powe
   const double profile_shaft_w = rotor_power_.profilePowerW(v);
   const double parasitic_shaft_w = rotor_power_.parasiticPowerW(v);
   const double level_shaft_w = induced_shaft_w + profile_shaft_w + parasitic_shaft_w;
-  // Climb adds m g v_z (reference section 4); descent gives some back, never below the floor.
+  // Climb adds m g v_z (docs/models.md, "Power against speed, climb and descent"); descent
+  // gives some back, never below the floor.
   const double climb_shaft_w =
       std::max(weight_n_ * flight.climb_m_s, -(1.0 - parameters_.rotor.descent_power_floor) * level_shaft_w);
 
@@ -135,7 +136,7 @@ CurrentBreakdown EnergyModel::combine(double ceiling_factor, double induced_powe
   out.profile_w = profile_shaft_w * inverse_efficiency_;
   out.parasitic_w = parasitic_shaft_w * inverse_efficiency_;
   out.climb_w = climb_shaft_w * inverse_efficiency_;
-  const double propulsion_w = out.induced_w + out.profile_w + out.parasitic_w + out.climb_w;
+  const double propulsion_w = out.propulsionW();
   const PackOperatingPoint point = pack_.operatingPoint(propulsion_w, flight.soc);
   out.current_a = point.current_a;
   out.terminal_voltage_v = point.terminal_voltage_v;

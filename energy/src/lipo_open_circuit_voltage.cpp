@@ -9,7 +9,8 @@
 namespace ceilplan::energy {
 namespace {
 
-// reference-models.md section 6: ArduPilot simulator, SOC % -> V per cell, descending in SOC.
+// ArduPilot's simulator (libraries/SITL/SIM_Battery.cpp, soc_table), SOC % -> V per cell,
+// descending in SOC, down to its 2 % point (docs/models.md, "Pack electrics").
 constexpr double kTable[LipoOpenCircuitVoltage::kPointCount][2] = {
     {100, 4.173}, {96.15, 4.112}, {92.31, 4.085}, {88.46, 4.071}, {84.62, 4.039},
     {80.77, 3.987}, {76.92, 3.943}, {73.08, 3.908}, {69.23, 3.887}, {65.38, 3.854},

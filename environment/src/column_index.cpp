@@ -1,36 +1,54 @@
 #include "ceilplan/environment/column_index.hpp"
+
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/parallel_for.hpp"
 
 #include <algorithm>
 #include <limits>
-#include <stdexcept>
 
 namespace ceilplan::environment {
 namespace {
 
-constexpr std::int32_t kBelowEverything = std::numeric_limits<std::int32_t>::min() / 2;
-constexpr std::int32_t kAboveEverything = std::numeric_limits<std::int32_t>::max() / 2;
+// Bands of whole rows (y) of columns, so each thread reads the grid in memory order (z
+// outermost, then its rows) and owns the columns it writes.
+struct RowBands {
+  RowBands(int rows, int workers) : rows_(rows), count_(std::min<int>(rows, std::max(1, workers) * 16)) {}
+  std::size_t count() const { return static_cast<std::size_t>(count_); }
+  int begin(std::size_t band) const { return static_cast<int>(band * rows_ / count_); }
+  int end(std::size_t band) const { return static_cast<int>((band + 1) * rows_ / count_); }
+
+ private:
+  long rows_;
+  long count_;
+};
 
 }  // namespace
 
-ColumnIndex::ColumnIndex(const VoxelGrid& grid)
-    : resolution_m_(grid.frame().resolution_m()),
-      inverse_resolution_(1.0 / grid.frame().resolution_m()),
-      origin_z_(grid.frame().origin()[2]),
-      size_x_(grid.frame().size()[0]),
-      size_y_(grid.frame().size()[1]) {
-  // Two passes over the grid in memory order (z outermost): count the runs of each column,
-  // then fill them in place; walking each column bottom-up would miss the cache on every voxel.
-  const int size_z = grid.frame().size()[2];
-  const std::size_t columns = static_cast<std::size_t>(size_x_) * size_y_;
-  std::vector<CellState> previous(columns, CellState::Free);
+ColumnIndex::ColumnIndex(const VoxelGrid& grid, int workers)
+    : frame_(grid.frame()),
+      resolution_m_(frame_.resolution_m()),
+      inverse_resolution_(1.0 / frame_.resolution_m()),
+      origin_z_(frame_.origin()[2]) {
+  // Two passes over the grid in memory order: count the runs of each column, then fill them
+  // in place; walking each column bottom-up would miss the cache on every voxel.
+  const int size_x = frame_.size()[0], size_z = frame_.size()[2];
+  const std::size_t columns = static_cast<std::size_t>(size_x) * frame_.size()[1];
+  const RowBands bands(frame_.size()[1], workers);
   std::vector<std::uint64_t> cursor(columns, 2);  // first the run counts, with the two unbounded runs
-  for (int k = 0; k < size_z; ++k)
-    for (std::size_t c = 0; c < columns; ++c) {
-      const CellState state = grid.atLinear(static_cast<std::size_t>(k) * columns + c);
-      if (state != CellState::Free && state != previous[c]) ++cursor[c];
-      previous[c] = state;
-    }
+  const auto sweep = [&](std::size_t band, auto&& onVoxel) {
+    const std::size_t c0 = static_cast<std::size_t>(bands.begin(band)) * size_x;
+    const std::size_t c1 = static_cast<std::size_t>(bands.end(band)) * size_x;
+    std::vector<CellState> previous(c1 - c0, CellState::Free);
+    for (int k = 0; k < size_z; ++k)
+      for (std::size_t c = c0; c < c1; ++c) {
+        const CellState state = grid.atLinear(static_cast<std::size_t>(k) * columns + c);
+        if (state != CellState::Free) onVoxel(c, k, state, state != previous[c - c0]);
+        previous[c - c0] = state;
+      }
+  };
+  parallelFor(bands.count(), workers, [&](std::size_t band) {
+    sweep(band, [&](std::size_t c, int, CellState, bool starts) { cursor[c] += starts; });
+  });
   offsets_.resize(columns + 1);
   std::uint64_t total = 0;
   for (std::size_t c = 0; c < columns; ++c) {
@@ -42,22 +60,26 @@ ColumnIndex::ColumnIndex(const VoxelGrid& grid)
   }
   offsets_[columns] = static_cast<std::uint32_t>(total);
   runs_.resize(total);
-  std::fill(previous.begin(), previous.end(), CellState::Free);
   for (std::size_t c = 0; c < columns; ++c) runs_[cursor[c]++] = {kBelowEverything, 0, CellState::Unknown};
-  for (int k = 0; k < size_z; ++k)
-    for (std::size_t c = 0; c < columns; ++c) {
-      const CellState state = grid.atLinear(static_cast<std::size_t>(k) * columns + c);
-      if (state != CellState::Free) {
-        if (state == previous[c]) {
-          runs_[cursor[c] - 1].hi = k + 1;
-        } else {
-          runs_[cursor[c]++] = {k, k + 1, state};
-        }
+  parallelFor(bands.count(), workers, [&](std::size_t band) {
+    sweep(band, [&](std::size_t c, int k, CellState state, bool starts) {
+      if (starts) {
+        runs_[cursor[c]++] = {k, k + 1, state};
+      } else {
+        runs_[cursor[c] - 1].hi = k + 1;
       }
-      previous[c] = state;
-    }
+    });
+  });
   for (std::size_t c = 0; c < columns; ++c) runs_[cursor[c]++] = {size_z, kAboveEverything, CellState::Unknown};
 }
+
+ColumnIndex::ColumnIndex(const GridFrame& frame, std::vector<std::uint32_t> offsets, std::vector<Run> runs)
+    : frame_(frame),
+      resolution_m_(frame.resolution_m()),
+      inverse_resolution_(1.0 / frame.resolution_m()),
+      origin_z_(frame.origin()[2]),
+      offsets_(std::move(offsets)),
+      runs_(std::move(runs)) {}
 
 ColumnIndex::Boundary ColumnIndex::above(int i, int j, double z_m) const {
   if (!inside(i, j)) return {z_m, CellState::Unknown};

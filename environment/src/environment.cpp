@@ -5,6 +5,7 @@
 #include "ceilplan/core/format.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -16,6 +17,8 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kDenseStepVoxels = 0.1;  // checkPathDensely's step: finer than any planner's
 
+constexpr int kKeptGaps = 256;  // columns under a rotor disc: 9 for a 10" rotor at 0.1 m, 196 at 0.02 m
+
 void validateOptions(const EnvironmentOptions& options) {
   if (!(options.ceiling_reach_radii > 0.0) || !std::isfinite(options.ceiling_reach_radii))
     throw ceilplan::InputError("environment options: ceiling reach must be a positive number of rotor radii");
@@ -23,11 +26,17 @@ void validateOptions(const EnvironmentOptions& options) {
     throw ceilplan::InputError("environment options: ground reach must be a positive number of rotor radii");
   if (!(options.motion_step_voxels > 0.0) || options.motion_step_voxels > 1.0)
     throw ceilplan::InputError("environment options: motion step must lie in (0, 1] voxels");
+  if (options.workers < 1) throw ceilplan::InputError("environment options: workers must be at least 1");
 }
 
 VehicleGeometry validated(VehicleGeometry vehicle) {
   vehicle.validate();
   return vehicle;
+}
+
+std::shared_ptr<const MapIndex> requireIndex(std::shared_ptr<const MapIndex> index) {
+  if (!index) throw ceilplan::Error("environment: no map index given");
+  return index;
 }
 
 }  // namespace
@@ -37,37 +46,63 @@ std::string Violation::describe() const {
   switch (kind) {
     case ViolationKind::OutsideMap: return where + "the body centre lies outside the map";
     case ViolationKind::Occupied: return where + "the vehicle (with its clearance margins) touches occupied space";
-    case ViolationKind::Unknown: return where + "the vehicle (with its clearance margins) touches unknown space";
+    case ViolationKind::Unknown:
+      return where + "the vehicle (with its clearance margins) touches unknown space, which the unknown-space policy keeps as an obstacle";
   }
   return where;
 }
 
-Environment::Environment(const OccupancyMap& map, VehicleGeometry vehicle, EnvironmentOptions options,
+Environment::Environment(std::shared_ptr<const MapIndex> index, VehicleGeometry vehicle, EnvironmentOptions options,
                          const std::function<void(double)>& progress)
-    : map_name_(map.name()),
+    : index_(requireIndex(std::move(index))),
+      columns_(&index_->columns()),
+      distance_(&index_->distance()),
       vehicle_(validated(std::move(vehicle))),
       options_((validateOptions(options), options)),
-      grid_(VoxelGrid::fromTree(map.tree(), [&](double f) { if (progress) progress(0.4 * f); })),
-      columns_((progress ? progress(0.4) : void(), grid_)),
-      distance_((progress ? progress(0.6) : void(), grid_), options_.unknown_is_occupied),
-      footprint_((progress ? progress(0.9) : void(), grid_), vehicle_.inflatedRadius_m(), options_.unknown_is_occupied) {
+      footprint_(index_->distance(), vehicle_.inflatedRadius_m(), options_.workers) {
   const double vertical = std::max(std::abs(vehicle_.inflatedBottom_m()), std::abs(vehicle_.inflatedTop_m()));
   bounding_sphere_m_ = std::hypot(vehicle_.inflatedRadius_m(), vertical);
   if (progress) progress(1.0);
 }
 
+Environment::Environment(const OccupancyMap& map, VehicleGeometry vehicle, EnvironmentOptions options,
+                         const std::function<void(double)>& progress)
+    : Environment(map, std::move(vehicle), options, MapIndexOptions{UnknownSpace{}, options.workers}, progress) {}
+
+Environment::Environment(const OccupancyMap& map, VehicleGeometry vehicle, EnvironmentOptions options,
+                         const MapIndexOptions& index_options, const std::function<void(double)>& progress)
+    : Environment((validated(vehicle), validateOptions(options),  // before the work starts
+                   MapIndex::build(map, index_options, [&](double f) { if (progress) progress(0.95 * f); })),
+                  vehicle, options, progress) {}
+
 void Environment::requireInside(const Eigen::Vector3d& point_m, const char* query) const {
   if (!point_m.allFinite())
     throw ceilplan::InputError(std::string(query) + ": the point " + formatPoint(point_m, 3) + " is not finite");
   if (contains(point_m)) return;
-  const Eigen::AlignedBox3d box = grid_.frame().bounds();
-  throw ceilplan::InputError(map_name_ + ": " + query + " at " + formatPoint(point_m, 3) +
+  const Eigen::AlignedBox3d box = grid().frame().bounds();
+  throw ceilplan::InputError(mapName() + ": " + query + " at " + formatPoint(point_m, 3) +
                           ": the point lies outside the map, whose known voxels span " + formatPoint(box.min(), 3) +
                           " to " + formatPoint(box.max(), 3));
 }
 
+template <class Visit>
+bool Environment::anyColumnUnderCylinder(const Eigen::Vector3d& body_m, Visit&& visit) const {
+  const GridFrame& frame = grid().frame();
+  const double radius = vehicle_.inflatedRadius_m();
+  const int j_end = frame.indexOf(1, body_m.y() + radius), i_end = frame.indexOf(0, body_m.x() + radius);
+  for (int j = frame.indexOf(1, body_m.y() - radius); j <= j_end; ++j) {
+    const double dy = std::max({frame.faceOf(1, j) - body_m.y(), 0.0, body_m.y() - frame.faceOf(1, j + 1)});
+    for (int i = frame.indexOf(0, body_m.x() - radius); i <= i_end; ++i) {
+      const double dx = std::max({frame.faceOf(0, i) - body_m.x(), 0.0, body_m.x() - frame.faceOf(0, i + 1)});
+      if (dx * dx + dy * dy >= radius * radius) continue;  // touching the column's side is allowed
+      if (visit(i, j)) return true;
+    }
+  }
+  return false;
+}
+
 double Environment::columnGap(int i, int j, double z_m, Direction direction) const {
-  const ColumnIndex::Boundary boundary = direction == Direction::Up ? columns_.above(i, j, z_m) : columns_.below(i, j, z_m);
+  const ColumnIndex::Boundary boundary = direction == Direction::Up ? columns_->above(i, j, z_m) : columns_->below(i, j, z_m);
   const bool surface = boundary.state == CellState::Occupied ||
                        (boundary.state == CellState::Unknown && options_.unknown_is_surface);
   return surface ? std::abs(boundary.face_m - z_m) : kInfinity;
@@ -75,13 +110,13 @@ double Environment::columnGap(int i, int j, double z_m, Direction direction) con
 
 double Environment::ceilingGapAt(const Eigen::Vector3d& point_m) const {
   requireInside(point_m, "ceiling gap");
-  const GridFrame& frame = grid_.frame();
+  const GridFrame& frame = grid().frame();
   return columnGap(frame.indexOf(0, point_m.x()), frame.indexOf(1, point_m.y()), point_m.z(), Direction::Up);
 }
 
 double Environment::groundGapAt(const Eigen::Vector3d& point_m) const {
   requireInside(point_m, "ground gap");
-  const GridFrame& frame = grid_.frame();
+  const GridFrame& frame = grid().frame();
   return columnGap(frame.indexOf(0, point_m.x()), frame.indexOf(1, point_m.y()), point_m.z(), Direction::Down);
 }
 
@@ -96,7 +131,7 @@ SurfaceGaps Environment::ground(const Eigen::Vector3d& body_m) const {
 }
 
 SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction) const {
-  const GridFrame& frame = grid_.frame();
+  const GridFrame& frame = grid().frame();
   const double radius = vehicle_.rotor_radius_m;
   const double disc_area = M_PI * radius * radius;
   const double reach =
@@ -109,23 +144,29 @@ SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction
     const Eigen::Vector2d centre = body_m.head<2>() + offset;
     const int i_begin = frame.indexOf(0, centre.x() - radius), i_end = frame.indexOf(0, centre.x() + radius);
     const int j_begin = frame.indexOf(1, centre.y() - radius), j_end = frame.indexOf(1, centre.y() + radius);
-    // Calls `visit(i, j, gap)` for every column the disc overlaps with positive area.
+    // Calls `visit(i, j, n)` for every column the disc overlaps with positive area, n counting them.
     const auto forEachColumn = [&](auto&& visit) {
+      int n = 0;
       for (int j = j_begin; j <= j_end; ++j) {
         const double dy = std::max({frame.faceOf(1, j) - centre.y(), 0.0, centre.y() - frame.faceOf(1, j + 1)});
         for (int i = i_begin; i <= i_end; ++i) {
           const double dx = std::max({frame.faceOf(0, i) - centre.x(), 0.0, centre.x() - frame.faceOf(0, i + 1)});
-          if (dx * dx + dy * dy < radius * radius) visit(i, j, columnGap(i, j, plane_z, direction));
+          if (dx * dx + dy * dy < radius * radius) visit(i, j, n++);
         }
       }
     };
-    // Usually every column under the disc gives the same gap (a flat ceiling, or none): then
-    // no area is needed. Otherwise weigh each column by its exact share of the disc.
+    // Each column's gap is looked up once and kept for the weighing below (on fine maps, past
+    // the first kKeptGaps columns, looked up again there).
+    std::array<double, kKeptGaps> kept;
     double lowest = kInfinity, highest = -kInfinity;
-    forEachColumn([&](int, int, double gap) {
+    forEachColumn([&](int i, int j, int n) {
+      const double gap = columnGap(i, j, plane_z, direction);
+      if (n < kKeptGaps) kept[n] = gap;
       lowest = std::min(lowest, gap);
       highest = std::max(highest, gap);
     });
+    // Usually every column under the disc gives the same gap (a flat ceiling, or none): then
+    // no area is needed. Otherwise weigh each column by its exact share of the disc.
     RotorGap rotor{lowest, 0.0, kInfinity};
     double covered = 0.0, weighted = 0.0;
     if (lowest == highest) {
@@ -134,7 +175,8 @@ SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction
         weighted = disc_area * lowest;
       }
     } else {
-      forEachColumn([&](int i, int j, double gap) {
+      forEachColumn([&](int i, int j, int n) {
+        const double gap = n < kKeptGaps ? kept[n] : columnGap(i, j, plane_z, direction);
         if (gap > reach) return;
         const double area = discRectangleOverlap_m2(centre, radius, {frame.faceOf(0, i), frame.faceOf(1, j)},
                                                     {frame.faceOf(0, i + 1), frame.faceOf(1, j + 1)});
@@ -156,38 +198,33 @@ SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction
 
 double Environment::clearance_m(const Eigen::Vector3d& body_m) const {
   requireInside(body_m, "clearance");
-  return distance_.distance_m(body_m);
+  return distance_->distance_m(body_m);
 }
 
 double Environment::clearanceLowerBound_m(const Eigen::Vector3d& body_m) const {
   requireInside(body_m, "clearance");
-  return distance_.lowerBound_m(body_m);
+  return distance_->lowerBound_m(body_m);
 }
 
 std::optional<Violation> Environment::exactCylinderViolation(const Eigen::Vector3d& body_m) const {
-  const GridFrame& frame = grid_.frame();
-  const double radius = vehicle_.inflatedRadius_m();
   const double bottom = body_m.z() + vehicle_.inflatedBottom_m();
   const double top = body_m.z() + vehicle_.inflatedTop_m();
-  const int j_end = frame.indexOf(1, body_m.y() + radius), i_end = frame.indexOf(0, body_m.x() + radius);
-  for (int j = frame.indexOf(1, body_m.y() - radius); j <= j_end; ++j) {
-    const double dy = std::max({frame.faceOf(1, j) - body_m.y(), 0.0, body_m.y() - frame.faceOf(1, j + 1)});
-    for (int i = frame.indexOf(0, body_m.x() - radius); i <= i_end; ++i) {
-      const double dx = std::max({frame.faceOf(0, i) - body_m.x(), 0.0, body_m.x() - frame.faceOf(0, i + 1)});
-      if (dx * dx + dy * dy >= radius * radius) continue;  // touching the column's side is allowed
-      if (const auto state = columns_.firstBlocking(i, j, bottom, top, options_.unknown_is_occupied))
-        return Violation{0, body_m, *state == CellState::Occupied ? ViolationKind::Occupied : ViolationKind::Unknown};
-    }
-  }
-  return std::nullopt;
+  std::optional<Violation> violation;
+  anyColumnUnderCylinder(body_m, [&](int i, int j) {
+    const auto state = columns_->firstBlocking(i, j, bottom, top, index_->unknownBlocks());
+    if (state)
+      violation = Violation{0, body_m, *state == CellState::Occupied ? ViolationKind::Occupied : ViolationKind::Unknown};
+    return state.has_value();
+  });
+  return violation;
 }
 
 std::optional<Violation> Environment::stateViolation(const Eigen::Vector3d& body_m) const {
   if (!body_m.allFinite() || !contains(body_m)) return Violation{0, body_m, ViolationKind::OutsideMap};
   // Fast path: nothing blocked within the sphere around the inflated cylinder.
-  if (distance_.lowerBound_m(body_m) > bounding_sphere_m_) return std::nullopt;
+  if (distance_->lowerBound_m(body_m) > bounding_sphere_m_) return std::nullopt;
   // Second fast path: nothing blocking within the footprint's reach at the cylinder's heights.
-  const GridFrame& frame = grid_.frame();
+  const GridFrame& frame = grid().frame();
   if (!footprint_.mayBlock(frame.indexOf(0, body_m.x()), frame.indexOf(1, body_m.y()),
                            body_m.z() + vehicle_.inflatedBottom_m(), body_m.z() + vehicle_.inflatedTop_m()))
     return std::nullopt;
@@ -215,13 +252,13 @@ std::optional<Violation> Environment::segmentViolation(const Eigen::Vector3d& fr
 }
 
 std::optional<Violation> Environment::motionViolation(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
-  return segmentViolation(from_m, to_m, options_.motion_step_voxels * grid_.frame().resolution_m(), true);
+  return segmentViolation(from_m, to_m, options_.motion_step_voxels * grid().frame().resolution_m(), true);
 }
 
-double Environment::denseStep_m() const { return kDenseStepVoxels * grid_.frame().resolution_m(); }
+double Environment::denseStep_m() const { return kDenseStepVoxels * grid().frame().resolution_m(); }
 
 std::optional<Violation> Environment::checkPathDensely(const std::vector<Eigen::Vector3d>& waypoints_m) const {
-  const double step = kDenseStepVoxels * grid_.frame().resolution_m();
+  const double step = kDenseStepVoxels * grid().frame().resolution_m();
   if (waypoints_m.size() == 1) return segmentViolation(waypoints_m[0], waypoints_m[0], step, false);
   for (std::size_t s = 0; s + 1 < waypoints_m.size(); ++s) {
     if (auto violation = segmentViolation(waypoints_m[s], waypoints_m[s + 1], step, false)) {
@@ -230,6 +267,51 @@ std::optional<Violation> Environment::checkPathDensely(const std::vector<Eigen::
     }
   }
   return std::nullopt;
+}
+
+bool Environment::assumesFree(const Eigen::Vector3d& body_m) const {
+  if (index_->unknownSpace().policy == UnknownPolicy::Occupied || !body_m.allFinite() || !contains(body_m)) return false;
+  const double bottom = body_m.z() + vehicle_.inflatedBottom_m();
+  const double top = body_m.z() + vehicle_.inflatedTop_m();
+  return anyColumnUnderCylinder(body_m, [&](int i, int j) { return index_->assumedFreeOverlaps(i, j, bottom, top); });
+}
+
+AssumedFreeStretches Environment::assumedFreeAlong(const std::vector<Eigen::Vector3d>& waypoints_m) const {
+  AssumedFreeStretches result;
+  if (index_->unknownSpace().policy == UnknownPolicy::Occupied || waypoints_m.empty()) return result;
+  const double step = denseStep_m();
+  double start_of_segment = 0.0;
+  const auto add = [&](double from, double to, const Eigen::Vector3d& from_point, const Eigen::Vector3d& to_point) {
+    if (!result.intervals.empty() && result.intervals.back().to_m >= from - 1e-12) {
+      result.intervals.back().to_m = to;
+      result.intervals.back().to_point_m = to_point;
+    } else {
+      result.intervals.push_back({from, to, from_point, to_point});
+    }
+  };
+  if (waypoints_m.size() == 1) {
+    if (assumesFree(waypoints_m[0])) add(0.0, 0.0, waypoints_m[0], waypoints_m[0]);
+    return result;
+  }
+  for (std::size_t s = 0; s + 1 < waypoints_m.size(); ++s) {
+    const Eigen::Vector3d& from = waypoints_m[s];
+    const Eigen::Vector3d& to = waypoints_m[s + 1];
+    const double length = (to - from).norm();
+    if (!std::isfinite(length)) break;
+    const long steps = std::max(1L, static_cast<long>(std::ceil(length / step)));
+    const double spacing = length / steps;
+    for (long n = 0; n <= steps; ++n) {
+      const Eigen::Vector3d state = from + (to - from) * (static_cast<double>(n) / steps);
+      if (!assumesFree(state)) continue;
+      // This state stands for half a step on either side, within the segment.
+      const double lo = std::max(0.0, (n - 0.5) * spacing), hi = std::min(length, (n + 0.5) * spacing);
+      add(start_of_segment + lo, start_of_segment + hi, from + (to - from) * (length > 0 ? lo / length : 0.0),
+          from + (to - from) * (length > 0 ? hi / length : 0.0));
+    }
+    start_of_segment += length;
+  }
+  for (const PathInterval& interval : result.intervals) result.length_m += interval.to_m - interval.from_m;
+  return result;
 }
 
 }  // namespace ceilplan::environment

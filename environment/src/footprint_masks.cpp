@@ -1,46 +1,44 @@
 #include "ceilplan/environment/footprint_masks.hpp"
 
+#include "ceilplan/core/parallel_for.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace ceilplan::environment {
 
-FootprintMasks::FootprintMasks(const VoxelGrid& grid, double footprint_radius_m, bool unknown_blocks)
-    : frame_(grid.frame()), unknown_blocks_(unknown_blocks) {
+FootprintMasks::FootprintMasks(const DistanceField& field, double footprint_radius_m, int workers)
+    : frame_(field.frame()), unknown_blocks_(field.unknownIsBlocked()) {
   const int nx = frame_.size()[0], ny = frame_.size()[1], nz = frame_.size()[2];
   words_ = (nz + 63) / 64;
-  const std::size_t columns = static_cast<std::size_t>(nx) * ny;
-  // The blocking bits of each column, read in the grid's memory order (z outermost).
-  std::vector<std::uint64_t> own(columns * words_, 0);
-  for (int k = 0; k < nz; ++k)
-    for (std::size_t c = 0; c < columns; ++c) {
-      const CellState state = grid.atLinear(static_cast<std::size_t>(k) * columns + c);
-      if (state == CellState::Occupied || (state == CellState::Unknown && unknown_blocks_))
-        own[c * words_ + k / 64] |= std::uint64_t{1} << (k % 64);
-    }
+  const std::size_t layer = static_cast<std::size_t>(nx) * ny;
   // Within radius + sqrt(2) voxels of a column's centre: every column the cylinder can touch
   // from a body centre anywhere in that column (half a diagonal to the body, half to the square).
   const double reach = footprint_radius_m / frame_.resolution_m() + std::sqrt(2.0);
-  const int span = static_cast<int>(std::ceil(reach));
-  std::vector<std::pair<int, int>> disc;
-  for (int dj = -span; dj <= span; ++dj)
-    for (int di = -span; di <= span; ++di)
-      if (di * di + dj * dj <= reach * reach) disc.emplace_back(di, dj);
-  reach_.assign(columns * words_, 0);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      std::uint64_t* out = reach_.data() + (static_cast<std::size_t>(j) * nx + i) * words_;
-      for (const auto& [di, dj] : disc) {
-        const int ci = i + di, cj = j + dj;
-        if (ci < 0 || cj < 0 || ci >= nx || cj >= ny) {
-          // Outside the grid every voxel is unknown.
-          if (unknown_blocks_) std::fill(out, out + words_, ~std::uint64_t{0});
-          continue;
-        }
-        const std::uint64_t* in = own.data() + (static_cast<std::size_t>(cj) * nx + ci) * words_;
-        for (int w = 0; w < words_; ++w) out[w] |= in[w];
-      }
+  // Squared distances between column centres are integers: compare with the largest one in
+  // reach. Distances the field caps compare as "in reach" once the reach passes the cap:
+  // conservative.
+  const std::uint32_t reach_squared =
+      static_cast<std::uint32_t>(std::min(std::floor(reach * reach), double(DistanceField::kHorizontalCap)));
+  reach_.assign(layer * words_, 0);
+  const std::size_t bands = std::min<std::size_t>(ny, std::size_t(std::max(1, workers)) * 16);
+  parallelFor(bands, workers, [&](std::size_t band) {
+    const std::size_t c0 = band * ny / bands * nx, c1 = (band + 1) * ny / bands * nx;
+    for (int k = 0; k < nz; ++k) {
+      const std::uint64_t bit = std::uint64_t{1} << (k % 64);
+      const std::size_t voxel0 = static_cast<std::size_t>(k) * layer;
+      for (std::size_t c = c0; c < c1; ++c)
+        if (field.horizontalSquared(voxel0 + c) <= reach_squared) reach_[c * words_ + k / 64] |= bit;
     }
+    if (!unknown_blocks_) return;
+    // Outside the grid every voxel is unknown: a column within reach of the edge may meet it.
+    for (std::size_t c = c0; c < c1; ++c) {
+      const long i = static_cast<long>(c % nx), j = static_cast<long>(c / nx);
+      const long edge = std::min({i + 1, nx - i, j + 1, ny - j});
+      if (static_cast<double>(edge * edge) <= reach * reach)
+        std::fill_n(reach_.data() + c * words_, words_, ~std::uint64_t{0});
+    }
+  });
 }
 
 bool FootprintMasks::mayBlock(int i, int j, double bottom_m, double top_m) const {

@@ -1,7 +1,11 @@
 #include "ceilplan/environment/occupancy_map.hpp"
+
+#include "generated_tree.hpp"
+
 #include "ceilplan/core/error.hpp"
 
-#include <octomap/AbstractOcTree.h>
+#include <octomap/ColorOcTree.h>
+#include <octomap/OcTreeStamped.h>
 
 #include <cmath>
 #include <cstdint>
@@ -21,6 +25,14 @@ constexpr int kTreeDepth = 16;  // OctoMap's fixed key depth: leaves never lie d
 
 enum class Format { Binary, Full };
 
+// The tree types whose full (.ot) node records ceilplan can read, and each record's payload:
+// the occupancy log-odds (float), then what the type adds. OcTreeStamped writes no stamp.
+struct TreeType {
+  const char* id;
+  std::size_t payload_bytes;
+};
+constexpr TreeType kFullTypes[] = {{"OcTree", 4}, {"ColorOcTree", 4 + 3}, {"OcTreeStamped", 4}};
+
 struct Header {
   Format format;
   std::string id;
@@ -31,6 +43,12 @@ struct Header {
 
 [[noreturn]] void fail(const std::string& name, const std::string& problem) {
   throw ceilplan::InputError(name + ": " + problem);
+}
+
+const TreeType* fullType(const std::string& id) {
+  for (const TreeType& type : kFullTypes)
+    if (id == type.id) return &type;
+  return nullptr;
 }
 
 // Mirrors AbstractOcTree::readHeader (token-based, '#' comments, up to the "data" line) but
@@ -76,8 +94,11 @@ Header parseHeader(const std::string& bytes, const std::string& name) {
   header.data_offset = position;
   if (header.id.empty()) fail(name, "corrupt OctoMap header: no tree type ('id')");
   if (header.id == "1") header.id = "OcTree";  // OctoMap's deprecated id for OcTree
-  if (header.id != "OcTree")
-    fail(name, "holds a " + header.id + ", but ceilplan needs an OcTree (occupancy only); convert the map to an OcTree");
+  // Every occupancy tree (ColorOcTree, OcTreeStamped, ...) writes the same .bt data: its
+  // occupancy. A .ot holds each node's full record, which only the known types can be read from.
+  if (header.format == Format::Full && fullType(header.id) == nullptr)
+    fail(name, "holds a " + header.id +
+                   ", which ceilplan cannot read from a .ot file; save it as a .bt (binary occupancy) file");
   if (!std::isfinite(header.resolution) || header.resolution < 1e-4 || header.resolution > 100.0)
     fail(name, "corrupt OctoMap header: resolution must be between 0.0001 and 100 m");
   if (!have_size) fail(name, "corrupt OctoMap header: no node count ('size')");
@@ -89,7 +110,8 @@ Header parseHeader(const std::string& bytes, const std::string& name) {
 // depth limit, and counts the nodes; OctoMap itself trusts the stream and would recurse
 // without bound or read past its end.
 void checkNodeStream(const std::string& bytes, const Header& header, const std::string& name) {
-  const std::size_t node_bytes = header.format == Format::Binary ? 2 : 5;  // 2 child bytes, or float + 1
+  // 2 child bytes, or the node's record and a child byte.
+  const std::size_t node_bytes = header.format == Format::Binary ? 2 : fullType(header.id)->payload_bytes + 1;
   std::size_t position = header.data_offset;
   unsigned long long nodes = 0;
   std::vector<int> pending_depths{0};  // nodes still to read, depth-first
@@ -116,7 +138,7 @@ void checkNodeStream(const std::string& bytes, const Header& header, const std::
       float value;
       std::memcpy(&value, bytes.data() + position, sizeof value);
       if (!std::isfinite(value)) fail(name, "corrupt OctoMap file: a node holds a non-finite value");
-      const auto bits = static_cast<unsigned char>(bytes[position + 4]);
+      const auto bits = static_cast<unsigned char>(bytes[position + node_bytes - 1]);
       for (int i = 0; i < 8; ++i) inner_children += (bits >> i) & 1u;
     }
     position += node_bytes;
@@ -143,6 +165,27 @@ class QuietOctomap {
   std::streambuf* saved_;
 };
 
+// Copies a tree of another occupancy type node by node into an OcTree: the same nodes (pruned
+// blocks stay single leaves) with the same log-odds, without what the type adds (colour, stamps).
+template <class Tree>
+void copyNodes(const Tree& source, const typename Tree::NodeType* from, detail::GeneratedTree& target,
+               octomap::OcTreeNode* to) {
+  to->setLogOdds(from->getLogOdds());
+  for (unsigned child = 0; child < 8; ++child)
+    if (source.nodeChildExists(from, child))
+      copyNodes(source, source.getNodeChild(from, child), target, target.createNodeChild(to, child));
+}
+
+template <class Tree>
+std::unique_ptr<octomap::OcTree> readAsOccupancy(std::istream& data, double resolution, const std::string& name) {
+  Tree source(resolution);
+  source.readData(data);
+  if (!data || source.getRoot() == nullptr) fail(name, "OctoMap could not read the " + source.getTreeType());
+  auto tree = std::make_unique<detail::GeneratedTree>(resolution);
+  copyNodes(source, source.getRoot(), *tree, tree->createRoot());
+  return tree;
+}
+
 }  // namespace
 
 OccupancyMap::OccupancyMap(std::unique_ptr<octomap::OcTree> tree, std::string name)
@@ -159,25 +202,28 @@ OccupancyMap OccupancyMap::read(std::istream& in, const std::string& name) {
   const Header header = parseHeader(bytes, name);
   checkNodeStream(bytes, header, name);
 
-  // OctoMap reads a canonical header we write, so it cannot parse the original differently.
-  std::ostringstream canonical;
-  canonical.precision(17);
-  canonical << (header.format == Format::Binary ? kBinaryHeader : kFullHeader) << "\nid OcTree\nsize "
-            << header.size << "\nres " << header.resolution << "\ndata\n";
-  canonical.write(bytes.data() + header.data_offset,
-                  static_cast<std::streamsize>(bytes.size() - header.data_offset));
-  std::istringstream stream(canonical.str());
   std::unique_ptr<octomap::OcTree> tree;
   const QuietOctomap quiet;
   if (header.format == Format::Binary) {
+    // OctoMap reads a canonical header we write, so it cannot parse the original differently.
+    std::ostringstream canonical;
+    canonical.precision(17);
+    canonical << kBinaryHeader << "\nid OcTree\nsize " << header.size << "\nres " << header.resolution << "\ndata\n";
+    canonical.write(bytes.data() + header.data_offset, static_cast<std::streamsize>(bytes.size() - header.data_offset));
+    std::istringstream stream(canonical.str());
     tree = std::make_unique<octomap::OcTree>(header.resolution);
     if (!tree->readBinary(stream)) fail(name, "OctoMap could not read the binary tree");
   } else {
-    std::unique_ptr<octomap::AbstractOcTree> any(octomap::AbstractOcTree::read(stream));
-    auto* octree = dynamic_cast<octomap::OcTree*>(any.get());
-    if (octree == nullptr) fail(name, "OctoMap could not read the tree as an OcTree");
-    any.release();
-    tree.reset(octree);
+    std::istringstream data(bytes.substr(header.data_offset));
+    if (header.id == "ColorOcTree") {
+      tree = readAsOccupancy<octomap::ColorOcTree>(data, header.resolution, name);
+    } else if (header.id == "OcTreeStamped") {
+      tree = readAsOccupancy<octomap::OcTreeStamped>(data, header.resolution, name);
+    } else {
+      tree = std::make_unique<octomap::OcTree>(header.resolution);
+      tree->readData(data);
+      if (!data) fail(name, "OctoMap could not read the tree");
+    }
   }
   return OccupancyMap(std::move(tree), name);
 }

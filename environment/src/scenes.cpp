@@ -1,5 +1,6 @@
 #include "ceilplan/environment/scenes.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <cmath>
 #include <random>
@@ -39,39 +40,43 @@ void box(VoxelGrid& grid, double x0, double x1, double y0, double y1, double z0,
   grid.fillBox(Vector3d(x0, y0, z0), Vector3d(x1, y1, z1), state);
 }
 
-// Boulders on open ground, away from the home area (x < 2).
-void boulders(VoxelGrid& grid, SceneRandom& random) {
-  for (int b = 0; b < 8; ++b) {
-    const double x = random.decimetres(3.0, 46.0), y = random.decimetres(-9.0, 9.0);
+// `count` boulders on open ground, away from the home area (x < 2), x up to `x_max`.
+void boulders(VoxelGrid& grid, SceneRandom& random, int count = 8, double x_max = 46.0) {
+  for (int b = 0; b < count; ++b) {
+    const double x = random.decimetres(3.0, x_max), y = random.decimetres(-9.0, 9.0);
     const double half = random.decimetres(0.2, 0.4), height = random.decimetres(0.3, 0.8);
     box(grid, x - half, x + half, y - half, y + half, 0.0, height, kOccupied);
   }
 }
 
-// A road bridge seen from below: deck underside at 6 m, four steel girders (inner 0.8 m,
-// outer 1.0 m deep), cross-frames every 4 m, two piers with caps and bearings, abutments.
-VoxelGrid bridge(double resolution_m, SceneRandom& random) {
-  VoxelGrid grid = emptyGrid(resolution_m, Vector3d(-6, -10, -0.4), Vector3d(54, 10, 7.0));
-  box(grid, -6, 54, -10, 10, 0.0, 7.0, kFree);         // what the scan from below saw
-  box(grid, -2, 50, -5.5, 5.5, 6.3, 7.0, kUnknown);    // above the deck: hidden from below
-  box(grid, -6, 54, -10, 10, -0.4, 0.0, kOccupied);    // ground
-  box(grid, -2, 50, -5.5, 5.5, 6.0, 6.3, kOccupied);   // deck slab
-  for (const double x : {-2.0, 48.0}) box(grid, x, x + 2, -5.5, 5.5, 0.0, 6.0, kOccupied);  // abutments
+// A road bridge seen from below, spanning `length` metres between its abutments (48 m shipped):
+// deck underside at 6 m, four steel girders (inner 0.8 m, outer 1.0 m deep), cross-frames every
+// 4 m, piers with caps and bearings every 16 m (none closer than 16 m to the far abutment),
+// abutments, and 8 boulders per 48 m.
+VoxelGrid bridge(double resolution_m, SceneRandom& random, double length) {
+  const double end = length + 6;
+  VoxelGrid grid = emptyGrid(resolution_m, Vector3d(-6, -10, -0.4), Vector3d(end, 10, 7.0));
+  box(grid, -6, end, -10, 10, 0.0, 7.0, kFree);              // what the scan from below saw
+  box(grid, -2, length + 2, -5.5, 5.5, 6.3, 7.0, kUnknown);  // above the deck: hidden from below
+  box(grid, -6, end, -10, 10, -0.4, 0.0, kOccupied);         // ground
+  box(grid, -2, length + 2, -5.5, 5.5, 6.0, 6.3, kOccupied);  // deck slab
+  for (const double x : {-2.0, length}) box(grid, x, x + 2, -5.5, 5.5, 0.0, 6.0, kOccupied);  // abutments
   const double girders[4] = {-4.2, -1.4, 1.4, 4.2};
   for (const double y : girders) {
     const double depth = std::abs(y) > 3 ? 1.0 : 0.8;
-    box(grid, 0, 48, y - 0.2, y + 0.2, 6.0 - depth, 6.0, kOccupied);
+    box(grid, 0, length, y - 0.2, y + 0.2, 6.0 - depth, 6.0, kOccupied);
   }
-  for (int x = 4; x <= 44; x += 4) {
-    if (x == 16 || x == 32) continue;  // the pier caps stand there
+  const auto pier = [length](int x) { return x % 16 == 0 && x <= length - 16; };
+  for (int x = 4; x <= length - 4; x += 4) {
+    if (pier(x)) continue;  // the pier caps stand there
     for (int g = 0; g < 3; ++g) box(grid, x - 0.1, x + 0.1, girders[g] + 0.2, girders[g + 1] - 0.2, 5.4, 6.0, kOccupied);
   }
-  for (const double x : {16.0, 32.0}) {
+  for (int x = 16; pier(x); x += 16) {
     box(grid, x - 0.6, x + 0.6, -5.0, 5.0, 4.2, 5.0, kOccupied);  // pier cap
     for (const double y : {-1.4, 1.4}) box(grid, x - 0.2, x + 0.2, y - 0.2, y + 0.2, 5.0, 5.2, kOccupied);  // bearings
     for (const double y : {-2.5, 2.5}) box(grid, x - 0.5, x + 0.5, y - 0.5, y + 0.5, 0.0, 4.2, kOccupied);  // columns
   }
-  boulders(grid, random);
+  boulders(grid, random, static_cast<int>(std::lround(8 * length / kShippedBridgeLength_m)), length - 2);
   return grid;
 }
 
@@ -156,17 +161,30 @@ Scene sceneFromName(const std::string& name) {
   throw ceilplan::InputError("unknown scene '" + name + "'; choose bridge, tunnel, warehouse or open");
 }
 
-VoxelGrid generateScene(Scene scene, double resolution_m, std::uint64_t seed) {
+VoxelGrid generateScene(Scene scene, const SceneOptions& options) {
+  const double resolution_m = options.resolution_m;
   if (!(resolution_m >= 0.02 && resolution_m <= 1.0))
-    throw ceilplan::InputError("scene resolution must lie between 0.02 and 1 m, got " + std::to_string(resolution_m));
-  SceneRandom random(seed);
+    throw ceilplan::InputError("scene resolution must lie between 0.02 and 1 m, got " + formatNumber(resolution_m));
+  const double length = options.bridge_length_m;
+  if (!(length >= 16.0 && length <= 2000.0) || std::abs(length / 4.0 - std::round(length / 4.0)) > 1e-9)
+    throw ceilplan::InputError("bridge length must be a multiple of 4 m between 16 and 2000 m, got " + formatNumber(length));
+  if (scene != Scene::Bridge && length != kShippedBridgeLength_m)
+    throw ceilplan::InputError("a bridge length applies only to the bridge scene");
+  SceneRandom random(options.seed);
   switch (scene) {
-    case Scene::Bridge: return bridge(resolution_m, random);
+    case Scene::Bridge: return bridge(resolution_m, random, std::round(length));
     case Scene::Tunnel: return tunnel(resolution_m, random);
     case Scene::Warehouse: return warehouse(resolution_m, random);
     case Scene::Open: return open(resolution_m, random);
   }
   throw ceilplan::InputError("unknown scene");
+}
+
+VoxelGrid generateScene(Scene scene, double resolution_m, std::uint64_t seed) {
+  SceneOptions options;
+  options.resolution_m = resolution_m;
+  options.seed = seed;
+  return generateScene(scene, options);
 }
 
 }  // namespace ceilplan::environment

@@ -1,5 +1,9 @@
 #include "ceilplan/environment/voxel_grid.hpp"
+
+#include "generated_tree.hpp"
+
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +14,8 @@
 
 namespace ceilplan::environment {
 namespace {
+
+using detail::GeneratedTree;
 
 constexpr int kKeyOffset = 32768;  // OctoMap key of global voxel index 0
 constexpr int kTreeDepth = 16;
@@ -27,18 +33,6 @@ Index3 checkedSize(const Index3& size) {
   }
   return size;
 }
-
-// An OcTree that lets us create the root ourselves, to build a tree top-down.
-class GeneratedTree : public octomap::OcTree {
- public:
-  explicit GeneratedTree(double resolution_m) : OcTree(resolution_m) {}
-  octomap::OcTreeNode* createRoot() {
-    root = new octomap::OcTreeNode();
-    ++tree_size;
-    size_changed = true;
-    return root;
-  }
-};
 
 class TreeBuilder {
  public:
@@ -127,33 +121,41 @@ void VoxelGrid::fillBox(const Eigen::Vector3d& min_m, const Eigen::Vector3d& max
       for (int i = lo[0]; i < hi[0]; ++i) set(i, j, k, state);
 }
 
-VoxelGrid VoxelGrid::fromTree(const octomap::OcTree& tree, const std::function<void(double)>& progress) {
+VoxelGrid VoxelGrid::fromTree(const octomap::OcTree& tree, const std::function<void(double)>& progress, int workers) {
+  struct Leaf {
+    octomap::OcTreeKey corner;
+    int width;
+    CellState state;
+  };
+  std::vector<Leaf> leaves;
+  leaves.reserve(tree.getNumLeafNodes());
   Index3 lo{std::numeric_limits<int>::max(), std::numeric_limits<int>::max(), std::numeric_limits<int>::max()};
   Index3 hi{std::numeric_limits<int>::min(), std::numeric_limits<int>::min(), std::numeric_limits<int>::min()};
-  std::size_t leaves = 0;
   for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
-    const octomap::OcTreeKey corner = it.getIndexKey();
-    const int width = 1 << (kTreeDepth - static_cast<int>(it.getDepth()));
+    const Leaf leaf{it.getIndexKey(), 1 << (kTreeDepth - static_cast<int>(it.getDepth())),
+                    tree.isNodeOccupied(*it) ? CellState::Occupied : CellState::Free};
     for (int axis = 0; axis < 3; ++axis) {
-      lo[axis] = std::min(lo[axis], static_cast<int>(corner[axis]));
-      hi[axis] = std::max(hi[axis], static_cast<int>(corner[axis]) + width);
+      lo[axis] = std::min(lo[axis], static_cast<int>(leaf.corner[axis]));
+      hi[axis] = std::max(hi[axis], static_cast<int>(leaf.corner[axis]) + leaf.width);
     }
-    ++leaves;
+    leaves.push_back(leaf);
   }
-  if (leaves == 0) throw ceilplan::InputError("the map is empty (no known voxel)");
+  if (leaves.empty()) throw ceilplan::InputError("the map is empty (no known voxel)");
   VoxelGrid grid(GridFrame(tree.getResolution(), Index3{lo[0] - kKeyOffset, lo[1] - kKeyOffset, lo[2] - kKeyOffset},
                            Index3{hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}));
-  std::size_t done = 0;
-  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
-    const octomap::OcTreeKey corner = it.getIndexKey();
-    const int width = 1 << (kTreeDepth - static_cast<int>(it.getDepth()));
-    const CellState state = tree.isNodeOccupied(*it) ? CellState::Occupied : CellState::Free;
-    const int i0 = corner[0] - lo[0], j0 = corner[1] - lo[1], k0 = corner[2] - lo[2];
-    for (int k = k0; k < k0 + width; ++k)
-      for (int j = j0; j < j0 + width; ++j)
-        for (int i = i0; i < i0 + width; ++i) grid.set(i, j, k, state);
-    if (progress && (++done % 4096 == 0)) progress(static_cast<double>(done) / leaves);
-  }
+  // Leaves are disjoint, so threads writing different leaves never share a voxel.
+  const std::size_t chunk = 1024;
+  parallelFor((leaves.size() + chunk - 1) / chunk, workers, [&](std::size_t c) {
+    for (std::size_t n = c * chunk; n < std::min(leaves.size(), (c + 1) * chunk); ++n) {
+      const Leaf& leaf = leaves[n];
+      const int i0 = leaf.corner[0] - lo[0], j0 = leaf.corner[1] - lo[1], k0 = leaf.corner[2] - lo[2];
+      for (int k = k0; k < k0 + leaf.width; ++k)
+        for (int j = j0; j < j0 + leaf.width; ++j) {
+          CellState* row = grid.cells_.data() + grid.frame_.linear(i0, j, k);
+          std::fill(row, row + leaf.width, leaf.state);
+        }
+    }
+  }, progress);
   return grid;
 }
 

@@ -7,7 +7,7 @@
 namespace ceilplan::io {
 
 void writeMapViews(const std::filesystem::path& dir, const environment::Environment& environment,
-                   const std::vector<Eigen::Vector3d>& route_m) {
+                   const std::vector<Eigen::Vector3d>& route_m, const Provenance& provenance) {
   Eigen::AlignedBox3d band;
   for (const Eigen::Vector3d& p : route_m) band.extend(p);
   band.min().array() -= 1.0;
@@ -21,6 +21,7 @@ void writeMapViews(const std::filesystem::path& dir, const environment::Environm
   // Top: the height of the first structure above the lowest route point, per column.
   const double reference_z = band.min().z() + 1.0;
   writeTextAtomically(dir / "map_top.csv", [&](std::ostream& out) {
+    out << provenance.csvComment() << '\n';
     out << "x_m,y_m,ceiling_m\n";
     for (int j = 0; j < frame.size()[1]; ++j)
       for (int i = 0; i < frame.size()[0]; ++i) {
@@ -31,6 +32,7 @@ void writeMapViews(const std::filesystem::path& dir, const environment::Environm
       }
   });
   writeTextAtomically(dir / "map_side.csv", [&](std::ostream& out) {
+    out << provenance.csvComment() << '\n';
     out << "x_m,z_m\n";
     for (int k = 0; k < frame.size()[2]; ++k)
       for (int i = 0; i < frame.size()[0]; ++i)

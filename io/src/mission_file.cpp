@@ -16,8 +16,9 @@ using detail::Range;
 using detail::Section;
 using detail::YamlFile;
 
-const std::vector<std::string> kBatteryKeys{"capacity_ah",     "charge_current_a", "cell_count", "soc_min",
-                                            "state_of_health", "start_soc",        "reserve_soc"};
+const std::vector<std::string> kBatteryKeys{"capacity_ah", "charge_current_a", "cell_count",      "soc_min",
+                                            "state_of_health", "start_soc",      "reserve_soc", "between_sorties",
+                                            "swap_s"};
 // Any place in a map: a kilometre either way (the index refuses maps too large to hold anyway).
 const Range kCoordinateM = Range::closed(-1e6, 1e6, "m");
 
@@ -37,6 +38,9 @@ mission::BatterySpec readBatterySection(const Section& section, bool all_require
   pack.state_of_health = section.number("state_of_health", Range::above(0.0, 1.0), pack.state_of_health);
   spec.start_soc = number("start_soc", Range::above(0.0, 1.0), spec.start_soc, all_required);
   spec.reserve_soc = number("reserve_soc", Range::closed(0.0, 1.0), spec.reserve_soc, all_required);
+  if (section.choice("between_sorties", {"recharge", "swap"}, "recharge") == "swap")
+    spec.between_sorties = mission::Turnaround::Swap;
+  spec.swap_s = section.number("swap_s", Range::closed(0.0, 86400.0, "s"), spec.swap_s);
   if (spec.reserve_soc >= spec.start_soc)
     section.fail("'" + section.keyPath("reserve_soc") + "' " + formatNumber(spec.reserve_soc) + " is not below '" +
                  section.keyPath("start_soc") + "' " + formatNumber(spec.start_soc) + ": no sortie could fly");
@@ -107,12 +111,24 @@ std::filesystem::path existingFile(const Section& root, const std::string& key) 
   return path;
 }
 
+environment::UnknownSpace readUnknownSpace(const Section& node) {
+  node.allowOnly({"policy", "fill_max_m"});
+  environment::UnknownSpace unknown;
+  unknown.policy = environment::unknownPolicyFromName(node.choice("policy", {"occupied", "free", "fill"}, "occupied"));
+  if (node.has("fill_max_m")) {
+    if (unknown.policy != environment::UnknownPolicy::Fill)
+      node.fail("'" + node.keyPath("fill_max_m") + "' applies only to policy: fill");
+    unknown.fill_max_m = node.number("fill_max_m", Range::above(0.0, 1000.0, "m"));
+  }
+  return unknown;
+}
+
 }  // namespace
 
 mission::Mission readMission(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Mission);
   const Section root(yaml, yaml.root(), "");
-  root.allowOnly({"map", "vehicle", "battery", "home", "origin", "speeds", "mode", "seed", "targets"});
+  root.allowOnly({"map", "vehicle", "battery", "home", "origin", "speeds", "mode", "seed", "unknown", "targets"});
   mission::Mission mission;
   mission.file = file;
   mission.map_file = existingFile(root, "map");
@@ -125,6 +141,7 @@ mission::Mission readMission(const std::filesystem::path& file) {
     mission.speeds = readSpeeds(*speeds, mission.vehicle.energy.airframe.max_speed_m_s);
   mission.mode = root.choice("mode", {"ceiling", "free", "both"}, "");
   mission.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, 1));
+  if (const std::optional<Section> unknown = root.optionalSection("unknown")) mission.unknown = readUnknownSpace(*unknown);
   mission.targets = readTargets(root);
   return mission;
 }

@@ -24,7 +24,8 @@ nlohmann::json figuresJson(const planner::PathEvaluation& e) {
           {"min_soc", e.min_soc},
           {"min_clearance_m", finiteOrNull(e.min_clearance_m)},
           {"min_ceiling_gap_m", finiteOrNull(e.min_ceiling_gap_m)},
-          {"time_under_ceiling_s", e.time_under_ceiling_s}};
+          {"time_under_ceiling_s", e.time_under_ceiling_s},
+          {"assumed_free_m", e.assumed_free_m}};
 }
 
 nlohmann::json waypointsJson(const std::vector<Eigen::Vector3d>& waypoints_m) {
@@ -33,20 +34,25 @@ nlohmann::json waypointsJson(const std::vector<Eigen::Vector3d>& waypoints_m) {
   return list;
 }
 
-void writePathCsv(const std::filesystem::path& file, const planner::PathEvaluation& evaluation) {
+void writePathCsv(const std::filesystem::path& file, const planner::PathEvaluation& evaluation,
+                  const Provenance& provenance) {
   writeTextAtomically(file, [&](std::ostream& out) {
-    out << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc\n" << std::setprecision(9);
+    out << provenance.csvComment() << '\n' << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,ground_gap_m,assumed_free\n"
+        << std::setprecision(12);
     for (const planner::PathSample& s : evaluation.samples) {
       out << s.t_s << ',' << s.position_m.x() << ',' << s.position_m.y() << ',' << s.position_m.z() << ','
           << s.speed_m_s << ',';
       if (std::isfinite(s.ceiling_gap_m)) out << s.ceiling_gap_m;
-      out << ',' << s.current_a << ',' << s.soc << '\n';
+      out << ',' << s.current_a << ',' << s.soc << ',';
+      if (std::isfinite(s.ground_gap_m)) out << s.ground_gap_m;
+      out << ',' << (s.assumed_free ? 1 : 0) << '\n';
     }
   });
 }
 
 void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanResult& plan,
-                        const planner::PathEvaluation& evaluation, const nlohmann::json& extra) {
+                        const planner::PathEvaluation& evaluation, const nlohmann::json& extra,
+                        const Provenance& provenance) {
   nlohmann::json json = figuresJson(evaluation);
   json["waypoints"] = waypointsJson(plan.waypoints);
   json["planner"] = plan.planner;
@@ -55,8 +61,9 @@ void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanRes
   json["search_time_s"] = plan.search_time_s;
   json["total_time_s"] = plan.total_time_s;
   json.update(extra);
+  json["provenance"] = provenance.json();
   writeTextAtomically(dir / "plan.json", [&](std::ostream& stream) { stream << std::setw(2) << json << '\n'; });
-  writePathCsv(dir / "path.csv", evaluation);
+  writePathCsv(dir / "path.csv", evaluation, provenance);
 }
 
 std::vector<Eigen::Vector3d> readPathWaypoints(const std::filesystem::path& file) {
@@ -82,7 +89,9 @@ std::string figuresLine(const planner::PathEvaluation& e) {
                 "%.1f s under the ceiling",
                 e.length_m, e.duration_s, e.charge_ah, e.energy_wh, e.fec, e.mean_current_a, 100.0 * e.min_soc,
                 e.time_under_ceiling_s);
-  return line;
+  std::string text = line;
+  if (e.assumed_free_m > 0.0) text += ", " + formatFixed(e.assumed_free_m, 2) + " m through space assumed free";
+  return text;
 }
 
 namespace {
@@ -150,19 +159,21 @@ nlohmann::json routeComparisonJson(const mission::RouteComparison& comparison, c
 
 void writeRouteComparison(const std::filesystem::path& dir, const mission::RouteComparison& comparison,
                           const mission::DutyOptions& duty, const nlohmann::json& extra,
-                          const environment::Environment& environment) {
+                          const environment::Environment& environment, const Provenance& provenance) {
   for (const mission::RoutePlan* route : {&comparison.ceiling, &comparison.free}) {
     const std::string mode = mission::flightModeName(route->mode);
     nlohmann::json plan_extra = extra;
     plan_extra["mode"] = mode;
-    writePlanDirectory(dir / mode, route->plan, route->evaluation, plan_extra);
+    writePlanDirectory(dir / mode, route->plan, route->evaluation, plan_extra, provenance);
   }
   writeTextAtomically(dir / "compare.json", [&](std::ostream& stream) {
-    stream << std::setw(2) << routeComparisonJson(comparison, duty, extra) << '\n';
+    nlohmann::json json = routeComparisonJson(comparison, duty, extra);
+    json["provenance"] = provenance.json();
+    stream << std::setw(2) << json << '\n';
   });
   std::vector<Eigen::Vector3d> routes = comparison.ceiling.plan.waypoints;
   routes.insert(routes.end(), comparison.free.plan.waypoints.begin(), comparison.free.plan.waypoints.end());
-  writeMapViews(dir, environment, routes);
+  writeMapViews(dir, environment, routes, provenance);
 }
 
 }  // namespace ceilplan::io

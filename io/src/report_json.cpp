@@ -1,6 +1,7 @@
 #include "ceilplan/io/report_json.hpp"
 
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
 
 namespace ceilplan::io {
 namespace {
@@ -55,6 +56,8 @@ nlohmann::json positionProbeJson(const environment::PositionProbe& probe, const 
           {"clearance_m", finiteOrNull(probe.clearance_m)},
           {"valid", !probe.violation},
           {"violation", probe.violation ? nlohmann::json(probe.violation->describe()) : nlohmann::json(nullptr)},
+          {"assumed_free", probe.assumes_free},
+          {"point_assumed_free", probe.point_assumed_free},
           {"rotors", rotors}};
 }
 
@@ -66,7 +69,8 @@ nlohmann::json mapStatisticsJson(const environment::MapStatistics& statistics) {
            {{"occupied", statistics.occupied_volume_m3},
             {"free", statistics.free_volume_m3},
             {"unknown", statistics.unknown_volume_m3}}},
-          {"ceiling_within_m", statistics.ceiling_within_m},
+          {"unknown", unknownSpaceJson(statistics.unknown, statistics.unknown_summary)},
+          {"ceiling", {{"min_headroom_m", statistics.ceiling.min_headroom_m}, {"min_area_m2", statistics.ceiling.min_area_m2}}},
           {"ceiling_area_share", statistics.ceiling_area_share}};
 }
 
@@ -93,10 +97,10 @@ nlohmann::json currentSweepReportJson(const std::string& vehicle, double coverag
   return report;
 }
 
-nlohmann::json plannerBenchmarkJson(const planner::PlanResult& reference, int lattice_stride,
+nlohmann::json plannerBenchmarkJson(const planner::PlanResult& reference, double lattice_spacing_m,
                                     const std::vector<planner::PlannerBenchmarkRow>& rows) {
   nlohmann::json json;
-  json["reference"] = {{"planner", reference.planner},       {"stride_voxels", lattice_stride},
+  json["reference"] = {{"planner", reference.planner},       {"spacing_m", lattice_spacing_m},
                        {"time_s", reference.total_time_s},   {"raw_cost", reference.search_cost},
                        {"cost", reference.cost}};
   json["planners"] = nlohmann::json::array();

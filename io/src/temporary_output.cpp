@@ -69,6 +69,8 @@ TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_p
   temporary_ = final_;
   temporary_ += ".tmp" + std::to_string(::getpid());
   std::error_code ec;
+  for (fs::path parent = final_.parent_path(); !parent.empty() && !fs::exists(parent, ec); parent = parent.parent_path())
+    created_parents_.push_back(parent);
   if (final_.has_parent_path()) {
     fs::create_directories(final_.parent_path(), ec);
     if (ec)
@@ -84,6 +86,7 @@ TemporaryOutput::~TemporaryOutput() {
   if (!committed_) {
     std::error_code ignored;
     fs::remove_all(temporary_, ignored);
+    for (const fs::path& parent : created_parents_) fs::remove(parent, ignored);  // only if still empty
   }
 }
 
@@ -96,6 +99,30 @@ void TemporaryOutput::commit() {
     fs::remove_all(temporary_, ignored);
     throw ceilplan::Error("cannot write " + final_.string() + ": " + ec.message());
   }
+  committed_ = true;
+  registry().erase(temporary_);
+}
+
+void TemporaryOutput::commitMerging() {
+  const std::lock_guard<std::mutex> lock(registryMutex());
+  std::error_code ec;
+  fs::create_directories(final_, ec);
+  for (auto entry = fs::recursive_directory_iterator(temporary_, ec); !ec && entry != fs::recursive_directory_iterator();
+       entry.increment(ec)) {
+    const fs::path target = final_ / fs::relative(entry->path(), temporary_);
+    if (entry->is_directory()) {
+      fs::create_directories(target, ec);
+    } else {
+      fs::rename(entry->path(), target, ec);
+    }
+    if (ec) break;
+  }
+  if (ec) {
+    std::error_code ignored;
+    fs::remove_all(temporary_, ignored);
+    throw ceilplan::Error("cannot write into " + final_.string() + ": " + ec.message());
+  }
+  fs::remove_all(temporary_, ec);
   committed_ = true;
   registry().erase(temporary_);
 }

@@ -1,8 +1,11 @@
 #include "ceilplan/io/tour_files.hpp"
 
-#include "ceilplan/io/map_views.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/io/atomic_file.hpp"
+#include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/map_views.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -20,17 +23,47 @@ std::string format(const char* pattern, double value) {
 
 double reductionPct(double with, double without) { return without != 0.0 ? 100.0 * (1.0 - with / without) : 0.0; }
 
-double tourDuration_s(const mission::TourResult& tour) { return tour.plan.flight_s; }
+const char* phaseName(mission::FlightPhase phase) { return phase == mission::FlightPhase::Leg ? "leg" : "dwell"; }
+
+nlohmann::json dutyJson(const mission::DutyProjection& duty, const mission::TourOptions& options) {
+  nlohmann::json json = {{"missions_per_day", duty.missions_per_day},
+                         {"days", duty.days},
+                         {"idle_min", options.idle_min},
+                         {"charge_max_min", options.charge_max_min},
+                         {"mission_min", duty.mission_min},
+                         {"projected", duty.result.has_value()}};
+  if (duty.result) {
+    json["fec_per_mission"] = duty.result->fecPerMission();
+    json["fec_total"] = duty.result->fecTotal();
+    json["min_soc"] = duty.result->minSoc();
+  } else {
+    json["note"] = duty.note;
+  }
+  return json;
+}
+
+std::vector<Eigen::Vector3d> flownRoute(const mission::TourResult& tour) {
+  std::vector<Eigen::Vector3d> route;
+  for (const mission::SortieRecord& sortie : tour.record.sorties)
+    for (const planner::PathSample& s : sortie.samples) route.push_back(s.position_m);
+  return route;
+}
 
 }  // namespace
 
-nlohmann::json tourJson(const mission::TourResult& tour) {
+nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission, const Provenance& provenance) {
   nlohmann::json json;
+  json["mission"] = mission.name();
+  json["map"] = mission.map_file.string();
+  json["vehicle"] = mission.vehicle_file.empty() ? "built-in: " + mission.vehicle.name : mission.vehicle_file.string();
   json["mode"] = mission::flightModeName(tour.mode);
   json["seed"] = tour.options.seed;
   json["planner"] = tour.options.planner;
   json["ageing_model"] = tour.plan.ageing_model;
   json["order_method"] = tour.order.method;
+  json["between_sorties"] = mission.battery.between_sorties == mission::Turnaround::Swap ? "swap" : "recharge";
+  json["unknown_space"] = unknownSpaceJson(tour.unknown_space, tour.unknown_summary);
+  json["assumed_free_m"] = tour.assumed_free_m;
   json["targets_total"] = tour.stops.size();
   int visited = 0;
   for (const mission::Sortie& sortie : tour.plan.sorties) visited += static_cast<int>(sortie.targets.size());
@@ -43,16 +76,16 @@ nlohmann::json tourJson(const mission::TourResult& tour) {
                        {"viewpoint", waypointsJson({v.position_m})[0]},
                        {"distance_m", v.distance_m},
                        {"standoff_m", {stop.target.standoff_min_m, stop.target.standoff_max_m}},
-                       {"ceiling_gap_m", std::isfinite(v.ceiling_gap_m) ? nlohmann::json(v.ceiling_gap_m) : nlohmann::json()},
+                       {"ceiling_gap_m", finiteOrNull(v.ceiling_gap_m)},
                        {"dwell_s", stop.target.dwell_s},
-                       {"dwell_current_a", v.dwell_current_a},
-                       {"dwell_charge_ah", v.dwell_charge_ah}});
+                       {"hover_power_w", stop.hover.propulsion_power_w}});
   }
   json["targets"] = targets;
   nlohmann::json sorties = nlohmann::json::array();
-  for (const mission::Sortie& sortie : tour.plan.sorties) {
+  for (std::size_t k = 0; k < tour.plan.sorties.size(); ++k) {
+    const mission::Sortie& sortie = tour.plan.sorties[k];
     nlohmann::json names = nlohmann::json::array(), legs = nlohmann::json::array();
-    for (int k : sortie.targets) names.push_back(tour.names[k]);
+    for (int target : sortie.targets) names.push_back(tour.names[target]);
     for (const mission::SortieLeg& leg : sortie.legs) {
       const mission::TourLeg& flown = tour.legs[leg.from][leg.to];
       legs.push_back({{"from", tour.names[leg.from]},
@@ -64,9 +97,11 @@ nlohmann::json tourJson(const mission::TourResult& tour) {
     }
     sorties.push_back({{"targets", names},
                        {"legs", legs},
+                       {"takeoff_s", tour.record.sorties[k].takeoff_s},
                        {"charge_ah", sortie.charge_ah},
                        {"duration_s", sortie.flight_s},
                        {"recharge_s", sortie.recharge_s},
+                       {"turnaround_s", sortie.turnaround_s},
                        {"fec", sortie.fec},
                        {"dod", sortie.dod},
                        {"min_soc", sortie.lowest_soc},
@@ -75,7 +110,8 @@ nlohmann::json tourJson(const mission::TourResult& tour) {
   }
   json["sorties"] = sorties;
   json["charge_ah"] = tour.plan.charge_ah;
-  json["duration_s"] = tourDuration_s(tour);
+  json["flight_s"] = tour.plan.flight_s;
+  json["duration_s"] = tour.plan.duration_s;
   json["fec"] = tour.plan.fec;
   json["min_soc"] = tour.plan.min_soc;
   json["start_soc"] = tour.start_soc;
@@ -84,32 +120,39 @@ nlohmann::json tourJson(const mission::TourResult& tour) {
   for (const mission::PlanWear& w : tour.wear)
     wear[w.model] = {{"wear_name", w.wear_name}, {"cycle_wear", w.cycle_wear}, {"capacity_loss", w.capacity_loss}};
   json["wear"] = wear;
-  json["duty"] = {{"missions_per_day", tour.options.missions_per_day},
-                  {"days", tour.options.days},
-                  {"idle_min", tour.options.idle_min},
-                  {"fec_per_mission", tour.duty.fecPerMission()},
-                  {"fec_total", tour.duty.fecTotal()},
-                  {"min_soc", tour.duty.minSoc()}};
+  json["duty"] = dutyJson(tour.duty, tour.options);
+  json["provenance"] = provenance.json();
   return json;
 }
 
-void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour) {
+void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour, const Provenance& provenance) {
   writeTextAtomically(file, [&](std::ostream& out) {
-    out << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie\n" << std::setprecision(9);
-    double t0 = 0.0;
-    for (std::size_t k = 0; k < tour.sortie_samples.size(); ++k) {
-      for (const planner::PathSample& s : tour.sortie_samples[k]) {
-        out << t0 + s.t_s << ',' << s.position_m.x() << ',' << s.position_m.y() << ',' << s.position_m.z() << ','
-            << s.speed_m_s << ',';
+    out << provenance.csvComment() << '\n'
+        << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie,ground_gap_m,phase,assumed_free\n"
+        << std::setprecision(12);
+    for (std::size_t k = 0; k < tour.record.sorties.size(); ++k) {
+      const mission::SortieRecord& sortie = tour.record.sorties[k];
+      for (std::size_t i = 0; i < sortie.samples.size(); ++i) {
+        const planner::PathSample& s = sortie.samples[i];
+        out << sortie.takeoff_s + s.t_s << ',' << s.position_m.x() << ',' << s.position_m.y() << ','
+            << s.position_m.z() << ',' << s.speed_m_s << ',';
         if (std::isfinite(s.ceiling_gap_m)) out << s.ceiling_gap_m;
-        out << ',' << s.current_a << ',' << s.soc << ',' << k + 1 << '\n';
+        out << ',' << s.current_a << ',' << s.soc << ',' << k + 1 << ',';
+        if (std::isfinite(s.ground_gap_m)) out << s.ground_gap_m;
+        out << ',' << phaseName(sortie.phases[i]) << ',' << (s.assumed_free ? 1 : 0) << '\n';
       }
-      t0 += tour.plan.sorties[k].flight_s + tour.plan.sorties[k].recharge_s;
+      // The pack's recharge to the start SOC, on its own clock: where the wear models see it.
+      const planner::PathSample& landed = sortie.samples.back();
+      out << sortie.takeoff_s + landed.t_s + sortie.recharge_s << ',' << landed.position_m.x() << ','
+          << landed.position_m.y() << ',' << landed.position_m.z() << ",0,,"
+          << -tour.plan.sorties[k].charge_ah * 3600.0 / std::max(sortie.recharge_s, 1e-9) << ',' << tour.start_soc << ','
+          << k + 1 << ",,recharge,0\n";
     }
   });
 }
 
-std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour, const mission::Mission& mission, Autopilot autopilot) {
+std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour, const mission::Mission& mission,
+                                                Autopilot autopilot) {
   const mission::GeodeticOrigin& origin = mission.requireOrigin();
   std::vector<AutopilotMission> missions;
   for (const mission::Sortie& sortie : tour.plan.sorties) {
@@ -130,13 +173,12 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
 }
 
 void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour, const mission::Mission& mission,
-                        const environment::Environment& environment, std::optional<Autopilot> autopilot) {
-  writeTextAtomically(dir / "tour.json", [&](std::ostream& out) { out << std::setw(2) << tourJson(tour) << '\n'; });
-  writeTourPathCsv(dir / "path.csv", tour);
-  std::vector<Eigen::Vector3d> route;
-  for (const std::vector<planner::PathSample>& samples : tour.sortie_samples)
-    for (const planner::PathSample& s : samples) route.push_back(s.position_m);
-  writeMapViews(dir, environment, route);
+                        const environment::Environment& environment, std::optional<Autopilot> autopilot,
+                        const Provenance& provenance) {
+  writeTextAtomically(dir / "tour.json",
+                      [&](std::ostream& out) { out << std::setw(2) << tourJson(tour, mission, provenance) << '\n'; });
+  writeTourPathCsv(dir / "path.csv", tour, provenance);
+  writeMapViews(dir, environment, flownRoute(tour), provenance);
   if (!autopilot) return;
   const std::vector<AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
   const int count = static_cast<int>(missions.size());
@@ -148,7 +190,7 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
 
 std::string comparisonTable(const mission::TourResult& ceiling, const mission::TourResult& free) {
   std::ostringstream out;
-  char line[200];
+  char line[400];
   const auto row = [&](const std::string& label, double c, double f, const char* pattern, bool with_reduction) {
     std::snprintf(line, sizeof line, "%-40s %14s %14s %12s\n", label.c_str(), format(pattern, c).c_str(),
                   format(pattern, f).c_str(), with_reduction ? format("%.2f", reductionPct(c, f)).c_str() : "");
@@ -160,7 +202,9 @@ std::string comparisonTable(const mission::TourResult& ceiling, const mission::T
   row("sorties", static_cast<double>(ceiling.plan.sorties.size()), static_cast<double>(free.plan.sorties.size()), "%.0f",
       false);
   row("charge [Ah]", ceiling.plan.charge_ah, free.plan.charge_ah, "%.4f", true);
-  row("flight time [s]", tourDuration_s(ceiling), tourDuration_s(free), "%.1f", true);
+  row("flight time [s]", ceiling.plan.flight_s, free.plan.flight_s, "%.1f", true);
+  if (ceiling.plan.sorties.size() > 1 || free.plan.sorties.size() > 1)
+    row("duration with turnarounds [s]", ceiling.plan.duration_s, free.plan.duration_s, "%.1f", true);
   row("FEC (flights + recharges)", ceiling.plan.fec, free.plan.fec, "%.5f", true);
   row("lowest SOC [%]", 100.0 * ceiling.plan.min_soc, 100.0 * free.plan.min_soc, "%.2f", false);
   for (std::size_t m = 0; m < ceiling.wear.size() && m < free.wear.size(); ++m) {
@@ -168,54 +212,65 @@ std::string comparisonTable(const mission::TourResult& ceiling, const mission::T
     row(c.model + ": " + c.wear_name, c.cycle_wear, f.cycle_wear, "%.4e", true);
     row(c.model + ": capacity loss [%]", 100.0 * c.capacity_loss, 100.0 * f.capacity_loss, "%.5f", true);
   }
-  std::snprintf(line, sizeof line, "duty projection: the tour %d times a day for %d days\n",
-                ceiling.options.missions_per_day, ceiling.options.days);
-  out << line;
-  row("FEC over the study", ceiling.duty.fecTotal(), free.duty.fecTotal(), "%.2f", true);
+  if (ceiling.duty.result && free.duty.result) {
+    std::snprintf(line, sizeof line, "duty projection: the tour %d times a day for %d days\n",
+                  ceiling.duty.missions_per_day, ceiling.duty.days);
+    out << line;
+    row("FEC over the study", ceiling.duty.result->fecTotal(), free.duty.result->fecTotal(), "%.2f", true);
+  } else {
+    for (const mission::TourResult* tour : {&ceiling, &free})
+      if (!tour->duty.result) out << "duty projection, " << mission::flightModeName(tour->mode) << " mode: " << tour->duty.note << '\n';
+  }
   return out.str();
 }
 
-nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free) {
+nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free,
+                              const mission::Mission& mission, const Provenance& provenance) {
   nlohmann::json json;
   for (const mission::TourResult* tour : {&ceiling, &free}) {
-    const nlohmann::json full = tourJson(*tour);
+    const nlohmann::json full = tourJson(*tour, mission, provenance);
     nlohmann::json entry;
-    for (const char* key : {"targets_total", "targets_visited", "charge_ah", "duration_s", "fec", "min_soc", "wear", "duty"})
+    for (const char* key :
+         {"targets_total", "targets_visited", "charge_ah", "flight_s", "duration_s", "fec", "min_soc", "wear", "duty"})
       entry[key] = full[key];
     entry["sorties"] = tour->plan.sorties.size();
     json[mission::flightModeName(tour->mode)] = entry;
   }
   nlohmann::json reduction = {{"charge", reductionPct(ceiling.plan.charge_ah, free.plan.charge_ah)},
-                              {"duration", reductionPct(tourDuration_s(ceiling), tourDuration_s(free))},
-                              {"fec", reductionPct(ceiling.plan.fec, free.plan.fec)},
-                              {"fec_total", reductionPct(ceiling.duty.fecTotal(), free.duty.fecTotal())}};
+                              {"flight_time", reductionPct(ceiling.plan.flight_s, free.plan.flight_s)},
+                              {"duration", reductionPct(ceiling.plan.duration_s, free.plan.duration_s)},
+                              {"fec", reductionPct(ceiling.plan.fec, free.plan.fec)}};
+  if (ceiling.duty.result && free.duty.result)
+    reduction["fec_total"] = reductionPct(ceiling.duty.result->fecTotal(), free.duty.result->fecTotal());
   for (std::size_t m = 0; m < ceiling.wear.size() && m < free.wear.size(); ++m) {
     reduction["wear_" + ceiling.wear[m].model] = reductionPct(ceiling.wear[m].cycle_wear, free.wear[m].cycle_wear);
     reduction["capacity_loss_" + ceiling.wear[m].model] =
         reductionPct(ceiling.wear[m].capacity_loss, free.wear[m].capacity_loss);
   }
   json["reduction_pct"] = reduction;
+  json["provenance"] = provenance.json();
   return json;
 }
 
 void writeTourComparison(const std::filesystem::path& dir, const mission::TourResult& ceiling,
-                         const mission::TourResult& free, const environment::Environment& environment) {
-  std::vector<Eigen::Vector3d> routes;
-  for (const mission::TourResult* tour : {&ceiling, &free})
-    for (const auto& samples : tour->sortie_samples)
-      for (const planner::PathSample& sample : samples) routes.push_back(sample.position_m);
-  writeMapViews(dir, environment, routes);
+                         const mission::TourResult& free, const mission::Mission& mission,
+                         const environment::Environment& environment, const Provenance& provenance) {
+  std::vector<Eigen::Vector3d> routes = flownRoute(ceiling);
+  const std::vector<Eigen::Vector3d> free_route = flownRoute(free);
+  routes.insert(routes.end(), free_route.begin(), free_route.end());
+  writeMapViews(dir, environment, routes, provenance);
   writeTextAtomically(dir / "comparison.txt", [&](std::ostream& stream) { stream << comparisonTable(ceiling, free); });
-  writeTextAtomically(dir / "comparison.json",
-                      [&](std::ostream& stream) { stream << std::setw(2) << comparisonJson(ceiling, free) << '\n'; });
+  writeTextAtomically(dir / "comparison.json", [&](std::ostream& stream) {
+    stream << std::setw(2) << comparisonJson(ceiling, free, mission, provenance) << '\n';
+  });
 }
 
 std::string tourSummary(const mission::TourResult& tour) {
   std::ostringstream out;
-  char line[400];
-  std::snprintf(line, sizeof line, "%s mode: %zu targets, order by %s (seed %llu), %zu sortie(s) split for least %s wear\n",
+  char line[600];
+  std::snprintf(line, sizeof line, "%s mode: %zu targets, order by %s, %zu sortie(s) split for least %s wear\n",
                 mission::flightModeName(tour.mode).c_str(), tour.stops.size(), tour.order.method.c_str(),
-                static_cast<unsigned long long>(tour.order.seed), tour.plan.sorties.size(), tour.plan.ageing_model.c_str());
+                tour.plan.sorties.size(), tour.plan.ageing_model.c_str());
   out << line;
   for (std::size_t k = 0; k < tour.plan.sorties.size(); ++k) {
     const mission::Sortie& s = tour.plan.sorties[k];
@@ -224,10 +279,13 @@ std::string tourSummary(const mission::TourResult& tour) {
                   s.reason.c_str());
     out << line;
   }
-  std::snprintf(line, sizeof line, "  total %.4f Ah, %.1f s in the air, FEC %.5f, lowest SOC %.1f %% (reserve %.0f %%)\n",
-                tour.plan.charge_ah, tour.plan.flight_s, tour.plan.fec, 100.0 * tour.plan.min_soc,
-                100.0 * tour.reserve_soc);
+  std::snprintf(line, sizeof line, "  total %.4f Ah, %.1f s in the air", tour.plan.charge_ah, tour.plan.flight_s);
   out << line;
+  if (tour.plan.sorties.size() > 1) out << " (" << formatFixed(tour.plan.duration_s, 1) << " s with turnarounds)";
+  std::snprintf(line, sizeof line, ", FEC %.5f, lowest SOC %.1f %% (reserve %.0f %%)\n", tour.plan.fec,
+                100.0 * tour.plan.min_soc, 100.0 * tour.reserve_soc);
+  out << line;
+  if (!tour.duty.result) out << "  duty projection " << tour.duty.note << '\n';
   return out.str();
 }
 

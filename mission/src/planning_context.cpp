@@ -32,6 +32,7 @@ void PlanningOptions::validate() const {
   requireIn(min_ceiling_gap_m, 0.0, 2.0, "minimum ceiling gap (m)");
   requireIn(standoff_m, 0.0, 20.0, "standoff (m)");
   requireIn(temperature_c, -40.0, 80.0, "cell temperature (C)");
+  unknown.validate();
 }
 
 battery::AgeingModelOptions ageingModelOptions(double temperature_c) {
@@ -49,6 +50,7 @@ PlanningOptions planningOptions(const Mission& mission) {
   options.speeds.climb_m_s = mission.speeds.climb_m_s;
   options.speeds.descent_m_s = mission.speeds.descent_m_s;
   options.speeds.near_ceiling_m_s = std::min(options.speeds.near_ceiling_m_s, mission.speeds.cruise_m_s);
+  options.unknown = mission.unknown;
   return options;
 }
 
@@ -64,9 +66,11 @@ PlanningContext::PlanningContext(environment::OccupancyMap map, Vehicle vehicle,
   battery_.validate();
   energy_ = std::make_unique<energy::EnergyModel>(vehicle_.energy);
   const std::string stage = "indexing " + map_.name();
-  environment_ = std::make_unique<environment::Environment>(map_, vehicle_.geometry, options_.environment, [&](double f) {
-    if (progress_) progress_(stage, f);
-  });
+  environment_ = std::make_unique<environment::Environment>(
+      map_, vehicle_.geometry, options_.environment, environment::MapIndexOptions{options_.unknown, options_.environment.workers},
+      [&](double f) {
+        if (progress_) progress_(stage, f);
+      });
   planner::CostModelOptions full;
   full.speeds = options_.speeds;
   full.planning_soc = battery_.start_soc;
@@ -78,33 +82,16 @@ PlanningContext::PlanningContext(const Mission& mission, const ProgressCallback&
     : PlanningContext(environment::OccupancyMap::load(mission.map_file), mission.vehicle, mission.battery,
                       planningOptions(mission), progress) {}
 
-PlanningContext::Mode PlanningContext::mode(FlightMode mode, const Eigen::Vector3d& start_m,
-                                            const Eigen::Vector3d& goal_m) const {
+PlanningContext::Mode PlanningContext::mode(FlightMode mode) const {
   Mode result;
   planner::CostModelOptions options = full_model_->options();
-  if (mode == FlightMode::Ceiling) {
-    result.model = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, options);
-    result.rules = std::make_unique<planner::SafetyRules>(*environment_, options_.min_ceiling_gap_m);
-    return result;
+  if (mode == FlightMode::Free) {
+    options.proximity_effects = false;
+    options.standoff_m = options_.standoff_m;
   }
-  options.proximity_effects = false;
   result.model = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, options);
-  const planner::StandoffZone zone =
-      planner::standoffZone(standoffEnvironment(), *environment_, options_.standoff_m, start_m, goal_m);
-  result.rules = std::make_unique<planner::SafetyRules>(*environment_, options_.min_ceiling_gap_m, zone);
+  result.rules = std::make_unique<planner::SafetyRules>(*environment_, options_.min_ceiling_gap_m);
   return result;
-}
-
-const environment::Environment& PlanningContext::standoffEnvironment() const {
-  if (!standoff_environment_) {
-    const std::string stage = "indexing with the " + formatNumber(options_.standoff_m) + " m standoff";
-    standoff_environment_ = std::make_unique<environment::Environment>(
-        map_, planner::withStandoff(environment_->vehicle(), options_.standoff_m), options_.environment,
-        [&](double f) {
-          if (progress_) progress_(stage, f);
-        });
-  }
-  return *standoff_environment_;
 }
 
 planner::ObjectiveChoice PlanningContext::objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m,

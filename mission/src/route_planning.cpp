@@ -37,7 +37,7 @@ RoutePlan planRoute(const PlanningContext& context, FlightMode mode, const plann
                     const std::string& objective) {
   RoutePlan route;
   route.mode = mode;
-  const PlanningContext::Mode planning = context.mode(mode, request.start_m, request.goal_m);
+  const PlanningContext::Mode planning = context.mode(mode);
   route.objective = context.objective(request.start_m, request.goal_m, objective);
   const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, route.objective);
   route.cost_unit = flight_planner.objective().unit();

@@ -27,7 +27,8 @@ void requireFiniteNonNegative(double value, const std::string& what) {
     throw ceilplan::InputError(what + " must be finite and non-negative, got " + formatNumber(value));
 }
 
-// Builds a sortie's flight and recharge history and its figures; the wear comes later.
+// Flies a sortie with the SOC integrator the flight record uses (soc_integrator.hpp), so the
+// split decides on the SOC the record will show; the wear comes later.
 class SortieBuilder {
  public:
   SortieBuilder(const TourCosts& legs, const BatterySpec& battery) : legs_(legs), battery_(battery) {}
@@ -36,80 +37,74 @@ class SortieBuilder {
   Sortie build(const std::vector<int>& order, int first, int last) const {
     Sortie sortie;
     sortie.targets.assign(order.begin() + first, order.begin() + last + 1);
-    double t_s = 0.0;
-    double used_ah = 0.0;
+    SocIntegrator flight(battery_.pack, battery_.start_soc, legs_.current_at_soc);
     std::vector<SocSample>& history = sortie.soc_history;
     history.push_back({0.0, battery_.start_soc, 0.0});
+    // Each history point carries the current drawn from it on.
+    const SampleVisitor record = [&](std::size_t k, double current_a) {
+      if (k > 0) history.push_back({flight.time_s(), flight.soc(), 0.0});
+      history.back().current_a = current_a;
+    };
+    // A leg without a load profile, or a dwell without a load, draws its mean current throughout.
+    const auto constant = [&](double current_a, double duration_s) {
+      history.back().current_a = current_a;
+      flight.advance(duration_s, current_a);
+      history.push_back({flight.time_s(), flight.soc(), 0.0});
+    };
     int at = 0;
     auto fly = [&](int to) {
       const LegCost& leg = legs_.legs[at][to];
-      sortie.legs.push_back({at, to, leg.charge_ah, leg.duration_s});
-      appendLeg(leg, t_s, used_ah, history);
-      t_s += leg.duration_s;
-      used_ah += leg.charge_ah;
+      const double charge0_ah = flight.chargeAh(), t0_s = flight.time_s();
+      if (leg.load_profile.size() >= 2) {
+        flyProfile(flight, leg.load_profile, record);
+      } else {
+        constant(leg.mean_current_a, leg.duration_s);
+      }
+      sortie.legs.push_back({at, to, flight.chargeAh() - charge0_ah, flight.time_s() - t0_s});
       at = to;
     };
     for (int target : sortie.targets) {
       fly(target);
       const Dwell& dwell = legs_.dwells[target];
       if (dwell.duration_s > 0.0) {
-        history.back().current_a = dwell.current_a;
-        t_s += dwell.duration_s;
-        used_ah += dwell.current_a * dwell.duration_s / kSecondsPerHour;
-        history.push_back({t_s, socAfter(used_ah), 0.0});
+        if (dwell.load) {
+          hover(flight, *dwell.load, dwell.duration_s, record);
+        } else {
+          constant(dwell.current_a, dwell.duration_s);
+        }
       }
     }
     fly(0);
+    const double used_ah = flight.chargeAh();
     sortie.charge_ah = used_ah;
-    sortie.flight_s = t_s;
-    sortie.lowest_soc = socAfter(used_ah);
+    sortie.flight_s = flight.time_s();
+    sortie.lowest_soc = flight.lowestSoc();
     sortie.dod = battery_.start_soc - sortie.lowest_soc;
     sortie.fec = used_ah / battery_.pack.capacity_ah;  // discharge + equal recharge, over 2 C_nom
     sortie.recharge_s = used_ah / battery_.pack.charge_current_a * kSecondsPerHour;
+    sortie.turnaround_s = battery_.between_sorties == Turnaround::Swap ? battery_.swap_s : sortie.recharge_s;
     history.back().current_a = -battery_.pack.charge_current_a;
-    history.push_back({t_s + sortie.recharge_s, battery_.start_soc, -battery_.pack.charge_current_a});
+    history.push_back({sortie.flight_s + sortie.recharge_s, battery_.start_soc, -battery_.pack.charge_current_a});
     return sortie;
   }
 
-  double socAfter(double used_ah) const { return battery_.start_soc - used_ah / battery_.pack.usableCapacityAh(); }
-
  private:
-  // Samples of one leg after the history's last point (which gets the leg's first current).
-  void appendLeg(const LegCost& leg, double t0_s, double used0_ah, std::vector<SocSample>& history) const {
-    const std::vector<CurrentSample>& profile = leg.current_profile;
-    double integral_as = 0.0;
-    for (std::size_t k = 1; k < profile.size(); ++k)
-      integral_as += 0.5 * (profile[k].current_a + profile[k - 1].current_a) * (profile[k].t_s - profile[k - 1].t_s);
-    if (profile.size() < 2 || !(integral_as > 0.0)) {
-      history.back().current_a = leg.mean_current_a;
-      history.push_back({t0_s + leg.duration_s, socAfter(used0_ah + leg.charge_ah), 0.0});
-      return;
-    }
-    const double scale_ah = leg.charge_ah / integral_as;  // the profile's shape, the leg's charge
-    history.back().current_a = profile.front().current_a;
-    double so_far_as = 0.0;
-    for (std::size_t k = 1; k < profile.size(); ++k) {
-      so_far_as += 0.5 * (profile[k].current_a + profile[k - 1].current_a) * (profile[k].t_s - profile[k - 1].t_s);
-      history.push_back({t0_s + profile[k].t_s, socAfter(used0_ah + scale_ah * so_far_as), profile[k].current_a});
-    }
-  }
-
   const TourCosts& legs_;
   const BatterySpec& battery_;
 };
 
 // Feeds a sortie's history to `model`, its take-off at `start_s`.
-void feed(battery::AgeingModel& model, const Sortie& sortie, double start_s = 0.0) {
+void feed(battery::AgeingModel& model, const Sortie& sortie, double state_of_health, double start_s = 0.0) {
   std::vector<battery::AgeingSample> samples;
   samples.reserve(sortie.soc_history.size());
   for (const SocSample& s : sortie.soc_history)
-    samples.push_back({start_s + s.t_s, std::clamp(s.soc, 0.0, 1.0), s.current_a});
+    samples.push_back({start_s + s.t_s, std::clamp(s.soc, 0.0, 1.0), s.current_a, state_of_health});
   model.addSamples(samples);
 }
 
-double wearOf(const battery::AgeingModel& prototype, const Sortie& sortie) {
+double wearOf(const battery::AgeingModel& prototype, const Sortie& sortie, double state_of_health) {
   std::unique_ptr<battery::AgeingModel> model = prototype.clone();
-  feed(*model, sortie);
+  feed(*model, sortie, state_of_health);
   return model->cycleWear();
 }
 
@@ -127,8 +122,9 @@ std::string splitReason(const TourCosts& legs, const BatterySpec& battery, const
   if (!merged_feasible)
     return head + "one sortie on through '" + legs.names[next.targets.back()] + "' would land at " +
            percent(merged.lowest_soc) + " SOC, below the " + percent(battery.reserve_soc) + " reserve";
-  const double two = wearOf(prototype, sortie) + wearOf(prototype, next);
-  const double one = wearOf(prototype, merged);
+  const double soh = battery.pack.state_of_health;
+  const double two = wearOf(prototype, sortie, soh) + wearOf(prototype, next, soh);
+  const double one = wearOf(prototype, merged, soh);
   char saving[64];
   std::snprintf(saving, sizeof saving, "%.0f %% less", one > 0.0 ? 100.0 * (one - two) / one : 0.0);
   char transit[64];
@@ -156,9 +152,9 @@ void TourCosts::validate() const {
       requireFiniteNonNegative(legs[i][j].charge_ah, what + " charge (Ah)");
       requireFiniteNonNegative(legs[i][j].duration_s, what + " duration (s)");
       requireFiniteNonNegative(legs[i][j].mean_current_a, what + " mean current (A)");
-      const auto& profile = legs[i][j].current_profile;
+      const auto& profile = legs[i][j].load_profile;
       for (std::size_t k = 0; k < profile.size(); ++k) {
-        requireFiniteNonNegative(profile[k].current_a, what + " profile current (A)");
+        if (!std::isfinite(profile[k].load)) throw ceilplan::InputError(what + " profile load must be finite");
         if (!std::isfinite(profile[k].t_s) || (k > 0 && profile[k].t_s < profile[k - 1].t_s))
           throw ceilplan::InputError(what + " profile times must be finite and increasing");
       }
@@ -166,6 +162,8 @@ void TourCosts::validate() const {
     if (i > 0) {
       requireFiniteNonNegative(dwells[i].duration_s, "dwell time (s) at '" + names[i] + "'");
       requireFiniteNonNegative(dwells[i].current_a, "dwell current (A) at '" + names[i] + "'");
+      if (dwells[i].load && !std::isfinite(*dwells[i].load))
+        throw ceilplan::InputError("dwell load at '" + names[i] + "' must be finite");
     }
   }
 }
@@ -211,7 +209,7 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
     for (int i = 0; i < j; ++i) {
       const Sortie sortie = builder.build(order, i, j - 1);
       if (!feasible(sortie)) continue;
-      const double wear = best[i].wear + wearOf(*prototype, sortie);
+      const double wear = best[i].wear + wearOf(*prototype, sortie, battery.pack.state_of_health);
       const int sorties = best[i].sorties + 1;
       const bool first = best[j].split < 0;
       const double tie = first ? 0.0 : 1e-12 * std::max(std::fabs(wear), std::fabs(best[j].wear));
@@ -227,9 +225,10 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
   SortiePlan plan;
   plan.ageing_model = prototype->name();
   plan.wear_name = prototype->cycleWearName();
+  plan.state_of_health = battery.pack.state_of_health;
   for (std::size_t s = 0; s + 1 < starts.size(); ++s) {
     Sortie sortie = builder.build(order, starts[s], starts[s + 1] - 1);
-    sortie.wear = wearOf(*prototype, sortie);
+    sortie.wear = wearOf(*prototype, sortie, battery.pack.state_of_health);
     if (s + 2 < starts.size()) {
       const Sortie next = builder.build(order, starts[s + 1], starts[s + 2] - 1);
       const Sortie merged = builder.build(order, starts[s], starts[s + 2] - 1);
@@ -241,6 +240,7 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
     }
     plan.charge_ah += sortie.charge_ah;
     plan.flight_s += sortie.flight_s;
+    plan.duration_s += sortie.flight_s + (s + 2 < starts.size() ? sortie.turnaround_s : 0.0);
     plan.fec += sortie.fec;
     plan.wear += sortie.wear;
     plan.min_soc = std::min(plan.min_soc, sortie.lowest_soc);
@@ -267,7 +267,7 @@ PlanWear planWear(const SortiePlan& plan, const std::string& model, const batter
   const std::unique_ptr<battery::AgeingModel> pack = prototype->clone();
   double start_s = 0.0;
   for (const Sortie& sortie : plan.sorties) {
-    feed(*pack, sortie, start_s);
+    feed(*pack, sortie, plan.state_of_health, start_s);
     start_s += sortie.soc_history.back().t_s;
   }
   wear.cycle_wear = pack->cycleWear();

@@ -28,25 +28,39 @@ FractionCallback stageProgress(const TourOptions& options, const std::string& st
 // minimum gap, so the leg's end passes the dense re-check with its rounding.
 constexpr double kViewpointGapMarginM = 0.01;
 
-// A leg an OMPL planner misses is searched again this many times longer, twice: BIT* finds the
-// free-mode bridge's long legs through the standoff environment in a few seconds, but not
-// always in 0.5 s.
+// A leg an OMPL planner misses is searched again this many times longer, twice: BIT* finds
+// long legs round the bridge's girders in a few seconds, but not always in 0.5 s.
 constexpr double kRetryTimeFactors[] = {10.0, 40.0};
+
+// Hovering at a viewpoint under the full model: the sample the record repeats over the dwell.
+planner::PathSample hoverSample(const PlanningContext& context, const Eigen::Vector3d& position_m) {
+  const planner::FlightCostModel& model = context.fullModel();
+  const planner::PointConditions conditions = model.exactConditionsAt(position_m);
+  planner::PathSample hover;
+  hover.position_m = position_m;
+  hover.speed_m_s = 0.0;
+  hover.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
+  hover.ground_gap_m = conditions.ground_gap_m;
+  hover.clearance_m = context.environment().clearance_m(position_m);
+  hover.propulsion_power_w = model.breakdown(conditions, planner::Velocity{}, context.battery().start_soc).propulsionW();
+  return hover;
+}
 
 std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext& context, FlightMode mode,
                                   const TourOptions& options) {
   ViewpointOptions viewpoint_options;
   viewpoint_options.mode = mode;
   viewpoint_options.min_ceiling_gap_m = context.options().min_ceiling_gap_m + kViewpointGapMarginM;
-  const environment::Environment& environment =
-      mode == FlightMode::Ceiling ? context.environment() : context.standoffEnvironment();
+  viewpoint_options.standoff_m = context.options().standoff_m;
+  const environment::Environment& environment = context.environment();
   std::vector<TourStop> stops;
   for (const InspectionTarget& target : mission.targets) {
-    TourStop stop{target, {}};
+    TourStop stop{target, {}, {}};
     // A conventional planner inspects from where its standoff lets it, with a zoom lens.
     if (mode == FlightMode::Free)
       stop.target.standoff_max_m = std::max(target.standoff_max_m, options.free_standoff_max_m);
     stop.viewpoint = chooseViewpoint(stop.target, environment, context.energy(), viewpoint_options);
+    stop.hover = hoverSample(context, stop.viewpoint.position_m);
     stops.push_back(stop);
   }
   return stops;
@@ -57,67 +71,100 @@ LegCost legCost(const planner::PathEvaluation& evaluation) {
   cost.charge_ah = evaluation.charge_ah;
   cost.duration_s = evaluation.duration_s;
   cost.mean_current_a = evaluation.mean_current_a;
-  for (const planner::PathSample& s : evaluation.samples) cost.current_profile.push_back({s.t_s, s.current_a});
+  for (const planner::PathSample& s : evaluation.samples) cost.load_profile.push_back({s.t_s, s.propulsion_power_w});
   return cost;
 }
 
-// The sortie as flown: legs' samples end to end, a hover sample pair per dwell, SOC counted
-// from the start SOC (trapezoid, usable capacity, as planSorties counts it).
-std::vector<planner::PathSample> flownSamples(const TourResult& tour, const Sortie& sortie,
-                                              const battery::Pack& pack) {
-  std::vector<planner::PathSample> samples;
-  double t0 = 0.0;
-  const auto append = [&](planner::PathSample s) {
-    if (!samples.empty()) {
-      const planner::PathSample& last = samples.back();
-      const double used_ah = 0.5 * (last.current_a + s.current_a) * (s.t_s - last.t_s) / 3600.0;
-      s.soc = last.soc - used_ah / pack.usableCapacityAh();
-    } else {
-      s.soc = tour.start_soc;
-    }
-    samples.push_back(s);
+// The pack current a propulsion power draws at an SOC (the energy model's Rint pack).
+CurrentAtSoc packCurrent(const energy::EnergyModel& energy) {
+  return [&energy](double propulsion_w, double soc) {
+    return energy.pack().operatingPoint(propulsion_w, std::clamp(soc, 0.0, 1.0)).current_a;
   };
-  for (const SortieLeg& leg : sortie.legs) {
-    const planner::PathEvaluation& evaluation = tour.legs[leg.from][leg.to].evaluation;
-    for (planner::PathSample s : evaluation.samples) {
-      s.t_s += t0;
-      append(s);
-    }
-    t0 += evaluation.duration_s;
-    if (leg.to == 0) continue;
-    const TourStop& stop = tour.stops[leg.to - 1];
-    planner::PathSample hover = samples.back();
-    hover.speed_m_s = 0.0;
-    hover.current_a = stop.viewpoint.dwell_current_a;
-    hover.ceiling_gap_m = stop.viewpoint.ceiling_gap_m;
-    append(hover);
-    hover.t_s += stop.target.dwell_s;
-    t0 += stop.target.dwell_s;
-    append(hover);
-  }
-  return samples;
 }
 
-battery::DutyResult projectDuty(const TourResult& tour, const BatterySpec& battery,
-                                const TourOptions& options) {
+// The record of each sortie of the plan: the same integration as planSorties, sample by sample.
+FlightRecord recordFlight(const TourResult& tour, const PlanningContext& context) {
+  const BatterySpec& battery = context.battery();
+  const CurrentAtSoc current = packCurrent(context.energy());
+  const energy::PackElectrics& pack = context.energy().pack();
+  FlightRecord record;
+  double clock_s = 0.0;
+  for (const Sortie& sortie : tour.plan.sorties) {
+    SortieRecord sortie_record;
+    SocIntegrator flight(battery.pack, battery.start_soc, current);
+    const auto add = [&](planner::PathSample sample, double current_a, FlightPhase phase, int step) {
+      sample.t_s = flight.time_s();
+      sample.current_a = current_a;
+      sample.soc = flight.soc();
+      sample.power_w = sample.propulsion_power_w +
+                       pack.operatingPoint(sample.propulsion_power_w, std::clamp(sample.soc, 0.0, 1.0)).terminal_voltage_v *
+                           pack.avionicsCurrentA();
+      sortie_record.samples.push_back(sample);
+      sortie_record.phases.push_back(phase);
+      sortie_record.steps.push_back(step);
+    };
+    for (std::size_t step = 0; step < sortie.legs.size(); ++step) {
+      const SortieLeg& leg = sortie.legs[step];
+      const std::vector<planner::PathSample>& samples = tour.legs[leg.from][leg.to].evaluation.samples;
+      std::vector<LoadSample> loads;
+      for (const planner::PathSample& s : samples) loads.push_back({s.t_s, s.propulsion_power_w});
+      flyProfile(flight, loads, [&](std::size_t k, double current_a) {
+        add(samples[k], current_a, FlightPhase::Leg, static_cast<int>(step));
+      });
+      if (leg.to == 0) continue;
+      const planner::PathSample& hover_sample = tour.stops[leg.to - 1].hover;
+      hover(flight, hover_sample.propulsion_power_w, tour.stops[leg.to - 1].target.dwell_s,
+            [&](std::size_t, double current_a) { add(hover_sample, current_a, FlightPhase::Dwell, static_cast<int>(step)); });
+    }
+    sortie_record.takeoff_s = clock_s;
+    sortie_record.turnaround_s = sortie.turnaround_s;
+    sortie_record.recharge_s = sortie.recharge_s;
+    clock_s += sortie_record.flightS() + sortie.turnaround_s;
+    record.sorties.push_back(std::move(sortie_record));
+  }
+  return record;
+}
+
+// The founding paper's month, for the tour as one mission: each sortie's recorded current,
+// then the recharge back to the start SOC, then idle. A projection that cannot run (the tour
+// does not fit a day as often as asked, or the pack would run out) says why and is skipped.
+DutyProjection projectDuty(const TourResult& tour, const BatterySpec& battery, const TourOptions& options) {
+  DutyProjection projection;
   battery::DutyCycle duty;
-  for (const std::vector<planner::PathSample>& samples : tour.sortie_samples) {
-    const battery::LoadProfile flight = dischargeProfile(samples);
+  for (const SortieRecord& sortie : tour.record.sorties) {
+    const battery::LoadProfile flight = dischargeProfile(sortie.samples);
     duty.mission.segments.insert(duty.mission.segments.end(), flight.begin(), flight.end());
     duty.mission.segments.push_back(
         battery::Segment::charge(battery.pack.charge_current_a, 60.0 * options.charge_max_min, battery.start_soc));
   }
   duty.mission.segments.push_back(battery::Segment::idle(60.0 * options.idle_min));
-  duty.missions_per_day = options.missions_per_day;
   duty.days = options.days;
   duty.initial_soc = battery.start_soc;
+  const double mission_s = duty.mission.periodS();
+  const int fit = static_cast<int>(std::floor(duty.day_s / mission_s));
+  projection.missions_per_day = options.missions_per_day ? *options.missions_per_day : std::min(kDefaultToursPerDay, fit);
+  projection.days = options.days;
+  projection.mission_min = mission_s / 60.0;
+  if (projection.missions_per_day < 1 || projection.missions_per_day > fit) {
+    projection.note = "not projected: the tour takes " + formatFixed(mission_s / 60.0, 1) +
+                      " min with its recharges and idle, so " +
+                      (fit < 1 ? std::string("it does not fit in a day even once")
+                               : "at most " + std::to_string(fit) + " fit in a day, not " +
+                                     std::to_string(projection.missions_per_day)) +
+                      "; set the tours per day (--missions-per-day) or shorten the charge (--charge-max-min)";
+    return projection;
+  }
+  duty.missions_per_day = projection.missions_per_day;
   battery::DutyOptions duty_options;
   duty_options.record_first_day = false;
-  return battery::simulateDuty(battery.pack, duty, duty_options);
+  try {
+    projection.result = battery::simulateDuty(battery.pack, duty, duty_options);
+  } catch (const battery::DepletionError& e) {
+    projection.note = std::string("not projected: ") + e.what() +
+                      "; allow a longer charge between tours (--charge-max-min) or fewer tours a day";
+  }
+  return projection;
 }
-
-// The leg planner that searches one roadmap from each place (docs/tours.md).
-const std::string kRoadmapPlanner = "roadmap";
 
 // Refinement of roadmap legs stops at its evaluation budget; this time limit only guards
 // against a pathological case, so refined legs do not depend on the machine's speed.
@@ -125,23 +172,31 @@ constexpr double kRefinementTimeGuardS = 30.0;
 
 std::string legName(const TourResult& tour, int from, int to) { return tour.names[from] + " -> " + tour.names[to]; }
 
-// The rules, cost model and planner for the legs between two places (in free mode the rules
-// exempt the two from the standoff).
+// The rules, cost model and planner for the legs between two places.
 struct LegPlanner {
   PlanningContext::Mode planning;
   std::unique_ptr<planner::FlightPlanner> planner;
 };
 
+planner::LatticeSettings latticeSettings(const PlanningContext& context, const TourOptions& options) {
+  planner::LatticeSettings settings;
+  settings.spacing_m = options.lattice_stride > 0
+                           ? options.lattice_stride * context.environment().grid().frame().resolution_m()
+                           : options.lattice_spacing_m;
+  settings.workers = options.workers;
+  return settings;
+}
+
 LegPlanner legPlanner(const PlanningContext& context, FlightMode mode, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  LegPlanner leg{context.mode(mode, a, b), nullptr};
+  LegPlanner leg{context.mode(mode), nullptr};
   leg.planner = std::make_unique<planner::FlightPlanner>(*leg.planning.rules, *leg.planning.model, context.objective(a, b));
   return leg;
 }
 
 // One search between two places with a pairwise planner (OMPL's or the lattice A*), the path
 // post-processed.
-std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner& leg, const TourOptions& options,
-                                       int from, int to) {
+std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const PlanningContext& context, const LegPlanner& leg,
+                                       const TourOptions& options, int from, int to) {
   const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
   planner::PlanRequest request;
   request.start_m = a;
@@ -149,7 +204,8 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
   request.planner = options.planner;
   request.time_limit_s = options.time_limit_s;
   request.refinement.time_limit_s = options.time_limit_s;
-  request.lattice.stride_voxels = options.lattice_stride;
+  request.lattice = latticeSettings(context, options);
+  request.lattice.workers = 1;
   // A clear straight line needs no search: the refinement bends it where that saves charge
   // (up towards a ceiling), and the dense re-check still applies.
   if (options.straight_when_clear && leg.planning.rules->isMotionValid(a, b)) {
@@ -158,7 +214,8 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
   }
   // An anytime planner may miss a narrow passage in a short search: search again, longer.
   std::string failures;
-  const int attempts = options.planner == "lattice" ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
+  const int attempts =
+      planner::plannerInfo(options.planner).deterministic() ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
   for (int attempt = 0; attempt < attempts; ++attempt) {
     if (attempt > 0) request.time_limit_s = kRetryTimeFactors[attempt - 1] * options.time_limit_s;
     try {
@@ -182,12 +239,10 @@ LegTable roadmapLegs(const TourResult& tour, const PlanningContext& context, Fli
   const LegPlanner roadmap_planner = legPlanner(context, mode, home, home);
   const planner::SafetyRules& rules = *roadmap_planner.planning.rules;
   const planner::FlightObjective& objective = roadmap_planner.planner->objective();
-
-  planner::RoadmapOptions roadmap_options;
-  roadmap_options.stride_voxels = options.lattice_stride;
-  roadmap_options.workers = options.workers;
-  roadmap_options.progress = stageProgress(options, flightModeName(tour.mode) + " mode: building the roadmap");
-  const planner::LatticeRoadmap roadmap(rules, objective, tour.places_m, roadmap_options);
+  planner::LatticeSettings settings = latticeSettings(context, options);
+  settings.progress = stageProgress(options, flightModeName(tour.mode) + " mode: building the roadmap");
+  planner::LatticeRoadmap roadmap(roadmap_planner.planner->spaceInformation(), settings);
+  roadmap.build(objective, tour.places_m);
 
   const int places = static_cast<int>(tour.places_m.size());
   const RoutesFrom routes_from = [&](int from) {
@@ -196,16 +251,17 @@ LegTable roadmapLegs(const TourResult& tour, const PlanningContext& context, Fli
     for (int to = 0; to < places; ++to) {
       if (to == from) continue;
       const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
-      const planner::SafetyRules pair_rules = rules.withExemptions({a, b});
       std::optional<std::vector<Eigen::Vector3d>> best;
-      if (routes[to]) best = planner::shortcutPath(routes[to]->waypoints, pair_rules, objective);
-      if (options.straight_when_clear && pair_rules.isMotionValid(a, b) &&
+      if (routes[to]) best = planner::shortcutPath(routes[to]->waypoints, rules, objective);
+      if (options.straight_when_clear && rules.isMotionValid(a, b) &&
           (!best || objective.motionCost(a, b) < objective.pathCost(*best)))
         best = std::vector<Eigen::Vector3d>{a, b};
-      if (!best)
-        throw NoPathError(flightModeName(tour.mode) + " mode: no path between " + tour.names[from] + " and " + tour.names[to] +
-                          " on the roadmap (every " + std::to_string(options.lattice_stride) +
-                          " voxels); if one exists through a narrower gap, try a smaller --lattice-stride");
+      if (!best) {
+        const std::optional<planner::Blockage> blockage = roadmap.blockage(from, to);
+        throw NoPathError(flightModeName(tour.mode) + " mode: no path between " + tour.names[from] + " and " +
+                          tour.names[to] + ": " +
+                          (blockage ? blockage->describe() : std::string("the roadmap does not join them")));
+      }
       paths[to] = std::move(*best);
     }
     return paths;
@@ -215,9 +271,10 @@ LegTable roadmapLegs(const TourResult& tour, const PlanningContext& context, Fli
 }
 
 // The visiting order and the sorties for the legs as they are.
-void orderAndSplit(TourResult& tour, const Mission& mission, const TourOptions& options) {
+void orderAndSplit(TourResult& tour, const PlanningContext& context, const TourOptions& options) {
   TourCosts legs;
   legs.names = tour.names;
+  legs.current_at_soc = packCurrent(context.energy());
   const int places = static_cast<int>(tour.places_m.size());
   CostMatrix costs = CostMatrix::Zero(places, places);
   legs.legs.assign(places, std::vector<LegCost>(places));
@@ -230,7 +287,7 @@ void orderAndSplit(TourResult& tour, const Mission& mission, const TourOptions& 
     }
   for (int k = 1; k < places; ++k) {
     const TourStop& stop = tour.stops[k - 1];
-    legs.dwells[k] = {stop.target.dwell_s, stop.viewpoint.dwell_current_a};
+    legs.dwells[k] = {stop.target.dwell_s, stop.viewpoint.dwell_current_a, stop.hover.propulsion_power_w};
     // The charge matrix orders by what a visit costs: the leg into a target and its dwell.
     for (int i = 0; i < places; ++i)
       if (i != k) costs(i, k) += stop.viewpoint.dwell_charge_ah;
@@ -241,7 +298,7 @@ void orderAndSplit(TourResult& tour, const Mission& mission, const TourOptions& 
   SortieOptions sortie_options;
   sortie_options.ageing_model = options.ageing_model;
   sortie_options.ageing = ageingModelOptions(options.temperature_c);
-  tour.plan = planSorties(legs, tour.order.targets, mission.battery, sortie_options);
+  tour.plan = planSorties(legs, tour.order.targets, context.battery(), sortie_options);
 }
 
 }  // namespace
@@ -251,12 +308,11 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   TourResult tour;
   tour.mode = mode;
   tour.options = options;
-  tour.start_soc = mission.battery.start_soc;
-  tour.reserve_soc = mission.battery.reserve_soc;
+  tour.start_soc = context.battery().start_soc;
+  tour.reserve_soc = context.battery().reserve_soc;
 
-  // Home as the planner would check a start: in free mode the approach zone around it exempts
-  // it from the standoff, so a home near the ground is accepted.
-  const PlanningContext::Mode home_mode = context.mode(mode, mission.home_m, mission.home_m);
+  // Home as the planner would check a start (the same rules in both modes).
+  const PlanningContext::Mode home_mode = context.mode(mode);
   if (!home_mode.rules->isStateValid(mission.home_m))
     throw ceilplan::InputError(mission.name() + ": home " + formatPoint(mission.home_m) +
                                 " is not a valid position for the vehicle (inside or too close to a structure, or "
@@ -270,7 +326,7 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
     tour.places_m.push_back(stop.viewpoint.position_m);
   }
 
-  const battery::Pack& pack = mission.battery.pack;
+  const battery::Pack& pack = context.battery().pack;
   const LegScorer score = [&](const std::vector<Eigen::Vector3d>& waypoints) {
     return planner::evaluatePath(context.fullModel(), pack, tour.start_soc, waypoints);
   };
@@ -279,12 +335,14 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   };
   const int places = static_cast<int>(tour.places_m.size());
   planner::RefinementOptions refinement;
-  if (options.planner == kRoadmapPlanner) {
+  if (planner::plannerInfo(options.planner).multiQuery()) {
     tour.legs = roadmapLegs(tour, context, mode, options, score);
     refinement.time_limit_s = kRefinementTimeGuardS;
   } else {
     refinement.time_limit_s = options.time_limit_s;
-    const PairPlanner plan_pair = [&](int from, int to) { return searchLeg(tour, legPlannerFor(from, to), options, from, to); };
+    const PairPlanner plan_pair = [&](int from, int to) {
+      return searchLeg(tour, context, legPlannerFor(from, to), options, from, to);
+    };
     tour.legs = planLegsByPair(places, plan_pair, score, options.workers,
                                stageProgress(options, flightModeName(tour.mode) + " mode: planning legs"));
   }
@@ -309,7 +367,7 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   for (;;) {
     std::vector<std::pair<int, int>> flown;
     try {
-      orderAndSplit(tour, mission, options);
+      orderAndSplit(tour, context, options);
       for (const Sortie& sortie : tour.plan.sorties)
         for (const SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
     } catch (const InfeasibleError&) {
@@ -332,10 +390,14 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
         throw Error(flightModeName(tour.mode) + " mode: leg " + legName(tour, leg.from, leg.to) +
                                  " fails the dense re-check: " + *violation);
 
-  for (const Sortie& sortie : tour.plan.sorties) tour.sortie_samples.push_back(flownSamples(tour, sortie, pack));
+  tour.unknown_space = context.environment().index()->unknownSpace();
+  tour.unknown_summary = context.environment().index()->unknownSummary();
+  for (const Sortie& sortie : tour.plan.sorties)
+    for (const SortieLeg& leg : sortie.legs) tour.assumed_free_m += tour.legs[leg.from][leg.to].evaluation.assumed_free_m;
+  tour.record = recordFlight(tour, context);
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
     tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));
-  tour.duty = projectDuty(tour, mission.battery, options);
+  tour.duty = projectDuty(tour, context.battery(), options);
   return tour;
 }
 

@@ -1,6 +1,7 @@
 #include "ceilplan/mission/viewpoint.hpp"
 
 #include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/planner/standoff.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 
@@ -15,6 +16,7 @@ namespace ceilplan::mission {
 namespace {
 
 constexpr double kCurrentResolutionA = 1e-3;
+constexpr double kStandoffResolutionM = 1e-3;
 
 // Whether the segment from the body to the target point crosses only free voxels (stopping
 // half a voxel short of the point, which lies on an occupied voxel's face).
@@ -88,15 +90,22 @@ class ViewpointSearch {
     return body_m + Eigen::Vector3d(0, 0, low_m);
   }
 
+  // What the mode minimises at a position. Ceiling mode: the hover current, to the
+  // milliampere, so that a difference no meter would show does not pull the viewpoint away from
+  // the target. Free mode ignores proximity effects (every position draws the same) and keeps
+  // the conventional standoff where it fits, the largest that fits where it does not: the
+  // shortfall, to the millimetre.
+  double key(const Eigen::Vector3d& body_m) const {
+    if (options_.mode == FlightMode::Ceiling)
+      return std::round(hoverCurrentA(environment_, model_, body_m, options_.soc) / kCurrentResolutionA);
+    const double shortfall_m = std::max(0.0, options_.standoff_m - planner::standoffAt(environment_, body_m));
+    return std::round(shortfall_m / kStandoffResolutionM);
+  }
+
   // Keeps an admissible position if it beats the best so far and sees the target.
   void consider(const Eigen::Vector3d& body_m) {
     const double distance_m = (body_m - target_.point_m).norm();
-    // Free mode ignores proximity effects when choosing: every position draws the same. Currents
-    // are compared to the milliampere, so that a difference no meter would show does not pull the
-    // viewpoint away from the target.
-    const double key = options_.mode == FlightMode::Ceiling
-                           ? std::round(hoverCurrentA(environment_, model_, body_m, options_.soc) / kCurrentResolutionA)
-                           : 0.0;
+    const double key = this->key(body_m);
     const bool better = !found() || key < best_key_ || (key == best_key_ && distance_m < best_distance_m_);
     if (!better || !seesPoint(environment_.grid(), body_m, target_.point_m)) return;
     best_key_ = key;
@@ -145,6 +154,9 @@ double hoverCurrentA(const environment::Environment& environment, const energy::
 Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Environment& environment,
                           const energy::EnergyModel& model, const ViewpointOptions& options) {
   target.validate();
+  if (!(std::isfinite(options.standoff_m) && options.standoff_m >= 0.0))
+    throw ceilplan::InputError("the conventional standoff must be a finite number >= 0 m, got " +
+                               formatNumber(options.standoff_m));
   if (!environment.contains(target.point_m))
     throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) + " lies outside the map");
   ViewpointSearch search(target, environment, model, options);
@@ -155,11 +167,8 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
     throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
                                 ": no valid viewpoint within " + formatNumber(target.standoff_min_m) + "-" +
                                 formatNumber(target.standoff_max_m) +
-                                " m that sees it" +
-                                (options.mode == FlightMode::Free
-                                     ? std::string(" while keeping the conventional standoff from every structure")
-                                     : std::string()) +
-                                "; check the point lies on a surface facing free space, or widen its standoff range");
+                                " m that sees it; check the point lies on a surface facing free space, or widen its "
+                                "standoff range");
   search.scan(search.best(), 0.25 * resolution_m, resolution_m, hug);
 
   Viewpoint viewpoint;

@@ -1,5 +1,7 @@
 #include "ceilplan/planner/flight_cost_model.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/planner/standoff.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +40,10 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
     throw ceilplan::InputError("planning SOC must lie in (0, 1], got " + std::to_string(options_.planning_soc));
   if (!(std::isfinite(options_.step_m) && options_.step_m >= 0.0))
     throw ceilplan::InputError("integration step must be >= 0 (0: half a voxel)");
+  if (!(std::isfinite(options_.standoff_m) && options_.standoff_m >= 0.0))
+    throw ceilplan::InputError("standoff must be a finite number >= 0 m, got " + formatNumber(options_.standoff_m));
+  if (!(std::isfinite(options_.standoff_weight) && options_.standoff_weight > 0.0))
+    throw ceilplan::InputError("standoff weight must be a positive number, got " + formatNumber(options_.standoff_weight));
   if (static_cast<int>(environment_.vehicle().rotor_positions_m.size()) != energy_.rotorCount())
     throw ceilplan::InputError("the vehicle geometry has " +
                                 std::to_string(environment_.vehicle().rotor_positions_m.size()) +
@@ -55,12 +61,21 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
                        std::max(reach.ceiling_reach_radii * vehicle.rotor_radius_m, near_ceiling_gap_m_);
   const double below = reach.ground_reach_radii * vehicle.rotor_radius_m - vehicle.rotor_plane_height_m;
   free_air_clearance_m_ = std::hypot(disc_reach, std::max(above, below)) + environment_.grid().frame().resolution_m();
+  airframe_radius_m_ = airframeRadius_m(vehicle);
+}
+
+double FlightCostModel::standoffShortfall_m(const Eigen::Vector3d& body_m) const {
+  if (options_.standoff_m == 0.0) return 0.0;
+  const double wanted_m = options_.standoff_m + airframe_radius_m_;  // clearance of the body centre
+  if (environment_.clearanceLowerBound_m(body_m) >= wanted_m) return 0.0;
+  return std::max(0.0, wanted_m - environment_.clearance_m(body_m));
 }
 
 PointConditions FlightCostModel::conditionsAt(const Eigen::Vector3d& body_m) const {
   if (farFromStructure(body_m)) {
     PointConditions conditions;
     conditions.rotor_count = energy_.rotorCount();
+    conditions.standoff_shortfall_m = standoffShortfall_m(body_m);
     return conditions;
   }
   return exactConditionsAt(body_m);
@@ -82,10 +97,14 @@ PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const
 
 PointConditions FlightCostModel::exactConditionsAt(const Eigen::Vector3d& body_m) const {
   const environment::SurfaceGaps ceiling = environment_.ceiling(body_m);
-  if (options_.proximity_effects) return surfaceConditions(ceiling, environment_.ground(body_m));
   PointConditions conditions;  // rotors and ground default to free air; the speed rule sees the ceiling
-  conditions.rotor_count = static_cast<int>(ceiling.rotors.size());
-  conditions.nearest_ceiling_gap_m = ceiling.nearest_gap_m;
+  if (options_.proximity_effects) {
+    conditions = surfaceConditions(ceiling, environment_.ground(body_m));
+  } else {
+    conditions.rotor_count = static_cast<int>(ceiling.rotors.size());
+    conditions.nearest_ceiling_gap_m = ceiling.nearest_gap_m;
+  }
+  conditions.standoff_shortfall_m = standoffShortfall_m(body_m);
   return conditions;
 }
 
@@ -134,6 +153,13 @@ int FlightCostModel::intervalCount(const Eigen::Vector3d& from_m, const Eigen::V
 
 double FlightCostModel::costPerMetre(const CostWeights& weights, double current_a, double speed_m_s) const {
   return weights.per_m + weights.per_s / speed_m_s + weights.per_ah * current_a / (3600.0 * speed_m_s);
+}
+
+double FlightCostModel::cruiseCostPerMetre(const CostWeights& weights) const {
+  PointConditions free_air;
+  free_air.rotor_count = energy_.rotorCount();
+  const Velocity velocity = velocityAt(free_air, Eigen::Vector3d::UnitX());
+  return costPerMetre(weights, currentA(free_air, velocity, options_.planning_soc), velocity.along_m_s);
 }
 
 double FlightCostModel::minCostPerMetre(const CostWeights& weights) const {

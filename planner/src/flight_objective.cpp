@@ -13,6 +13,9 @@ FlightObjective::FlightObjective(const ompl::base::SpaceInformationPtr& si, cons
                                  CostWeights weights, const std::string& name, const std::string& unit)
     : ompl::base::OptimizationObjective(si), model_(model), weights_(weights), unit_(unit) {
   description_ = name;
+  // The standoff preference in this objective's units: its weight in metres of level cruise.
+  if (model_.options().standoff_m > 0.0)
+    weights_.per_shortfall_m2 = model_.options().standoff_weight * model_.cruiseCostPerMetre(weights_);
   min_cost_per_m_ = model_.minCostPerMetre(weights_);
   const double per_m = min_cost_per_m_;
   setCostToGoHeuristic([per_m](const ompl::base::State* state, const ompl::base::Goal* goal) {

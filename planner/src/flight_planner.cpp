@@ -1,5 +1,6 @@
 #include "ceilplan/planner/flight_planner.hpp"
 
+#include "ceilplan/planner/blockage.hpp"
 #include "ceilplan/planner/ceiling_band_sampler.hpp"
 #include "ceilplan/planner/motion_validator.hpp"
 #include "ceilplan/planner/ompl_state.hpp"
@@ -101,37 +102,37 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
   if ((request.goal_m - request.start_m).norm() < 1e-6) throw ceilplan::InputError("start and goal coincide: nothing to plan");
   PlanResult result;
   result.planner = request.planner.empty() ? defaultPlannerName() : request.planner;
-  if (result.planner != "lattice") makeOmplPlanner(result.planner, si_);  // rejects unknown names early
+  const PlannerInfo& info = plannerInfo(result.planner);  // rejects unknown names early
 
-  if (result.planner == "lattice") {
-    LatticeOptions options = request.lattice;
-    options.should_stop = [&] { return secondsSince(started) > request.time_limit_s; };
-    LatticePlanner lattice(rules_, *objective_, options);
-    const auto found = lattice.plan(request.start_m, request.goal_m);
-    if (!found)
-      throw ceilplan::NoPathError(lattice.stopped() ? "the lattice search ran out of time (" + std::to_string(request.time_limit_s) +
-                                                " s); raise --time-limit-s or the lattice stride"
-                                          : "no collision-free route joins start and goal on the lattice");
-    result.waypoints = found->waypoints;
-  } else {
-    installBandSampler(request.band_fraction);
-    auto definition = std::make_shared<ompl::base::ProblemDefinition>(si_);
-    ompl::base::ScopedState<> start(si_), goal(si_);
-    setPosition(start.get(), request.start_m);
-    setPosition(goal.get(), request.goal_m);
-    definition->setStartAndGoalStates(start, goal, 1e-6);
-    definition->setOptimizationObjective(objective_);
-    const ompl::base::PlannerPtr planner = makeOmplPlanner(result.planner, si_);
-    planner->setProblemDefinition(definition);
-    planner->setup();
-    const ompl::base::PlannerStatus status = planner->solve(request.time_limit_s);
-    clearBandSampler();
-    if (status != ompl::base::PlannerStatus::EXACT_SOLUTION || !definition->hasExactSolution())
-      throw ceilplan::NoPathError("no path found by " + result.planner + " within " + std::to_string(request.time_limit_s) +
-                        " s (status: " + status.asString() + "); raise --time-limit-s, or try --planner lattice");
-    const auto path = definition->getSolutionPath()->as<ompl::geometric::PathGeometric>();
-    for (const ompl::base::State* state : path->getStates()) result.waypoints.push_back(toPosition(state));
+  const bool sampling = info.kind == PlannerKind::Sampling;
+  if (sampling) installBandSampler(request.band_fraction);
+  auto definition = std::make_shared<ompl::base::ProblemDefinition>(si_);
+  ompl::base::ScopedState<> start(si_), goal(si_);
+  setPosition(start.get(), request.start_m);
+  setPosition(goal.get(), request.goal_m);
+  definition->setStartAndGoalStates(start, goal, 1e-6);
+  definition->setOptimizationObjective(objective_);
+  const ompl::base::PlannerPtr planner = makePlanner(result.planner, si_, request.lattice);
+  planner->setProblemDefinition(definition);
+  planner->setup();
+  const ompl::base::PlannerStatus status = planner->solve(request.time_limit_s);
+  if (sampling) clearBandSampler();
+  if (status != ompl::base::PlannerStatus::EXACT_SOLUTION || !definition->hasExactSolution()) {
+    const std::string limit = formatNumber(request.time_limit_s) + " s";
+    if (!info.deterministic())
+      throw ceilplan::NoPathError("no path found by " + result.planner + " within " + limit + " (status: " +
+                                  status.asString() + "); raise --time-limit-s, or try --planner " +
+                                  referencePlannerName() + ", which says where the way is blocked");
+    if (status == ompl::base::PlannerStatus::TIMEOUT)
+      throw ceilplan::NoPathError("the " + result.planner + " search ran out of time (" + limit +
+                                  "); raise --time-limit-s or the lattice spacing");
+    const auto* reporter = dynamic_cast<const BlockageReporter*>(planner.get());
+    const std::optional<Blockage> blockage = reporter ? reporter->lastBlockage() : std::nullopt;
+    throw ceilplan::NoPathError("no collision-free route joins start and goal (" + result.planner + ")" +
+                                (blockage ? ": " + blockage->describe() : std::string()));
   }
+  const auto path = definition->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+  for (const ompl::base::State* state : path->getStates()) result.waypoints.push_back(toPosition(state));
   result.search_time_s = secondsSince(started);
   result.search_cost = objective_->pathCost(result.waypoints);
 

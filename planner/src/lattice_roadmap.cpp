@@ -1,14 +1,18 @@
 #include "ceilplan/planner/lattice_roadmap.hpp"
 
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/parallel_for.hpp"
+
+#include "lattice_bridge.hpp"
+#include "lattice_grid.hpp"
+#include "lattice_query.hpp"
+
+#include <ompl/base/PlannerData.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <queue>
-#include <stdexcept>
-
-#include "ceilplan/core/parallel_for.hpp"
-#include "ceilplan/core/error.hpp"
-#include "lattice_grid.hpp"
 
 namespace ceilplan::planner {
 namespace {
@@ -24,78 +28,92 @@ std::array<int, 3> neighbour(const std::array<int, 3>& at, const std::array<int,
   return {at[0] + offset[0], at[1] + offset[1], at[2] + offset[2]};
 }
 
-// Drops repeated points and the inner points of straight runs.
-std::vector<Eigen::Vector3d> turningPoints(const std::vector<Eigen::Vector3d>& points) {
-  std::vector<Eigen::Vector3d> result;
-  for (const Eigen::Vector3d& p : points) {
-    if (!result.empty() && (p - result.back()).norm() < 1e-9) continue;
-    if (result.size() >= 2) {
-      const Eigen::Vector3d a = result[result.size() - 1] - result[result.size() - 2];
-      const Eigen::Vector3d b = p - result.back();
-      if (a.cross(b).norm() <= 1e-9 * a.norm() * b.norm() && a.dot(b) > 0.0) result.pop_back();
-    }
-    result.push_back(p);
-  }
-  return result;
-}
-
 }  // namespace
 
-std::optional<std::uint32_t> LatticeRoadmap::Zone::slotOf(std::uint32_t node) const {
-  const auto found = std::lower_bound(nodes.begin(), nodes.end(), node);
-  if (found == nodes.end() || *found != node) return std::nullopt;
-  return static_cast<std::uint32_t>(found - nodes.begin());
+LatticeRoadmap::LatticeRoadmap(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings)
+    : LatticePlannerBase(si, "roadmap", std::move(settings)) {
+  specs_.multithreaded = true;
 }
 
-LatticeRoadmap::LatticeRoadmap(const SafetyRules& rules, const FlightObjective& objective,
-                               std::vector<Eigen::Vector3d> places_m, RoadmapOptions options)
-    : rules_(rules),
-      core_rules_(rules.withExemptions({})),
-      objective_(objective),
-      places_m_(std::move(places_m)),
-      options_(std::move(options)) {
-  if (options_.stride_voxels < 1) throw ceilplan::InputError("roadmap stride must be at least 1 voxel");
-  if (options_.workers < 1) throw ceilplan::InputError("roadmap needs at least one worker thread");
-  for (const Eigen::Vector3d& place : places_m_)
-    if (!place.allFinite() || !rules_.environment().contains(place))
+void LatticeRoadmap::clearQuery() {
+  pis_.restart();  // not Planner::clearQuery(), which clears everything
+  forgetResult();
+}
+
+void LatticeRoadmap::clear() {
+  ompl::base::Planner::clear();
+  dropGraph();
+  places_m_.clear();
+  places_.clear();
+  place_blockages_.clear();
+  forgetResult();
+}
+
+void LatticeRoadmap::dropGraph() {
+  objective_ = nullptr;
+  node_count_ = 0;
+  slot_.clear();
+  valid_nodes_.clear();
+  core_costs_.clear();
+  bridge_positions_m_.clear();
+  bridge_arcs_.clear();
+  node_arcs_.clear();
+}
+
+void LatticeRoadmap::build(const FlightObjective& objective, std::vector<Eigen::Vector3d> places_m) {
+  rules_ = &detail::rulesOf(*si_, getName());
+  for (const Eigen::Vector3d& place : places_m)
+    if (!place.allFinite() || !rules_->environment().contains(place))
       throw ceilplan::InputError("a roadmap place lies outside the map");
-  zone_radius_m_ = rules_.exemptRadius_m();
-  node_count_ = detail::LatticeGrid(rules_.environment().grid().frame(), options_.stride_voxels).nodeCount();
-  if (node_count_ >= kNoSlot)
-    throw ceilplan::InputError("the map has too many lattice nodes: raise the roadmap stride");
-  // Shares of the build time, roughly as on the shipped bridge: nodes 10 %, edges 80 %, places 10 %.
-  const auto report = [this](double share) {
-    if (options_.progress) options_.progress(share);
-  };
-  buildNodes();
-  report(0.1);
-  buildEdges([&](double share) { report(0.1 + 0.8 * share); });
-  buildPlaces();
-  report(1.0);
+  buildGraph(objective, {});
+  places_m_ = std::move(places_m);
+  places_ = joinPlaces(places_m_);
+  place_blockages_ = connect(places_m_, places_, ompl::base::plannerNonTerminatingCondition());
+  if (settings_.progress) settings_.progress(1.0);
 }
 
-void LatticeRoadmap::buildNodes() {
-  const detail::LatticeGrid lattice(rules_.environment().grid().frame(), options_.stride_voxels);
+bool LatticeRoadmap::buildGraph(const FlightObjective& objective, const std::function<bool()>& abandon) {
+  dropGraph();
+  rules_ = &detail::rulesOf(*si_, getName());
+  const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
+  node_count_ = lattice.nodeCount();
+  if (node_count_ >= kNoSlot)
+    throw ceilplan::InputError("the map has too many lattice nodes for a " + std::to_string(lattice.spacing_m()) +
+                               " m spacing: raise the spacing");
+  // Shares of the build time, roughly as on the shipped bridge: nodes 10 %, edges 80 %, places 10 %.
+  std::atomic<bool> stop{false};
+  const auto report = [&](double share) {
+    if (settings_.progress) settings_.progress(share);
+    if (abandon && abandon()) stop = true;
+  };
+
   std::vector<char> valid(node_count_, 0);
-  parallelFor(node_count_, options_.workers,
-              [&](std::size_t id) { valid[id] = core_rules_.isStateValid(lattice.position(id)); });
+  parallelFor(
+      node_count_, settings_.workers,
+      [&](std::size_t id) {
+        if (!stop) valid[id] = rules_->isStateValid(lattice.position(id));
+      },
+      [&](double share) { report(0.1 * share); });
+  report(0.1);
+  if (stop) {
+    dropGraph();
+    return false;
+  }
   slot_.assign(node_count_, kNoSlot);
   for (std::size_t id = 0; id < node_count_; ++id)
     if (valid[id]) {
       slot_[id] = static_cast<std::uint32_t>(valid_nodes_.size());
       valid_nodes_.push_back(static_cast<std::uint32_t>(id));
     }
-}
 
-void LatticeRoadmap::buildEdges(const std::function<void(double)>& progress) {
-  const detail::LatticeGrid lattice(rules_.environment().grid().frame(), options_.stride_voxels);
   const detail::LatticeDirections directions;
-  const FlightCostModel& model = objective_.model();
+  const FlightCostModel& model = objective.model();
   core_costs_.assign(valid_nodes_.size() * kDirections, kNoEdge);
   // Each (node, direction) cell is written by the one task that owns its edge's first node.
   parallelFor(
-      valid_nodes_.size(), options_.workers,
+      valid_nodes_.size(), settings_.workers,
       [&](std::size_t row) {
+        if (stop) return;
         const std::uint32_t id = valid_nodes_[row];
         const std::array<int, 3> at = lattice.indices(id);
         const Eigen::Vector3d here = lattice.position(id);
@@ -105,15 +123,22 @@ void LatticeRoadmap::buildEdges(const std::function<void(double)>& progress) {
           const std::uint32_t other = slot_[lattice.id(to[0], to[1], to[2])];
           if (other == kNoSlot) continue;
           const Eigen::Vector3d there = lattice.position(to[0], to[1], to[2]);
-          if (!core_rules_.isMotionValid(here, there)) continue;
+          if (!rules_->isMotionValid(here, there)) continue;
           const auto [forth, back] = model.integrateBothWays(
               here, there, [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
-          core_costs_[row * kDirections + d] = static_cast<float>(objective_.weights().of(forth));
+          core_costs_[row * kDirections + d] = static_cast<float>(objective.weights().of(forth));
           core_costs_[static_cast<std::size_t>(other) * kDirections + directions.opposite[d]] =
-              static_cast<float>(objective_.weights().of(back));
+              static_cast<float>(objective.weights().of(back));
         }
       },
-      progress);
+      [&](double share) { report(0.1 + 0.8 * share); });
+  if (stop) {
+    dropGraph();
+    return false;
+  }
+  objective_ = &objective;
+  report(0.9);
+  return true;
 }
 
 float LatticeRoadmap::coreCost(std::uint32_t node, int direction) const {
@@ -121,75 +146,158 @@ float LatticeRoadmap::coreCost(std::uint32_t node, int direction) const {
   return row == kNoSlot ? kNoEdge : core_costs_[static_cast<std::size_t>(row) * kDirections + direction];
 }
 
-void LatticeRoadmap::buildPlaces() {
-  const detail::LatticeGrid lattice(rules_.environment().grid().frame(), options_.stride_voxels);
-  const detail::LatticeDirections directions;
-  const std::size_t places = places_m_.size();
-  const bool zoned = rules_.hasStandoff();
-  if (zoned) zones_.resize(places);
-  joins_out_.resize(places);
-  joins_in_.resize(places);
-  const FlightCostModel& model = objective_.model();
+std::vector<LatticeRoadmap::Place> LatticeRoadmap::joinPlaces(const std::vector<Eigen::Vector3d>& places_m) const {
+  const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
+  const FlightCostModel& model = objective_->model();
   const auto conditions = [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
-  const auto cost = [&](const MotionTotals& totals) { return objective_.weights().of(totals); };
-
-  parallelFor(places, options_.workers, [&](std::size_t place) {
-    const Eigen::Vector3d& centre = places_m_[place];
-    // What a route starting or ending here may do (free mode: come close to the structure).
-    const SafetyRules near = rules_.withExemptions({centre});
-    if (zoned) {
-      Zone& zone = zones_[place];
-      int lo[3], hi[3];
-      for (int axis = 0; axis < 3; ++axis) {
-        const double origin = lattice.position(0, 0, 0)[axis];
-        lo[axis] =
-            std::max(0, static_cast<int>(std::floor((centre[axis] - zone_radius_m_ - origin) / lattice.spacing_m())));
-        hi[axis] =
-            std::min(lattice.size(axis) - 1,
-                     static_cast<int>(std::ceil((centre[axis] + zone_radius_m_ - origin) / lattice.spacing_m())));
-      }
-      for (int c = lo[2]; c <= hi[2]; ++c)
-        for (int b = lo[1]; b <= hi[1]; ++b)
-          for (int a = lo[0]; a <= hi[0]; ++a) {
-            const Eigen::Vector3d p = lattice.position(a, b, c);
-            if ((p - centre).norm() <= zone_radius_m_ && near.isStateValid(p))
-              zone.nodes.push_back(static_cast<std::uint32_t>(lattice.id(a, b, c)));
-          }
-      std::sort(zone.nodes.begin(), zone.nodes.end());
-      zone.costs.assign(zone.nodes.size() * kDirections, kNoEdge);
-      for (std::size_t slot = 0; slot < zone.nodes.size(); ++slot) {
-        const std::uint32_t id = zone.nodes[slot];
-        const std::array<int, 3> at = lattice.indices(id);
-        for (int d = kFirstForwardDirection; d < kDirections; ++d) {
-          const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
-          if (!lattice.inside(to[0], to[1], to[2])) continue;
-          const std::uint32_t next = static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]));
-          const std::optional<std::uint32_t> other = zone.slotOf(next);
-          if (!other) continue;
-          float forth = coreCost(id, d), back = coreCost(next, directions.opposite[d]);
-          if (forth == kNoEdge) {  // invalid with the standoff: perhaps valid without it
-            const Eigen::Vector3d here = lattice.position(id), there = lattice.position(next);
-            if (!near.isMotionValid(here, there)) continue;
-            const auto totals = model.integrateBothWays(here, there, conditions);
-            forth = static_cast<float>(cost(totals.first));
-            back = static_cast<float>(cost(totals.second));
-          }
-          zone.costs[slot * kDirections + d] = forth;
-          zone.costs[*other * kDirections + directions.opposite[d]] = back;
-        }
-      }
-    }
-    // Joins: to lattice nodes valid near the place (in its zone, with a standoff).
+  const auto cost = [&](const MotionTotals& totals) { return objective_->weights().of(totals); };
+  std::vector<Place> places(places_m.size());
+  parallelFor(places_m.size(), settings_.workers, [&](std::size_t index) {
+    const Eigen::Vector3d& centre = places_m[index];
     lattice.forEachNodeNear(centre, [&](std::size_t id) {
-      const auto node = static_cast<std::uint32_t>(id);
-      const bool valid = zoned ? zones_[place].slotOf(node).has_value() : slot_[id] != kNoSlot;
       const Eigen::Vector3d p = lattice.position(id);
-      if (!valid || !near.isMotionValid(centre, p)) return;
+      if (slot_[id] == kNoSlot || !rules_->isMotionValid(centre, p)) return;
       const auto totals = model.integrateBothWays(centre, p, conditions);
-      joins_out_[place].push_back({node, cost(totals.first)});
-      joins_in_[place].push_back({node, cost(totals.second)});
+      places[index].out.push_back({static_cast<std::uint32_t>(id), cost(totals.first)});
+      places[index].in.push_back({static_cast<std::uint32_t>(id), cost(totals.second)});
     });
   });
+  return places;
+}
+
+std::uint32_t LatticeRoadmap::addVertex(const Eigen::Vector3d& position_m) {
+  bridge_positions_m_.push_back(position_m);
+  bridge_arcs_.emplace_back();
+  return static_cast<std::uint32_t>(node_count_ + bridge_positions_m_.size() - 1);
+}
+
+Eigen::Vector3d LatticeRoadmap::statePosition(std::uint32_t state) const {
+  if (state < node_count_) return detail::LatticeGrid(rules_->environment().grid().frame(), settings_.spacing_m).position(state);
+  return bridge_positions_m_[state - node_count_];
+}
+
+void LatticeRoadmap::addBridge(const std::vector<Eigen::Vector3d>& waypoints, std::optional<std::uint32_t> from_state,
+                               std::optional<std::uint32_t> to_state, Place* from_place, Place* to_place) {
+  // A place at an end gets a vertex on it, joined at no cost.
+  const auto endState = [&](std::optional<std::uint32_t> state, Place* place, const Eigen::Vector3d& position_m) {
+    if (state) return *state;
+    const std::uint32_t vertex = addVertex(position_m);
+    place->out.push_back({vertex, 0.0});
+    place->in.push_back({vertex, 0.0});
+    return vertex;
+  };
+  std::vector<std::uint32_t> states{endState(from_state, from_place, waypoints.front())};
+  for (std::size_t k = 1; k + 1 < waypoints.size(); ++k) states.push_back(addVertex(waypoints[k]));
+  states.push_back(endState(to_state, to_place, waypoints.back()));
+  const FlightCostModel& model = objective_->model();
+  const auto conditions = [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
+  const auto addArc = [&](std::uint32_t from, std::uint32_t to, double cost) {
+    const Arc arc{to, static_cast<float>(cost)};
+    if (from < node_count_) node_arcs_.emplace_back(from, arc);
+    else bridge_arcs_[from - node_count_].push_back(arc);
+  };
+  for (std::size_t k = 0; k + 1 < states.size(); ++k) {
+    const auto [forth, back] = model.integrateBothWays(waypoints[k], waypoints[k + 1], conditions);
+    addArc(states[k], states[k + 1], objective_->weights().of(forth));
+    addArc(states[k + 1], states[k], objective_->weights().of(back));
+  }
+  std::stable_sort(node_arcs_.begin(), node_arcs_.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+}
+
+std::vector<std::optional<Blockage>> LatticeRoadmap::connect(const std::vector<Eigen::Vector3d>& places_m,
+                                                             std::vector<Place>& places,
+                                                             const ompl::base::PlannerTerminationCondition& ptc) {
+  const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
+  const detail::LatticeDirections directions;
+  const std::size_t place_count = places_m.size();
+  std::vector<std::optional<Blockage>> blockages(place_count);
+  // Parts of the roadmap: lattice nodes, refinement's vertices, then the places.
+  std::vector<std::uint32_t> parent;
+  const auto root = [&parent](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  const auto unite = [&](std::uint32_t a, std::uint32_t b) { parent[root(a)] = root(b); };
+  const auto placeElement = [&](std::size_t p) {
+    return static_cast<std::uint32_t>(node_count_ + bridge_positions_m_.size() + p);
+  };
+  const auto partition = [&] {
+    parent.resize(node_count_ + bridge_positions_m_.size() + place_count);
+    for (std::uint32_t x = 0; x < parent.size(); ++x) parent[x] = x;
+    for (const std::uint32_t node : valid_nodes_) {
+      const std::array<int, 3> at = lattice.indices(node);
+      for (int d = kFirstForwardDirection; d < kDirections; ++d)
+        if (coreCost(node, d) != kNoEdge) {
+          const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
+          unite(node, static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2])));
+        }
+    }
+    for (const auto& [node, arc] : node_arcs_) unite(node, arc.to);
+    for (std::size_t v = 0; v < bridge_arcs_.size(); ++v)
+      for (const Arc& arc : bridge_arcs_[v]) unite(static_cast<std::uint32_t>(node_count_ + v), arc.to);
+    for (std::size_t p = 0; p < place_count; ++p)
+      for (const Join& join : places[p].out) unite(placeElement(p), join.state);
+  };
+  // Lattice nodes missing an edge: where a part of the roadmap ends.
+  std::vector<std::uint32_t> rim;
+  for (const std::uint32_t node : valid_nodes_) {
+    int edges = 0;
+    for (int d = 0; d < kDirections; ++d) edges += coreCost(node, d) != kNoEdge;
+    if (edges < kDirections) rim.push_back(node);
+  }
+
+  std::vector<char> apart(place_count, 0);  // left apart after a failed refinement
+  for (;;) {
+    partition();
+    const std::uint32_t main = root(placeElement(0));
+    std::size_t lone = place_count;
+    for (std::size_t p = 0; p < place_count && lone == place_count; ++p)
+      if (!apart[p] && root(placeElement(p)) != main) lone = p;
+    if (lone == place_count || ptc()) break;
+    // One side: the part `lone` reaches; the other: every other part holding a place.
+    const std::uint32_t part = root(placeElement(lone));
+    std::vector<char> other_part(parent.size(), 0);
+    for (std::size_t p = 0; p < place_count; ++p)
+      if (!apart[p] && root(placeElement(p)) != part) other_part[root(placeElement(p))] = 1;
+    std::vector<Eigen::Vector3d> side_a, side_b;
+    std::vector<std::pair<bool, std::uint32_t>> what_a, what_b;  // (place?, index or node)
+    for (std::size_t p = 0; p < place_count; ++p) {
+      const std::uint32_t r = root(placeElement(p));
+      if (r == part) side_a.push_back(places_m[p]), what_a.emplace_back(true, p);
+      else if (other_part[r]) side_b.push_back(places_m[p]), what_b.emplace_back(true, p);
+    }
+    for (const std::uint32_t node : rim) {
+      const std::uint32_t r = root(node);
+      if (r == part) side_a.push_back(lattice.position(node)), what_a.emplace_back(false, node);
+      else if (other_part[r]) side_b.push_back(lattice.position(node)), what_b.emplace_back(false, node);
+    }
+    const detail::BridgeOutcome found = detail::findBridge(*rules_, side_a, side_b, ptc);
+    if (found.waypoints.empty()) {
+      for (std::size_t p = 0; p < place_count; ++p)
+        if (root(placeElement(p)) == part) {
+          apart[p] = 1;
+          blockages[p] = found.blockage;
+        }
+      continue;
+    }
+    const auto [a_is_place, a] = what_a[found.from];
+    const auto [b_is_place, b] = what_b[found.to];
+    addBridge(found.waypoints, a_is_place ? std::nullopt : std::optional<std::uint32_t>(a),
+              b_is_place ? std::nullopt : std::optional<std::uint32_t>(b), a_is_place ? &places[a] : nullptr,
+              b_is_place ? &places[b] : nullptr);
+  }
+  return blockages;
+}
+
+std::optional<Blockage> LatticeRoadmap::blockage(int from, int to) const {
+  const int places = static_cast<int>(places_m_.size());
+  if (from < 0 || from >= places || to < 0 || to >= places) throw ceilplan::InputError("roadmap place index out of range");
+  if (from == to) return std::nullopt;
+  // Joined places have no blockage; of two apart, one has (the one apart from the first place).
+  if (!place_blockages_[from] && !place_blockages_[to]) return std::nullopt;
+  if (search(places_m_, places_, from)[to]) return std::nullopt;
+  return place_blockages_[from] ? place_blockages_[from] : place_blockages_[to];
 }
 
 std::size_t LatticeRoadmap::edgeCount() const {
@@ -200,30 +308,28 @@ std::size_t LatticeRoadmap::edgeCount() const {
 std::size_t LatticeRoadmap::memoryBytes() const {
   std::size_t bytes = slot_.size() * sizeof(std::uint32_t) + valid_nodes_.size() * sizeof(std::uint32_t) +
                       core_costs_.size() * sizeof(float);
-  for (const Zone& zone : zones_)
-    bytes += zone.nodes.size() * sizeof(std::uint32_t) + zone.costs.size() * sizeof(float);
-  for (std::size_t p = 0; p < joins_out_.size(); ++p)
-    bytes += (joins_out_[p].size() + joins_in_[p].size()) * sizeof(Join);
+  for (const Place& place : places_) bytes += (place.out.size() + place.in.size()) * sizeof(Join);
+  bytes += bridge_positions_m_.size() * sizeof(Eigen::Vector3d) + node_arcs_.size() * sizeof(node_arcs_[0]);
+  for (const std::vector<Arc>& arcs : bridge_arcs_) bytes += arcs.size() * sizeof(Arc);
   return bytes;
 }
 
 std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::routesFrom(int from) const {
-  const int places = static_cast<int>(places_m_.size());
-  if (from < 0 || from >= places) throw ceilplan::InputError("roadmap place index out of range");
-  const detail::LatticeGrid lattice(rules_.environment().grid().frame(), options_.stride_voxels);
-  const detail::LatticeDirections directions;
-  const bool zoned = !zones_.empty();
+  if (!built()) throw ceilplan::Error("the roadmap is not built: call build() first");
+  if (from < 0 || from >= static_cast<int>(places_m_.size()))
+    throw ceilplan::InputError("roadmap place index out of range");
+  return search(places_m_, places_, from);
+}
 
-  // States: lattice nodes (on the way), then each goal's zone nodes (its final approach), then
-  // the places themselves.
-  const std::size_t lattice_states = node_count_;
-  std::vector<std::size_t> zone_offset(places, lattice_states);
-  std::size_t next_offset = lattice_states;
-  for (int p = 0; p < places && zoned; ++p) {
-    zone_offset[p] = next_offset;
-    next_offset += zones_[p].nodes.size();
-  }
-  const std::size_t place_offset = next_offset;
+std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vector<Eigen::Vector3d>& places_m,
+                                                                const std::vector<Place>& place_data,
+                                                                int from) const {
+  const int places = static_cast<int>(places_m.size());
+  const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
+  const detail::LatticeDirections directions;
+
+  // States: lattice nodes, refinement's vertices, then the places themselves.
+  const std::size_t place_offset = node_count_ + bridge_positions_m_.size();
   const std::size_t state_count = place_offset + places;
   constexpr std::uint32_t kStart = std::numeric_limits<std::uint32_t>::max();
   std::vector<double> cost_to(state_count, std::numeric_limits<double>::infinity());
@@ -238,19 +344,15 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::routesFrom(int from) co
       open.emplace(g, static_cast<std::uint32_t>(state));
     }
   };
-  const auto nodeOf = [&](std::size_t state) -> std::uint32_t {
-    if (state < lattice_states) return static_cast<std::uint32_t>(state);
-    const int p =
-        static_cast<int>(std::upper_bound(zone_offset.begin(), zone_offset.end(), state) - zone_offset.begin()) - 1;
-    return zones_[p].nodes[state - zone_offset[p]];
-  };
-  const auto arrive = [&](int goal, std::uint32_t node, std::size_t state, double g) {
-    if (goal == from || (places_m_[goal] - lattice.position(node)).norm() > lattice.joinRadius_m()) return;
-    for (const Join& join : joins_in_[goal])
-      if (join.node == node) relax(place_offset + goal, static_cast<std::uint32_t>(state), g + join.cost);
+  const auto arrive = [&](std::uint32_t state, double g) {
+    for (int goal = 0; goal < places; ++goal) {
+      if (goal == from) continue;
+      for (const Join& join : place_data[goal].in)
+        if (join.state == state) relax(place_offset + goal, state, g + join.cost);
+    }
   };
 
-  for (const Join& join : joins_out_[from]) relax(join.node, kStart, join.cost);
+  for (const Join& join : place_data[from].out) relax(join.state, kStart, join.cost);
   int goals_left = places - 1;
   while (!open.empty() && goals_left > 0) {
     const auto [g, state] = open.top();
@@ -261,40 +363,30 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::routesFrom(int from) co
       --goals_left;
       continue;
     }
-    const std::uint32_t node = nodeOf(state);
+    if (state >= node_count_) {  // a vertex refinement added
+      for (const Arc& arc : bridge_arcs_[state - node_count_]) relax(arc.to, state, g + arc.cost);
+      arrive(state, g);
+      continue;
+    }
+    const std::uint32_t node = state;
     const std::array<int, 3> at = lattice.indices(node);
+    for (int d = 0; d < kDirections; ++d) {
+      const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
+      if (!lattice.inside(to[0], to[1], to[2])) continue;
+      const float c = coreCost(node, d);
+      if (c != kNoEdge) relax(lattice.id(to[0], to[1], to[2]), state, g + c);
+    }
+    if (!node_arcs_.empty()) {
+      const auto first = std::lower_bound(node_arcs_.begin(), node_arcs_.end(), node,
+                                          [](const auto& entry, std::uint32_t n) { return entry.first < n; });
+      for (auto it = first; it != node_arcs_.end() && it->first == node; ++it)
+        relax(it->second.to, state, g + it->second.cost);
+    }
     const Eigen::Vector3d here = lattice.position(node);
-    if (state < lattice_states) {
-      // On the way: edges valid everywhere, and those of the start's own approach zone.
-      const std::optional<std::uint32_t> start_slot = zoned ? zones_[from].slotOf(node) : std::nullopt;
-      for (int d = 0; d < kDirections; ++d) {
-        const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
-        if (!lattice.inside(to[0], to[1], to[2])) continue;
-        float c = coreCost(node, d);
-        if (c == kNoEdge && start_slot) c = zones_[from].costs[*start_slot * kDirections + d];
-        if (c != kNoEdge) relax(lattice.id(to[0], to[1], to[2]), state, g + c);
-      }
-      for (int goal = 0; goal < places; ++goal) {
-        if (!zoned) {
-          arrive(goal, node, state, g);
-        } else if (goal != from && (places_m_[goal] - here).norm() <= zone_radius_m_) {
-          if (const auto slot = zones_[goal].slotOf(node)) relax(zone_offset[goal] + *slot, state, g);
-        }
-      }
-    } else {
-      // The final approach to one goal, inside its zone.
-      const int goal =
-          static_cast<int>(std::upper_bound(zone_offset.begin(), zone_offset.end(), state) - zone_offset.begin()) - 1;
-      const Zone& zone = zones_[goal];
-      const std::size_t slot = state - zone_offset[goal];
-      for (int d = 0; d < kDirections; ++d) {
-        const float c = zone.costs[slot * kDirections + d];
-        if (c == kNoEdge) continue;
-        const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
-        relax(zone_offset[goal] + *zone.slotOf(static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]))), state,
-              g + c);
-      }
-      arrive(goal, node, state, g);
+    for (int goal = 0; goal < places; ++goal) {
+      if (goal == from || (places_m[goal] - here).norm() > lattice.joinRadius_m()) continue;
+      for (const Join& join : place_data[goal].in)
+        if (join.state == node) relax(place_offset + goal, state, g + join.cost);
     }
   }
 
@@ -302,15 +394,51 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::routesFrom(int from) co
   for (int goal = 0; goal < places; ++goal) {
     const std::size_t state = place_offset + goal;
     if (goal == from || !std::isfinite(cost_to[state])) continue;
-    std::vector<Eigen::Vector3d> backwards{places_m_[goal]};
-    for (std::uint32_t s = parent[state]; s != kStart; s = parent[s]) backwards.push_back(lattice.position(nodeOf(s)));
-    backwards.push_back(places_m_[from]);
+    std::vector<Eigen::Vector3d> backwards{places_m[goal]};
+    for (std::uint32_t s = parent[state]; s != kStart; s = parent[s]) backwards.push_back(statePosition(s));
+    backwards.push_back(places_m[from]);
     RoadmapRoute route;
-    route.waypoints = turningPoints({backwards.rbegin(), backwards.rend()});
+    route.waypoints = detail::turningPoints({backwards.rbegin(), backwards.rend()});
     route.cost = cost_to[state];
     routes[goal] = std::move(route);
   }
   return routes;
+}
+
+ompl::base::PlannerStatus LatticeRoadmap::solve(const ompl::base::PlannerTerminationCondition& ptc) {
+  checkValidity();
+  const FlightObjective& objective = detail::objectiveOf(*pdef_, getName());
+  ompl::base::PlannerStatus failure;
+  const std::optional<detail::LatticeQuery> query = detail::readQuery(*pdef_, failure);
+  if (!query) return failure;
+  if (objective_ != &objective) {
+    if (!buildGraph(objective, [&ptc] { return ptc(); })) return ompl::base::PlannerStatus::TIMEOUT;
+    places_ = joinPlaces(places_m_);
+  }
+  blockage_.reset();
+  const std::vector<Eigen::Vector3d> ends{query->start_m, query->goal_m};
+  std::vector<Place> ends_data = joinPlaces(ends);
+  std::vector<std::optional<RoadmapRoute>> routes = search(ends, ends_data, 0);
+  if (!routes[1]) {
+    blockage_ = connect(ends, ends_data, ptc)[1];
+    routes = search(ends, ends_data, 0);
+  }
+  // As the lattice A* does, the straight motion when it is valid and cheaper.
+  if (rules_->isMotionValid(query->start_m, query->goal_m)) {
+    const double direct = objective.motionCost(query->start_m, query->goal_m);
+    if (!routes[1] || direct < routes[1]->cost) routes[1] = RoadmapRoute{{query->start_m, query->goal_m}, direct};
+  }
+  if (!routes[1]) return ptc() ? ompl::base::PlannerStatus::TIMEOUT : ompl::base::PlannerStatus::ABORT;
+  blockage_.reset();
+  best_cost_ = routes[1]->cost;
+  detail::addSolution(*this, routes[1]->waypoints, routes[1]->cost);
+  return ompl::base::PlannerStatus::EXACT_SOLUTION;
+}
+
+void LatticeRoadmap::getPlannerData(ompl::base::PlannerData& data) const {
+  ompl::base::Planner::getPlannerData(data);
+  data.properties["valid nodes INTEGER"] = std::to_string(validNodeCount());
+  data.properties["edges INTEGER"] = std::to_string(edgeCount());
 }
 
 }  // namespace ceilplan::planner

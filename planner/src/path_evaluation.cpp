@@ -34,11 +34,14 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
       const Velocity velocity = model.velocityAt(conditions, direction);
       sample.speed_m_s = velocity.along_m_s;
       sample.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
+      sample.ground_gap_m = conditions.ground_gap_m;
       sample.clearance_m = environment.clearance_m(sample.position_m);
+      sample.assumed_free = environment.assumesFree(sample.position_m);
       // The current at a point sees the SOC reached just before it (explicit coulomb counting).
       const energy::CurrentBreakdown terms = model.breakdown(conditions, velocity, battery.state().soc);
       sample.current_a = terms.current_a;
       sample.power_w = terms.power_w;
+      sample.propulsion_power_w = terms.propulsionW();
       if (k > 0) {
         // Trapezoid in distance for time; the interval draws the mean of its ends' currents.
         const double dt = 0.5 * (1.0 / previous.speed_m_s + 1.0 / sample.speed_m_s) * (length / intervals);
@@ -65,6 +68,7 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
   result.fec = result.charge_ah / pack.capacity_ah;
   result.mean_current_a = result.duration_s > 0.0 ? 3600.0 * result.charge_ah / result.duration_s : 0.0;
   result.min_soc = battery.state().min_soc;
+  result.assumed_free_m = environment.assumedFreeAlong(waypoints_m).length_m;
   return result;
 }
 

@@ -88,11 +88,16 @@ class BandSampling {
 
 }  // namespace
 
+std::vector<std::string> samplingPlannerNames() {
+  std::vector<std::string> names;
+  for (const PlannerInfo& info : plannerCatalogue())
+    if (info.kind == PlannerKind::Sampling) names.push_back(info.name);
+  return names;
+}
+
 void PlannerBenchmarkOptions::validate() const {
   if (planners.empty()) throw InputError("give at least one planner name");
-  for (const std::string& name : planners)
-    if (name == "lattice" || std::find(plannerNames().begin(), plannerNames().end(), name) == plannerNames().end())
-      throw InputError("'" + name + "' is not an OMPL planner ceilplan knows");
+  for (const std::string& name : planners) plannerInfo(name);
   if (runs < 1) throw InputError("a benchmark needs at least one run per planner");
   if (!(std::isfinite(time_limit_s) && time_limit_s > 0.0))
     throw InputError("a run's time limit must be a positive number of seconds, got " + formatNumber(time_limit_s));
@@ -111,7 +116,7 @@ std::vector<PlannerBenchmarkRow> benchmarkPlanners(const FlightPlanner& planner,
   const BandSampling band_sampling(planner, options.band_fraction);
   ompl::tools::Benchmark benchmark(simple, options.experiment);
   for (const std::string& name : options.planners)
-    benchmark.addPlanner(makeOmplPlanner(name, simple.getSpaceInformation()));
+    benchmark.addPlanner(makePlanner(name, simple.getSpaceInformation(), options.lattice));
   // OMPL's logs have no column for our objective: add the raw and post-processed costs.
   const RefinementOptions refinement;
   const FlightObjective& objective = planner.objective();

@@ -8,30 +8,10 @@
 
 namespace ceilplan::planner {
 
-environment::VehicleGeometry withStandoff(environment::VehicleGeometry vehicle, double standoff_m) {
-  vehicle.margin_m = std::max(vehicle.margin_m, standoff_m);
-  vehicle.top_margin_m = std::max(vehicle.top_margin_m, standoff_m);
-  return vehicle;
-}
-
-StandoffZone standoffZone(const environment::Environment& standoff, const environment::Environment& plain,
-                          double standoff_m, const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) {
-  const environment::VehicleGeometry& vehicle = plain.vehicle();
-  const double body_extent = std::max({vehicle.inflatedRadius_m(), vehicle.inflatedTop_m(), -vehicle.inflatedBottom_m()});
-  StandoffZone zone;
-  zone.standoff = &standoff;
-  zone.exempt_centres_m = {start_m, goal_m};
-  // Enough to back away from a start under a deck and clear girders below it (1 m more).
-  zone.exempt_radius_m = standoff_m + body_extent + 1.0;
-  return zone;
-}
-
-SafetyRules::SafetyRules(const environment::Environment& environment, double min_ceiling_gap_m,
-                         std::optional<StandoffZone> standoff)
-    : environment_(environment), min_ceiling_gap_m_(min_ceiling_gap_m), standoff_(std::move(standoff)) {
+SafetyRules::SafetyRules(const environment::Environment& environment, double min_ceiling_gap_m)
+    : environment_(environment), min_ceiling_gap_m_(min_ceiling_gap_m) {
   if (!(std::isfinite(min_ceiling_gap_m) && min_ceiling_gap_m >= 0.0))
     throw ceilplan::InputError("minimum ceiling gap must be a finite number >= 0 m");
-  if (standoff_ && !standoff_->standoff) throw ceilplan::InputError("standoff zone without an environment");
   const environment::VehicleGeometry& vehicle = environment_.vehicle();
   // Every rotor disc lies inside the cylinder's footprint, and the cylinder's top (with its
   // margin) is at least the minimum gap above the rotor plane: then no valid state can have a
@@ -48,26 +28,8 @@ bool SafetyRules::gapOk(const Eigen::Vector3d& body_m) const {
   return gap_implied_by_cylinder_ || environment_.ceiling(body_m).nearest_gap_m >= min_ceiling_gap_m_;
 }
 
-bool SafetyRules::baseStateValid(const Eigen::Vector3d& body_m) const {
-  return environment_.isStateValid(body_m) && gapOk(body_m);
-}
-
-bool SafetyRules::exempt(const Eigen::Vector3d& body_m) const {
-  for (const Eigen::Vector3d& centre : standoff_->exempt_centres_m)
-    if ((body_m - centre).norm() <= standoff_->exempt_radius_m) return true;
-  return false;
-}
-
-SafetyRules SafetyRules::withExemptions(std::vector<Eigen::Vector3d> centres_m) const {
-  SafetyRules rules = *this;
-  if (rules.standoff_) rules.standoff_->exempt_centres_m = std::move(centres_m);
-  return rules;
-}
-
 bool SafetyRules::isStateValid(const Eigen::Vector3d& body_m) const {
-  if (!baseStateValid(body_m)) return false;
-  if (!standoff_ || exempt(body_m)) return true;
-  return standoff_->standoff->isStateValid(body_m);
+  return environment_.isStateValid(body_m) && gapOk(body_m);
 }
 
 bool SafetyRules::isMotionValid(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {

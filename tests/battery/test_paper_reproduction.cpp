@@ -25,8 +25,8 @@ struct PaperCase {
   double flight_current_a;
   double min_soc_pct;            // paper, one decimal
   double charge_end_30s_min;     // paper, 30 s steps
-  double charge_end_exact_min;   // reference, exact
-  double fec_per_mission;        // reference, four decimals
+  double charge_end_exact_min;   // derived from the paper's equations, exact
+  double fec_per_mission;        // derived, four decimals
   double fec_per_day;            // paper, two decimals
   double fec_30_days;            // paper, one decimal
 };

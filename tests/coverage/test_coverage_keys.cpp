@@ -1,6 +1,6 @@
 // The coverage keys of a mission file: every shipped coverage mission reads, the keys land in
-// the model, and each bad input of the issue (and the usual ones) is refused naming the key,
-// unknown keys with the nearest valid one.
+// the model, and each out-of-range value of docs/coverage.md ("Mission keys") and the usual bad
+// inputs are refused naming the key, unknown keys with the nearest valid one.
 
 #include "ceilplan/io/coverage_keys.hpp"
 #include "ceilplan/io/yaml_fields.hpp"
@@ -114,7 +114,7 @@ TEST(CoverageKeys, EveryShippedCoverageMissionReads) {
   EXPECT_EQ(missions, 4);
 }
 
-TEST(CoverageKeys, TheIssuesBadInputsNameTheKey) {
+TEST(CoverageKeys, DocumentedBadInputsNameTheKey) {
   // A camera that cannot reach the GSD beyond its minimum focus: 0.2 mm/px needs 0.73 m.
   EXPECT_NE(errorOf(with("gsd_mm_px: 1.5", "gsd_mm_px: 0.2")).find("'surfaces[0]': surface region 'soffit': 'gsd_mm_px' 0.2"),
             std::string::npos);

@@ -1,4 +1,4 @@
-// Regions: shapes, face kinds, the checks of the bad inputs (overlap of 100 % or more,
+// Regions: shapes, face kinds, the refusal of bad regions (overlap of 100 % or more,
 // GSD <= 0, a camera that cannot reach the GSD beyond its minimum focus, a gimbal that cannot
 // point at the faces, a region with no surface), and contact grids as tour targets.
 

@@ -31,7 +31,7 @@ struct ShippedMission {
   testing::CoverageScene scene;
 };
 
-// Plans `mission` in `mode`, re-checks it, and checks the coverage and safety claims.
+// Plans `mission` in `mode`, re-checks it, and checks docs/coverage.md's coverage and safety claims.
 void expectCovered(const ShippedMission& mission, FlightMode mode, double max_unreachable_share) {
   const testing::CoverageScene& scene = mission.scene;
   CoveragePlanOptions options;

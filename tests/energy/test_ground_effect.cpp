@@ -38,7 +38,7 @@ TEST(GroundEffect, MultirotorFormAddsTheNeighbouringRotorsToTheSingleRotorTerm) 
   const GroundEffect single(GroundEffectParameters{}, kQuad);
   const GroundEffect multi(multirotor, kQuad);
   for (double z : {0.5 * kR, kR, 2.0 * kR, 5.0 * kR}) EXPECT_GT(multi.thrustRatio(z), single.thrustRatio(z));
-  // Hand evaluation at z = R of the reference's formula, d = 0.318 m, b = 0.45 m, K_b = 2.
+  // Hand evaluation at z = R of Sanchez-Cuevas et al. 2017's formula, d = 0.318 m, b = 0.45 m, K_b = 2.
   const double z = kR, d = 0.225 * std::sqrt(2.0), b = 0.45, r2 = kR * kR;
   const double expected =
       1.0 / (1.0 - r2 / (16 * z * z) - r2 * z / std::pow(d * d + 4 * z * z, 1.5) -

@@ -8,7 +8,7 @@
 using ceilplan::energy::RotaryWingPower;
 
 namespace {
-// Zeng, Xu, Zhang 2019, the published example (reference-models.md section 4).
+// Zeng, Xu, Zhang 2019 (IEEE T-WC 18(4)), the published example (docs/models.md).
 RotaryWingPower zengExample() {
   return RotaryWingPower::fromBladeParameters(0.012, 1.225, 0.05, 0.503, 300.0, 0.4, 0.1, 20.0, 0.6);
 }

@@ -8,6 +8,7 @@
 
 #include <octomap/OcTree.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -59,6 +60,26 @@ inline environment::VehicleGeometry quad() {
   vehicle.margin_m = 0.10;
   vehicle.top_margin_m = 0.02;
   return vehicle;
+}
+
+// The specification of the cylinder test, voxel by voxel: calls `visit(i, j, k)` for every voxel
+// (rows of columns, then bottom to top) that the vehicle's inflated cylinder with its body
+// centre at `p` overlaps by more than a face or a side, until `visit` returns true.
+template <class Visit>
+bool anyVoxelInCylinder(const environment::GridFrame& frame, const environment::VehicleGeometry& vehicle,
+                        const Eigen::Vector3d& p, Visit&& visit) {
+  const double r = vehicle.inflatedRadius_m(), bottom = p.z() + vehicle.inflatedBottom_m(), top = p.z() + vehicle.inflatedTop_m();
+  for (int j = frame.indexOf(1, p.y() - r); j <= frame.indexOf(1, p.y() + r); ++j)
+    for (int i = frame.indexOf(0, p.x() - r); i <= frame.indexOf(0, p.x() + r); ++i) {
+      const double dx = std::max({frame.faceOf(0, i) - p.x(), 0.0, p.x() - frame.faceOf(0, i + 1)});
+      const double dy = std::max({frame.faceOf(1, j) - p.y(), 0.0, p.y() - frame.faceOf(1, j + 1)});
+      if (dx * dx + dy * dy >= r * r) continue;
+      for (int k = frame.indexOf(2, bottom); k <= frame.indexOf(2, top); ++k) {
+        if (frame.faceOf(2, k) >= top || frame.faceOf(2, k + 1) <= bottom) continue;
+        if (visit(i, j, k)) return true;
+      }
+    }
+  return false;
 }
 
 // One rotor on the body axis: for coverage tests.

@@ -7,11 +7,13 @@
 #include "ceilplan/core/error.hpp"
 
 #include <octomap/ColorOcTree.h>
+#include <octomap/OcTreeStamped.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <fstream>
+#include <sstream>
 #include <vector>
 
 namespace ceilplan::environment {
@@ -53,10 +55,16 @@ TEST(MapLoading, BadFilesGiveOneLineNamingTheFileAndTheProblem) {
   empty.writeBinary((dir / "empty.bt").string());
   expectOneLineNaming(loadError(dir / "empty.bt"), dir / "empty.bt", "empty");
 
-  octomap::ColorOcTree colour(0.1);
-  colour.updateNode(octomap::point3d(0.05f, 0.05f, 0.05f), true);
-  colour.write((dir / "colour.ot").string());
-  expectOneLineNaming(loadError(dir / "colour.ot"), dir / "colour.ot", "ColorOcTree");
+  // A .ot of a tree type whose node records ceilplan cannot read (ColorOcTree and OcTreeStamped
+  // are converted: see OtherTreeTypes below).
+  std::ostringstream stream;
+  octomap::OcTree plain(0.1);
+  plain.updateNode(octomap::point3d(0.05f, 0.05f, 0.05f), true);
+  plain.write(stream);
+  std::string foreign = stream.str();
+  foreign.replace(foreign.find("id OcTree"), 9, "id SemanticOcTree");
+  writeBytes(dir / "semantic.ot", foreign);
+  expectOneLineNaming(loadError(dir / "semantic.ot"), dir / "semantic.ot", "SemanticOcTree");
 
   // A node stream deeper than OctoMap's 16 levels: OctoMap alone would recurse until the data ran out.
   writeBytes(dir / "deep.bt", "# Octomap OcTree binary file\nid OcTree\nsize 100\nres 0.1\ndata\n" + std::string(200, '\xff'));
@@ -70,6 +78,61 @@ TEST(MapLoading, FullFormatAndBinaryFormatLoadTheSameTree) {
   const OccupancyMap full = OccupancyMap::load(dir / "open.ot");
   EXPECT_EQ(full.tree().size(), binary.tree().size());
   EXPECT_DOUBLE_EQ(full.resolution_m(), 0.1);
+}
+
+// Occupied walls and floor around free air, a few unknown voxels: set identically in a tree of
+// each type (colours by height in a ColorOcTree), so their occupancy must load identically.
+template <class Tree>
+void fillRoom(Tree& tree) {
+  for (double z = 0.05; z < 1.6; z += 0.1)
+    for (double y = -0.95; y < 1.0; y += 0.1)
+      for (double x = -1.45; x < 1.5; x += 0.1) {
+        if (x > 0.9 && z > 1.0) continue;  // unknown corner
+        const bool occupied = z < 0.2 || std::abs(x) > 1.3 || std::abs(y) > 0.8 || (x > -0.2 && x < 0.2 && z < 0.8);
+        tree.setNodeValue(octomap::point3d(float(x), float(y), float(z)),
+                          occupied ? tree.getClampingThresMaxLog() : tree.getClampingThresMinLog(), true);
+      }
+  tree.updateInnerOccupancy();
+  tree.prune();
+}
+
+void expectSameOccupancy(const OccupancyMap& loaded, const octomap::OcTree& reference) {
+  const VoxelGrid a = VoxelGrid::fromTree(loaded.tree()), b = VoxelGrid::fromTree(reference);
+  ASSERT_EQ(a.frame().size(), b.frame().size());
+  ASSERT_EQ(a.frame().origin(), b.frame().origin());
+  std::size_t occupied = 0, free = 0;
+  for (std::size_t v = 0; v < a.frame().voxelCount(); ++v) {
+    ASSERT_EQ(a.atLinear(v), b.atLinear(v)) << v;
+    occupied += a.atLinear(v) == CellState::Occupied;
+    free += a.atLinear(v) == CellState::Free;
+  }
+  EXPECT_GT(occupied, 300u);
+  EXPECT_GT(free, 300u);
+}
+
+TEST(MapLoading, OtherOccupancyTreesLoadAsTheirOccupancy) {
+  const auto dir = testing::scratchDirectory("tree_types");
+  octomap::OcTree reference(0.1);
+  fillRoom(reference);
+
+  octomap::ColorOcTree colour(0.1);
+  fillRoom(colour);
+  for (auto it = colour.begin_leafs(), end = colour.end_leafs(); it != end; ++it)
+    it->setColor(static_cast<uint8_t>(it.getZ() * 100), 40, colour.isNodeOccupied(*it) ? 200 : 10);
+  ASSERT_TRUE(colour.write((dir / "colour.ot").string()));
+  ASSERT_TRUE(colour.writeBinary((dir / "colour.bt").string()));
+  expectSameOccupancy(OccupancyMap::load(dir / "colour.ot"), reference);
+  expectSameOccupancy(OccupancyMap::load(dir / "colour.bt"), reference);
+
+  octomap::OcTreeStamped stamped(0.1);
+  fillRoom(stamped);
+  ASSERT_TRUE(stamped.write((dir / "stamped.ot").string()));
+  expectSameOccupancy(OccupancyMap::load(dir / "stamped.ot"), reference);
+
+  // A ColorOcTree cut short is still caught before OctoMap reads it.
+  const std::string whole = testing::readWholeFile(dir / "colour.ot");
+  writeBytes(dir / "cut.ot", whole.substr(0, whole.size() - 9));
+  expectOneLineNaming(loadError(dir / "cut.ot"), dir / "cut.ot", "truncated");
 }
 
 TEST(MapLoading, AGridSurvivesTheTripThroughAnOcTree) {

@@ -29,6 +29,12 @@ OccupancyMap pillarRoom(double unknown_beyond_x = 99.0) {
 
 constexpr double kTiny = 1e-6;
 
+MapIndexOptions freeUnknown() {
+  MapIndexOptions options;
+  options.unknown.policy = UnknownPolicy::Free;
+  return options;
+}
+
 TEST(StateValidity, TheVehicleMayHugTheCeilingUpToItsTopMargin) {
   const OccupancyMap map = pillarRoom();
   const Environment environment(map, quad());
@@ -60,9 +66,7 @@ TEST(StateValidity, UnknownSpaceIsAnObstacleUnlessTheOptionFreesIt) {
   const auto violation = cautious.stateViolation({-0.3, -1.0, 1.5});
   ASSERT_TRUE(violation);
   EXPECT_EQ(violation->kind, ViolationKind::Unknown);
-  EnvironmentOptions options;
-  options.unknown_is_occupied = false;
-  const Environment bold(map, quad(), options);
+  const Environment bold(map, quad(), {}, freeUnknown());
   EXPECT_TRUE(bold.isStateValid({-0.3, -1.0, 1.5}));
 }
 
@@ -85,22 +89,14 @@ TEST(StateValidity, TheFastPathAgreesWithTheExactCylinderTest) {
 // The specification of the cylinder test, voxel by voxel: the first blocking voxel (rows of
 // columns, then bottom to top) the inflated cylinder overlaps by more than a face or a side.
 std::optional<ViolationKind> scanCylinder(const Environment& environment, const Eigen::Vector3d& p, bool unknown_blocks) {
-  const GridFrame& frame = environment.grid().frame();
-  const VehicleGeometry& vehicle = environment.vehicle();
-  const double r = vehicle.inflatedRadius_m(), bottom = p.z() + vehicle.inflatedBottom_m(), top = p.z() + vehicle.inflatedTop_m();
-  for (int j = frame.indexOf(1, p.y() - r); j <= frame.indexOf(1, p.y() + r); ++j)
-    for (int i = frame.indexOf(0, p.x() - r); i <= frame.indexOf(0, p.x() + r); ++i) {
-      const double dx = std::max({frame.faceOf(0, i) - p.x(), 0.0, p.x() - frame.faceOf(0, i + 1)});
-      const double dy = std::max({frame.faceOf(1, j) - p.y(), 0.0, p.y() - frame.faceOf(1, j + 1)});
-      if (dx * dx + dy * dy >= r * r) continue;
-      for (int k = frame.indexOf(2, bottom); k <= frame.indexOf(2, top); ++k) {
-        if (frame.faceOf(2, k) >= top || frame.faceOf(2, k + 1) <= bottom) continue;
-        const CellState state = environment.grid().at(i, j, k);
-        if (state == CellState::Occupied) return ViolationKind::Occupied;
-        if (state == CellState::Unknown && unknown_blocks) return ViolationKind::Unknown;
-      }
-    }
-  return std::nullopt;
+  std::optional<ViolationKind> found;
+  testing::anyVoxelInCylinder(environment.grid().frame(), environment.vehicle(), p, [&](int i, int j, int k) {
+    const CellState state = environment.grid().at(i, j, k);
+    if (state == CellState::Occupied) found = ViolationKind::Occupied;
+    if (state == CellState::Unknown && unknown_blocks) found = ViolationKind::Unknown;
+    return found.has_value();
+  });
+  return found;
 }
 
 TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {
@@ -116,9 +112,7 @@ TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {
     return CellState::Free;
   });
   for (const bool unknown_blocks : {true, false}) {
-    EnvironmentOptions options;
-    options.unknown_is_occupied = unknown_blocks;
-    const Environment environment(map, quad(), options);
+    const Environment environment(map, quad(), {}, unknown_blocks ? MapIndexOptions{} : freeUnknown());
     std::mt19937 random(11);
     std::uniform_real_distribution<double> xy(-1.95, 1.95), z(0.05, 6.95);
     int blocked = 0, unknown = 0;
@@ -148,9 +142,7 @@ TEST(Clearance, IsTheDistanceToTheNearestBlockedVoxelSurface) {
   EXPECT_NEAR(environment.clearance_m({0.7, 0.5, 1.5}), std::hypot(0.3, 0.3), 1e-9);  // pillar edge
   EXPECT_NEAR(environment.clearance_m({-1.8, 0, 1.5}), 0.2, 1e-9);           // unknown beyond the map
   EXPECT_EQ(environment.clearance_m({1.2, 0, 1.5}), 0.0);                   // inside the pillar
-  EnvironmentOptions options;
-  options.unknown_is_occupied = false;
-  const Environment bold(map, quad(), options);
+  const Environment bold(map, quad(), {}, freeUnknown());
   EXPECT_NEAR(bold.clearance_m({-1.8, 0, 1.5}), 1.3, 1e-9);                  // floor
 }
 

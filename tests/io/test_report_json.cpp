@@ -19,6 +19,7 @@ TEST(ReportJson, AProbeWritesNoSurfaceAsNullAndEachRotorWithItsOffset) {
   probe.ceiling = {{{0.25, 1.0, 0.3}, {kNone, 0.0, kNone}}, 0.25, 0.5, 0.3};
   probe.ground = {{{2.0, 1.0, 2.0}, {2.0, 1.0, 2.0}}, 2.0, 1.0, 2.0};
   probe.clearance_m = kNone;
+  probe.assumes_free = probe.point_assumed_free = false;
   const nlohmann::json json = positionProbeJson(probe, vehicle);
   EXPECT_EQ(json["at"], nlohmann::json({1.0, 2.0, 3.0}));
   EXPECT_EQ(json["ceiling_gap_m"].get<double>(), 0.25);
@@ -26,20 +27,33 @@ TEST(ReportJson, AProbeWritesNoSurfaceAsNullAndEachRotorWithItsOffset) {
   EXPECT_TRUE(json["clearance_m"].is_null());
   EXPECT_TRUE(json["valid"].get<bool>());
   EXPECT_TRUE(json["violation"].is_null());
+  EXPECT_FALSE(json["assumed_free"].get<bool>());
+  EXPECT_FALSE(json["point_assumed_free"].get<bool>());
   ASSERT_EQ(json["rotors"].size(), 2u);
   EXPECT_EQ(json["rotors"][0]["offset_m"], nlohmann::json({0.2, 0.1}));
   EXPECT_TRUE(json["rotors"][1]["ceiling"]["nearest_gap_m"].is_null());
   EXPECT_EQ(json["rotors"][1]["ground"]["mean_gap_m"].get<double>(), 2.0);
 
   probe.violation = environment::Violation{0, {1.0, 2.0, 3.0}, environment::ViolationKind::Occupied};
+  probe.assumes_free = true;
   const nlohmann::json invalid = positionProbeJson(probe, vehicle);
+  EXPECT_TRUE(invalid["assumed_free"].get<bool>());
   EXPECT_FALSE(invalid["valid"].get<bool>());
   EXPECT_EQ(invalid["violation"], probe.violation->describe());
 }
 
 TEST(ReportJson, MapStatisticsGroupExtentLeavesAndVolumes) {
-  environment::MapStatistics stats{0.1, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -2, 0), Eigen::Vector3d(1, 2, 3)),
-                                   10, 20, 1.5, 2.5, 0.5, 2.0, 0.25};
+  environment::MapStatistics stats;
+  stats.resolution_m = 0.1;
+  stats.extent_m = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -2, 0), Eigen::Vector3d(1, 2, 3));
+  stats.occupied_leaves = 10;
+  stats.free_leaves = 20;
+  stats.occupied_volume_m3 = 1.5;
+  stats.free_volume_m3 = 2.5;
+  stats.unknown_volume_m3 = 0.5;
+  stats.unknown.policy = environment::UnknownPolicy::Free;
+  stats.ceiling.min_headroom_m = 1.5;
+  stats.ceiling_area_share = 0.25;
   const nlohmann::json json = mapStatisticsJson(stats);
   EXPECT_EQ(json["resolution_m"].get<double>(), 0.1);
   EXPECT_EQ(json["extent_m"]["min"], nlohmann::json({-1.0, -2.0, 0.0}));
@@ -47,6 +61,9 @@ TEST(ReportJson, MapStatisticsGroupExtentLeavesAndVolumes) {
   EXPECT_EQ(json["leaves"]["free"].get<int>(), 20);
   EXPECT_EQ(json["volume_m3"]["unknown"].get<double>(), 0.5);
   EXPECT_EQ(json["ceiling_area_share"].get<double>(), 0.25);
+  EXPECT_EQ(json["ceiling"]["min_headroom_m"].get<double>(), 1.5);
+  EXPECT_EQ(json["ceiling"]["min_area_m2"].get<double>(), environment::CeilingCriteria{}.min_area_m2);
+  EXPECT_EQ(json["unknown"]["policy"], "free");
 }
 
 TEST(ReportJson, ACurrentReportKeepsTheConditionAndEveryTermOfTheBreakdown) {
@@ -90,9 +107,9 @@ TEST(ReportJson, APlannerBenchmarkKeepsTheReferenceAndWritesNoSolutionAsNull) {
   planner::PlannerBenchmarkRow solved{"PRMstar", 10, 9, 0.05, 1.07, 1.02, 1.01, 0.1};
   const double nan = std::numeric_limits<double>::quiet_NaN();
   planner::PlannerBenchmarkRow never{"RRTstar", 10, 0, nan, nan, nan, nan, nan};
-  const nlohmann::json json = plannerBenchmarkJson(reference, 2, {solved, never});
+  const nlohmann::json json = plannerBenchmarkJson(reference, 0.2, {solved, never});
   EXPECT_EQ(json["reference"]["planner"], "lattice");
-  EXPECT_EQ(json["reference"]["stride_voxels"].get<int>(), 2);
+  EXPECT_EQ(json["reference"]["spacing_m"].get<double>(), 0.2);
   EXPECT_EQ(json["reference"]["raw_cost"].get<double>(), 0.021);
   ASSERT_EQ(json["planners"].size(), 2u);
   EXPECT_EQ(json["planners"][0]["solved"].get<int>(), 9);

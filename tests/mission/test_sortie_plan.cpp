@@ -26,7 +26,7 @@ TourCosts lineTour(const std::vector<double>& positions, double ah_per_m, double
   tour.names.push_back("home");
   for (std::size_t k = 1; k < n; ++k) tour.names.push_back("t" + std::to_string(k));
   tour.legs.assign(n, std::vector<LegCost>(n));
-  tour.dwells.assign(n, Dwell{dwell_s, dwell_a});
+  tour.dwells.assign(n, Dwell{dwell_s, dwell_a, std::nullopt});
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j) {
       const double metres = std::fabs(x[j] - x[i]);
@@ -135,7 +135,7 @@ TEST(SortiePlan, DynamicProgrammeFindsTheLeastWearSplit) {
     std::vector<double> x(6);
     for (double& v : x) v = position(random);
     TourCosts tour = lineTour(x, 0.01, 0, 10);
-    for (std::size_t k = 1; k < tour.dwells.size(); ++k) tour.dwells[k] = {dwell(random), 12.0};
+    for (std::size_t k = 1; k < tour.dwells.size(); ++k) tour.dwells[k] = {dwell(random), 12.0, std::nullopt};
     for (const std::string name : {"woehler", "xu"}) {
       const SortiePlan plan = planSorties(tour, inOrder(6), kBattery, model(name));
       for (const Sortie& sortie : plan.sorties) EXPECT_GE(sortie.lowest_soc, 0.25 - 1e-12);
@@ -146,20 +146,40 @@ TEST(SortiePlan, DynamicProgrammeFindsTheLeastWearSplit) {
   }
 }
 
-TEST(SortiePlan, CurrentProfileShapesTheHistoryButNotTheTotals) {
+TEST(SortiePlan, ALoadProfileIsIntegratedAtTheSocTheSortieHasReached) {
+  // Loads are currents here: the profile's trapezoid integral is the leg's charge.
   TourCosts tour = lineTour({100}, 0.004, 10, 10);
-  const SortiePlan flat = planSorties(tour, {1}, kBattery, model("fec"));
-  tour.legs[0][1].current_profile = {{0, 5}, {50, 20}, {100, 5}};
-  const SortiePlan shaped = planSorties(tour, {1}, kBattery, model("fec"));
-  const Sortie& a = flat.sorties[0];
-  const Sortie& b = shaped.sorties[0];
-  EXPECT_NEAR(a.charge_ah, b.charge_ah, 1e-12);
-  EXPECT_NEAR(a.lowest_soc, b.lowest_soc, 1e-12);
-  EXPECT_GT(b.soc_history.size(), a.soc_history.size());
-  // Half the profile's integral lies in its first 50 s: the SOC has dropped half the leg's share.
-  const double leg_drop = 0.4 / 5.2;
-  EXPECT_NEAR(b.soc_history[1].soc, 0.95 - leg_drop / 2, 1e-12);
-  for (std::size_t k = 1; k < b.soc_history.size(); ++k) EXPECT_GE(b.soc_history[k].t_s, b.soc_history[k - 1].t_s);
+  tour.legs[0][1].load_profile = {{0, 5}, {50, 20}, {100, 5}};
+  const Sortie profiled = planSorties(tour, {1}, kBattery, model("fec")).sorties[0];
+  const double profile_ah = (12.5 * 50 + 12.5 * 50) / 3600;
+  EXPECT_NEAR(profiled.legs[0].charge_ah, profile_ah, 1e-12);
+  EXPECT_NEAR(profiled.soc_history[1].soc, 0.95 - profile_ah / 2 / 5.2, 1e-12);
+  for (std::size_t k = 1; k < profiled.soc_history.size(); ++k)
+    EXPECT_GE(profiled.soc_history[k].t_s, profiled.soc_history[k - 1].t_s);
+
+  // A pack whose current rises as its SOC falls (constant power into a falling voltage): the
+  // same leg costs more flown second than first, because it starts lower.
+  TourCosts rising = lineTour({50, 100}, 0.0, 0, 10);
+  rising.current_at_soc = [](double load, double soc) { return load / (0.5 + soc); };
+  for (auto& row : rising.legs)
+    for (LegCost& leg : row)
+      if (leg.duration_s > 0) leg.load_profile = {{0, 10}, {leg.duration_s, 10}};
+  rising.dwells[1] = {120, 0, 10.0};
+  rising.dwells[2] = {120, 0, 10.0};
+  const Sortie sortie = planSorties(rising, {1, 2}, kBattery, model("fec")).sorties[0];
+  ASSERT_EQ(sortie.legs.size(), 3u);
+  // home->t1 and t1->t2 are both 50 m; the second starts after a dwell, at a lower SOC.
+  EXPECT_GT(sortie.legs[1].charge_ah, sortie.legs[0].charge_ah);
+  EXPECT_NEAR(sortie.legs[0].charge_ah, 10 / 1.45 * 50 / 3600, 1e-3 * sortie.legs[0].charge_ah);
+  // The history's currents integrate to the sortie's charge (trapezoids between samples).
+  double integral_ah = 0;
+  for (std::size_t k = 1; k + 1 < sortie.soc_history.size(); ++k) {
+    const SocSample& a = sortie.soc_history[k - 1];
+    const SocSample& b = sortie.soc_history[k];
+    integral_ah += (a.soc - b.soc) * kBattery.pack.usableCapacityAh();
+  }
+  EXPECT_NEAR(integral_ah, sortie.charge_ah, 1e-12);
+  EXPECT_NEAR(sortie.lowest_soc, 0.95 - sortie.charge_ah / kBattery.pack.usableCapacityAh(), 1e-12);
 }
 
 TEST(SortiePlan, PlanWearReportsEveryModelForOneSplit) {
@@ -189,7 +209,7 @@ TEST(SortiePlan, NamesTargetsNoSortieCanReach) {
   // Well-formed input asking for the impossible: infeasible (exit code 3), not bad input.
   // t2 dwells for 4 Ah on its own: beyond any single sortie.
   TourCosts tour = lineTour({5, 10, 15}, 0.01, 60, 10);
-  tour.dwells[2] = {1440, 10};
+  tour.dwells[2] = {1440, 10, std::nullopt};
   try {
     planSorties(tour, inOrder(3), kBattery);
     FAIL() << "expected an error";

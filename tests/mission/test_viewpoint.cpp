@@ -1,15 +1,18 @@
 // Viewpoints: in ceiling mode the vehicle hugs the surface above the target (least dwell
-// current), in free mode it keeps the conventional standoff and takes the nearest position;
-// every viewpoint is valid, inside the standoff range and sees its target.
+// current), in free mode it keeps the conventional standoff where it fits and takes the nearest
+// such position, else the largest standoff that fits; every viewpoint is valid under the same
+// rules in both modes, inside the standoff range and sees its target.
 
 #include "ceilplan/mission/viewpoint.hpp"
 
 #include "analytic_maps.hpp"
 #include "ceilplan/energy/paper_quad.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/planner/standoff.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 
 namespace ceilplan::mission {
@@ -22,19 +25,20 @@ const energy::EnergyModel& paperQuad() {
   return model;
 }
 
-// The conventional planner's view: the same vehicle kept `standoff_m` from every structure.
-environment::VehicleGeometry withStandoff(double standoff_m) {
-  environment::VehicleGeometry vehicle = testing::quad();
-  vehicle.margin_m = standoff_m;
-  vehicle.top_margin_m = standoff_m;
-  return vehicle;
+// The airframe's bounding sphere, which free mode keeps the standoff from.
+const double kAirframeRadiusM = std::hypot(0.36, 0.12);
+
+ViewpointOptions freeMode() {
+  ViewpointOptions options;
+  options.mode = FlightMode::Free;
+  options.standoff_m = 1.0;
+  return options;
 }
 
-// A 4 x 4 m room with a flat ceiling at 3 m (floor top at 0.2 m), both environments.
+// A 4 x 4 m room with a flat ceiling at 3 m (floor top at 0.2 m).
 struct FlatCeiling {
   environment::OccupancyMap map = testing::room([](double, double) { return 3.0; });
   Environment ceiling{map, testing::quad()};
-  Environment free{map, withStandoff(1.0)};
 };
 
 const FlatCeiling& flat() {
@@ -66,26 +70,35 @@ TEST(Viewpoint, CeilingModeHugsTheSurfaceAbove) {
 
 TEST(Viewpoint, FreeModeKeepsTheConventionalStandoffAndTakesTheNearestPosition) {
   const InspectionTarget target = ceilingTarget();
-  ViewpointOptions options;
-  options.mode = FlightMode::Free;
-  const Viewpoint viewpoint = chooseViewpoint(target, flat().free, paperQuad(), options);
-  expectUsable(viewpoint, target, flat().free);
-  // 1 m from the ceiling above the airframe's top (0.06 m): the nearest is straight below.
-  EXPECT_NEAR(viewpoint.distance_m, 1.06, 0.025 + 1e-9);
-  EXPECT_GE(viewpoint.ceiling_gap_m, 1.0 - 0.03);
+  const Viewpoint viewpoint = chooseViewpoint(target, flat().ceiling, paperQuad(), freeMode());
+  expectUsable(viewpoint, target, flat().ceiling);
+  // 1 m from the ceiling to the airframe's bounding sphere: the nearest is straight below.
+  EXPECT_GE(planner::standoffAt(flat().ceiling, viewpoint.position_m), 1.0 - 1e-3);
+  EXPECT_NEAR(viewpoint.distance_m, 1.0 + kAirframeRadiusM, 0.025 + 1e-9);
   EXPECT_NEAR(viewpoint.position_m.x(), target.point_m.x(), 0.05);
   EXPECT_NEAR(viewpoint.position_m.y(), target.point_m.y(), 0.05);
   // Scored with the full model: out of the ceiling's reach, it draws more than ceiling mode.
   EXPECT_GT(viewpoint.dwell_current_a, chooseViewpoint(target, flat().ceiling, paperQuad()).dwell_current_a + 1.0);
 }
 
+TEST(Viewpoint, FreeModeTakesTheLargestStandoffThatFitsWhereTheConventionalOneDoesNot) {
+  // A room 1.6 m high: nowhere is the airframe 1 m from both floor and ceiling. The largest
+  // standoff is halfway up, 0.8 m from each, less the airframe's bounding sphere.
+  const environment::OccupancyMap low = testing::room([](double, double) { return 1.8; });
+  const Environment environment(low, testing::quad());
+  const InspectionTarget target{"low_ceiling", {0.05, 0.05, 1.8}, 0.3, 1.5, 30.0};
+  const Viewpoint viewpoint = chooseViewpoint(target, environment, paperQuad(), freeMode());
+  expectUsable(viewpoint, target, environment);
+  EXPECT_NEAR(planner::standoffAt(environment, viewpoint.position_m), 0.8 - kAirframeRadiusM, 0.01);
+  EXPECT_NEAR(viewpoint.position_m.z(), 1.0, 0.02);
+  EXPECT_NEAR(viewpoint.position_m.x(), target.point_m.x(), 0.05);
+}
+
 TEST(Viewpoint, FindsANarrowStandoffShellBetweenLatticePoints) {
   InspectionTarget target = ceilingTarget();
   target.standoff_min_m = 1.0;
   target.standoff_max_m = 1.08;  // thinner than a voxel
-  ViewpointOptions options;
-  options.mode = FlightMode::Free;
-  expectUsable(chooseViewpoint(target, flat().free, paperQuad(), options), target, flat().free);
+  expectUsable(chooseViewpoint(target, flat().ceiling, paperQuad(), freeMode()), target, flat().ceiling);
 }
 
 TEST(Viewpoint, StaysOnTheTargetsSideOfTheSurface) {
@@ -144,13 +157,17 @@ TEST(Viewpoint, BridgeTargetsGetViewpointsAndDeckBaysAreHugged) {
   EXPECT_NEAR(deck.dwell_current_a, energy::kPaperCeilingCurrentA, 1e-3);
 
   // Free mode, 1 m from every structure: under a girder's bottom flange, in free air.
-  const Environment conventional(map, withStandoff(1.0));
-  ViewpointOptions free;
-  free.mode = FlightMode::Free;
-  const Viewpoint girder = chooseViewpoint(targets[2], conventional, paperQuad(), free);
-  expectUsable(girder, targets[2], conventional);
-  EXPECT_NEAR(girder.distance_m, 1.06, 0.03);
+  const Viewpoint girder = chooseViewpoint(targets[2], environment, paperQuad(), freeMode());
+  expectUsable(girder, targets[2], environment);
+  EXPECT_GE(planner::standoffAt(environment, girder.position_m), 1.0 - 1e-3);
+  EXPECT_NEAR(girder.distance_m, 1.0 + kAirframeRadiusM, 0.03);
   EXPECT_NEAR(girder.dwell_current_a, energy::kPaperFreeAirCurrentA, 1e-3);
+  // A deck bay between girders 2.8 m apart: 1 m from the deck and the girders fits within the
+  // target's 1.5 m, below the deck.
+  const Viewpoint bay = chooseViewpoint(targets[0], environment, paperQuad(), freeMode());
+  expectUsable(bay, targets[0], environment);
+  EXPECT_GE(planner::standoffAt(environment, bay.position_m), 1.0 - 1e-3);
+  EXPECT_LT(bay.position_m.z(), targets[0].point_m.z() - 1.0);
 }
 
 }  // namespace

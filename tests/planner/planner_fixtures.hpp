@@ -8,7 +8,12 @@
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
+#include "ceilplan/planner/ompl_state.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
+
+#include <ompl/base/Planner.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/geometric/PathGeometric.h>
 
 #include <functional>
 #include <memory>
@@ -45,16 +50,49 @@ inline energy::EnergyModel paperEnergy() { return energy::EnergyModel(energy::pa
 // Start and goal under a ceiling at height h: the rotor plane 7 cm below it.
 inline double bodyHeightUnder(double ceiling_m) { return ceiling_m - 0.1; }
 
-// A map with the default vehicle, the paper's energy model, ceiling-mode rules (5 cm minimum
-// rotor gap) and a planner under the charge objective.
-struct CeilingScene {
-  explicit CeilingScene(environment::OccupancyMap scene_map) : map(std::move(scene_map)) {}
+// A map with the default vehicle, the paper's energy model, the rules of both modes (5 cm
+// minimum rotor gap) and a planner under the charge objective, with a mode's cost model
+// options (by default ceiling mode's).
+struct PlannerScene {
+  explicit PlannerScene(environment::OccupancyMap scene_map, planner::CostModelOptions cost = {})
+      : map(std::move(scene_map)), cost_options(cost) {}
   environment::OccupancyMap map;
+  planner::CostModelOptions cost_options;
   environment::Environment environment{map, quad()};
   energy::EnergyModel energy = paperEnergy();
   planner::SafetyRules rules{environment, 0.05};
-  planner::FlightCostModel model{environment, energy, planner::CostModelOptions{}};
+  planner::FlightCostModel model{environment, energy, cost_options};
   planner::FlightPlanner planner{rules, model, planner::ObjectiveChoice{}};
 };
+using CeilingScene = PlannerScene;
+
+// What an OMPL planner returned for one query.
+struct Solved {
+  ompl::base::PlannerStatus status;
+  std::vector<Eigen::Vector3d> waypoints;  // empty without an exact solution
+  double cost = 0.0;                       // as the planner reported it
+};
+
+// Runs `planner` (made on `flight_planner`'s space) on one query under its objective.
+inline Solved solveOnce(ompl::base::Planner& planner, const planner::FlightPlanner& flight_planner,
+                        const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m, double time_limit_s = 120.0) {
+  const ompl::base::SpaceInformationPtr& si = flight_planner.spaceInformation();
+  auto definition = std::make_shared<ompl::base::ProblemDefinition>(si);
+  ompl::base::ScopedState<> start(si), goal(si);
+  planner::setPosition(start.get(), start_m);
+  planner::setPosition(goal.get(), goal_m);
+  definition->setStartAndGoalStates(start, goal, 1e-6);
+  definition->setOptimizationObjective(flight_planner.objectivePtr());
+  planner.setProblemDefinition(definition);
+  Solved solved{planner.solve(time_limit_s), {}, 0.0};
+  if (solved.status == ompl::base::PlannerStatus::EXACT_SOLUTION) {
+    for (const ompl::base::State* s : definition->getSolutionPath()->as<ompl::geometric::PathGeometric>()->getStates())
+      solved.waypoints.push_back(planner::toPosition(s));
+    ompl::base::PlannerSolution solution(nullptr);
+    definition->getSolution(solution);
+    solved.cost = solution.cost_.value();
+  }
+  return solved;
+}
 
 }  // namespace ceilplan::testing

@@ -1,10 +1,11 @@
-// The lattice A* is optimal on its lattice: it matches an exhaustive Bellman-Ford over the
-// same nodes, edges and motion costs.
+// The lattice A* (an OMPL planner) is optimal on its lattice: it matches an exhaustive
+// Bellman-Ford over the same nodes, edges and motion costs.
 
 #include "planner_fixtures.hpp"
 
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/lattice_planner.hpp"
+#include "ceilplan/planner/planner_factory.hpp"
 
 #include <gtest/gtest.h>
 
@@ -63,15 +64,15 @@ TEST(LatticePlanner, MatchesExhaustiveSearchOnATinyLattice) {
     choice.name = objective_name;
     const planner::FlightPlanner planner(rules, model, choice);
     const Eigen::Vector3d start(-0.8, -0.3, 1.9), goal(1.0, 0.4, 1.9);  // on either side of the beam
-    planner::LatticeOptions options;
-    options.stride_voxels = 3;
-    planner::LatticePlanner lattice(rules, planner.objective(), options);
-    const auto found = lattice.plan(start, goal);
-    ASSERT_TRUE(found) << objective_name;
-    const double reference = bruteForceCost(rules, planner.objective(), options.stride_voxels, start, goal);
-    EXPECT_NEAR(found->cost, reference, 1e-9 * reference) << objective_name;
-    EXPECT_NEAR(planner.objective().pathCost(found->waypoints), found->cost, 1e-9 * reference);
-    EXPECT_FALSE(rules.checkPathDensely(found->waypoints)) << objective_name;
+    planner::LatticeSettings settings;
+    settings.spacing_m = 0.3;  // three voxels
+    planner::LatticePlanner lattice(planner.spaceInformation(), settings);
+    const Solved found = solveOnce(lattice, planner, start, goal);
+    ASSERT_EQ(found.status, ompl::base::PlannerStatus::EXACT_SOLUTION) << objective_name;
+    const double reference = bruteForceCost(rules, planner.objective(), 3, start, goal);
+    EXPECT_NEAR(found.cost, reference, 1e-9 * reference) << objective_name;
+    EXPECT_NEAR(planner.objective().pathCost(found.waypoints), found.cost, 1e-9 * reference);
+    EXPECT_FALSE(rules.checkPathDensely(found.waypoints)) << objective_name;
   }
 }
 
@@ -80,9 +81,25 @@ TEST(LatticePlanner, SaysNoPathWhenAWallSeparatesStartAndGoal) {
     if (c.z() < 0.2 || c.z() > 2.0 || (c.x() > -0.1 && c.x() < 0.1)) return CellState::Occupied;
     return CellState::Free;
   }));
-  planner::LatticePlanner lattice(scene.rules, scene.planner.objective());
-  EXPECT_FALSE(lattice.plan({-0.6, 0.0, 1.0}, {0.6, 0.0, 1.0}));
-  EXPECT_FALSE(lattice.stopped());
+  planner::LatticePlanner lattice(scene.planner.spaceInformation());
+  EXPECT_EQ(solveOnce(lattice, scene.planner, {-0.6, 0.0, 1.0}, {0.6, 0.0, 1.0}).status,
+            ompl::base::PlannerStatus::ABORT);  // proved: not stopped by the clock
+}
+
+TEST(LatticePlanner, IsChosenByNameLikeEveryOtherPlannerAndTheSpacingIsInMetres) {
+  const CeilingScene scene(beamRoom());
+  const ompl::base::PlannerPtr lattice =
+      planner::makePlanner(planner::referencePlannerName(), scene.planner.spaceInformation());
+  EXPECT_EQ(lattice->getName(), "lattice");
+  EXPECT_TRUE(planner::plannerInfo("lattice").deterministic());
+  EXPECT_FALSE(planner::plannerInfo("lattice").multiQuery());
+  EXPECT_EQ(lattice->params().getParam("spacing_m")->getValue(), "0.4");
+  EXPECT_TRUE(lattice->params().setParam("spacing_m", "0.2"));
+  EXPECT_NEAR(lattice->as<planner::LatticePlanner>()->getSpacing(), 0.2, 1e-12);
+  EXPECT_THROW(planner::makePlanner("FastestStar", scene.planner.spaceInformation()), ceilplan::InputError);
+  planner::LatticeSettings bad;
+  bad.spacing_m = 0.0;
+  EXPECT_THROW(planner::LatticePlanner(scene.planner.spaceInformation(), bad), ceilplan::InputError);
 }
 
 }  // namespace

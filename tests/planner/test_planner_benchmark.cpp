@@ -5,6 +5,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/planner/planner_benchmark.hpp"
+#include "ceilplan/planner/planner_factory.hpp"
 #include "input_error.hpp"
 
 #include <gtest/gtest.h>
@@ -20,14 +21,16 @@ std::string errorOf(const PlannerBenchmarkOptions& options) {
   return testing::inputErrorOf([&] { options.validate(); });
 }
 
-TEST(PlannerBenchmark, RefusesNoPlannerTheLatticeAndUnknownNames) {
+TEST(PlannerBenchmark, DefaultsToTheSamplingPlannersAndRefusesUnknownNames) {
   PlannerBenchmarkOptions options;
+  ASSERT_FALSE(options.planners.empty());
+  for (const std::string& name : options.planners) EXPECT_EQ(plannerInfo(name).kind, PlannerKind::Sampling) << name;
+  EXPECT_EQ(errorOf(options), "(no error)");
+  options.planners.clear();
   EXPECT_EQ(errorOf(options), "give at least one planner name");
-  options.planners = {"PRMstar", "lattice"};
-  EXPECT_EQ(errorOf(options), "'lattice' is not an OMPL planner ceilplan knows");
-  options.planners = {"RRTstarr"};
-  EXPECT_EQ(errorOf(options), "'RRTstarr' is not an OMPL planner ceilplan knows");
-  options.planners = {"PRMstar"};
+  options.planners = {"PRMstar", "RRTstarr"};
+  EXPECT_NE(errorOf(options).find("RRTstarr"), std::string::npos);
+  options.planners = {"PRMstar", referencePlannerName()};  // the lattice planners run too
   EXPECT_EQ(errorOf(options), "(no error)");
   options.runs = 0;
   EXPECT_NE(errorOf(options), "(no error)");
@@ -43,7 +46,7 @@ TEST(PlannerBenchmark, ComparesEachRunWithTheLatticeReference) {
   PlanRequest request;
   request.start_m = start;
   request.goal_m = goal;
-  request.planner = "lattice";
+  request.planner = referencePlannerName();
   const PlanResult reference = scene.planner.plan(request);
 
   PlannerBenchmarkOptions options;

@@ -1,4 +1,5 @@
-// SafetyRules: what it accepts, the dense re-check accepts; the standoff of free mode.
+// SafetyRules: what it accepts, the dense re-check accepts; a minimum rotor gap beyond the
+// cylinder's is enforced.
 
 #include "planner_fixtures.hpp"
 
@@ -38,19 +39,6 @@ TEST(SafetyRules, AMinimumGapLargerThanTheCylinderAllowsIsEnforced) {
   EXPECT_FALSE(strict.isStateValid(hugging));
   EXPECT_FALSE(strict.isMotionValid({3.0, 0.0, 2.5}, hugging));
   EXPECT_TRUE(strict.checkPathDensely({{3.0, 0.0, 2.5}, hugging}));
-}
-
-TEST(SafetyRules, FreeModeKeepsTheStandoffExceptNearStartAndGoal) {
-  const environment::OccupancyMap map = corridor(flatCeiling);
-  const environment::Environment environment(map, quad());
-  const environment::Environment standoff(map, planner::withStandoff(quad(), 1.0));
-  const Eigen::Vector3d start(0.5, 0.0, bodyHeightUnder(3.5)), goal(5.5, 0.0, bodyHeightUnder(3.5));
-  const planner::SafetyRules rules(environment, 0.05, planner::standoffZone(standoff, environment, 1.0, start, goal));
-  EXPECT_TRUE(rules.isStateValid(start));
-  EXPECT_TRUE(rules.isStateValid({0.5, 0.0, 2.0}));
-  EXPECT_FALSE(rules.isStateValid({3.0, 0.0, bodyHeightUnder(3.5)}));  // mid-corridor under the ceiling
-  EXPECT_TRUE(rules.isStateValid({3.0, 0.0, 2.0}));
-  EXPECT_FALSE(rules.isMotionValid(start, goal));
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 
 namespace ceilplan::energy {
 
-// The image-method shape of Sanchez-Cuevas et al. (reference-models.md section 2),
+// The image-method shape of Sanchez-Cuevas et al. (ICUAS 2017; docs/models.md, "Ceiling effect"),
 //   kappa_im(z) = 1 / (1 - (1/K1) (R / (z + K2))^2),  z = rotor plane to ceiling,
 // faded out with a C2 "smootherstep" weight w(z) between taper_start and taper_end (in R):
 //   kappa(z) = 1 + w(z) (kappa_im(z) - 1),  w = 1 below the start, 0 from the end on.

@@ -41,6 +41,10 @@ struct CurrentBreakdown {
   double ceiling_factor = 1.0;      // thrust ratio T_ceiling / T_free, mean over rotors
   double ground_factor = 1.0;       // thrust ratio T_ground / T_free
   double induced_power_factor = 1.0;  // induced power / free-air induced power, both effects
+
+  // Electrical propulsion power: what the pack delivers to the motors whatever its state of
+  // charge (PackElectrics turns it into current at a given SOC).
+  double propulsionW() const { return induced_w + profile_w + parasitic_w + climb_w; }
 };
 
 // Immutable once built: every evaluation is const, allocation-free and safe to call from

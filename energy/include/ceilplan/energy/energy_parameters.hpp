@@ -1,19 +1,19 @@
 #pragma once
-// Every constant of the current model, in SI units. A value the reference marks [open]
-// (reference-models.md) is a calibration parameter: its default is documented in docs/energy.md.
+// Every constant of the current model, in SI units. A value marked [open] is a calibration
+// parameter, not a published fact: its default and source are documented in docs/models.md.
 
 namespace ceilplan::energy {
 
 // How a thrust ratio kappa = T_near / T_free turns into induced power at equal thrust
-// (reference-models.md section 2, [derived]).
+// (docs/models.md, "From thrust ratio to power").
 enum class ThrustToPowerConvention {
   kMomentumTheory,  // P_near / P_free = kappa^(-3/2): momentum theory at constant rotor speed
   kConstantPower,   // P_near / P_free = 1 / kappa: the Cheeseman-Bennett convention
 };
 
 enum class GroundEffectModel {
-  kCheesemanBennett,  // single rotor, reference section 3
-  kMultirotor,        // Sanchez-Cuevas et al. 2017 multirotor form, reference section 3
+  kCheesemanBennett,  // single rotor, Cheeseman & Bennett 1955 (ARC R&M 3021)
+  kMultirotor,        // Sanchez-Cuevas et al. 2017 multirotor form (Int. J. Aerospace Eng.)
 };
 
 struct AirframeParameters {
@@ -26,7 +26,7 @@ struct AirframeParameters {
 };
 
 // Image-method ceiling effect T_ic/T_oc = 1 / (1 - (1/K1) (R / (z + K2))^2)
-// (Sanchez-Cuevas et al., reference section 2), faded out between the taper radii.
+// (Sanchez-Cuevas et al., ICUAS 2017), faded out between the taper radii (docs/models.md).
 struct CeilingEffectParameters {
   double k1 = 0.0;    // dimensionless [open]; the defaults are solved by paperQuadParameters()
   double k2_m = 0.0;  // metres [open]
@@ -36,11 +36,11 @@ struct CeilingEffectParameters {
 
 struct GroundEffectParameters {
   GroundEffectModel model = GroundEffectModel::kCheesemanBennett;
-  double body_lift_factor = 2.0;  // K_b of the multirotor form, "about 2" (reference section 3)
-  double min_gap_radii = 0.5;     // gaps below 0.5 R are clamped (reference section 3)
+  double body_lift_factor = 2.0;  // K_b of the multirotor form, "about 2" (Sanchez-Cuevas et al. 2017)
+  double min_gap_radii = 0.5;     // gaps below 0.5 R are clamped: both forms are singular near R/4 [open]
 };
 
-// Rotor power: Zeng et al.'s rotary-wing model (reference section 4) scaled to hover power.
+// Rotor power: Zeng et al.'s rotary-wing model (IEEE T-WC 2019) scaled to hover power.
 struct RotorPowerParameters {
   double hover_power_w = 0.0;             // electrical propulsion power, free-air hover [open]
   double motor_efficiency = 0.80;         // shaft power / electrical power (motor + ESC) [open]
@@ -53,7 +53,7 @@ struct RotorPowerParameters {
   ThrustToPowerConvention convention = ThrustToPowerConvention::kMomentumTheory;
 };
 
-// Rint pack (reference section 6) plus a constant avionics load.
+// Rint pack (docs/models.md, "Pack electrics") plus a constant avionics load.
 struct PackParameters {
   int cell_count = 4;                // 4S, the founding paper's pack
   double resistance_ohm = 0.020;     // 12-25 mOhm for a new 4S 5.2 Ah pack [open]

@@ -6,7 +6,7 @@
 
 namespace ceilplan::energy {
 
-// reference-models.md section 3. Cheeseman-Bennett: 1 / (1 - (R/4z)^2). Multirotor
+// docs/models.md, "Ground effect". Cheeseman-Bennett (1955): 1 / (1 - (R/4z)^2). Multirotor
 // (Sanchez-Cuevas et al. 2017): 1 / [1 - (R/4z)^2 - R^2 z/(d^2+4z^2)^1.5
 //   - (R^2/2) z/(2d^2+4z^2)^1.5 - 2 R^2 K_b z/(b^2+4z^2)^1.5], d adjacent and b opposite
 // rotor spacing. Both are singular close to the ground, so z is clamped to >= 0.5 R.

@@ -8,7 +8,7 @@
 
 namespace ceilplan::energy {
 
-// Per-cell OCV table used by ArduPilot's battery simulator (reference-models.md section 6),
+// Per-cell OCV table of ArduPilot's battery simulator (libraries/SITL/SIM_Battery.cpp),
 // linearly interpolated. Public so the battery module's ageing models (which need the cell
 // voltage, e.g. Schmalstieg's V and Vrms) share this curve instead of embedding their own.
 // Below the table's lowest point (2 % SOC, 2.977 V) the voltage is held at that value: the

@@ -12,7 +12,7 @@ struct PackOperatingPoint {
   double terminal_voltage_v;  // n OCV(SOC) - I R
 };
 
-// Rint (reference-models.md section 6): V = n OCV(SOC) - I R, with I = I_prop + I_avionics and
+// Rint (docs/models.md, "Pack electrics"): V = n OCV(SOC) - I R, with I = I_prop + I_avionics and
 // the propulsion drawing P = V I_prop. Solving the quadratic gives
 //   I_prop = 2 P / (a + sqrt(a^2 - 4 R P)),  a = n OCV - R I_avionics,
 // which stays exact as R -> 0.

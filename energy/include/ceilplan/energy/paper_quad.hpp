@@ -1,6 +1,7 @@
 #pragma once
 // The default vehicle, anchored on the founding paper's measurement (Kocer et al. 2019,
-// reference-models.md section 1): 9.5 A hovering in free air, 8.0 A close under a ceiling.
+// arXiv 1812.11707): 9.5 A hovering in free air, 8.0 A close under a ceiling. How the anchors
+// fix the constants: docs/models.md, "The default vehicle".
 
 #include "ceilplan/energy/energy_parameters.hpp"
 #include "ceilplan/core/error.hpp"

@@ -5,7 +5,7 @@
 
 namespace ceilplan::energy {
 
-// Zeng, Xu, Zhang 2019 (IEEE T-WC), reference-models.md section 4:
+// Zeng, Xu, Zhang 2019 (IEEE T-WC 18(4); docs/models.md, "Power against speed"):
 //   P(V) = P0 (1 + 3V^2/U_tip^2) + Pi (sqrt(1 + V^4/(4 v0^4)) - V^2/(2 v0^2))^(1/2) + c V^3,
 // c = 0.5 d0 rho s A (= 0.5 rho times the flat-plate drag area).
 class RotaryWingPower {

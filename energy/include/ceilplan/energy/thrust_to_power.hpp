@@ -1,6 +1,6 @@
 #pragma once
 // Turning a thrust ratio kappa = T_near / T_free into the ratio of induced power at equal
-// thrust, and back (reference-models.md section 2, [derived]).
+// thrust, and back (docs/models.md, "From thrust ratio to power").
 
 #include "ceilplan/energy/energy_parameters.hpp"
 

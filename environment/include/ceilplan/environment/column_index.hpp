@@ -6,6 +6,7 @@
 #include "ceilplan/environment/voxel_grid.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -13,7 +14,23 @@ namespace ceilplan::environment {
 
 class ColumnIndex {
  public:
-  explicit ColumnIndex(const VoxelGrid& grid);
+  // Runs of non-free voxels in a column, bottom to top, in voxel indices [lo, hi).
+  struct Run {
+    std::int32_t lo;
+    std::int32_t hi;
+    CellState state;
+  };
+  // Each column begins and ends with an unbounded unknown run: everything below and above the grid.
+  static constexpr std::int32_t kBelowEverything = std::numeric_limits<std::int32_t>::min() / 2;
+  static constexpr std::int32_t kAboveEverything = std::numeric_limits<std::int32_t>::max() / 2;
+
+  // Reads the grid on `workers` threads.
+  explicit ColumnIndex(const VoxelGrid& grid, int workers = 1);
+  // Runs already laid out: column c = j * size_x + i holds runs[offsets[c], offsets[c + 1]),
+  // sorted, disjoint, starting and ending with the unbounded unknown runs.
+  ColumnIndex(const GridFrame& frame, std::vector<std::uint32_t> offsets, std::vector<Run> runs);
+
+  const GridFrame& frame() const { return frame_; }
 
   // The first non-free voxel met going up (down) from height z_m in column (i, j): the height
   // of its lower (upper) face and its state. A point inside a non-free voxel meets it at z_m.
@@ -31,28 +48,24 @@ class ColumnIndex {
   // column instead of one strided grid read per voxel.
   std::optional<CellState> firstBlocking(int i, int j, double bottom_m, double top_m, bool unknown_blocks) const;
 
-  // Runs of non-free voxels in column (i, j), bottom to top, in voxel indices [lo, hi).
-  struct Run {
-    std::int32_t lo;
-    std::int32_t hi;
-    CellState state;
-  };
   const Run* beginRuns(int i, int j) const { return runs_.data() + offsets_[column(i, j)]; }
   const Run* endRuns(int i, int j) const { return runs_.data() + offsets_[column(i, j) + 1]; }
   std::size_t runCount() const { return runs_.size(); }
+  const std::vector<std::uint32_t>& offsets() const { return offsets_; }
+  const std::vector<Run>& runs() const { return runs_; }
+  std::size_t memoryBytes() const { return offsets_.capacity() * sizeof(std::uint32_t) + runs_.capacity() * sizeof(Run); }
 
  private:
-  std::size_t column(int i, int j) const { return static_cast<std::size_t>(j) * size_x_ + i; }
-  bool inside(int i, int j) const { return i >= 0 && j >= 0 && i < size_x_ && j < size_y_; }
+  std::size_t column(int i, int j) const { return static_cast<std::size_t>(j) * frame_.size()[0] + i; }
+  bool inside(int i, int j) const { return i >= 0 && j >= 0 && i < frame_.size()[0] && j < frame_.size()[1]; }
   double face(std::int32_t index) const { return (origin_z_ + static_cast<double>(index)) * resolution_m_; }
 
+  GridFrame frame_;
   double resolution_m_;
   double inverse_resolution_;
   int origin_z_;
-  int size_x_;
-  int size_y_;
   std::vector<std::uint32_t> offsets_;  // column c's runs are runs_[offsets_[c], offsets_[c + 1])
-  std::vector<Run> runs_;               // each column begins and ends with an unbounded unknown run
+  std::vector<Run> runs_;
 };
 
 }  // namespace ceilplan::environment

@@ -1,13 +1,16 @@
 #pragma once
 // What the energy model and the planner ask of a map, for one vehicle: the gap from each
 // rotor disc to the ceiling above and the ground below, the clearance around the body, and
-// whether a state, a motion or a whole path is collision-free. Built once per map (indexes
-// described in docs/environment.md); every query is const and safe to call from many threads.
+// whether a state, a motion or a whole path is collision-free. The map's index (MapIndex) is
+// built once and shared; an Environment adds only what depends on the vehicle's geometry and
+// margins (docs/environment.md). Every query is const and safe to call from many threads.
 
 #include "ceilplan/environment/column_index.hpp"
 #include "ceilplan/environment/distance_field.hpp"
 #include "ceilplan/environment/footprint_masks.hpp"
+#include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
+#include "ceilplan/environment/unknown_space.hpp"
 #include "ceilplan/environment/vehicle_geometry.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
 #include "ceilplan/core/error.hpp"
@@ -15,25 +18,28 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace ceilplan::environment {
 
+// What depends on the vehicle; the unknown-space policy belongs to the map's index
+// (MapIndexOptions).
 struct EnvironmentOptions {
-  // Validity and clearance: unknown space is an obstacle (the safe default).
-  bool unknown_is_occupied = true;
-  // Gaps: unknown space met before any occupied voxel means "no surface" (the default: never
-  // claim an energy benefit the map cannot support); true makes it a surface.
+  // Gaps: unknown space that the policy keeps, met before any occupied voxel, means "no
+  // surface" (the default: never claim an energy benefit the map cannot support); true makes
+  // it a surface. Unknown space the policy assumed free is free air, never a surface.
   bool unknown_is_surface = false;
   // Coverage counts disc area with a surface within this many rotor radii of the rotor plane.
-  // Ceiling: the effect vanishes beyond about 2 R (reference-models.md section 2), 4 R leaves
-  // room. Ground: significant up to about 5 R (section 3, Sanchez-Cuevas 2017).
+  // Ceiling: the modelled effect is gone by 2.5 R (docs/models.md, "Ceiling effect"), 4 R leaves
+  // room. Ground: significant up to about 5 R (Sanchez-Cuevas et al. 2017).
   double ceiling_reach_radii = 4.0;
   double ground_reach_radii = 5.0;
   // Motions are checked at this fraction of the map resolution.
   double motion_step_voxels = 0.25;
+  int workers = 2;  // threads building what depends on the vehicle (and the index, when built here)
 };
 
 // One rotor disc against the surface above (or below) it.
@@ -52,6 +58,20 @@ struct SurfaceGaps {
 
 enum class ViolationKind { OutsideMap, Occupied, Unknown };
 
+// A stretch of a path, by distance along it from its first waypoint.
+struct PathInterval {
+  double from_m;
+  double to_m;
+  Eigen::Vector3d from_point_m;
+  Eigen::Vector3d to_point_m;
+};
+
+// Where a path relies on the unknown-space policy.
+struct AssumedFreeStretches {
+  double length_m = 0.0;                // total length of the intervals
+  std::vector<PathInterval> intervals;  // in order along the path, disjoint
+};
+
 // The first place a state, motion or path breaks the collision constraint.
 struct Violation {
   std::size_t segment = 0;  // index of the path segment (0 for a single state or motion)
@@ -62,19 +82,31 @@ struct Violation {
 
 class Environment {
  public:
-  // Indexes `map` for `vehicle` (validated here). Takes about a second and about 5 bytes per
-  // voxel of the map's bounding box; `progress` receives fractions in [0, 1].
+  // `vehicle` (validated here) on a map indexed once for every vehicle: builds only the
+  // footprint masks (a bit per voxel, one pass over the grid); `progress` receives fractions in [0, 1].
+  Environment(std::shared_ptr<const MapIndex> index, VehicleGeometry vehicle, EnvironmentOptions options = {},
+              const std::function<void(double)>& progress = {});
+  // Indexes `map` itself, with unknown space occupied: the same as the constructor above on
+  // MapIndex::build(map). About 7 bytes per voxel of the map's bounding box.
   Environment(const OccupancyMap& map, VehicleGeometry vehicle, EnvironmentOptions options = {},
               const std::function<void(double)>& progress = {});
+  // The same with the index's options (the unknown-space policy) given.
+  Environment(const OccupancyMap& map, VehicleGeometry vehicle, EnvironmentOptions options,
+              const MapIndexOptions& index_options, const std::function<void(double)>& progress = {});
 
-  const VoxelGrid& grid() const { return grid_; }
-  const ColumnIndex& columns() const { return columns_; }
+  // The shared index: pass it to the next Environment on this map.
+  const std::shared_ptr<const MapIndex>& index() const { return index_; }
+  const VoxelGrid& grid() const { return index_->grid(); }
+  const ColumnIndex& columns() const { return index_->columns(); }
   const VehicleGeometry& vehicle() const { return vehicle_; }
   const EnvironmentOptions& options() const { return options_; }
-  const std::string& mapName() const { return map_name_; }
+  const UnknownSpace& unknownSpace() const { return index_->unknownSpace(); }
+  const std::string& mapName() const { return index_->mapName(); }
+  // The footprint masks and the index's share; the index is counted once however many share it.
+  std::size_t memoryBytes() const { return footprint_.memoryBytes(); }
 
   // Whether a point lies in the bounding box of the map's known voxels.
-  bool contains(const Eigen::Vector3d& point_m) const { return grid_.frame().contains(point_m); }
+  bool contains(const Eigen::Vector3d& point_m) const { return grid().frame().contains(point_m); }
 
   // Single-point queries: vertical distance from `point_m` to the nearest occupied voxel face
   // above (below), +infinity if none (or unknown comes first, by policy). Throws
@@ -113,21 +145,33 @@ class Environment {
   // guaranteed to pass the re-check.
   double denseStep_m() const;
 
+  // Whether the vehicle at `body_m` relies on the unknown-space policy: its inflated collision
+  // cylinder overlaps unknown space the policy assumed free, so under the occupied policy the
+  // state would be invalid. Always false under the occupied policy and outside the map.
+  bool assumesFree(const Eigen::Vector3d& body_m) const;
+  // Where along a path (waypoints joined by straight segments) the vehicle relies on the
+  // policy, checked at the dense re-check's states; each such state stands for half a step on
+  // either side. What plan.json, tour.json and path.csv report as assumed_free_m.
+  AssumedFreeStretches assumedFreeAlong(const std::vector<Eigen::Vector3d>& waypoints_m) const;
+
  private:
   enum class Direction { Up, Down };
   SurfaceGaps gaps(const Eigen::Vector3d& body_m, Direction direction) const;
   double columnGap(int i, int j, double z_m, Direction direction) const;
   void requireInside(const Eigen::Vector3d& point_m, const char* query) const;
   std::optional<Violation> exactCylinderViolation(const Eigen::Vector3d& body_m) const;
+  // Calls `visit(i, j)` for every column the inflated cylinder at `body_m` overlaps by more
+  // than its side, until one returns true; returns whether one did.
+  template <class Visit>
+  bool anyColumnUnderCylinder(const Eigen::Vector3d& body_m, Visit&& visit) const;
   std::optional<Violation> segmentViolation(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
                                             double step_m, bool fast_path) const;
 
-  std::string map_name_;
+  std::shared_ptr<const MapIndex> index_;
+  const ColumnIndex* columns_;    // the index's, reached without two indirections on every query
+  const DistanceField* distance_;
   VehicleGeometry vehicle_;
   EnvironmentOptions options_;
-  VoxelGrid grid_;
-  ColumnIndex columns_;
-  DistanceField distance_;
   FootprintMasks footprint_;
   double bounding_sphere_m_;  // around the body centre, holding the inflated cylinder
 };

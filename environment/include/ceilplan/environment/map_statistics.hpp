@@ -1,16 +1,26 @@
 #pragma once
-// A summary of a map for `ceilplan mapinfo`: what it holds and how much of it has a ceiling
-// close enough to matter.
+// A summary of a map for `ceilplan mapinfo`: what it holds, what the unknown-space policy
+// assumed, and how much of its floor lies under a ceiling.
 
-#include "ceilplan/environment/column_index.hpp"
+#include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
-#include "ceilplan/environment/voxel_grid.hpp"
 
 #include <Eigen/Geometry>
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace ceilplan::environment {
+
+// What counts as a ceiling over a column (docs/environment.md, "Looking at a map"): an
+// occupied surface with at least `min_headroom_m` of free space straight below it (room to
+// fly under), in a 4-connected patch of such columns of at least `min_area_m2`. Table tops
+// (too little room below) and lamps, lintels or shelves (too small) are not ceilings.
+struct CeilingCriteria {
+  double min_headroom_m = 1.0;
+  double min_area_m2 = 4.0;
+};
 
 struct MapStatistics {
   double resolution_m;
@@ -20,15 +30,17 @@ struct MapStatistics {
   double occupied_volume_m3;
   double free_volume_m3;
   double unknown_volume_m3;      // inside the extent
-  // Share of the floor area (columns holding free space) where some free voxel has an
-  // occupied voxel at most `ceiling_within_m` straight above it.
-  double ceiling_within_m;
+  UnknownSpace unknown;          // the policy the index applied
+  UnknownSpaceSummary unknown_summary;
+  CeilingCriteria ceiling;
+  // Share of the floor area (columns holding free space) under a ceiling, in [0, 1].
   double ceiling_area_share;
 };
 
-MapStatistics computeStatistics(const OccupancyMap& map, const VoxelGrid& grid, const ColumnIndex& columns,
-                                double ceiling_within_m = 2.0);
-// Same, indexing the map first.
-MapStatistics computeStatistics(const OccupancyMap& map, double ceiling_within_m = 2.0);
+MapStatistics computeStatistics(const OccupancyMap& map, const MapIndex& index, const CeilingCriteria& ceiling = {});
+
+// Per column of the index's grid (j * size_x + i): 0 no free space, 1 free space, 2 free space
+// under a ceiling by `ceiling`. What ceiling_area_share counts.
+std::vector<std::uint8_t> ceilingColumns(const MapIndex& index, const CeilingCriteria& ceiling = {});
 
 }  // namespace ceilplan::environment

@@ -16,9 +16,10 @@ namespace ceilplan::environment {
 class OccupancyMap {
  public:
   // Reads a .bt (binary) or .ot (full) OctoMap file; the format is taken from the file's
-  // first line, not its name. Throws ceilplan::InputError naming the file and the problem:
-  // missing, unreadable, not an OctoMap, truncated or corrupt, a tree type other than OcTree,
-  // or a map with no known voxel.
+  // first line, not its name. Other occupancy trees (ColorOcTree, OcTreeStamped) are converted
+  // to their occupancy: the same nodes and log-odds, without colours or stamps. Throws
+  // ceilplan::InputError naming the file and the problem: missing, unreadable, not an OctoMap,
+  // truncated or corrupt, a .ot of a tree type ceilplan cannot read, or a map with no known voxel.
   static OccupancyMap load(const std::filesystem::path& file);
 
   // Same, from bytes already in memory; `name` appears in error messages.

@@ -70,8 +70,10 @@ class VoxelGrid {
   // All voxels unknown.
   explicit VoxelGrid(const GridFrame& frame);
 
-  // Rasterises every known leaf of `tree` over the bounding box of its known leaves.
-  static VoxelGrid fromTree(const octomap::OcTree& tree, const std::function<void(double)>& progress = {});
+  // Rasterises every known leaf of `tree` over the bounding box of its known leaves, on
+  // `workers` threads.
+  static VoxelGrid fromTree(const octomap::OcTree& tree, const std::function<void(double)>& progress = {},
+                            int workers = 1);
 
   const GridFrame& frame() const { return frame_; }
 
@@ -83,6 +85,8 @@ class VoxelGrid {
   void set(int i, int j, int k, CellState state) { cells_[frame_.linear(i, j, k)] = state; }
   // Sets every voxel whose centre lies in [min, max) on all axes.
   void fillBox(const Eigen::Vector3d& min_m, const Eigen::Vector3d& max_m, CellState state);
+
+  std::size_t memoryBytes() const { return cells_.capacity() * sizeof(CellState); }
 
  private:
   GridFrame frame_;

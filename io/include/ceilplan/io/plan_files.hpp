@@ -5,6 +5,7 @@
 #include "ceilplan/planner/path_evaluation.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/mission/route_planning.hpp"
+#include "ceilplan/io/provenance.hpp"
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -20,12 +21,15 @@ nlohmann::json figuresJson(const planner::PathEvaluation& evaluation);
 
 nlohmann::json waypointsJson(const std::vector<Eigen::Vector3d>& waypoints_m);
 
-// t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc (an empty gap field: no ceiling). Atomic.
-void writePathCsv(const std::filesystem::path& file, const planner::PathEvaluation& evaluation);
+// A provenance comment line, then t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,ground_gap_m
+// (an empty gap field: no surface). Atomic.
+void writePathCsv(const std::filesystem::path& file, const planner::PathEvaluation& evaluation,
+                  const Provenance& provenance);
 
 // DIR/plan.json (figures, waypoints, planner, cost and `extra`'s keys) and DIR/path.csv.
 void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanResult& plan,
-                        const planner::PathEvaluation& evaluation, const nlohmann::json& extra);
+                        const planner::PathEvaluation& evaluation, const nlohmann::json& extra,
+                        const Provenance& provenance);
 
 // The points of a path CSV: columns x, y, z (path.csv of plan and tour) or x_m, y_m, z_m
 // (trajectory.csv), other columns ignored, whatever they hold; a point repeated on consecutive
@@ -46,6 +50,6 @@ nlohmann::json routeComparisonJson(const mission::RouteComparison& comparison, c
 // DIR/compare.json, DIR/ceiling/ and DIR/free/ (plan directories) and the map views of both routes.
 void writeRouteComparison(const std::filesystem::path& dir, const mission::RouteComparison& comparison,
                           const mission::DutyOptions& duty, const nlohmann::json& extra,
-                          const environment::Environment& environment);
+                          const environment::Environment& environment, const Provenance& provenance);
 
 }  // namespace ceilplan::io

@@ -18,12 +18,13 @@
 namespace ceilplan::io {
 
 // at, ceiling_gap_m, ceiling_coverage, ceiling_mean_gap_m, the same for the ground, clearance_m,
-// valid, violation (null when valid) and rotors: [{offset_m, ceiling, ground}] in `vehicle`'s
-// rotor order, each gap {nearest_gap_m, coverage, mean_gap_m}.
+// valid, violation (null when valid), assumed_free, point_assumed_free and rotors: [{offset_m,
+// ceiling, ground}] in `vehicle`'s rotor order, each gap {nearest_gap_m, coverage, mean_gap_m}.
 nlohmann::json positionProbeJson(const environment::PositionProbe& probe, const environment::VehicleGeometry& vehicle);
 
 // resolution_m, extent_m {min, max}, leaves {occupied, free}, volume_m3 {occupied, free,
-// unknown}, ceiling_within_m, ceiling_area_share.
+// unknown}, unknown (io::unknownSpaceJson), ceiling {min_headroom_m, min_area_m2},
+// ceiling_area_share.
 nlohmann::json mapStatisticsJson(const environment::MapStatistics& statistics);
 
 // `current` at one condition: vehicle, soc, coverage, ground_gap_m, speed_m_s, climb_m_s, gap_m
@@ -38,10 +39,10 @@ nlohmann::json currentSweepReportJson(const std::string& vehicle, double coverag
                                       double rotor_radius_m, double free_air_current_a,
                                       const std::vector<energy::GapPoint>& sweep);
 
-// reference {planner, stride_voxels, time_s, raw_cost, cost} and planners [{planner, runs,
-// solved, median_first_solution_s, median_raw_cost_ratio, median_cost_ratio,
+// reference {planner, spacing_m (the lattice's), time_s, raw_cost, cost} and planners [{planner,
+// runs, solved, median_first_solution_s, median_raw_cost_ratio, median_cost_ratio,
 // median_time_to_5pct_s}] (null where no run solved, or never came within 5 %).
-nlohmann::json plannerBenchmarkJson(const planner::PlanResult& reference, int lattice_stride,
+nlohmann::json plannerBenchmarkJson(const planner::PlanResult& reference, double lattice_spacing_m,
                                     const std::vector<planner::PlannerBenchmarkRow>& rows);
 
 }  // namespace ceilplan::io

@@ -9,6 +9,7 @@
 // process as it would have (exit status 128 + the signal's number).
 
 #include <filesystem>
+#include <vector>
 
 namespace ceilplan::io {
 
@@ -18,7 +19,8 @@ namespace ceilplan::io {
 void installSignalCleanup();
 
 // One output (a file, or a directory the caller fills) under a temporary sibling name:
-// "<name>.tmp<pid>" next to the final path. The parent directory is created.
+// "<name>.tmp<pid>" next to the final path. Missing parent directories are created, and removed
+// again if the output is never committed.
 class TemporaryOutput {
  public:
   explicit TemporaryOutput(std::filesystem::path final_path);
@@ -35,9 +37,15 @@ class TemporaryOutput {
   // ceilplan::Error naming the final path if the rename fails (the temporary is then removed).
   void commit();
 
+  // For a temporary directory: moves every file in it to the same place under the final
+  // directory (created if missing; files of the same names replaced, others left alone), all
+  // under the signal cleanup's lock, so an interruption finds either none or all of them moved.
+  void commitMerging();
+
  private:
   std::filesystem::path final_;
   std::filesystem::path temporary_;
+  std::vector<std::filesystem::path> created_parents_;  // deepest first
   bool committed_ = false;
 };
 

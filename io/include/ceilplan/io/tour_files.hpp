@@ -3,6 +3,7 @@
 // for both modes, the comparison table. docs/tours.md describes every file.
 
 #include "ceilplan/io/autopilot_export.hpp"
+#include "ceilplan/io/provenance.hpp"
 #include "ceilplan/mission/mission.hpp"
 #include "ceilplan/mission/tour_planner.hpp"
 
@@ -15,11 +16,14 @@
 
 namespace ceilplan::io {
 
-nlohmann::json tourJson(const mission::TourResult& tour);
+// Everything of the tour (docs/tours.md, "Outputs"), with the mission, map and vehicle named.
+nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission, const Provenance& provenance);
 
-// t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie: the sorties back to back, each
-// recharge's duration between them.
-void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour);
+// The flight record: a provenance comment line, then
+// t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie,ground_gap_m,phase with every sample
+// of every sortie on the tour's clock (phase leg or dwell), and after each sortie a row for the
+// pack's recharge back to the start SOC (phase recharge: its end, on the pack's clock).
+void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour, const Provenance& provenance);
 
 // One autopilot mission per sortie: every leg's waypoints after home, a hold of the target's
 // dwell at each viewpoint, home last. Throws ceilplan::InputError without a geodetic origin.
@@ -28,14 +32,17 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
 // DIR/tour.json, DIR/path.csv, DIR/map_top.csv, DIR/map_side.csv and, with `autopilot`,
 // DIR/mission.plan and DIR/mission.waypoints (per sortie when several).
 void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour, const mission::Mission& mission,
-                        const environment::Environment& environment, std::optional<Autopilot> autopilot);
+                        const environment::Environment& environment, std::optional<Autopilot> autopilot,
+                        const Provenance& provenance);
 
 // The side-by-side table of two modes (ceiling first), as printed and as DIR/comparison.txt.
 std::string comparisonTable(const mission::TourResult& ceiling, const mission::TourResult& free);
-nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free);
+nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free,
+                              const mission::Mission& mission, const Provenance& provenance);
 // DIR/comparison.txt, DIR/comparison.json and map views covering both routes.
 void writeTourComparison(const std::filesystem::path& dir, const mission::TourResult& ceiling,
-                         const mission::TourResult& free, const environment::Environment& environment);
+                         const mission::TourResult& free, const mission::Mission& mission,
+                         const environment::Environment& environment, const Provenance& provenance);
 
 // One paragraph for the terminal: targets, sorties with their reasons, totals.
 std::string tourSummary(const mission::TourResult& tour);

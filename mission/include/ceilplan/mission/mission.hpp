@@ -7,6 +7,7 @@
 #include "ceilplan/mission/geodetic_origin.hpp"
 #include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
+#include "ceilplan/environment/unknown_space.hpp"
 
 #include <Eigen/Core>
 
@@ -36,6 +37,7 @@ struct Mission {
   MissionSpeeds speeds;
   std::string mode;       // "ceiling", "free" or "both"; empty: the command decides
   std::uint32_t seed = 1;  // of every random choice
+  environment::UnknownSpace unknown;  // what the map's unknown voxels count as (docs/environment.md)
   std::vector<InspectionTarget> targets;
 
   // A name for messages: the mission file, or "mission".

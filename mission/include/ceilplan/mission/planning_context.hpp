@@ -1,6 +1,6 @@
 #pragma once
 // Everything planning needs, built once per map, vehicle and battery: the map indexed for the
-// vehicle (and, for free mode, with the conventional standoff as its margins), the energy
+// vehicle (one index: free mode shares it and only prefers a standoff in its cost), the energy
 // model, the cost models (planning and full) and the safety rules; flight modes are then cheap
 // to add. Shared read-only by every query, leg and command.
 
@@ -33,6 +33,7 @@ struct PlanningOptions {
   double standoff_m = 1.0;           // free mode: the conventional distance from every structure
   double temperature_c = 25.0;       // cell temperature for the ageing models
   environment::EnvironmentOptions environment;
+  environment::UnknownSpace unknown;  // the map index's unknown-space policy
 
   // Throws ceilplan::InputError naming the first bad field.
   void validate() const;
@@ -62,19 +63,16 @@ class PlanningContext {
 
   // The full proximity model at the start SOC: every reported figure comes from it.
   const planner::FlightCostModel& fullModel() const { return *full_model_; }
-  // Safety rules without standoff: what the dense re-check and `evaluate` apply.
+  // The safety rules of every mode: what the dense re-check and `evaluate` apply.
   const planner::SafetyRules& baseRules() const { return *base_rules_; }
 
-  // What one mode plans with. Free mode: proximity effects off in the cost and the standoff
-  // applied everywhere except near start and goal.
+  // What one mode plans with: the same safety rules in both; free mode's cost ignores proximity
+  // effects and prefers the conventional standoff where it fits (CostModelOptions::standoff_m).
   struct Mode {
     std::unique_ptr<planner::FlightCostModel> model;
     std::unique_ptr<planner::SafetyRules> rules;
   };
-  Mode mode(FlightMode mode, const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
-  // The map indexed with the conventional standoff as the vehicle's margins (free mode), built
-  // on first use; call it once before sharing the context between threads.
-  const environment::Environment& standoffEnvironment() const;
+  Mode mode(FlightMode mode) const;
 
   // The objective (the options', or `name`), with ageing rates measured for the route's
   // expected depth of discharge. Throws ceilplan::InputError for an unknown name.
@@ -88,7 +86,6 @@ class PlanningContext {
   environment::OccupancyMap map_;
   ProgressCallback progress_;
   std::unique_ptr<environment::Environment> environment_;
-  mutable std::unique_ptr<environment::Environment> standoff_environment_;  // built on first use
   std::unique_ptr<energy::EnergyModel> energy_;
   std::unique_ptr<planner::FlightCostModel> full_model_;
   std::unique_ptr<planner::SafetyRules> base_rules_;

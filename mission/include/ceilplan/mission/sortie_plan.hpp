@@ -8,33 +8,31 @@
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/pack.hpp"
 #include "ceilplan/mission/battery_spec.hpp"
+#include "ceilplan/mission/soc_integrator.hpp"
 #include "ceilplan/core/error.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace ceilplan::mission {
 
-// A point of a leg's current profile; t_s from the leg's start.
-struct CurrentSample {
-  double t_s = 0.0;
-  double current_a = 0.0;
-};
-
 // What flying from one place to another costs the battery.
 struct LegCost {
+  // Flown from the start SOC: what orders the tour.
   double charge_ah = 0.0;
   double duration_s = 0.0;
   double mean_current_a = 0.0;
-  // Optional, for the SOC history of figures: samples over [0, duration_s]; the SOC follows
-  // their trapezoid integral, scaled to charge_ah. Empty: the mean current throughout.
-  std::vector<CurrentSample> current_profile;
+  // What the leg draws over [0, duration_s], turned into current at the SOC the sortie has
+  // reached there (TourCosts::current_at_soc). Empty: mean_current_a throughout, as a current.
+  std::vector<LoadSample> load_profile;
 };
 
 // Hovering at a target's viewpoint for its inspection.
 struct Dwell {
   double duration_s = 0.0;
-  double current_a = 0.0;
+  double current_a = 0.0;      // at the start SOC: what orders the tour
+  std::optional<double> load;  // what hovering draws (current_at_soc); unset: current_a, as a current
 };
 
 // Everything indexed like the tour's cost matrix: 0 is home, 1..N the targets.
@@ -42,6 +40,7 @@ struct TourCosts {
   std::vector<std::string> names;        // names[0] is home's, e.g. "home"
   std::vector<std::vector<LegCost>> legs;  // legs[i][j]: flying from i to j
   std::vector<Dwell> dwells;             // dwells[0] is ignored
+  CurrentAtSoc current_at_soc;           // unset: loads are currents
 
   int targetCount() const { return static_cast<int>(names.size()) - 1; }
   // Throws ceilplan::InputError naming the first bad entry (sizes, NaN, negative values).
@@ -73,9 +72,10 @@ struct Sortie {
   double charge_ah = 0.0;       // legs and dwells
   double flight_s = 0.0;        // take-off to landing, dwells included
   double recharge_s = 0.0;      // back to the start SOC at the pack's charge current
+  double turnaround_s = 0.0;    // landing to the next take-off: the recharge, or the pack swap
   double fec = 0.0;             // the discharge and its recharge, against nominal capacity
   double dod = 0.0;             // start SOC - lowest SOC
-  double lowest_soc = 0.0;      // at landing
+  double lowest_soc = 0.0;      // at landing (the SOC only falls in flight)
   double wear = 0.0;            // the ageing model's cycle wear of this sortie, fresh pack
   std::string reason;           // why it ends where it does, one sentence
   std::vector<SocSample> soc_history;  // leg and dwell boundaries, profile samples, recharge end
@@ -86,10 +86,12 @@ struct SortiePlan {
   std::string wear_name;     // its cycle-wear measure, e.g. "Miner damage"
   std::vector<Sortie> sorties;
   double charge_ah = 0.0;
-  double flight_s = 0.0;
+  double flight_s = 0.0;    // in the air, dwells included
+  double duration_s = 0.0;  // first take-off to last landing: flights and the turnarounds between them
   double fec = 0.0;
   double wear = 0.0;
   double min_soc = 1.0;
+  double state_of_health = 1.0;  // of the pack that flies it
 };
 
 // Chooses the sorties by dynamic programming over split points of `order` (matrix indices of

@@ -1,10 +1,11 @@
 #pragma once
 // Where the vehicle hovers to inspect a target: a valid body position within the target's
-// standoff range that sees the target point, drawing the least charge over the dwell. In
-// ceiling mode that is hugging the surface above (contact-style inspection under a deck); in
-// free mode proximity effects are ignored when choosing, as a conventional planner would, so
-// the nearest position of the free-mode environment (built with the conventional standoff from
-// every structure as its margin) wins. Either way the dwell is scored with the full model.
+// standoff range that sees the target point. In ceiling mode it draws the least charge over
+// the dwell: hugging the surface above (contact-style inspection under a deck). In free mode
+// proximity effects are ignored when choosing, as a conventional planner would: the nearest
+// position that keeps the conventional standoff from every structure where one fits, else the
+// position with the largest standoff that fits (planner/standoff.hpp). Both modes keep the same
+// clearance rules, and either way the dwell is scored with the full model.
 
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/environment/environment.hpp"
@@ -33,6 +34,7 @@ struct ViewpointOptions {
   // Rotors never come closer than this to the surface above (the planner's minimum ceiling gap).
   double min_ceiling_gap_m = 0.03;
   double soc = 0.65;  // SOC at which the dwell current is evaluated (energy model's reference)
+  double standoff_m = 1.0;  // free mode: the conventional standoff from every structure
 };
 
 struct Viewpoint {
@@ -50,7 +52,8 @@ double hoverCurrentA(const environment::Environment& environment, const energy::
 
 // Searches a lattice over the standoff shell (map resolution, then a quarter of it around the
 // best) for states valid in `environment` with a clear line of sight to the point through free
-// voxels, choosing the least dwell charge under `options.mode`, ties by distance to the point.
+// voxels, choosing under `options.mode` (ceiling: the least dwell charge; free: the smallest
+// standoff shortfall, to the millimetre), ties by distance to the point.
 // Throws ceilplan::InputError naming the target when it is invalid or no viewpoint exists.
 // Reads the environment and the model only: safe to run for several targets at once.
 Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Environment& environment,

@@ -1,6 +1,6 @@
 #pragma once
 // Minimises full equivalent cycles: the flight's discharge Q and the recharge that puts it back,
-// FEC = (Q + Q) / (2 C_nom) = Q / C_nom (Kocer et al. 2019, eq. 6; reference-models.md section 1),
+// FEC = (Q + Q) / (2 C_nom) = Q / C_nom (Kocer et al. 2019, arXiv 1812.11707, eq. 6),
 // with C_nom the pack's nominal capacity.
 
 #include "ceilplan/planner/flight_objective.hpp"

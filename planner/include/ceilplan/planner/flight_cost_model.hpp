@@ -19,7 +19,7 @@ namespace ceilplan::planner {
 struct FlightSpeeds {
   double cruise_m_s = 2.0;            // horizontal, in free air
   double near_ceiling_m_s = 1.8;      // horizontal, when a rotor is closer than near_ceiling_gap_radii R to a ceiling (docs/planner.md: break-even)
-  double near_ceiling_gap_radii = 2.0;  // the ceiling effect fades out by about 2 R (reference-models.md section 2)
+  double near_ceiling_gap_radii = 2.0;  // where the ceiling effect has nearly faded (docs/models.md, "Ceiling effect")
   double climb_m_s = 1.0;             // vertical rate limits
   double descent_m_s = 0.8;
 
@@ -37,6 +37,12 @@ struct CostModelOptions {
   bool proximity_effects = true;
   // Samples a motion at most this far apart along every axis; 0: half the map resolution.
   double step_m = 0.0;
+  // Free mode's standoff preference (0: none): every metre flown with the airframe's bounding
+  // sphere closer than `standoff_m` to a structure (standoffAt, standoff.hpp) costs, per metre
+  // short, as much as `standoff_weight` metres of level cruise in free air. The conventional
+  // standoff where it fits, the largest that fits where it does not (docs/planner.md, "Free mode").
+  double standoff_m = 0.0;
+  double standoff_weight = 100.0;
 };
 
 // What the map says at one body position, as the energy model needs it.
@@ -45,6 +51,7 @@ struct PointConditions {
   int rotor_count = 0;
   double ground_gap_m = energy::kNoSurface;        // area-weighted mean gap of the ground under the discs
   double nearest_ceiling_gap_m = energy::kNoSurface;  // rotor plane to the nearest ceiling, any rotor (speed rule)
+  double standoff_shortfall_m = 0.0;  // how far the standoff preference is from kept here (0 without one)
 };
 
 // The map's gaps at a body position as the energy model takes them: each rotor's mean gap and
@@ -63,22 +70,26 @@ struct MotionTotals {
   double length_m = 0.0;
   double duration_s = 0.0;
   double charge_ah = 0.0;
+  double shortfall_m2 = 0.0;  // the standoff shortfall integrated along the motion
 
   MotionTotals& operator+=(const MotionTotals& other) {
     length_m += other.length_m;
     duration_s += other.duration_s;
     charge_ah += other.charge_ah;
+    shortfall_m2 += other.shortfall_m2;
     return *this;
   }
 };
 
-// An objective as a weighted sum of motion totals: cost = per_m L + per_s T + per_ah Q.
+// An objective as a weighted sum of motion totals: cost = per_m L + per_s T + per_ah Q + per_m2 S.
 struct CostWeights {
   double per_m = 0.0;
   double per_s = 0.0;
   double per_ah = 0.0;
+  double per_shortfall_m2 = 0.0;  // the standoff preference (free mode), set by FlightObjective
   double of(const MotionTotals& totals) const {
-    return per_m * totals.length_m + per_s * totals.duration_s + per_ah * totals.charge_ah;
+    return per_m * totals.length_m + per_s * totals.duration_s + per_ah * totals.charge_ah +
+           per_shortfall_m2 * totals.shortfall_m2;
   }
 };
 
@@ -95,7 +106,8 @@ class FlightCostModel {
   double step_m() const { return step_m_; }
 
   // Gaps around a body position from the map (ceiling and ground discs); with proximity
-  // effects off, every rotor sees free air (the speed rule still sees the real ceiling).
+  // effects off, every rotor sees free air (the speed rule still sees the real ceiling). With a
+  // standoff preference, its shortfall there.
   // Where no structure lies within reach of any rotor disc (the distance field's lower bound
   // says so) the gap queries are skipped: free air, and nearest_ceiling_gap_m is +inf instead of
   // a gap beyond the reach. Throws ceilplan::InputError outside the map.
@@ -144,6 +156,8 @@ class FlightCostModel {
   // contact with a full ceiling (gap 0, coverage 1 on every rotor, ground at 0.5 R) at the
   // planning SOC, with every speed the rules allow. c_min x distance is an admissible cost-to-go.
   double minCostPerMetre(const CostWeights& weights) const;
+  // The cost per metre of level cruise in free air under `weights`: the standoff preference's unit.
+  double cruiseCostPerMetre(const CostWeights& weights) const;
 
  private:
   double costPerMetre(const CostWeights& weights, double current_a, double speed_m_s) const;
@@ -163,10 +177,12 @@ class FlightCostModel {
       if (started_) {
         totals_.duration_s += 0.5 * (previous_s_per_m_ + s_per_m) * interval_m_;
         totals_.charge_ah += 0.5 * (previous_as_per_m_ + as_per_m) * interval_m_ / 3600.0;
+        totals_.shortfall_m2 += 0.5 * (previous_shortfall_m_ + conditions.standoff_shortfall_m) * interval_m_;
       }
       started_ = true;
       previous_s_per_m_ = s_per_m;
       previous_as_per_m_ = as_per_m;
+      previous_shortfall_m_ = conditions.standoff_shortfall_m;
     }
     const MotionTotals& totals() const { return totals_; }
 
@@ -176,7 +192,7 @@ class FlightCostModel {
     double interval_m_;
     MotionTotals totals_;
     bool started_ = false;
-    double previous_s_per_m_ = 0.0, previous_as_per_m_ = 0.0;
+    double previous_s_per_m_ = 0.0, previous_as_per_m_ = 0.0, previous_shortfall_m_ = 0.0;
   };
 
   // Visits the sample points of a motion in order, from_m first and to_m last.
@@ -191,8 +207,11 @@ class FlightCostModel {
   const energy::EnergyModel& energy_;
   CostModelOptions options_;
   double step_m_;
+  double standoffShortfall_m(const Eigen::Vector3d& body_m) const;
+
   double near_ceiling_gap_m_;
   double free_air_clearance_m_;  // beyond it from the body centre, no surface can affect a rotor
+  double airframe_radius_m_;     // the airframe's bounding sphere, which the standoff is kept from
 };
 
 template <typename ConditionsAt>

@@ -1,11 +1,11 @@
 #pragma once
-// One planning query end to end: checks the request, runs the chosen planner (an OMPL planner
-// with the ceiling-band sampler, or the lattice A*), post-processes the path with the objective
-// (shortcuts, NLopt refinement) and re-checks it densely. A path that fails the dense re-check
-// is an error, never a result.
+// One planning query end to end: checks the request, runs the chosen planner (any planner of
+// planner_factory.hpp; OMPL's sampling planners with the ceiling-band sampler), post-processes
+// the path with the objective (shortcuts, NLopt refinement) and re-checks it densely. A path
+// that fails the dense re-check is an error, never a result.
 
 #include "ceilplan/planner/flight_objective.hpp"
-#include "ceilplan/planner/lattice_planner.hpp"
+#include "ceilplan/planner/lattice_settings.hpp"
 #include "ceilplan/planner/objective_factory.hpp"
 #include "ceilplan/planner/path_refinement.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
@@ -30,7 +30,7 @@ struct PlanRequest {
   double band_fraction = 0.0;     // share of samples aimed at the ceiling band (0, the default: uniform; docs/planner.md)
   bool refine = true;             // shortcuts + NLopt refinement
   RefinementOptions refinement;
-  LatticeOptions lattice;
+  LatticeSettings lattice;        // the lattice planners' spacing
   // Known routes from start to goal (e.g. the free-mode plan): each that is valid under these
   // rules is post-processed too, and returned if cheaper than what the search found, so a
   // plan is never worse than a route it was shown.

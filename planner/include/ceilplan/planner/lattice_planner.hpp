@@ -1,51 +1,39 @@
 #pragma once
-// The deterministic reference: A* over a lattice of voxel centres (every `stride` voxels,
-// 26-connected) with exactly the objective's motion cost (FlightCostModel::integrate; lattice
-// motions sample the half-voxel lattice, whose map conditions are cached) and the admissible,
-// consistent heuristic c_min x distance. Optimal over the lattice; the quality oracle.
+// The deterministic reference, as an OMPL planner ("lattice"): A* over a lattice of voxel
+// centres (LatticeSettings::spacing_m apart, 26-connected) with exactly the problem's objective
+// (a FlightObjective; lattice motions sample the half-voxel lattice, whose map conditions are
+// cached) and the admissible, consistent heuristic c_min x distance, under the space's
+// validity checker (FlightStateValidityChecker). Optimal over the lattice; the quality oracle.
+// Start and goal join the lattice nodes within sqrt(3) spacings.
+//
+// Where the lattice misses a passage, it refines: between the regions the start and the goal
+// reach on the lattice it searches a fine lattice (half a voxel) around their closest points,
+// and plans again with that passage as one more edge (the route is then the cheapest through
+// it). When there is none, blockage() says where and by which rule the way is blocked.
 
-#include "ceilplan/planner/flight_objective.hpp"
-#include "ceilplan/planner/safety_rules.hpp"
-#include "ceilplan/core/error.hpp"
-
-#include <Eigen/Core>
+#include "ceilplan/planner/lattice_planner_base.hpp"
 
 #include <cstddef>
-#include <functional>
-#include <optional>
-#include <vector>
 
 namespace ceilplan::planner {
 
-struct LatticeOptions {
-  int stride_voxels = 2;                   // lattice spacing in voxels (1 = every voxel centre)
-  std::size_t max_expansions = 50'000'000;
-  std::function<bool()> should_stop;       // optional: polled every few thousand expansions
-};
-
-struct LatticeResult {
-  std::vector<Eigen::Vector3d> waypoints;  // start, lattice nodes, goal
-  double cost = 0.0;                       // under the objective
-  std::size_t expansions = 0;
-};
-
-class LatticePlanner {
+class LatticePlanner : public LatticePlannerBase {
  public:
-  // `rules` and `objective` must outlive the planner. Throws ceilplan::InputError on a
-  // stride < 1.
-  LatticePlanner(const SafetyRules& rules, const FlightObjective& objective, LatticeOptions options = {});
+  // Throws ceilplan::InputError for bad settings.
+  explicit LatticePlanner(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings = {});
 
-  // The cheapest lattice path from `start_m` to `goal_m` (both joined to lattice nodes within
-  // sqrt(3) strides by straight motions), or nothing if none exists (or the search was stopped:
-  // see stopped()).
-  std::optional<LatticeResult> plan(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m);
-  bool stopped() const { return stopped_; }
+  // Needs a FlightObjective, a FlightStateValidityChecker and a GoalState. EXACT_SOLUTION with
+  // the cheapest lattice path; TIMEOUT when `ptc` or the expansion limit stopped the search;
+  // ABORT when no path exists on the lattice and its refinement (then blockage() is set).
+  ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition& ptc) override;
+  using ompl::base::Planner::solve;
+  void clear() override;
+  void getPlannerData(ompl::base::PlannerData& data) const override;
+
+  std::size_t expansions() const { return expansions_; }
 
  private:
-  const SafetyRules& rules_;
-  const FlightObjective& objective_;
-  LatticeOptions options_;
-  bool stopped_ = false;
+  std::size_t expansions_ = 0;
 };
 
 }  // namespace ceilplan::planner

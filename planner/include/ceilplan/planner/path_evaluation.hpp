@@ -18,10 +18,13 @@ struct PathSample {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
   double speed_m_s = 0.0;       // along the path
   double ceiling_gap_m = 0.0;   // rotor plane to the nearest ceiling, any rotor (+inf: none)
+  double ground_gap_m = 0.0;    // rotor plane to the ground, area-weighted mean under the discs (+inf: none)
   double clearance_m = 0.0;     // body centre to the nearest obstacle surface
   double current_a = 0.0;
   double power_w = 0.0;         // at the pack terminals
+  double propulsion_power_w = 0.0;  // to the motors: independent of the SOC (the current is not)
   double soc = 0.0;
+  bool assumed_free = false;    // the body overlaps unknown space the map's policy assumed free
 };
 
 struct PathEvaluation {
@@ -36,6 +39,7 @@ struct PathEvaluation {
   double min_clearance_m = 0.0;
   double min_ceiling_gap_m = 0.0;
   double time_under_ceiling_s = 0.0;  // time with a rotor closer than the speed rule's gap (2 R) to a ceiling
+  double assumed_free_m = 0.0;  // path length relying on the unknown-space policy (Environment::assumedFreeAlong)
 
   MotionTotals totals() const { return {length_m, duration_s, charge_ah}; }
 };

@@ -12,6 +12,7 @@ class FlightStateValidityChecker : public ompl::base::StateValidityChecker {
   // `rules` must outlive the checker.
   FlightStateValidityChecker(const ompl::base::SpaceInformationPtr& si, const SafetyRules& rules);
   bool isValid(const ompl::base::State* state) const override;
+  const SafetyRules& rules() const { return rules_; }
 
  private:
   const SafetyRules& rules_;

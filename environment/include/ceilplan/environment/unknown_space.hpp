@@ -1,0 +1,42 @@
+#pragma once
+// What the planner may assume about the voxels a map does not know (docs/environment.md,
+// "Unknown space"). One policy for validity, clearance and the ceiling and ground gaps.
+
+#include <string>
+
+namespace ceilplan::environment {
+
+enum class UnknownPolicy {
+  Occupied,  // unknown space is an obstacle (the safe default)
+  Free,      // every unknown voxel inside the map's box is free air
+  Fill,      // small unknown pockets inside known free space are free air; the rest is an obstacle
+};
+
+struct UnknownSpace {
+  // Fill's default: the under-scanned pockets of an indoor scan (up to about 2 m in geb079's
+  // corridor), not a room.
+  static constexpr double kDefaultFillMax_m = 2.0;
+
+  UnknownPolicy policy = UnknownPolicy::Occupied;
+  // Fill only: a connected unknown region counts as free air when it borders known free space,
+  // does not reach the box of the map's known voxels, and its size (the longest edge of its
+  // axis-aligned bounding box, between voxel faces) is at most this many metres.
+  double fill_max_m = kDefaultFillMax_m;
+
+  // Throws ceilplan::InputError when fill_max_m is not a positive finite number.
+  void validate() const;
+  // "occupied", "free", or "fill (pockets up to 1 m)".
+  std::string describe() const;
+
+  bool operator==(const UnknownSpace& other) const {
+    return policy == other.policy && (policy != UnknownPolicy::Fill || fill_max_m == other.fill_max_m);
+  }
+  bool operator!=(const UnknownSpace& other) const { return !(*this == other); }
+};
+
+// "occupied", "free", "fill"; unknownPolicyFromName throws ceilplan::InputError for any other
+// name, listing the valid ones.
+UnknownPolicy unknownPolicyFromName(const std::string& name);
+std::string unknownPolicyName(UnknownPolicy policy);
+
+}  // namespace ceilplan::environment

@@ -1,0 +1,44 @@
+#pragma once
+// Where an output came from: the ceilplan version and git revision, the command line, every
+// input file with its SHA-256, and the seed. JSON outputs carry it as "provenance", CSV
+// outputs as a first comment line.
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ceilplan::io {
+
+struct InputFile {
+  std::string role;  // "mission", "map", "vehicle", "battery", "path", ...
+  std::filesystem::path path;
+  std::string sha256;  // hex
+};
+
+struct Provenance {
+  std::string version;       // "0.1.0 (git abc123)"
+  std::string command_line;  // as typed (arguments joined and quoted), or who called the library
+  std::vector<InputFile> inputs;
+  std::optional<std::uint64_t> seed;
+
+  // The version of this build, `command_line`, no inputs yet.
+  static Provenance of(std::string command_line);
+  // Adds an input file with its SHA-256; an empty path is skipped (a built-in default).
+  Provenance& input(const std::string& role, const std::filesystem::path& path);
+
+  nlohmann::json json() const;
+  // One line: "# ceilplan 0.1.0 (git ...) | ceilplan tour ... | seed 1 | map bridge.bt sha256 ..."
+  std::string csvComment() const;
+};
+
+// The command line as one string, each argument quoted where the shell would need it.
+std::string commandLine(int argc, const char* const* argv);
+
+// SHA-256 of a file's bytes, as lowercase hex. Throws ceilplan::InputError if it cannot be read.
+std::string sha256File(const std::filesystem::path& file);
+
+}  // namespace ceilplan::io

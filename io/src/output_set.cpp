@@ -1,0 +1,52 @@
+#include "ceilplan/io/output_set.hpp"
+
+#include "ceilplan/core/error.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <system_error>
+
+namespace ceilplan::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool writable(const fs::path& dir) {
+  struct stat status {};
+  if (::stat(dir.c_str(), &status) != 0) return false;
+  if ((status.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0) return false;  // read-only, whoever asks
+  return ::access(dir.c_str(), W_OK | X_OK) == 0;
+}
+
+fs::path checkedDirectory(fs::path dir) {
+  OutputSet::checkWritable(dir);
+  return dir;
+}
+
+}  // namespace
+
+void OutputSet::checkWritable(const fs::path& dir) {
+  if (dir.empty()) throw InputError("the output location is empty: name a directory");
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw InputError(dir.string() + " exists and is not a directory: name a directory for the outputs");
+  // The nearest existing directory must take new entries; a file on the way is an error.
+  fs::path existing = fs::absolute(dir, ec);
+  while (!fs::exists(existing, ec)) existing = existing.parent_path();
+  if (!fs::is_directory(existing, ec))
+    throw InputError("cannot create " + dir.string() + ": " + existing.string() + " is a file, not a directory");
+  if (!writable(existing)) throw InputError("cannot write into " + existing.string() + ": the directory is read-only");
+  // The staging directory is a sibling: the parent must take it too.
+  const fs::path parent = fs::absolute(dir, ec).parent_path();
+  if (fs::exists(parent, ec) && !writable(parent))
+    throw InputError("cannot write next to " + dir.string() + ": " + parent.string() + " is read-only");
+}
+
+OutputSet::OutputSet(fs::path dir) : staging_(checkedDirectory(std::move(dir))) {
+  std::error_code ec;
+  fs::create_directories(staging_.path(), ec);
+  if (ec) throw Error("cannot create " + staging_.path().string() + ": " + ec.message());
+}
+
+}  // namespace ceilplan::io

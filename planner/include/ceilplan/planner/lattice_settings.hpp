@@ -1,0 +1,22 @@
+#pragma once
+// What the lattice planners (LatticePlanner, LatticeRoadmap) are told: how far apart their
+// nodes are, in metres, so a mission behaves the same whatever the map's resolution.
+
+#include <cstddef>
+#include <functional>
+
+namespace ceilplan::planner {
+
+struct LatticeSettings {
+  // Between lattice nodes; rounded to a whole number of voxels (at least one), so nodes sit on
+  // voxel centres and lattice motions sample the cost model's half-voxel lattice exactly.
+  double spacing_m = 0.4;
+  int workers = 1;                          // threads building the roadmap
+  std::size_t max_expansions = 50'000'000;  // the lattice A* gives up beyond
+  std::function<void(double)> progress;     // share of the roadmap's build done, from the calling thread
+
+  // Throws ceilplan::InputError for a spacing that is not a positive number or fewer than one worker.
+  void validate() const;
+};
+
+}  // namespace ceilplan::planner
