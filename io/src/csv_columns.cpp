@@ -142,7 +142,8 @@ CsvColumns CsvColumns::parse(std::istream& input, const std::string& source, con
       const std::string at = where + ", column " + quotedName(table.kept_names_[k]) + ": ";
       char* end = nullptr;
       const double value = std::strtod(field.c_str(), &end);
-      if (field.empty() || end != field.c_str() + field.size())
+      if (field.empty()) throw ceilplan::InputError(at + "empty field");
+      if (end != field.c_str() + field.size())
         throw ceilplan::InputError(at + "'" + printableText(field) + "' is not a number");
       if (!std::isfinite(value))
         throw ceilplan::InputError(at + "'" + printableText(field) + "' is not a finite number");
