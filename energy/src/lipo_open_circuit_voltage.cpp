@@ -46,4 +46,9 @@ double LipoOpenCircuitVoltage::cellVoltageUncheckedV(double soc) const noexcept 
   return voltage_v_[i] + slope_v_per_soc_[i] * (soc - soc_[i]);
 }
 
+std::function<double(double soc)> lipoCellVoltageOfSoc() {
+  const LipoOpenCircuitVoltage curve;
+  return [curve](double soc) { return curve.cellVoltageV(soc); };
+}
+
 }  // namespace ceilplan::energy
