@@ -31,12 +31,13 @@ int main(int argc, char** argv) {
   help->add_option("command", *topic, "the command to describe");
   addRegisteredCommands(app);
   help->callback([&app, topic] {
+    // CLI::App::help() would describe the selected subcommand, `help` itself: format the app.
     if (topic->empty()) {
-      std::cout << app.help();
+      std::cout << app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
       return;
     }
     try {
-      std::cout << app.get_subcommand(*topic)->help();
+      std::cout << app.get_subcommand(*topic)->help(app.get_name());
     } catch (const CLI::OptionNotFound&) {
       throw ceilplan::InputError("no command '" + *topic + "'; 'ceilplan help' lists them");
     }
