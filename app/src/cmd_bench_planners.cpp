@@ -86,6 +86,8 @@ std::string text(double value, int decimals) {
 
 void runBench(const BenchArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
+  if (!a.json.empty()) checkWritableFile(a.json);  // before the runs
+  if (!a.log.empty()) checkWritableFile(a.log);
   const std::vector<std::string> names = splitNames(a.planners);
   for (const std::string& name : names) {
     try {
@@ -136,13 +138,16 @@ void runBench(const BenchArguments& a) {
     for (const ompl::base::State* s : definition->getSolutionPath()->as<ompl::geometric::PathGeometric>()->getStates())
       raw.push_back(planner::toPosition(s));
     const std::vector<Eigen::Vector3d> final_path = flight_planner.postProcess(raw, refinement, !a.search.no_refine);
-    run["ceilplan raw cost REAL"] = std::to_string(objective.pathCost(raw));
-    run["ceilplan cost REAL"] = std::to_string(objective.pathCost(final_path));
+    run["ceilplan raw cost REAL"] = formatNumber(objective.pathCost(raw), 17);
+    run["ceilplan cost REAL"] = formatNumber(objective.pathCost(final_path), 17);
   });
   ompl::tools::Benchmark::Request request(a.search.time_limit_s, 4096.0, a.runs, 0.05, false, false, false);
   benchmark.benchmark(request);
   flight_planner.clearBandSampler();
-  if (!a.log.empty()) benchmark.saveResultsToFile(a.log.c_str());
+  if (!a.log.empty())
+    writeAtomically(a.log, [&](const std::filesystem::path& temporary) {
+      if (!benchmark.saveResultsToFile(temporary.c_str())) throw Error("cannot write " + a.log);
+    });
 
   std::printf("\n%-16s %7s %11s %12s %12s %12s %13s\n", "planner", "solved", "first [s]", "raw / ref", "final / ref",
               "best final", "to 5 % [s]");

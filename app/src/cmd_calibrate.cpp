@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -65,6 +66,8 @@ const std::map<std::string, double energy::CalibrationSample::*>& columns() {
 
 // Reads samples; '#' lines are comments. In the gap columns an empty cell or "none" means no surface.
 std::vector<energy::CalibrationSample> readSamples(const std::string& path, double default_soc) {
+  if (std::filesystem::is_directory(path))
+    throw ceilplan::InputError("calibration data " + ceilplan::printableText(path, 256) + " is a directory; give a CSV file");
   std::ifstream in(path);
   if (!in) throw ceilplan::InputError("cannot read calibration data " + ceilplan::printableText(path, 256) + " (missing or unreadable)");
   std::vector<double energy::CalibrationSample::*> header;
@@ -72,6 +75,7 @@ std::vector<energy::CalibrationSample> readSamples(const std::string& path, doub
   std::vector<energy::CalibrationSample> samples;
   std::string line;
   for (int line_number = 1; std::getline(in, line); ++line_number) {
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte-order mark
     const std::string content = trimmed(line);
     if (content.empty() || content[0] == '#') continue;
     const std::string where = ceilplan::printableText(path, 256) + " line " + std::to_string(line_number) + ": ";
@@ -117,6 +121,8 @@ std::vector<energy::CalibrationSample> readSamples(const std::string& path, doub
 }
 
 void runCalibrate(const CalibrateOptions& options) {
+  checkWritableFile(options.out_path);  // before the fit
+  if (!options.json_path.empty()) checkWritableFile(options.json_path);
   const mission::Vehicle vehicle =
       options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
   const auto samples = readSamples(options.data_path, vehicle.energy.reference_soc);

@@ -345,6 +345,8 @@ void checkStudy(const DutyArguments& args, const battery::MissionTemplate& missi
 }
 
 void runDuty(const DutyArguments& args) {
+  if (!args.json_path.empty()) checkWritableFile(args.json_path);  // before the work
+  if (!args.csv_dir.empty()) io::OutputSet::checkWritable(args.csv_dir);
   battery::Pack pack;
   pack.capacity_ah = args.capacity_ah;
   pack.charge_current_a = args.charge_current_a;
@@ -378,9 +380,14 @@ void runDuty(const DutyArguments& args) {
     cases.back().ageing = projectAgeing(args, pack, duties[i], flight_current_a);
   }
   printTable(args, cases);
+  std::optional<io::OutputSet> csv;  // staged whole: the JSON is never left beside half a series
+  if (!args.csv_dir.empty()) {
+    csv.emplace(args.csv_dir);
+    writeCsvDirectory(csv->path(), cases);
+  }
   if (!args.json_path.empty())
     writeTextAtomically(args.json_path, [&](std::ostream& out) { out << toJson(args, cases).dump(2) << '\n'; });
-  if (!args.csv_dir.empty()) writeCsvDirectory(args.csv_dir, cases);
+  if (csv) csv->commit();
 }
 
 // 0 (the exact scheme), or a step of 1 ms to an hour.

@@ -58,6 +58,7 @@ void runImport(const ImportOptions& options) {
   namespace env = environment;
   const std::filesystem::path out(options.out);
   if (out.extension() != ".bt") throw ceilplan::InputError("--out " + options.out + ": the map file must end in .bt");
+  checkWritableFile(out);  // before the cloud is read
   if (!(options.resolution_m >= env::kMinImportResolution_m && options.resolution_m <= env::kMaxImportResolution_m))
     throw ceilplan::InputError("--resolution " + formatNumber(options.resolution_m) + ": use " +
                                formatNumber(env::kMinImportResolution_m) + " to " + formatNumber(env::kMaxImportResolution_m) + " m");

@@ -57,6 +57,7 @@ nlohmann::json gapJson(const environment::RotorGap& gap) {
 
 void runProbe(const ProbeOptions& options) {
   using namespace environment;
+  if (!options.json.empty()) checkWritableFile(options.json);
   const Eigen::Vector3d body = parsePoint(options.at);
   const VehicleGeometry vehicle =
       (options.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle)).geometry;

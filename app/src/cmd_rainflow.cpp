@@ -3,6 +3,7 @@
 #include "command_registry.hpp"
 #include "ceilplan/io/csv_columns.hpp"
 #include "ceilplan/core/printable_text.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/temporary_output.hpp"
 
 #include "ceilplan/battery/rainflow.hpp"
@@ -100,6 +101,7 @@ void runRainflow(const RainflowArguments& args) {
   io::installSignalCleanup();  // idempotent; main() should call it first, before any thread starts
   if (!args.json_path.empty() && std::filesystem::is_directory(args.json_path))
     throw InputError("--json " + ceilplan::printableText(args.json_path, 256) + " is a directory; give a file name");
+  if (!args.json_path.empty()) io::checkWritableFile(args.json_path);
   const io::CsvColumns table = io::CsvColumns::read(args.csv_path, {args.column}, {kTimeColumn});
   checkSeries(table, args.column);
   const std::vector<RainflowCycle> cycles = battery::countRainflowCycles(table.column(args.column));

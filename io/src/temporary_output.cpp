@@ -7,7 +7,7 @@
 
 #include <csignal>
 #include <mutex>
-#include <set>
+#include <map>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -24,8 +24,9 @@ std::mutex& registryMutex() {
   return mutex;
 }
 
-std::set<fs::path>& registry() {
-  static std::set<fs::path> paths;
+// Each registered temporary, with the final path it will take.
+std::map<fs::path, fs::path>& registry() {
+  static std::map<fs::path, fs::path> paths;
   return paths;
 }
 
@@ -43,7 +44,7 @@ sigset_t cleanupSignals() {
   }
   registryMutex().lock();
   std::error_code ignored;
-  for (const fs::path& path : registry()) fs::remove_all(path, ignored);
+  for (const auto& entry : registry()) fs::remove_all(entry.first, ignored);
   // End the process the way the signal would have, so the caller sees "killed by SIGINT".
   std::signal(signal_number, SIG_DFL);
   sigset_t only;
@@ -65,6 +66,15 @@ void installSignalCleanup() {
   });
 }
 
+fs::path finalPathOf(const fs::path& path) {
+  const std::lock_guard<std::mutex> lock(registryMutex());
+  for (const auto& [temporary, final_path] : registry()) {
+    const fs::path inside = path.lexically_relative(temporary);
+    if (!inside.empty() && *inside.begin() != "..") return inside == "." ? final_path : final_path / inside;
+  }
+  return path;
+}
+
 TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_path)) {
   temporary_ = final_;
   temporary_ += ".tmp" + std::to_string(::getpid());
@@ -77,7 +87,7 @@ TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_p
       throw ceilplan::Error("cannot create directory " + final_.parent_path().string() + ": " + ec.message());
   }
   const std::lock_guard<std::mutex> lock(registryMutex());
-  registry().insert(temporary_);
+  registry().emplace(temporary_, final_);
 }
 
 TemporaryOutput::~TemporaryOutput() {

@@ -18,6 +18,10 @@ namespace ceilplan::io {
 // nothing.
 void installSignalCleanup();
 
+// Where `path`, a file being written inside a temporary output (or the temporary itself), will
+// be once committed; any other path as it is. For messages: the user named the final path.
+std::filesystem::path finalPathOf(const std::filesystem::path& path);
+
 // One output (a file, or a directory the caller fills) under a temporary sibling name:
 // "<name>.tmp<pid>" next to the final path. Missing parent directories are created, and removed
 // again if the output is never committed.
