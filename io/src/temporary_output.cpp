@@ -24,9 +24,15 @@ std::mutex& registryMutex() {
   return mutex;
 }
 
-// Each registered temporary, with the final path it will take.
-std::map<fs::path, fs::path>& registry() {
-  static std::map<fs::path, fs::path> paths;
+// Each registered temporary, with the final path it will take and the parent directories
+// created for it (deepest first).
+struct Registered {
+  fs::path final_path;
+  std::vector<fs::path> created_parents;
+};
+
+std::map<fs::path, Registered>& registry() {
+  static std::map<fs::path, Registered> paths;
   return paths;
 }
 
@@ -44,7 +50,10 @@ sigset_t cleanupSignals() {
   }
   registryMutex().lock();
   std::error_code ignored;
-  for (const auto& entry : registry()) fs::remove_all(entry.first, ignored);
+  for (const auto& [temporary, registered] : registry()) {
+    fs::remove_all(temporary, ignored);
+    for (const fs::path& parent : registered.created_parents) fs::remove(parent, ignored);  // only if still empty
+  }
   // End the process the way the signal would have, so the caller sees "killed by SIGINT".
   std::signal(signal_number, SIG_DFL);
   sigset_t only;
@@ -68,9 +77,10 @@ void installSignalCleanup() {
 
 fs::path finalPathOf(const fs::path& path) {
   const std::lock_guard<std::mutex> lock(registryMutex());
-  for (const auto& [temporary, final_path] : registry()) {
+  for (const auto& [temporary, registered] : registry()) {
     const fs::path inside = path.lexically_relative(temporary);
-    if (!inside.empty() && *inside.begin() != "..") return inside == "." ? final_path : final_path / inside;
+    if (!inside.empty() && *inside.begin() != "..")
+      return inside == "." ? registered.final_path : registered.final_path / inside;
   }
   return path;
 }
@@ -87,7 +97,7 @@ TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_p
       throw ceilplan::Error("cannot create directory " + final_.parent_path().string() + ": " + ec.message());
   }
   const std::lock_guard<std::mutex> lock(registryMutex());
-  registry().emplace(temporary_, final_);
+  registry().emplace(temporary_, Registered{final_, created_parents_});
 }
 
 TemporaryOutput::~TemporaryOutput() {

@@ -5,8 +5,9 @@
 //
 // Nothing runs in signal context. installSignalCleanup() blocks SIGINT and SIGTERM in the calling
 // thread, and so in every thread started after it, and starts one thread that takes them with
-// sigwait(): it removes every temporary output still registered, then lets the signal end the
-// process as it would have (exit status 128 + the signal's number).
+// sigwait(): it removes every temporary output still registered (and the parent directories
+// created for it, when empty), then lets the signal end the process as it would have (exit
+// status 128 + the signal's number).
 
 #include <filesystem>
 #include <vector>
