@@ -9,6 +9,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/report_json.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
@@ -60,6 +61,8 @@ std::string text(double value, int decimals) {
 
 void runBench(const BenchArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
+  if (!a.json.empty()) io::checkWritableFile(a.json);  // before the runs
+  if (!a.log.empty()) io::checkWritableFile(a.log);
   planner::PlannerBenchmarkOptions options;
   options.planners = splitNames(a.planners);
   options.runs = a.runs;

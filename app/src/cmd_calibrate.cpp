@@ -25,6 +25,8 @@ struct CalibrateOptions {
 };
 
 void runCalibrate(const CalibrateOptions& options) {
+  checkWritableFile(options.out_path);  // before the fit
+  if (!options.json_path.empty()) checkWritableFile(options.json_path);
   const mission::Vehicle vehicle =
       options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
   const auto samples = io::readCalibrationSamples(options.data_path, vehicle.energy.reference_soc);

@@ -56,6 +56,7 @@ void printBreakdown(const energy::CurrentBreakdown& b) {
 }
 
 void runCurrent(const CurrentOptions& options) {
+  if (!options.json_path.empty()) checkWritableFile(options.json_path);
   const mission::Vehicle vehicle =
       options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
   const energy::EnergyModel model(vehicle.energy);

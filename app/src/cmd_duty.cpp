@@ -8,6 +8,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/duty_study_files.hpp"
 #include "ceilplan/io/json_values.hpp"
 
@@ -74,6 +75,8 @@ void checkStudy(const DutyArguments& args, const battery::DutyStudyOptions& stud
 }
 
 void runDuty(const DutyArguments& args) {
+  if (!args.json_path.empty()) io::checkWritableFile(args.json_path);  // before the work
+  if (!args.csv_dir.empty()) io::OutputSet::checkWritable(args.csv_dir);
   battery::DutyStudyOptions study = studyOptions(args);
   checkStudy(args, study);
   study.progress = terminalProgress();

@@ -6,6 +6,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/map_import.hpp"
 #include "ceilplan/io/mesh_file.hpp"
 #include "ceilplan/io/point_cloud_file.hpp"
@@ -31,6 +32,7 @@ void runImport(const ImportArguments& args) {
   options.mesh = args.mesh;
   const std::filesystem::path out(args.out);
   if (out.extension() != ".bt") throw ceilplan::InputError("--out " + args.out + ": the map file must end in .bt");
+  io::checkWritableFile(out);  // before the cloud is read
   if (!(options.resolution_m >= environment::kMinImportResolution_m &&
         options.resolution_m <= environment::kMaxImportResolution_m))
     throw ceilplan::InputError("--resolution " + formatNumber(options.resolution_m) + ": use " +

@@ -1,5 +1,6 @@
 // `ceilplan mapgen`: writes one of the shipped inspection scenes as an OctoMap file.
 
+#include "cli_checks.hpp"
 #include "command_registry.hpp"
 
 #include "ceilplan/core/error.hpp"
@@ -27,6 +28,7 @@ void runMapgen(const MapgenOptions& options) {
   const std::filesystem::path out(options.out);
   if (!io::isOctoMapFileName(out))
     throw ceilplan::InputError("--out " + options.out + ": the map file must end in .bt (or .ot)");
+  checkWritableFile(out);
   const VoxelGrid grid = generateScene(scene, options.scene_options);
   const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
   io::writeOctoMapFile(out, *tree);
@@ -48,7 +50,8 @@ const CommandRegistration registration(20, [](CLI::App& parent) {
   command->add_option("--out", options->out, "Output file (.bt, or .ot for OctoMap's full format)")->required();
   command->add_option("--resolution", options->scene_options.resolution_m, "Voxel size in metres (0.02 to 1)")
       ->capture_default_str();
-  command->add_option("--seed", options->scene_options.seed, "Seed placing the scene's clutter")->capture_default_str();
+  command->add_option("--seed", options->scene_options.seed, "Seed placing the scene's clutter")
+      ->capture_default_str()->check(wholeNumber());
   command->add_option("--bridge-length-m", options->scene_options.bridge_length_m,
                       "Bridge only: span between the abutments, a multiple of 4 m from 16 to 2000 (piers every 16 m)")
       ->capture_default_str();

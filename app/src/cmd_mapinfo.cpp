@@ -35,6 +35,8 @@ void runMapinfo(const MapinfoOptions& options) {
   using namespace environment;
   MapIndexOptions index_options;
   index_options.unknown = options.unknown.value();
+  if (!options.json.empty()) checkWritableFile(options.json);  // before the map is read and indexed
+  if (!options.slice_csv.empty()) checkWritableFile(options.slice_csv);
   const OccupancyMap map = OccupancyMap::load(options.map);
   if (!options.vehicle.empty() && options.slice_csv.empty())
     throw ceilplan::InputError("--vehicle applies only to --slice-csv; add --slice-csv FILE or drop it");

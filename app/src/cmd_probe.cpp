@@ -8,6 +8,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/position_probe.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/report_json.hpp"
 #include "ceilplan/io/unknown_space_report.hpp"
@@ -40,6 +41,7 @@ std::string text(double value) {
 
 void runProbe(const ProbeOptions& options) {
   using namespace environment;
+  if (!options.json.empty()) io::checkWritableFile(options.json);
   const Eigen::Vector3d body = parsePoint(options.at, "--at");
   const VehicleGeometry vehicle =
       (options.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle)).geometry;

@@ -6,6 +6,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/core/printable_text.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/soc_series_file.hpp"
 
@@ -47,6 +48,7 @@ void printCycles(const RainflowArguments& args, std::size_t samples, const std::
 void runRainflow(const RainflowArguments& args) {
   if (!args.json_path.empty() && std::filesystem::is_directory(args.json_path))
     throw InputError("--json " + ceilplan::printableText(args.json_path, 256) + " is a directory; give a file name");
+  if (!args.json_path.empty()) io::checkWritableFile(args.json_path);
   const std::vector<double> soc = io::readSocSeries(args.csv_path, args.column);
   const std::vector<RainflowCycle> cycles = battery::countRainflowCycles(soc);
   printCycles(args, soc.size(), cycles);

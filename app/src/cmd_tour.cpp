@@ -115,7 +115,7 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                       "pairwise planners: search time per leg (refinement may take as long again)")
       ->capture_default_str()->check(positiveFinite());
   command->add_option("--lattice-spacing-m", a->options.lattice_spacing_m, "roadmap and lattice: node spacing")
-      ->capture_default_str()->check(CLI::Range(0.01, 2.0));
+      ->capture_default_str()->check(finiteRange(0.01, 2.0));
   command->add_option("--lattice-stride", a->options.lattice_stride,
                       "roadmap and lattice: node spacing in voxels of the map instead (to be retired)")
       ->check(CLI::Range(1, 16));

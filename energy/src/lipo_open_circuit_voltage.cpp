@@ -1,4 +1,5 @@
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <algorithm>
@@ -33,7 +34,7 @@ LipoOpenCircuitVoltage::LipoOpenCircuitVoltage() {
 
 double LipoOpenCircuitVoltage::cellVoltageV(double soc) const {
   if (!(soc >= 0.0 && soc <= 1.0))
-    throw ceilplan::InputError("state of charge " + std::to_string(soc) +
+    throw ceilplan::InputError("state of charge " + formatNumber(soc) +
                                 " is outside [0, 1]: give it as a fraction, e.g. 0.65");
   return cellVoltageUncheckedV(soc);
 }

@@ -55,6 +55,7 @@ std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext&
   const environment::Environment& environment = context.environment();
   std::vector<TourStop> stops;
   for (const InspectionTarget& target : mission.targets) {
+    requireOnStructure(target, environment);  // as the mission gives it, before free mode widens the range
     TourStop stop{target, {}, {}};
     // A conventional planner inspects from where its standoff lets it, with a zoom lens.
     if (mode == FlightMode::Free)
