@@ -394,6 +394,7 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   tour.unknown_summary = context.environment().index()->unknownSummary();
   for (const Sortie& sortie : tour.plan.sorties)
     for (const SortieLeg& leg : sortie.legs) tour.assumed_free_m += tour.legs[leg.from][leg.to].evaluation.assumed_free_m;
+  if (mode == FlightMode::Free) tour.standoff = measureTourStandoff(tour, context.environment(), context.options().standoff_m);
   tour.record = recordFlight(tour, context);
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
     tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));
