@@ -47,6 +47,28 @@ nlohmann::json dutyJson(const mission::DutyProjection& duty, const mission::Tour
   return json;
 }
 
+// Free mode: where the tour kept less than the standoff, by leg and viewpoint.
+nlohmann::json tourStandoffJson(const mission::TourResult& tour, const mission::TourStandoff& standoff) {
+  nlohmann::json legs = nlohmann::json::array(), viewpoints = nlohmann::json::array();
+  for (const mission::NarrowedLeg& leg : standoff.legs) {
+    const nlohmann::json report = standoffJson(leg.report);
+    for (const nlohmann::json& span : report["narrowed"]) {
+      nlohmann::json entry = {{"sortie", leg.sortie}, {"leg", tour.names[leg.from] + " -> " + tour.names[leg.to]}};
+      entry.update(span);
+      legs.push_back(entry);
+    }
+  }
+  for (int k : standoff.narrowed_stops)
+    viewpoints.push_back({{"target", tour.stops[k].target.name}, {"standoff_m", tour.stops[k].viewpoint.standoff_m}});
+  return {{"standoff_m", standoff.standoff_m},
+          {"length_m", standoff.length_m},
+          {"narrowed_m", standoff.narrowed_m},
+          {"min_standoff_m", standoff.min_standoff_m},
+          {"narrowest", waypointsJson({standoff.narrowest_m})[0]},
+          {"narrowed", legs},
+          {"narrowed_viewpoints", viewpoints}};
+}
+
 std::vector<Eigen::Vector3d> flownRoute(const mission::TourResult& tour) {
   std::vector<Eigen::Vector3d> route;
   for (const mission::SortieRecord& sortie : tour.record.sorties)
@@ -97,10 +119,12 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
                        {"distance_m", v.distance_m},
                        {"standoff_m", {stop.target.standoff_min_m, stop.target.standoff_max_m}},
                        {"ceiling_gap_m", finiteOrNull(v.ceiling_gap_m)},
+                       {"viewpoint_standoff_m", v.standoff_m},
                        {"dwell_s", stop.target.dwell_s},
                        {"hover_power_w", stop.hover.propulsion_power_w}});
   }
   json["targets"] = targets;
+  if (tour.standoff) json["standoff"] = tourStandoffJson(tour, *tour.standoff);
   nlohmann::json sorties = nlohmann::json::array();
   for (std::size_t k = 0; k < tour.plan.sorties.size(); ++k) {
     const mission::Sortie& sortie = tour.plan.sorties[k];
@@ -292,6 +316,23 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
   });
 }
 
+std::string standoffLine(const mission::TourResult& tour) {
+  const mission::TourStandoff& standoff = *tour.standoff;
+  std::string line = "standoff " + formatNumber(standoff.standoff_m) + " m: ";
+  if (standoff.legs.empty()) {
+    line += "kept over the whole " + formatFixed(standoff.length_m, 1) + " m flown";
+  } else {
+    line += "kept over " + formatFixed(standoff.length_m - standoff.narrowed_m, 1) + " of " +
+            formatFixed(standoff.length_m, 1) + " m flown, narrowed over " + formatFixed(standoff.narrowed_m, 1) +
+            " m on " + std::to_string(standoff.legs.size()) + (standoff.legs.size() == 1 ? " leg" : " legs");
+  }
+  line += "; " + std::to_string(standoff.narrowed_stops.size()) + " of " + std::to_string(tour.stops.size()) +
+          " viewpoints keep less";
+  if (std::isfinite(standoff.min_standoff_m) && standoff.min_standoff_m < standoff.standoff_m)
+    line += "; closest " + formatFixed(standoff.min_standoff_m, 2) + " m at " + formatPoint(standoff.narrowest_m);
+  return line + " (tour.json: standoff)";
+}
+
 std::string tourSummary(const mission::TourResult& tour) {
   std::ostringstream out;
   char line[600];
@@ -312,6 +353,7 @@ std::string tourSummary(const mission::TourResult& tour) {
   std::snprintf(line, sizeof line, ", FEC %.5f, lowest SOC %.1f %% (reserve %.0f %%)\n", tour.plan.fec,
                 100.0 * tour.plan.min_soc, 100.0 * tour.reserve_soc);
   out << line;
+  if (tour.standoff) out << "  " << standoffLine(tour) << '\n';
   if (!tour.duty.result) out << "  duty projection " << tour.duty.note << '\n';
   return out.str();
 }

@@ -395,6 +395,7 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   tour.unknown_summary = context.environment().index()->unknownSummary();
   for (const Sortie& sortie : tour.plan.sorties)
     for (const SortieLeg& leg : sortie.legs) tour.assumed_free_m += tour.legs[leg.from][leg.to].evaluation.assumed_free_m;
+  if (mode == FlightMode::Free) tour.standoff = measureTourStandoff(tour, context.environment(), context.options().standoff_m);
   tour.record = recordFlight(tour, context);
   std::vector<RouteStop> route_stops;
   for (const TourStop& stop : tour.stops) route_stops.push_back({stop.target.name, stop.target.point_m, stop.target.dwell_s});

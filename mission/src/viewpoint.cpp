@@ -199,6 +199,7 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
   viewpoint.position_m = search.best();
   viewpoint.distance_m = (viewpoint.position_m - target.point_m).norm();
   viewpoint.ceiling_gap_m = environment.ceiling(viewpoint.position_m).nearest_gap_m;
+  viewpoint.standoff_m = planner::standoffAt(environment, viewpoint.position_m);
   viewpoint.dwell_current_a = hoverCurrentA(environment, model, viewpoint.position_m, options.soc);
   viewpoint.dwell_charge_ah = viewpoint.dwell_current_a * target.dwell_s / 3600.0;
   return viewpoint;

@@ -50,7 +50,12 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
                          const mission::TourResult& free, const mission::Mission& mission,
                          const environment::Environment& environment, const Provenance& provenance);
 
-// One paragraph for the terminal: targets, sorties with their reasons, totals.
+// One paragraph for the terminal: targets, sorties with their reasons, totals and, in free
+// mode, standoffLine.
 std::string tourSummary(const mission::TourResult& tour);
+// Free mode (tour.standoff set): where the tour kept less than the conventional standoff, e.g.
+// "standoff 1 m: kept over 20.3 of 55.1 m flown, narrowed over 34.8 m on 9 legs; 9 of 9
+// viewpoints keep less; closest 0.12 m at (8.50, 0.24, 1.52) (tour.json: standoff)".
+std::string standoffLine(const mission::TourResult& tour);
 
 }  // namespace ceilplan::io

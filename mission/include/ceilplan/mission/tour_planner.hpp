@@ -14,6 +14,7 @@
 #include "ceilplan/mission/tour_legs.hpp"
 #include "ceilplan/mission/tour_order.hpp"
 #include "ceilplan/mission/tour_routes.hpp"
+#include "ceilplan/mission/tour_standoff.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 
@@ -82,6 +83,7 @@ struct TourResult {
   environment::UnknownSpace unknown_space;             // the map's policy, as planned
   environment::UnknownSpaceSummary unknown_summary;    // what it assumed free in the map
   double assumed_free_m = 0.0;                         // of the flown route, relying on the policy
+  std::optional<TourStandoff> standoff;  // free mode: where the conventional standoff was not kept
 };
 
 // Plans the mission's tour in one mode with the context's map, vehicle and battery. Throws

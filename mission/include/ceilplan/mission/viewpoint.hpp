@@ -41,6 +41,7 @@ struct Viewpoint {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // body centre
   double distance_m = 0.0;        // to the target point
   double ceiling_gap_m = 0.0;     // nearest rotor-plane gap above; +inf if none
+  double standoff_m = 0.0;        // airframe to the nearest structure (planner::standoffAt)
   double dwell_current_a = 0.0;   // full model, hovering here
   double dwell_charge_ah = 0.0;   // dwell current x dwell time
 };

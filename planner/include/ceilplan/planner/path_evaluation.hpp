@@ -44,6 +44,8 @@ struct PathEvaluation {
   MotionTotals totals() const { return {length_m, duration_s, charge_ah}; }
 };
 
+// A path whose waypoints all coincide (a tour's two targets seen from the same place) is no
+// flight: one sample, hovering there, and zero length, time and charge.
 // Throws ceilplan::InputError for fewer than 2 waypoints or a start SOC outside (0, 1],
 // ceilplan::InputError for a waypoint outside the map, battery::DepletionError if the pack would
 // run below its floor.
