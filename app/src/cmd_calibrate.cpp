@@ -2,6 +2,7 @@
 
 #include "command_registry.hpp"
 
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/energy/calibration.hpp"
 #include "ceilplan/io/calibration_file.hpp"
 #include "ceilplan/io/json_values.hpp"
@@ -25,8 +26,8 @@ struct CalibrateOptions {
 };
 
 void runCalibrate(const CalibrateOptions& options) {
-  checkWritableFile(options.out_path);  // before the fit
-  if (!options.json_path.empty()) checkWritableFile(options.json_path);
+  io::checkWritableFile(options.out_path);  // before the fit
+  if (!options.json_path.empty()) io::checkWritableFile(options.json_path);
   const mission::Vehicle vehicle =
       options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
   const auto samples = io::readCalibrationSamples(options.data_path, vehicle.energy.reference_soc);

@@ -3,6 +3,7 @@
 #include "command_registry.hpp"
 #include "output.hpp"
 
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/energy/ceiling_gap_sweep.hpp"
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/io/json_values.hpp"
@@ -56,7 +57,7 @@ void printBreakdown(const energy::CurrentBreakdown& b) {
 }
 
 void runCurrent(const CurrentOptions& options) {
-  if (!options.json_path.empty()) checkWritableFile(options.json_path);
+  if (!options.json_path.empty()) io::checkWritableFile(options.json_path);
   const mission::Vehicle vehicle =
       options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
   const energy::EnergyModel model(vehicle.energy);

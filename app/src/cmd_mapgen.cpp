@@ -3,6 +3,7 @@
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
 
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/environment/scenes.hpp"
@@ -28,7 +29,7 @@ void runMapgen(const MapgenOptions& options) {
   const std::filesystem::path out(options.out);
   if (!io::isOctoMapFileName(out))
     throw ceilplan::InputError("--out " + options.out + ": the map file must end in .bt (or .ot)");
-  checkWritableFile(out);
+  io::checkWritableFile(out);
   const VoxelGrid grid = generateScene(scene, options.scene_options);
   const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
   io::writeOctoMapFile(out, *tree);

@@ -4,6 +4,7 @@
 #include "map_options.hpp"
 #include "output.hpp"
 
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/map_index.hpp"
@@ -35,8 +36,8 @@ void runMapinfo(const MapinfoOptions& options) {
   using namespace environment;
   MapIndexOptions index_options;
   index_options.unknown = options.unknown.value();
-  if (!options.json.empty()) checkWritableFile(options.json);  // before the map is read and indexed
-  if (!options.slice_csv.empty()) checkWritableFile(options.slice_csv);
+  if (!options.json.empty()) io::checkWritableFile(options.json);  // before the map is read and indexed
+  if (!options.slice_csv.empty()) io::checkWritableFile(options.slice_csv);
   const OccupancyMap map = OccupancyMap::load(options.map);
   if (!options.vehicle.empty() && options.slice_csv.empty())
     throw ceilplan::InputError("--vehicle applies only to --slice-csv; add --slice-csv FILE or drop it");
