@@ -679,6 +679,22 @@ TEST(HostileInputMessages, AFailedWriteSaysWhyAndLeavesNothing) {
   }
 }
 
+// A seed is printed as given (1, not 0), and only for a planner that draws random numbers: the
+// lattice planners have neither a seed nor a time limit.
+TEST(HostileInputMessages, SeedsAndTimeLimitsAreShownOnlyWhereTheyApply) {
+  const fs::path dir = scratchDirectory("seed_lines");
+  const std::string query = "plan --map " + (fixtures() / "room.bt").string() + " --start -2,0,1 --goal 2,0,1";
+  const CommandResult lattice = runCeilplan(query + " --planner lattice --out " + (dir / "lattice").string());
+  ASSERT_EQ(lattice.exit_code, 0) << lattice.err;
+  EXPECT_EQ(lattice.out.find("seed"), std::string::npos) << lattice.out;
+  EXPECT_NE(lattice.out.find("planner lattice (lattice spacing 0.2 m)\n"), std::string::npos) << lattice.out;
+  const CommandResult sampled =
+      runCeilplan(query + " --planner RRTstar --seed 1 --time-limit-s 0.25 --out " + (dir / "sampled").string());
+  ASSERT_EQ(sampled.exit_code, 0) << sampled.err;
+  EXPECT_NE(sampled.out.find("planner RRTstar, seed 1, 0.25 s\n"), std::string::npos) << sampled.out;
+  EXPECT_NE(readWholeFile(dir / "sampled" / "plan.json").find("\"seed\": 1"), std::string::npos);
+}
+
 bool builtWithAddressSanitizer() {
 #if defined(__SANITIZE_ADDRESS__)
   return true;
