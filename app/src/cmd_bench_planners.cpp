@@ -12,14 +12,15 @@
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/report_json.hpp"
+#include "ceilplan/io/report_text.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/planner_benchmark.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -49,14 +50,6 @@ std::vector<std::string> splitNames(const std::string& list) {
   for (std::string name; std::getline(in, name, ',');)
     if (!name.empty()) names.push_back(name);
   return names;
-}
-
-std::string text(double value, int decimals) {
-  if (std::isnan(value)) return "-";
-  if (std::isinf(value)) return "never";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
 }
 
 void runBench(const BenchArguments& a) {
@@ -102,17 +95,7 @@ void runBench(const BenchArguments& a) {
   options.lattice = reference_request.lattice;
   const std::vector<planner::PlannerBenchmarkRow> rows =
       planner::benchmarkPlanners(flight_planner, start, goal, reference, options);
-  std::printf("\n%-16s %7s %11s %12s %12s %12s %13s\n", "planner", "solved", "first [s]", "raw / ref", "final / ref",
-              "best final", "to 5 % [s]");
-  for (const planner::PlannerBenchmarkRow& row : rows)
-    std::printf("%-16s %3d/%-3zu %11s %12s %12s %12s %13s\n", row.planner.c_str(), row.solved, row.runs,
-                text(row.median_first_solution_s, 2).c_str(), text(row.median_raw_cost_ratio, 4).c_str(),
-                text(row.median_cost_ratio, 4).c_str(), text(row.best_cost_ratio, 4).c_str(),
-                text(row.median_time_to_5pct_s, 2).c_str());
-  std::printf("medians over the solved runs; 'raw' and 'final' (after shortcuts and NLopt refinement) against the\n"
-              "post-processed lattice reference; 'to 5 %%': when the planner's own best cost first came within 5 %% of\n"
-              "the raw lattice optimum ('never': not within %s s)\n",
-              formatNumber(a.search.time_limit_s).c_str());
+  std::cout << io::plannerBenchmarkTable(rows, a.search.time_limit_s);
   if (!a.json.empty()) io::writeJsonFile(a.json, io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows));
 }
 

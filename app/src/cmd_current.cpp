@@ -9,12 +9,12 @@
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/report_json.hpp"
+#include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -37,27 +37,6 @@ struct CurrentOptions {
   bool sweep = false;
 };
 
-std::string gapText(const std::optional<double>& gap_m) {
-  if (!gap_m) return "none";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g m", *gap_m);
-  return text;
-}
-
-void printBreakdown(const energy::CurrentBreakdown& b) {
-  std::printf("current_a             %.4f\n", b.current_a);
-  std::printf("power_w               %.3f\n", b.power_w);
-  std::printf("  induced_w           %.3f\n", b.induced_w);
-  std::printf("  profile_w           %.3f\n", b.profile_w);
-  std::printf("  parasitic_w         %.3f\n", b.parasitic_w);
-  std::printf("  climb_w             %.3f\n", b.climb_w);
-  std::printf("  avionics_w          %.3f\n", b.avionics_w);
-  std::printf("ceiling_factor        %.5f\n", b.ceiling_factor);
-  std::printf("ground_factor         %.5f\n", b.ground_factor);
-  std::printf("induced_power_factor  %.5f\n", b.induced_power_factor);
-  std::printf("terminal_voltage_v    %.3f\n", b.terminal_voltage_v);
-}
-
 void runCurrent(const CurrentOptions& options) {
   if (!options.json_path.empty()) io::checkWritableFile(options.json_path);
   const mission::Vehicle vehicle =
@@ -71,23 +50,16 @@ void runCurrent(const CurrentOptions& options) {
   const double gap_m = options.gap_m.value_or(energy::kNoSurface);
   const energy::CurrentBreakdown at_point = model.breakdown(gap_m, options.coverage, flight);  // validates input
 
-  std::printf("vehicle               %s\n", vehicle.name.c_str());
-  std::printf("soc %.3f  coverage %.3f  ground gap %s  speed %.3g m/s  climb %.3g m/s\n", flight.soc,
-              options.coverage, gapText(options.ground_gap_m).c_str(), flight.speed_m_s, flight.climb_m_s);
+  std::cout << io::flightConditionText(vehicle.name, options.coverage, options.ground_gap_m, flight);
   nlohmann::json report;
   if (options.sweep) {
     const double radius_m = model.rotorRadiusM();
     const double free_air_a = model.currentA(energy::kNoSurface, options.coverage, flight);
-    std::printf("free air: current_a %.4f\n", free_air_a);
-    std::printf("%10s %8s %10s %10s %14s\n", "gap_m", "gap_R", "current_a", "power_w", "ceiling_factor");
     const std::vector<energy::GapPoint> sweep = energy::ceilingGapSweep(model, options.coverage, flight);
-    for (const energy::GapPoint& point : sweep)
-      std::printf("%10.4f %8.3f %10.4f %10.3f %14.5f\n", point.gap_m, point.gap_m / radius_m,
-                  point.breakdown.current_a, point.breakdown.power_w, point.breakdown.ceiling_factor);
+    std::cout << io::currentSweepText(radius_m, free_air_a, sweep);
     report = io::currentSweepReportJson(vehicle.name, options.coverage, flight, radius_m, free_air_a, sweep);
   } else {
-    std::printf("ceiling gap           %s\n", gapText(options.gap_m).c_str());
-    printBreakdown(at_point);
+    std::cout << io::currentBreakdownText(options.gap_m, at_point);
     report = io::currentReportJson(vehicle.name, gap_m, options.coverage, flight, at_point);
   }
   if (!options.json_path.empty()) {

@@ -10,9 +10,10 @@
 #include "ceilplan/io/map_import.hpp"
 #include "ceilplan/io/mesh_file.hpp"
 #include "ceilplan/io/point_cloud_file.hpp"
+#include "ceilplan/io/report_text.hpp"
 
 #include <cmath>
-#include <cstdio>
+#include <iostream>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -48,26 +49,7 @@ void runImport(const ImportArguments& args) {
   }();
   io::writeImportedMap(out, imported, options);
 
-  const octomap::OcTree& tree = *imported.built.tree;
-  std::printf("import: %s -> %s\n", imported.source.string().c_str(), out.string().c_str());
-  std::printf("resolution_m: %s\n", formatNumber(options.resolution_m).c_str());
-  if (imported.skipped_non_finite_points > 0)
-    std::printf("skipped_non_finite_points: %zu\n", imported.skipped_non_finite_points);
-  for (const auto& [name, value] : imported.built.figures)
-    std::printf("%s: %s\n", name.c_str(), formatNumber(value, value == std::floor(value) ? 15 : 6).c_str());
-  std::printf("free_space: %s\n", imported.built.free_space.c_str());
-  std::printf("extent_m: %s to %s\n", formatPoint(imported.extent_m.min()).c_str(),
-              formatPoint(imported.extent_m.max()).c_str());
-  if (imported.frame) {
-    const io::ImportedFrame& frame = *imported.frame;
-    std::printf("crs: %s (%s); local origin at %s in it\n", frame.crs.c_str(), frame.crs_name.c_str(),
-                formatPoint(frame.origin_projected, 3).c_str());
-    std::printf("origin: {lat: %s, lon: %s, alt: %s}   # for the mission file\n",
-                formatFixed(frame.origin.latitude_deg, 8).c_str(), formatFixed(frame.origin.longitude_deg, 8).c_str(),
-                formatFixed(frame.origin.altitude_m, 3).c_str());
-  }
-  std::printf("wrote %s (%zu octree nodes, %ju bytes) and %s.json\n", out.string().c_str(), tree.size(),
-              static_cast<std::uintmax_t>(std::filesystem::file_size(out)), out.string().c_str());
+  std::cout << io::mapImportText(imported, options, out);
 }
 
 const CommandRegistration registration(19, [](CLI::App& parent) {

@@ -5,7 +5,6 @@
 #include "output.hpp"
 
 #include "ceilplan/io/output_set.hpp"
-#include "ceilplan/core/format.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/map_statistics.hpp"
@@ -13,10 +12,10 @@
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/map_slice_file.hpp"
 #include "ceilplan/io/report_json.hpp"
-#include "ceilplan/io/unknown_space_report.hpp"
+#include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
-#include <cstdio>
+#include <iostream>
 #include <memory>
 #include <string>
 
@@ -50,19 +49,7 @@ void runMapinfo(const MapinfoOptions& options) {
     if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
     io::writeMapSliceCsv(options.slice_csv, *index, options.slice_z_m, environment.get(), "--slice-z");
   }
-  const Eigen::Vector3d lo = stats.extent_m.min(), hi = stats.extent_m.max();
-  std::printf("map: %s\n", options.map.c_str());
-  std::printf("resolution_m: %g\n", stats.resolution_m);
-  std::printf("extent_m: [%.3f, %.3f, %.3f] to [%.3f, %.3f, %.3f] (%.1f x %.1f x %.1f m)\n", lo.x(), lo.y(), lo.z(),
-              hi.x(), hi.y(), hi.z(), hi.x() - lo.x(), hi.y() - lo.y(), hi.z() - lo.z());
-  std::printf("leaves: %zu occupied, %zu free\n", stats.occupied_leaves, stats.free_leaves);
-  std::printf("volume_m3: %.1f occupied, %.1f free, %.1f unknown (within the extent)\n", stats.occupied_volume_m3,
-              stats.free_volume_m3, stats.unknown_volume_m3);
-  std::printf("unknown: %s\n", io::unknownSpaceLine(stats.unknown, stats.unknown_summary).c_str());
-  std::printf("ceiling_area_share: %.3f of the floor area lies under a ceiling (an occupied surface with %s m or more "
-              "of free space below, in patches of %s m2 or more)\n",
-              stats.ceiling_area_share, formatNumber(stats.ceiling.min_headroom_m).c_str(),
-              formatNumber(stats.ceiling.min_area_m2).c_str());
+  std::cout << io::mapStatisticsText(options.map, stats);
   if (options.json.empty()) return;
   nlohmann::json report = io::mapStatisticsJson(stats);
   report["map"] = options.map;

@@ -11,13 +11,13 @@
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/report_json.hpp"
+#include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/unknown_space_report.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
-#include <cstdio>
+#include <iostream>
 #include <memory>
 #include <string>
 
@@ -31,13 +31,6 @@ struct ProbeOptions {
   std::string json;
   UnknownSpaceFlags unknown;
 };
-
-std::string text(double value) {
-  if (!std::isfinite(value)) return "none";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4f", value);
-  return buffer;
-}
 
 void runProbe(const ProbeOptions& options) {
   using namespace environment;
@@ -54,22 +47,7 @@ void runProbe(const ProbeOptions& options) {
   const UnknownSpaceSummary& unknown = environment.index()->unknownSummary();
 
   const PositionProbe probe = probePosition(environment, body);
-  const SurfaceGaps &ceiling = probe.ceiling, &ground = probe.ground;
-
-  std::printf("at: %.3f, %.3f, %.3f (vehicle %s)\n", body.x(), body.y(), body.z(), vehicle.name.c_str());
-  std::printf("ceiling_gap_m: %s\nceiling_coverage: %.4f\nceiling_mean_gap_m: %s\n", text(ceiling.nearest_gap_m).c_str(),
-              ceiling.coverage, text(ceiling.mean_gap_m).c_str());
-  std::printf("ground_gap_m: %s\nground_coverage: %.4f\nground_mean_gap_m: %s\n", text(ground.nearest_gap_m).c_str(),
-              ground.coverage, text(ground.mean_gap_m).c_str());
-  std::printf("clearance_m: %s\nvalid: %s\n", text(probe.clearance_m).c_str(), probe.violation ? "false" : "true");
-  if (probe.violation) std::printf("violation: %s\n", probe.violation->describe().c_str());
-  std::printf("unknown: %s\n", io::unknownSpaceLine(index_options.unknown, unknown).c_str());
-  std::printf("assumed_free: %s\n",
-              probe.assumes_free ? "true (the vehicle overlaps unknown space the policy assumed free)" : "false");
-  for (std::size_t r = 0; r < vehicle.rotor_positions_m.size(); ++r)
-    std::printf("rotor %zu: ceiling gap %s coverage %.4f | ground gap %s coverage %.4f\n", r,
-                text(ceiling.rotors[r].nearest_gap_m).c_str(), ceiling.rotors[r].coverage,
-                text(ground.rotors[r].nearest_gap_m).c_str(), ground.rotors[r].coverage);
+  std::cout << io::positionProbeText(body, probe, vehicle, io::unknownSpaceLine(index_options.unknown, unknown));
   if (options.json.empty()) return;
 
   nlohmann::json report = io::positionProbeJson(probe, vehicle);

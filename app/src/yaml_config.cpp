@@ -71,25 +71,8 @@ void collect(const YAML::Node& map, const std::vector<std::string>& parents, con
 
 }  // namespace
 
-std::string YamlConfig::to_config(const CLI::App* app, bool default_also, bool, std::string) const {
-  YAML::Emitter out;
-  out << YAML::BeginMap;
-  for (const CLI::Option* option : app->get_options()) {
-    if (option->get_lnames().empty() || !option->get_configurable()) continue;
-    std::vector<std::string> values = option->reduced_results();
-    if (values.empty() && default_also && !option->get_default_str().empty())
-      values.push_back(option->get_default_str());
-    if (values.empty()) continue;
-    out << YAML::Key << option->get_lnames().front() << YAML::Value;
-    if (values.size() == 1) {
-      out << values.front();
-    } else {
-      out << YAML::Flow << values;
-    }
-  }
-  out << YAML::EndMap;
-  return std::string(out.c_str()) + "\n";
-}
+// ceilplan offers no flag that writes a config file (CLI11's config_to_str): nothing to format.
+std::string YamlConfig::to_config(const CLI::App*, bool, bool, std::string) const { return {}; }
 
 std::vector<CLI::ConfigItem> YamlConfig::from_config(std::istream& input) const {
   std::vector<CLI::ConfigItem> items;
