@@ -2,6 +2,7 @@
 
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/io/atomic_file.hpp"
+#include "ceilplan/io/coverage_output.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/map_views.hpp"
 #include "ceilplan/io/plan_files.hpp"
@@ -121,6 +122,7 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
     wear[w.model] = {{"wear_name", w.wear_name}, {"cycle_wear", w.cycle_wear}, {"capacity_loss", w.capacity_loss}};
   json["wear"] = wear;
   json["duty"] = dutyJson(tour.duty, tour.options);
+  if (tour.coverage) json["coverage"] = coverageSummaryJson(tour);
   json["provenance"] = provenance.json();
   return json;
 }
@@ -165,7 +167,7 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
     for (const mission::SortieLeg& leg : sortie.legs) {
       const std::vector<Eigen::Vector3d>& waypoints = tour.legs[leg.from][leg.to].waypoints;
       for (std::size_t i = 1; i < waypoints.size(); ++i) m.waypoints.push_back({waypoints[i], 0.0, std::nullopt});
-      if (leg.to != 0) m.waypoints.back().hold_s = tour.stops[leg.to - 1].target.dwell_s;
+      if (leg.to != 0) m.waypoints.back() = mission::stopWaypoint(tour.stops[leg.to - 1]);
     }
     missions.push_back(std::move(m));
   }
@@ -179,6 +181,7 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
                       [&](std::ostream& out) { out << std::setw(2) << tourJson(tour, mission, provenance) << '\n'; });
   writeTourPathCsv(dir / "path.csv", tour, provenance);
   writeMapViews(dir, environment, flownRoute(tour), provenance);
+  if (tour.coverage) writeCoverageFiles(dir, tour);  // photos.csv, coverage.json
   if (!autopilot) return;
   const std::vector<AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
   const int count = static_cast<int>(missions.size());
@@ -212,6 +215,7 @@ std::string comparisonTable(const mission::TourResult& ceiling, const mission::T
     row(c.model + ": " + c.wear_name, c.cycle_wear, f.cycle_wear, "%.4e", true);
     row(c.model + ": capacity loss [%]", 100.0 * c.capacity_loss, 100.0 * f.capacity_loss, "%.5f", true);
   }
+  if (ceiling.coverage && free.coverage) out << coverageComparisonRows(ceiling, free);
   if (ceiling.duty.result && free.duty.result) {
     std::snprintf(line, sizeof line, "duty projection: the tour %d times a day for %d days\n",
                   ceiling.duty.missions_per_day, ceiling.duty.days);
@@ -248,6 +252,7 @@ nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission:
         reductionPct(ceiling.wear[m].capacity_loss, free.wear[m].capacity_loss);
   }
   json["reduction_pct"] = reduction;
+  if (ceiling.coverage && free.coverage) json["coverage"] = coverageComparisonJson(ceiling, free);
   json["provenance"] = provenance.json();
   return json;
 }
