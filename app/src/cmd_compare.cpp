@@ -39,6 +39,7 @@ void runCompare(const CompareArguments& a) {
   if (comparison.ceiling.plan.from_candidate)
     std::printf("ceiling mode found nothing better than the free-mode route: it flies that route, post-processed\n");
   std::printf("\n%s", io::routeComparisonTable(comparison, a.duty, context->battery()).c_str());
+  if (comparison.free.standoff) std::printf("\nfree mode's %s\n", io::standoffLine(*comparison.free.standoff).c_str());
   const nlohmann::json extra{
       {"objective", a.planning.options.objective}, {"seed", a.search.seed}, {"planner", a.search.plannerName()},
       {"unknown_space", io::unknownSpaceJson(context->environment())}};

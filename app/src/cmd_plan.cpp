@@ -48,6 +48,7 @@ void runPlan(const PlanArguments& a) {
                        {"battery", context->battery().description},
                        {"start_soc", context->battery().start_soc},
                        {"unknown_space", io::unknownSpaceJson(context->environment())}};
+  if (route.standoff) extra["standoff"] = io::standoffJson(*route.standoff);
   if (objective.name == "ageing")
     extra["ageing"] = {{"model", objective.ageing.model},
                        {"depth_of_discharge", objective.ageing.depth_of_discharge},
@@ -55,10 +56,11 @@ void runPlan(const PlanArguments& a) {
                        {"loss_per_s", objective.ageing.loss_per_s}};
   io::writePlanDirectory(out.path(), route.plan, route.evaluation, extra, planningProvenance(a.planning, a.search.seed));
   out.commit();
-  std::printf("%zu waypoints; cost %.6g %s (search %.6g) after %.2f s\n%s\nwrote %s and %s\n", route.plan.waypoints.size(),
+  std::printf("%zu waypoints; cost %.6g %s (search %.6g) after %.2f s\n%s\n", route.plan.waypoints.size(),
               route.plan.cost, route.cost_unit.c_str(), route.plan.search_cost, route.plan.total_time_s,
-              io::figuresLine(route.evaluation).c_str(), (out.finalPath() / "plan.json").c_str(),
-              (out.finalPath() / "path.csv").c_str());
+              io::figuresLine(route.evaluation).c_str());
+  if (route.standoff) std::printf("%s\n", io::standoffLine(*route.standoff).c_str());
+  std::printf("wrote %s and %s\n", (out.finalPath() / "plan.json").c_str(), (out.finalPath() / "path.csv").c_str());
 }
 
 const CommandRegistration registration(40, [](CLI::App& parent) {

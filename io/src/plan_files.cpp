@@ -100,6 +100,32 @@ std::string figuresLine(const planner::PathEvaluation& e) {
   return text;
 }
 
+nlohmann::json standoffJson(const planner::StandoffReport& report) {
+  nlohmann::json spans = nlohmann::json::array();
+  for (const planner::NarrowedSpan& span : report.spans)
+    spans.push_back({{"from_m", span.from_m},
+                     {"to_m", span.to_m},
+                     {"min_standoff_m", span.min_standoff_m},
+                     {"at", waypointsJson({span.narrowest_m})[0]}});
+  return {{"standoff_m", report.standoff_m},
+          {"length_m", report.length_m},
+          {"narrowed_m", report.narrowed_m},
+          {"min_standoff_m", finiteOrNull(report.min_standoff_m)},
+          {"narrowed", spans}};
+}
+
+std::string standoffLine(const planner::StandoffReport& report) {
+  std::string line = "standoff " + formatNumber(report.standoff_m) + " m: ";
+  if (report.spans.empty()) return line + "kept over the whole " + formatFixed(report.length_m, 2) + " m";
+  const auto narrowest = std::min_element(report.spans.begin(), report.spans.end(), [](const auto& a, const auto& b) {
+    return a.min_standoff_m < b.min_standoff_m;
+  });
+  return line + "kept over " + formatFixed(report.length_m - report.narrowed_m, 2) + " of " +
+         formatFixed(report.length_m, 2) + " m, narrowed over " + formatFixed(report.narrowed_m, 2) + " m in " +
+         std::to_string(report.spans.size()) + (report.spans.size() == 1 ? " place" : " places") + ", to " +
+         formatFixed(narrowest->min_standoff_m, 2) + " m at " + formatPoint(narrowest->narrowest_m);
+}
+
 namespace {
 
 double reductionPct(double with, double without) { return without != 0.0 ? 100.0 * (1.0 - with / without) : 0.0; }
@@ -152,6 +178,7 @@ nlohmann::json routeComparisonJson(const mission::RouteComparison& comparison, c
     figures["fec_per_mission"] = result.fecPerMission();
     figures["fec_total"] = result.fecTotal();
     figures["duty_min_soc"] = result.minSoc();
+    if (route.standoff) figures["standoff"] = standoffJson(*route.standoff);
     return figures;
   };
   json["ceiling"] = entry(comparison.ceiling, comparison.ceiling_duty);
@@ -170,6 +197,7 @@ void writeRouteComparison(const std::filesystem::path& dir, const mission::Route
     const std::string mode = mission::flightModeName(route->mode);
     nlohmann::json plan_extra = extra;
     plan_extra["mode"] = mode;
+    if (route->standoff) plan_extra["standoff"] = standoffJson(*route->standoff);
     writePlanDirectory(dir / mode, route->plan, route->evaluation, plan_extra, provenance);
   }
   writeTextAtomically(dir / "compare.json", [&](std::ostream& stream) {

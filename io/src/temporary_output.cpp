@@ -7,7 +7,7 @@
 
 #include <csignal>
 #include <mutex>
-#include <set>
+#include <map>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -24,8 +24,15 @@ std::mutex& registryMutex() {
   return mutex;
 }
 
-std::set<fs::path>& registry() {
-  static std::set<fs::path> paths;
+// Each registered temporary, with the final path it will take and the parent directories
+// created for it (deepest first).
+struct Registered {
+  fs::path final_path;
+  std::vector<fs::path> created_parents;
+};
+
+std::map<fs::path, Registered>& registry() {
+  static std::map<fs::path, Registered> paths;
   return paths;
 }
 
@@ -43,7 +50,10 @@ sigset_t cleanupSignals() {
   }
   registryMutex().lock();
   std::error_code ignored;
-  for (const fs::path& path : registry()) fs::remove_all(path, ignored);
+  for (const auto& [temporary, registered] : registry()) {
+    fs::remove_all(temporary, ignored);
+    for (const fs::path& parent : registered.created_parents) fs::remove(parent, ignored);  // only if still empty
+  }
   // End the process the way the signal would have, so the caller sees "killed by SIGINT".
   std::signal(signal_number, SIG_DFL);
   sigset_t only;
@@ -65,6 +75,16 @@ void installSignalCleanup() {
   });
 }
 
+fs::path finalPathOf(const fs::path& path) {
+  const std::lock_guard<std::mutex> lock(registryMutex());
+  for (const auto& [temporary, registered] : registry()) {
+    const fs::path inside = path.lexically_relative(temporary);
+    if (!inside.empty() && *inside.begin() != "..")
+      return inside == "." ? registered.final_path : registered.final_path / inside;
+  }
+  return path;
+}
+
 TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_path)) {
   temporary_ = final_;
   temporary_ += ".tmp" + std::to_string(::getpid());
@@ -77,7 +97,7 @@ TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_p
       throw ceilplan::Error("cannot create directory " + final_.parent_path().string() + ": " + ec.message());
   }
   const std::lock_guard<std::mutex> lock(registryMutex());
-  registry().insert(temporary_);
+  registry().emplace(temporary_, Registered{final_, created_parents_});
 }
 
 TemporaryOutput::~TemporaryOutput() {

@@ -5,7 +5,12 @@
 #include "ceilplan/io/coverage_output.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/map_views.hpp"
+#include "ceilplan/io/dji_wpml.hpp"
+#include "ceilplan/io/geo_export.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/report_html.hpp"
+#include "ceilplan/io/tour_report.hpp"
+#include "ceilplan/io/trajectory_file.hpp"
 #include "ceilplan/io/unknown_space_report.hpp"
 
 #include <cmath>
@@ -43,6 +48,28 @@ nlohmann::json dutyJson(const mission::DutyProjection& duty, const mission::Tour
   return json;
 }
 
+// Free mode: where the tour kept less than the standoff, by leg and viewpoint.
+nlohmann::json tourStandoffJson(const mission::TourResult& tour, const mission::TourStandoff& standoff) {
+  nlohmann::json legs = nlohmann::json::array(), viewpoints = nlohmann::json::array();
+  for (const mission::NarrowedLeg& leg : standoff.legs) {
+    const nlohmann::json report = standoffJson(leg.report);
+    for (const nlohmann::json& span : report["narrowed"]) {
+      nlohmann::json entry = {{"sortie", leg.sortie}, {"leg", tour.names[leg.from] + " -> " + tour.names[leg.to]}};
+      entry.update(span);
+      legs.push_back(entry);
+    }
+  }
+  for (int k : standoff.narrowed_stops)
+    viewpoints.push_back({{"target", tour.stops[k].target.name}, {"standoff_m", tour.stops[k].viewpoint.standoff_m}});
+  return {{"standoff_m", standoff.standoff_m},
+          {"length_m", standoff.length_m},
+          {"narrowed_m", standoff.narrowed_m},
+          {"min_standoff_m", standoff.min_standoff_m},
+          {"narrowest", waypointsJson({standoff.narrowest_m})[0]},
+          {"narrowed", legs},
+          {"narrowed_viewpoints", viewpoints}};
+}
+
 std::vector<Eigen::Vector3d> flownRoute(const mission::TourResult& tour) {
   std::vector<Eigen::Vector3d> route;
   for (const mission::SortieRecord& sortie : tour.record.sorties)
@@ -51,6 +78,19 @@ std::vector<Eigen::Vector3d> flownRoute(const mission::TourResult& tour) {
 }
 
 }  // namespace
+
+std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission) {
+  if (!mission.origin) return "no geodetic origin";
+  for (const mission::SortieRoute& route : tour.routes) {
+    try {
+      djiWpml(route, *mission.origin);
+    } catch (const InputError& e) {
+      return "sortie " + std::to_string(route.sortie) + ": " + e.what() +
+             " (the default payload, a Zenmuse H20 underslung; an upward-mounted payload is needed)";
+    }
+  }
+  return std::nullopt;
+}
 
 nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission, const Provenance& provenance) {
   nlohmann::json json;
@@ -65,6 +105,8 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   json["between_sorties"] = mission.battery.between_sorties == mission::Turnaround::Swap ? "swap" : "recharge";
   json["unknown_space"] = unknownSpaceJson(tour.unknown_space, tour.unknown_summary);
   json["assumed_free_m"] = tour.assumed_free_m;
+  const std::optional<std::string> dji = djiExportProblem(tour, mission);
+  json["dji_kmz"] = dji ? "not written: " + *dji : "written";
   json["targets_total"] = tour.stops.size();
   int visited = 0;
   for (const mission::Sortie& sortie : tour.plan.sorties) visited += static_cast<int>(sortie.targets.size());
@@ -78,10 +120,12 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
                        {"distance_m", v.distance_m},
                        {"standoff_m", {stop.target.standoff_min_m, stop.target.standoff_max_m}},
                        {"ceiling_gap_m", finiteOrNull(v.ceiling_gap_m)},
+                       {"viewpoint_standoff_m", v.standoff_m},
                        {"dwell_s", stop.target.dwell_s},
                        {"hover_power_w", stop.hover.propulsion_power_w}});
   }
   json["targets"] = targets;
+  if (tour.standoff) json["standoff"] = tourStandoffJson(tour, *tour.standoff);
   nlohmann::json sorties = nlohmann::json::array();
   for (std::size_t k = 0; k < tour.plan.sorties.size(); ++k) {
     const mission::Sortie& sortie = tour.plan.sorties[k];
@@ -157,19 +201,9 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
                                                 Autopilot autopilot) {
   const mission::GeodeticOrigin& origin = mission.requireOrigin();
   std::vector<AutopilotMission> missions;
-  for (const mission::Sortie& sortie : tour.plan.sorties) {
-    AutopilotMission m;
-    m.home_m = mission.home_m;
-    m.origin = origin;
-    m.autopilot = autopilot;
-    m.cruise_speed_m_s = mission.speeds.cruise_m_s;
-    m.hover_speed_m_s = mission.speeds.inspection_m_s;
-    for (const mission::SortieLeg& leg : sortie.legs) {
-      const std::vector<Eigen::Vector3d>& waypoints = tour.legs[leg.from][leg.to].waypoints;
-      for (std::size_t i = 1; i < waypoints.size(); ++i) m.waypoints.push_back({waypoints[i], 0.0, std::nullopt});
-      if (leg.to != 0) m.waypoints.back() = mission::stopWaypoint(tour.stops[leg.to - 1]);
-    }
-    missions.push_back(std::move(m));
+  for (const mission::SortieRoute& route : tour.routes) {
+    missions.push_back(autopilotMission(route, origin, autopilot));
+    missions.back().hover_speed_m_s = mission.speeds.inspection_m_s;
   }
   return missions;
 }
@@ -182,13 +216,29 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
   writeTourPathCsv(dir / "path.csv", tour, provenance);
   writeMapViews(dir, environment, flownRoute(tour), provenance);
   if (tour.coverage) writeCoverageFiles(dir, tour);  // photos.csv, coverage.json
+  const int count = static_cast<int>(tour.trajectories.size());
+  const TrajectoryFrame frame = mission.trajectory_ned ? TrajectoryFrame::Ned : TrajectoryFrame::Enu;
+  for (int k = 0; k < count; ++k) {
+    writeTrajectoryCsv(sortieFileName(dir / "trajectory.csv", k + 1, count), tour.trajectories[k], frame);
+    writeTrajectoryJson(sortieFileName(dir / "trajectory.json", k + 1, count), tour.trajectories[k], frame,
+                        mission.origin);
+  }
+  writeReportHtml(dir / "report.html",
+                  tourReport({&tour}, mission, environment,
+                             mission.name() + ": " + mission::flightModeName(tour.mode) + " mode"));
   if (!autopilot) return;
   const std::vector<AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
-  const int count = static_cast<int>(missions.size());
   for (int k = 0; k < count; ++k) {
     writeQgcPlan(sortieFileName(dir / "mission.plan", k + 1, count), missions[k]);
     writeQgcWpl(sortieFileName(dir / "mission.waypoints", k + 1, count), missions[k]);
   }
+  // DJI's payloads look up only so far: a tour that looks straight up at a soffit cannot be
+  // flown with the default one, and tour.json's dji_kmz says so instead of a wrong photo angle.
+  if (!djiExportProblem(tour, mission))
+    for (int k = 0; k < count; ++k)
+      writeDjiKmz(sortieFileName(dir / "mission.kmz", k + 1, count), tour.routes[k], *mission.origin);
+  writeRoutesKml(dir / "routes.kml", tour.routes, *mission.origin, mission.name());
+  writeRoutesGeoJson(dir / "routes.geojson", tour.routes, *mission.origin);
 }
 
 std::string comparisonTable(const mission::TourResult& ceiling, const mission::TourResult& free) {
@@ -265,9 +315,27 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
   routes.insert(routes.end(), free_route.begin(), free_route.end());
   writeMapViews(dir, environment, routes, provenance);
   writeTextAtomically(dir / "comparison.txt", [&](std::ostream& stream) { stream << comparisonTable(ceiling, free); });
+  writeReportHtml(dir / "report.html", tourReport({&ceiling, &free}, mission, environment, mission.name() + ": both modes"));
   writeTextAtomically(dir / "comparison.json", [&](std::ostream& stream) {
     stream << std::setw(2) << comparisonJson(ceiling, free, mission, provenance) << '\n';
   });
+}
+
+std::string standoffLine(const mission::TourResult& tour) {
+  const mission::TourStandoff& standoff = *tour.standoff;
+  std::string line = "standoff " + formatNumber(standoff.standoff_m) + " m: ";
+  if (standoff.legs.empty()) {
+    line += "kept over the whole " + formatFixed(standoff.length_m, 1) + " m flown";
+  } else {
+    line += "kept over " + formatFixed(standoff.length_m - standoff.narrowed_m, 1) + " of " +
+            formatFixed(standoff.length_m, 1) + " m flown, narrowed over " + formatFixed(standoff.narrowed_m, 1) +
+            " m on " + std::to_string(standoff.legs.size()) + (standoff.legs.size() == 1 ? " leg" : " legs");
+  }
+  line += "; " + std::to_string(standoff.narrowed_stops.size()) + " of " + std::to_string(tour.stops.size()) +
+          " viewpoints keep less";
+  if (std::isfinite(standoff.min_standoff_m) && standoff.min_standoff_m < standoff.standoff_m)
+    line += "; closest " + formatFixed(standoff.min_standoff_m, 2) + " m at " + formatPoint(standoff.narrowest_m);
+  return line + " (tour.json: standoff)";
 }
 
 std::string tourSummary(const mission::TourResult& tour) {
@@ -290,6 +358,7 @@ std::string tourSummary(const mission::TourResult& tour) {
   std::snprintf(line, sizeof line, ", FEC %.5f, lowest SOC %.1f %% (reserve %.0f %%)\n", tour.plan.fec,
                 100.0 * tour.plan.min_soc, 100.0 * tour.reserve_soc);
   out << line;
+  if (tour.standoff) out << "  " << standoffLine(tour) << '\n';
   if (!tour.duty.result) out << "  duty projection " << tour.duty.note << '\n';
   return out.str();
 }

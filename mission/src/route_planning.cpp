@@ -44,6 +44,8 @@ RoutePlan planRoute(const PlanningContext& context, FlightMode mode, const plann
   route.plan = flight_planner.plan(request);
   const BatterySpec& battery = context.battery();
   route.evaluation = planner::evaluatePath(context.fullModel(), battery.pack, battery.start_soc, route.plan.waypoints);
+  if (mode == FlightMode::Free)
+    route.standoff = planner::standoffReport(context.environment(), route.plan.waypoints, context.options().standoff_m);
   return route;
 }
 

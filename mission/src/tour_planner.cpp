@@ -80,6 +80,8 @@ ViewpointOptions viewpointOptions(const PlanningContext& context, FlightMode mod
 std::vector<TourStop> viewpointStops(const std::vector<InspectionTarget>& targets, std::size_t point_targets,
                                      const PlanningContext& context, FlightMode mode, const TourOptions& options) {
   const ViewpointOptions viewpoint_options = viewpointOptions(context, mode);
+  // As the mission gives them, before free mode widens the range.
+  for (std::size_t k = 0; k < point_targets; ++k) requireOnStructure(targets[k], context.environment());
   std::vector<TourStop> stops(targets.size());
   parallelFor(targets.size(), options.workers, [&](std::size_t k) {
     TourStop stop{targets[k], {}, {}, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
@@ -719,22 +721,6 @@ void recordPhotos(TourResult& tour, const Mission& mission, const PlanningContex
 
 }  // namespace
 
-RouteWaypoint stopWaypoint(const TourStop& stop) {
-  RouteWaypoint waypoint(stop.viewpoint.position_m, stop.target.dwell_s);
-  if (stop.yaw_deg || stop.gimbal_pitch_deg) {
-    waypoint.yaw_deg = stop.yaw_deg;
-    waypoint.gimbal_pitch_deg = stop.gimbal_pitch_deg;
-  } else {
-    const CameraAim aim = aimAt(stop.viewpoint.position_m, stop.target.point_m);
-    waypoint.yaw_deg = aim.yaw_deg;
-    waypoint.gimbal_pitch_deg = aim.gimbal_pitch_deg;
-  }
-  waypoint.speed_m_s = stop.max_speed_m_s;
-  waypoint.take_photo = true;
-  waypoint.name = stop.target.name;
-  return waypoint;
-}
-
 TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,
                     const TourOptions& options) {
   if (options.all_pairs_max_places < 2 || options.neighbours < 1 || options.split_points < 1 || options.order_kicks < 0)
@@ -807,10 +793,19 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
       rethrowWithContext(flightModeName(tour.mode) + " mode: leg " + legName(tour, from, to) + ": ");
     }
   };
+  // A straight hop between two photos is flown as it is: a pass is a stretch of such hops, and
+  // refining a hop of a few decimetres bends it by millimetres while multiplying the autopilot's
+  // mission items.
+  const auto passHop = [&](int from, int to, const TourLeg& leg) {
+    return from > 0 && to > 0 && tour.stops[from - 1].photo && tour.stops[to - 1].photo && leg.routed &&
+           leg.waypoints.size() == 2;
+  };
   const auto unrefined = [&](const Pairs& candidates) {
     Pairs raw;
-    for (const auto& [from, to] : candidates)
-      if (!tour.legs.at(from, to).refined) raw.emplace_back(from, to);
+    for (const auto& [from, to] : candidates) {
+      const TourLeg& leg = tour.legs.at(from, to);
+      if (!leg.refined && !passHop(from, to, leg)) raw.emplace_back(from, to);
+    }
     std::sort(raw.begin(), raw.end());
     raw.erase(std::unique(raw.begin(), raw.end()), raw.end());
     return raw;
@@ -861,7 +856,13 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   tour.unknown_summary = context.environment().index()->unknownSummary();
   for (const Sortie& sortie : tour.plan.sorties)
     for (const SortieLeg& leg : sortie.legs) tour.assumed_free_m += tour.legs[leg.from][leg.to].evaluation.assumed_free_m;
+  if (mode == FlightMode::Free) tour.standoff = measureTourStandoff(tour, context.environment(), context.options().standoff_m);
   tour.record = recordFlight(tour, context);
+  std::vector<RouteStop> route_stops;
+  for (const TourStop& stop : tour.stops)
+    route_stops.push_back({stop.target.name, stop.target.point_m, stop.target.dwell_s, stop.yaw_deg, stop.gimbal_pitch_deg});
+  tour.routes = sortieRoutes(tour.plan, tour.legs, route_stops, mission);
+  tour.trajectories = routeTrajectories(tour.routes, mission, context.baseRules());
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
     tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));
   tour.duty = projectDuty(tour, context.battery(), options);

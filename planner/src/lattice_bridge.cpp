@@ -55,22 +55,30 @@ constexpr double kPairSeparationM = 1.0;  // between the middles of two pairs tr
 constexpr double kReachM = 1.0;           // from the straight way between a pair, at least the vehicle's width
 constexpr std::size_t kMaxFineNodes = 2'000'000;
 constexpr double kOpeningReachM = 3.0;    // beyond it an opening counts as open
+// The wide search: on the fine lattice, within twice kReachM of the closest pair's way,
+// doubling until the box holds the map or this many nodes (13 bytes each).
+constexpr std::size_t kMaxWideNodes = 8'000'000;
 
-// A fine lattice over a box: spacing a multiple of half a voxel, aligned with the voxel centres.
+// A fine lattice over a box: spacing a multiple of half a voxel (at least `min_factor`),
+// aligned with the voxel centres.
 class FineLattice {
  public:
-  FineLattice(const environment::GridFrame& frame, const Eigen::AlignedBox3d& box) {
+  FineLattice(const environment::GridFrame& frame, const Eigen::AlignedBox3d& box, int min_factor = 1,
+              std::size_t max_nodes = kMaxFineNodes) {
     const Eigen::AlignedBox3d bounds = frame.bounds();
     const Eigen::AlignedBox3d clipped = box.intersection(bounds);
+    covers_bounds_ = box.contains(bounds);
     const double half_voxel = 0.5 * frame.resolution_m();
     std::array<double, 3> extent{};
     for (int axis = 0; axis < 3; ++axis) {
       origin_[axis] = frame.centreOf(axis, 0);
       extent[axis] = std::max(0.0, clipped.max()[axis] - clipped.min()[axis]);
     }
-    // Coarser than half a voxel only when the box would hold too many nodes.
-    const double cells = (extent[0] / half_voxel + 1) * (extent[1] / half_voxel + 1) * (extent[2] / half_voxel + 1);
-    const int factor = std::max(1, static_cast<int>(std::ceil(std::cbrt(cells / kMaxFineNodes))));
+    // Coarser only when the box would hold too many nodes.
+    const double spacing = min_factor * half_voxel;
+    const double cells = (extent[0] / spacing + 1) * (extent[1] / spacing + 1) * (extent[2] / spacing + 1);
+    const int factor =
+        min_factor * std::max(1, static_cast<int>(std::ceil(std::cbrt(cells / static_cast<double>(max_nodes)))));
     spacing_m_ = factor * half_voxel;
     for (int axis = 0; axis < 3; ++axis) {
       lo_[axis] = static_cast<int>(std::ceil((clipped.min()[axis] - origin_[axis]) / spacing_m_));
@@ -81,6 +89,7 @@ class FineLattice {
 
   std::size_t nodeCount() const { return static_cast<std::size_t>(size_[0]) * size_[1] * size_[2]; }
   double spacing_m() const { return spacing_m_; }
+  bool coversBounds() const { return covers_bounds_; }  // the box held the whole map
   bool inside(int i, int j, int k) const {
     return i >= 0 && j >= 0 && k >= 0 && i < size_[0] && j < size_[1] && k < size_[2];
   }
@@ -116,6 +125,7 @@ class FineLattice {
   std::array<double, 3> origin_{};
   double spacing_m_ = 0.0;
   std::array<int, 3> lo_{}, size_{};
+  bool covers_bounds_ = false;
 };
 
 // Distance from a point to the segment [a, b].
@@ -126,16 +136,21 @@ double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, con
   return (p - (a + t * ab)).norm();
 }
 
-// The shortest fine-lattice path from `a` to `b` within `radius_m` of the segment between them
-// (A*, 26-connected, valid states), its motions checked lazily: a motion found invalid is
-// struck out and the search runs again. Connectivity is what matters here; the coarse search
-// then prices the passage under the objective.
-std::vector<Eigen::Vector3d> fineSearch(const SafetyRules& rules, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                        double radius_m, const ompl::base::PlannerTerminationCondition& ptc) {
+// The box within `radius_m` of the segment from `a` to `b`.
+Eigen::AlignedBox3d boxAround(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius_m) {
   Eigen::AlignedBox3d box(a.cwiseMin(b), a.cwiseMax(b));
   box.min().array() -= radius_m;
   box.max().array() += radius_m;
-  const FineLattice lattice(rules.environment().grid().frame(), box);
+  return box;
+}
+
+// The shortest path on `lattice` from `a` to `b` within `radius_m` of the segment between them
+// (A*, 26-connected, valid states), its motions checked lazily: a motion found invalid is
+// struck out and the search runs again. Connectivity is what matters here; the coarse search
+// then prices the passage under the objective.
+std::vector<Eigen::Vector3d> fineSearch(const SafetyRules& rules, const FineLattice& lattice, const Eigen::Vector3d& a,
+                                        const Eigen::Vector3d& b, double radius_m,
+                                        const ompl::base::PlannerTerminationCondition& ptc) {
   const std::size_t node_count = lattice.nodeCount();
   if (node_count == 0) return {};
   const std::size_t goal_id = node_count, start_id = node_count + 1;
@@ -464,20 +479,41 @@ BridgeOutcome findBridge(const SafetyRules& rules, const std::vector<Eigen::Vect
   std::stable_sort(candidates.begin(), candidates.end(), moreOpen);
 
   const double vehicle_width_m = 2.0 * rules.environment().vehicle().inflatedRadius_m();
+  const environment::GridFrame& frame = rules.environment().grid().frame();
+  const auto join = [&outcome](std::vector<Eigen::Vector3d> path, const Pair& pair) {
+    outcome.waypoints = std::move(path);
+    outcome.from = pair.a;
+    outcome.to = pair.b;
+    outcome.blockage.reset();
+  };
   for (std::size_t k = 0; k < candidates.size() && static_cast<int>(k) < kAttempts && !ptc(); ++k) {
     const Pair& pair = candidates[k];
     const Eigen::Vector3d& a = side_a[pair.a];
     const Eigen::Vector3d& b = side_b[pair.b];
-    std::vector<Eigen::Vector3d> path = fineSearch(rules, a, b, std::max(kReachM, vehicle_width_m), ptc);
+    const double radius_m = std::max(kReachM, vehicle_width_m);
+    std::vector<Eigen::Vector3d> path = fineSearch(rules, FineLattice(frame, boxAround(a, b, radius_m)), a, b, radius_m, ptc);
     if (!path.empty()) {
-      outcome.waypoints = std::move(path);
-      outcome.from = pair.a;
-      outcome.to = pair.b;
-      outcome.blockage.reset();
+      join(std::move(path), pair);
       return outcome;
     }
     // The most open way tried names the gap.
     if (!outcome.blockage) outcome.blockage = diagnoseBlockage(rules, a, b);
+  }
+  // Last, a fine search from the closest pair, ever wider: a passage far from every straight
+  // way tried (a shaft the vehicle barely fits, a way round through the next room) is found
+  // wherever the vehicle fits, as long as the box holds at most kMaxWideNodes fine nodes.
+  const Pair& closest = *std::min_element(pairs.begin(), pairs.end(),
+                                          [](const Pair& x, const Pair& y) { return x.distance_m < y.distance_m; });
+  for (double radius_m = 2.0 * kReachM; !ptc(); radius_m *= 2.0) {
+    const Eigen::Vector3d &a = side_a[closest.a], &b = side_b[closest.b];
+    const FineLattice lattice(frame, boxAround(a, b, radius_m), 1, kMaxWideNodes);
+    if (lattice.spacing_m() > 0.5 * frame.resolution_m() * (1.0 + 1e-9)) break;  // too large a box to search finely
+    std::vector<Eigen::Vector3d> path = fineSearch(rules, lattice, a, b, radius_m, ptc);
+    if (!path.empty()) {
+      join(std::move(path), closest);
+      return outcome;
+    }
+    if (lattice.coversBounds()) break;
   }
   if (ptc()) outcome.blockage.reset();
   return outcome;

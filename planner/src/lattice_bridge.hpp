@@ -26,8 +26,10 @@ struct BridgeOutcome {
 
 // Pairs each point of one side with the nearest of the other and tries a few pairs, the most
 // open straight way between them first (then the closest), at least a metre apart: a fine
-// search within a metre (at least the vehicle's width) of the pair's straight way. `ptc` may
-// stop it early (then neither a bridge nor a blockage).
+// search within a metre (at least the vehicle's width) of the pair's straight way. Then, from
+// the closest pair, the same fine search within 2, 4, 8, ... m of their way, until its box
+// holds the map or 8 million nodes. `ptc` may stop it early (then neither a bridge nor a
+// blockage).
 BridgeOutcome findBridge(const SafetyRules& rules, const std::vector<Eigen::Vector3d>& side_a,
                          const std::vector<Eigen::Vector3d>& side_b, const ompl::base::PlannerTerminationCondition& ptc);
 

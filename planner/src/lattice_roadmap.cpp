@@ -1,4 +1,5 @@
 #include "ceilplan/planner/lattice_roadmap.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/parallel_for.hpp"
@@ -78,7 +79,7 @@ bool LatticeRoadmap::buildGraph(const FlightObjective& objective, const std::fun
   const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
   node_count_ = lattice.nodeCount();
   if (node_count_ >= kNoSlot)
-    throw ceilplan::InputError("the map has too many lattice nodes for a " + std::to_string(lattice.spacing_m()) +
+    throw ceilplan::InputError("the map has too many lattice nodes for a " + formatNumber(lattice.spacing_m()) +
                                " m spacing: raise the spacing");
   // Shares of the build time, roughly as on the shipped bridge: nodes 10 %, edges 80 %, places 10 %.
   std::atomic<bool> stop{false};
@@ -178,10 +179,18 @@ Eigen::Vector3d LatticeRoadmap::statePosition(std::uint32_t state) const {
 
 void LatticeRoadmap::addBridge(const std::vector<Eigen::Vector3d>& waypoints, std::optional<std::uint32_t> from_state,
                                std::optional<std::uint32_t> to_state, Place* from_place, Place* to_place) {
-  // A place at an end gets a vertex on it, joined at no cost.
+  const auto addArc = [&](std::uint32_t from, std::uint32_t to, double cost) {
+    const Arc arc{to, static_cast<float>(cost)};
+    if (from < node_count_) node_arcs_.emplace_back(from, arc);
+    else bridge_arcs_[from - node_count_].push_back(arc);
+  };
+  // A place at an end gets a vertex on it, joined at no cost. A search ends at a place, so the
+  // vertex also takes the place's joins: routes between other places pass through it.
   const auto endState = [&](std::optional<std::uint32_t> state, Place* place, const Eigen::Vector3d& position_m) {
     if (state) return *state;
     const std::uint32_t vertex = addVertex(position_m);
+    for (const Join& join : place->out) addArc(vertex, join.state, join.cost);
+    for (const Join& join : place->in) addArc(join.state, vertex, join.cost);
     place->out.push_back({vertex, 0.0});
     place->in.push_back({vertex, 0.0});
     return vertex;
@@ -191,11 +200,6 @@ void LatticeRoadmap::addBridge(const std::vector<Eigen::Vector3d>& waypoints, st
   states.push_back(endState(to_state, to_place, waypoints.back()));
   const FlightCostModel& model = objective_->model();
   const auto conditions = [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
-  const auto addArc = [&](std::uint32_t from, std::uint32_t to, double cost) {
-    const Arc arc{to, static_cast<float>(cost)};
-    if (from < node_count_) node_arcs_.emplace_back(from, arc);
-    else bridge_arcs_[from - node_count_].push_back(arc);
-  };
   for (std::size_t k = 0; k + 1 < states.size(); ++k) {
     const auto [forth, back] = model.integrateBothWays(waypoints[k], waypoints[k + 1], conditions);
     addArc(states[k], states[k + 1], objective_->weights().of(forth));

@@ -20,6 +20,29 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
   result.min_clearance_m = std::numeric_limits<double>::infinity();
   result.min_ceiling_gap_m = std::numeric_limits<double>::infinity();
   double energy_j = 0.0;
+  // The state at a point, moving along `direction` (zero: hovering); the current sees the SOC
+  // reached just before it (explicit coulomb counting).
+  const auto sampleAt = [&](const Eigen::Vector3d& position_m, const Eigen::Vector3d& direction,
+                            PointConditions& conditions, Velocity& velocity) {
+    PathSample sample;
+    sample.position_m = position_m;
+    conditions = model.exactConditionsAt(position_m);
+    if (!direction.isZero()) velocity = model.velocityAt(conditions, direction);
+    if (velocity.along_m_s > max_speed_m_s) {
+      const double slower = max_speed_m_s / velocity.along_m_s;
+      velocity = {max_speed_m_s, velocity.horizontal_m_s * slower, velocity.climb_m_s * slower};
+    }
+    sample.speed_m_s = velocity.along_m_s;
+    sample.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
+    sample.ground_gap_m = conditions.ground_gap_m;
+    sample.clearance_m = environment.clearance_m(position_m);
+    sample.assumed_free = environment.assumesFree(position_m);
+    const energy::CurrentBreakdown terms = model.breakdown(conditions, velocity, battery.state().soc);
+    sample.current_a = terms.current_a;
+    sample.power_w = terms.power_w;
+    sample.propulsion_power_w = terms.propulsionW();
+    return sample;
+  };
   for (std::size_t s = 0; s + 1 < waypoints_m.size(); ++s) {
     const Eigen::Vector3d from = waypoints_m[s], delta = waypoints_m[s + 1] - from;
     const double length = delta.norm();
@@ -29,24 +52,10 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     PathSample previous;
     bool previous_near = false;
     for (int k = 0; k <= intervals; ++k) {
-      PathSample sample;
-      sample.position_m = k == intervals ? waypoints_m[s + 1] : Eigen::Vector3d(from + delta * (double(k) / intervals));
-      const PointConditions conditions = model.exactConditionsAt(sample.position_m);
-      Velocity velocity = model.velocityAt(conditions, direction);
-      if (velocity.along_m_s > max_speed_m_s) {
-        const double slower = max_speed_m_s / velocity.along_m_s;
-        velocity = {max_speed_m_s, velocity.horizontal_m_s * slower, velocity.climb_m_s * slower};
-      }
-      sample.speed_m_s = velocity.along_m_s;
-      sample.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
-      sample.ground_gap_m = conditions.ground_gap_m;
-      sample.clearance_m = environment.clearance_m(sample.position_m);
-      sample.assumed_free = environment.assumesFree(sample.position_m);
-      // The current at a point sees the SOC reached just before it (explicit coulomb counting).
-      const energy::CurrentBreakdown terms = model.breakdown(conditions, velocity, battery.state().soc);
-      sample.current_a = terms.current_a;
-      sample.power_w = terms.power_w;
-      sample.propulsion_power_w = terms.propulsionW();
+      PointConditions conditions;
+      Velocity velocity;
+      PathSample sample = sampleAt(k == intervals ? waypoints_m[s + 1] : Eigen::Vector3d(from + delta * (double(k) / intervals)),
+                                   direction, conditions, velocity);
       if (k > 0) {
         // Trapezoid in distance for time; the interval draws the mean of its ends' currents.
         const double dt = 0.5 * (1.0 / previous.speed_m_s + 1.0 / sample.speed_m_s) * (length / intervals);
@@ -66,7 +75,16 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     }
     result.length_m += length;
   }
-  if (result.samples.empty()) throw ceilplan::InputError("the path has zero length");
+  if (result.samples.empty()) {
+    // A path that stays where it starts (two targets seen from the same place): nothing is
+    // flown; its one sample is the place, hovering, at no time.
+    PointConditions conditions;
+    Velocity hovering;
+    result.samples.push_back(sampleAt(waypoints_m.front(), Eigen::Vector3d::Zero(), conditions, hovering));
+    result.samples.back().soc = battery.state().soc;
+    result.min_clearance_m = result.samples.back().clearance_m;
+    result.min_ceiling_gap_m = result.samples.back().ceiling_gap_m;
+  }
   battery.closeModeInterval();
   result.charge_ah = battery.state().discharge_ah;
   result.energy_wh = energy_j / 3600.0;

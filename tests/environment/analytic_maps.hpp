@@ -47,6 +47,25 @@ inline environment::OccupancyMap room(const std::function<double(double x, doubl
   });
 }
 
+// True if `point` lies on a face between an occupied voxel and a free one.
+inline bool onOccupiedSurface(const environment::VoxelGrid& grid, const Eigen::Vector3d& point) {
+  const environment::GridFrame& frame = grid.frame();
+  for (int axis = 0; axis < 3; ++axis) {
+    const double steps = point[axis] / frame.resolution_m();
+    if (std::abs(steps - std::round(steps)) > 1e-6) continue;  // not on a face across this axis
+    for (const double side : {-0.5, 0.5}) {
+      Eigen::Vector3d inner = point, outer = point;
+      inner[axis] += side * frame.resolution_m();
+      outer[axis] -= side * frame.resolution_m();
+      const auto state = [&](const Eigen::Vector3d& p) {
+        return grid.at(frame.indexOf(0, p.x()), frame.indexOf(1, p.y()), frame.indexOf(2, p.z()));
+      };
+      if (state(inner) == CellState::Occupied && state(outer) == CellState::Free) return true;
+    }
+  }
+  return false;
+}
+
 // The default vehicle's geometry (maps/vehicles/quad.yaml).
 inline environment::VehicleGeometry quad() {
   environment::VehicleGeometry vehicle;

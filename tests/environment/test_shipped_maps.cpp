@@ -1,5 +1,6 @@
 // The shipped scenes are up to date, small, and their missions' targets are reachable.
 
+#include "analytic_maps.hpp"
 #include "run_command.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
@@ -29,25 +30,6 @@ TEST_P(ShippedScene, RegeneratingItGivesTheCommittedFileByteForByte) {
   EXPECT_TRUE(committed == testing::readWholeFile(dir / "scene.bt"))
       << "maps/" << GetParam() << ".bt is out of date: run ceilplan mapgen --scene " << GetParam()
       << " --out maps/" << GetParam() << ".bt";
-}
-
-// True if `point` lies on a face between an occupied voxel and a free one.
-bool onOccupiedSurface(const VoxelGrid& grid, const Eigen::Vector3d& point) {
-  const GridFrame& frame = grid.frame();
-  for (int axis = 0; axis < 3; ++axis) {
-    const double steps = point[axis] / frame.resolution_m();
-    if (std::abs(steps - std::round(steps)) > 1e-6) continue;  // not on a face across this axis
-    for (const double side : {-0.5, 0.5}) {
-      Eigen::Vector3d inner = point, outer = point;
-      inner[axis] += side * frame.resolution_m();
-      outer[axis] -= side * frame.resolution_m();
-      const auto state = [&](const Eigen::Vector3d& p) {
-        return grid.at(frame.indexOf(0, p.x()), frame.indexOf(1, p.y()), frame.indexOf(2, p.z()));
-      };
-      if (state(inner) == CellState::Occupied && state(outer) == CellState::Free) return true;
-    }
-  }
-  return false;
 }
 
 // Viewpoints at the ends and middle of the standoff range, straight away from the surface
@@ -82,7 +64,7 @@ TEST_P(ShippedScene, EveryMissionTargetLiesOnAnOccupiedSurfaceAndCanBeViewed) {
     const auto standoff = target["standoff_m"].as<std::vector<double>>();
     const Eigen::Vector3d point(p[0], p[1], p[2]);
     const std::string name = target["name"].as<std::string>();
-    EXPECT_TRUE(onOccupiedSurface(environment.grid(), point)) << name;
+    EXPECT_TRUE(testing::onOccupiedSurface(environment.grid(), point)) << name;
     EXPECT_TRUE(hasValidViewpoint(environment, point, standoff[0], standoff[1])) << name;
     EXPECT_GT(target["dwell_s"].as<double>(), 0.0) << name;
   }

@@ -140,6 +140,88 @@ TEST_P(DoorwayOneVoxelWiderThanTheVehicle, TheRoadmapFindsTheWayThroughForEveryP
 
 INSTANTIATE_TEST_SUITE_P(Widths, DoorwayOneVoxelWiderThanTheVehicle, ::testing::Values(1.0, 1.1));
 
+// A hall (z up to 2.2 m) under a loft (z from 2.6 m), 6 x 6 m at 0.1 m, the slab between
+// them pierced by six 1.2 m holes the scan never saw (unknown: obstacles under the default
+// policy) and one shaft 1.0 m square, in the corner, that it did: the only way up, 8 cm wider
+// than the vehicle and placed so that no node of the 0.4 m lattice fits in it.
+environment::OccupancyMap hallUnderALoft() {
+  return analyticMap({-3.0, -3.0, 0.0}, {3.0, 3.0, 5.0}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || c.z() > 4.6) return CellState::Occupied;
+    if (c.z() < 2.2 || c.z() > 2.6) return CellState::Free;
+    if (c.x() > 1.7 && c.x() < 2.7 && c.y() > 1.7 && c.y() < 2.7) return CellState::Free;  // the shaft
+    for (const double x : {-2.0, 0.0})
+      for (const double y : {-1.5, 0.5, 1.9})
+        if (std::abs(c.x() - x) < 0.6 && std::abs(c.y() - y) < 0.6) return CellState::Unknown;
+    return CellState::Occupied;
+  });
+}
+
+TEST(WideSearch, ThePlannersFindTheOnlyShaftPastTheUnscannedHolesNearerTheirWay) {
+  const CeilingScene scene(hallUnderALoft());
+  const Eigen::Vector3d hall(-1.0, -1.0, 1.2), loft(-1.0, -1.0, 3.4);
+  const auto inTheShaft = [](const Eigen::Vector3d& p) { return p.x() > 1.7 && p.x() < 2.7 && p.y() > 1.7 && p.y() < 2.7; };
+  const environment::GridFrame& frame = scene.environment.grid().frame();
+  for (int k = 0; k < frame.size()[2]; k += 4)
+    for (int j = 0; j < frame.size()[1]; j += 4)
+      for (int i = 0; i < frame.size()[0]; i += 4) {
+        const Eigen::Vector3d p(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k));
+        if (p.z() > 2.2 && p.z() < 2.6 && inTheShaft(p)) {
+          ASSERT_FALSE(scene.rules.isStateValid(p)) << p.transpose();
+        }
+      }
+  // Where the path first crosses the slab's middle (z = 2.4).
+  const auto climbsTheShaft = [&](const std::vector<Eigen::Vector3d>& path) {
+    for (std::size_t k = 1; k < path.size(); ++k) {
+      const Eigen::Vector3d &a = path[k - 1], &b = path[k];
+      if ((a.z() < 2.4) != (b.z() < 2.4)) return inTheShaft(a + (b - a) * ((2.4 - a.z()) / (b.z() - a.z())));
+    }
+    return false;
+  };
+  // The roadmap of a tour, the lattice A* and the roadmap as single-query planners.
+  planner::LatticeRoadmap roadmap(scene.planner.spaceInformation());
+  roadmap.build(scene.planner.objective(), {hall, loft});
+  const auto route = roadmap.routesFrom(0)[1];
+  ASSERT_TRUE(route);
+  EXPECT_FALSE(scene.rules.checkPathDensely(route->waypoints));
+  EXPECT_TRUE(climbsTheShaft(route->waypoints));
+  for (const std::string& name : {planner::referencePlannerName(), planner::defaultTourPlannerName()}) {
+    const ompl::base::PlannerPtr planner = planner::makePlanner(name, scene.planner.spaceInformation());
+    const Solved solved = solveOnce(*planner, scene.planner, hall, loft);
+    ASSERT_EQ(solved.status, ompl::base::PlannerStatus::EXACT_SOLUTION) << name;
+    EXPECT_FALSE(scene.rules.checkPathDensely(solved.waypoints)) << name;
+    EXPECT_TRUE(climbsTheShaft(solved.waypoints)) << name;
+  }
+}
+
+// A 4 x 4 m hall at 0.1 m with a dead-end slot 1.0 m wide (8 cm to spare, no lattice node
+// fits) running 2 m east from its wall at x = 2.
+environment::OccupancyMap hallWithASlot() {
+  return analyticMap({-2.0, -2.0, 0.0}, {4.2, 2.0, 2.8}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || c.z() > 2.4) return CellState::Occupied;
+    if (c.x() < 2.0) return CellState::Free;
+    return c.x() < 4.0 && c.y() > 0.0 && c.y() < 1.0 ? CellState::Free : CellState::Occupied;
+  });
+}
+
+TEST(Refinement, APlaceJoinedOnlyThroughAnotherPlaceIsReachedFromEveryPlace) {
+  const CeilingScene scene(hallWithASlot());
+  // Home in the hall, a place at the slot's mouth, one at its end: refinement joins the end to
+  // the mouth, the nearest point of the rest of the roadmap; every route to the end passes the mouth.
+  const std::vector<Eigen::Vector3d> places{{-1.2, -1.0, 1.2}, {2.1, 0.5, 1.2}, {3.4, 0.5, 1.2}};
+  planner::LatticeRoadmap roadmap(scene.planner.spaceInformation());
+  roadmap.build(scene.planner.objective(), places);
+  EXPECT_GT(roadmap.bridgeVertexCount(), 0u);
+  for (int from = 0; from < 3; ++from) {
+    const auto routes = roadmap.routesFrom(from);
+    for (int to = 0; to < 3; ++to) {
+      if (to == from) continue;
+      ASSERT_TRUE(routes[to]) << from << " -> " << to;
+      EXPECT_FALSE(scene.rules.checkPathDensely(routes[to]->waypoints)) << from << " -> " << to;
+      EXPECT_FALSE(roadmap.blockage(from, to)) << from << " -> " << to;
+    }
+  }
+}
+
 TEST(NoPath, TheRoadmapNamesTheGapBetweenPlacesItCannotJoin) {
   const CeilingScene scene(twoRooms(0.3, 1.1));  // 0.8 m wide
   planner::LatticeRoadmap roadmap(scene.planner.spaceInformation());

@@ -61,5 +61,32 @@ TEST(PathEvaluation, RefusesPathsItCannotScore) {
   EXPECT_THROW(planner::evaluatePath(model, almost_empty, 0.95, {{0.5, 0, 2}, {5.5, 0, 2}}), battery::DepletionError);
 }
 
+TEST(PathEvaluation, APathThatStaysWhereItStartsIsNoFlight) {
+  // A tour's leg between two targets seen from the same place.
+  const environment::OccupancyMap map = corridor(flatCeiling);
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
+  const Eigen::Vector3d place(3.0, 0.0, 3.3);
+  const planner::PathEvaluation stay = planner::evaluatePath(model, battery::Pack{}, 0.95, {place, place, place});
+  ASSERT_EQ(stay.samples.size(), 1u);
+  EXPECT_EQ(stay.samples[0].position_m, place);
+  EXPECT_EQ(stay.samples[0].t_s, 0.0);
+  EXPECT_EQ(stay.samples[0].speed_m_s, 0.0);
+  EXPECT_DOUBLE_EQ(stay.samples[0].soc, 0.95);
+  EXPECT_NEAR(stay.samples[0].ceiling_gap_m, 3.5 - 3.33, 1e-9);
+  // Hovering there, under the ceiling: less than the free-air hover (9.5 A).
+  EXPECT_NEAR(stay.samples[0].current_a,
+              model.breakdown(model.exactConditionsAt(place), planner::Velocity{}, 0.95).current_a, 1e-12);
+  EXPECT_LT(stay.samples[0].current_a, 9.5);
+  EXPECT_GT(stay.samples[0].current_a, 0.0);
+  EXPECT_EQ(stay.length_m, 0.0);
+  EXPECT_EQ(stay.duration_s, 0.0);
+  EXPECT_EQ(stay.charge_ah, 0.0);
+  EXPECT_EQ(stay.fec, 0.0);
+  EXPECT_DOUBLE_EQ(stay.min_soc, 0.95);
+  EXPECT_DOUBLE_EQ(stay.min_clearance_m, environment.clearance_m(place));
+}
+
 }  // namespace
 }  // namespace ceilplan::testing

@@ -3,6 +3,7 @@
 
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
+#include "ceilplan/planner/standoff.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/mission/route_planning.hpp"
 #include "ceilplan/io/provenance.hpp"
@@ -39,6 +40,13 @@ std::vector<Eigen::Vector3d> readPathWaypoints(const std::filesystem::path& file
 
 // One line of figures for a terminal.
 std::string figuresLine(const planner::PathEvaluation& evaluation);
+
+// Free mode's standoff report: standoff_m (asked for), length_m, narrowed_m, min_standoff_m and
+// `narrowed`, the spans with less ({from_m, to_m, min_standoff_m, at: [x, y, z]}, along the path).
+nlohmann::json standoffJson(const planner::StandoffReport& report);
+// One line for a terminal, e.g. "standoff 1 m: kept over 9.30 of 12.52 m, narrowed over 3.22 m
+// in 2 places, to 0.18 m at (1.00, 0.70, 5.20)".
+std::string standoffLine(const planner::StandoffReport& report);
 
 // Both modes side by side with the duty projection, as `ceilplan compare` prints it.
 std::string routeComparisonTable(const mission::RouteComparison& comparison, const mission::DutyOptions& duty,

@@ -5,8 +5,9 @@
 //
 // Nothing runs in signal context. installSignalCleanup() blocks SIGINT and SIGTERM in the calling
 // thread, and so in every thread started after it, and starts one thread that takes them with
-// sigwait(): it removes every temporary output still registered, then lets the signal end the
-// process as it would have (exit status 128 + the signal's number).
+// sigwait(): it removes every temporary output still registered (and the parent directories
+// created for it, when empty), then lets the signal end the process as it would have (exit
+// status 128 + the signal's number).
 
 #include <filesystem>
 #include <vector>
@@ -17,6 +18,10 @@ namespace ceilplan::io {
 // would still take the signals and end the process without the cleanup). Further calls do
 // nothing.
 void installSignalCleanup();
+
+// Where `path`, a file being written inside a temporary output (or the temporary itself), will
+// be once committed; any other path as it is. For messages: the user named the final path.
+std::filesystem::path finalPathOf(const std::filesystem::path& path);
 
 // One output (a file, or a directory the caller fills) under a temporary sibling name:
 // "<name>.tmp<pid>" next to the final path. Missing parent directories are created, and removed

@@ -8,6 +8,7 @@
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
 #include "ceilplan/mission/geodetic_origin.hpp"
+#include "ceilplan/mission/trajectory.hpp"
 #include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
 #include "ceilplan/environment/unknown_space.hpp"
@@ -41,6 +42,8 @@ struct Mission {
   std::string mode;       // "ceiling", "free" or "both"; empty: the command decides
   std::uint32_t seed = 1;  // of every random choice
   environment::UnknownSpace unknown;  // what the map's unknown voxels count as (docs/environment.md)
+  TrajectoryOptions trajectory;       // time scaling of the flown routes (key `trajectory:`, docs/flying.md)
+  bool trajectory_ned = false;        // trajectory files in NED instead of the map's ENU
   std::vector<InspectionTarget> targets;
   // Coverage (docs/coverage.md): surfaces photographed with the camera, contact grids probed.
   std::optional<Camera> camera;             // required by surfaces

@@ -9,6 +9,7 @@
 #include "ceilplan/mission/planning_context.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
+#include "ceilplan/planner/standoff.hpp"
 
 #include <Eigen/Core>
 
@@ -24,6 +25,8 @@ struct RoutePlan {
   planner::PathEvaluation evaluation;  // full model, from the battery's start SOC
   planner::ObjectiveChoice objective;  // with the ageing rates it was linearised at
   std::string cost_unit;               // of plan.cost
+  // Free mode: where the route kept less than the conventional standoff (none in ceiling mode).
+  std::optional<planner::StandoffReport> standoff;
 };
 
 // Plans from request.start_m to request.goal_m under `objective` (empty: the context's).

@@ -17,9 +17,10 @@
 #include "ceilplan/mission/mission.hpp"
 #include "ceilplan/mission/planning_context.hpp"
 #include "ceilplan/mission/sortie_plan.hpp"
-#include "ceilplan/mission/sortie_route.hpp"
 #include "ceilplan/mission/tour_legs.hpp"
 #include "ceilplan/mission/tour_order.hpp"
+#include "ceilplan/mission/tour_routes.hpp"
+#include "ceilplan/mission/tour_standoff.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 
@@ -75,13 +76,8 @@ struct TourStop {
   std::optional<std::size_t> photo;
   std::optional<double> yaw_deg;         // heading at the stop (photos; none: aim at the target)
   std::optional<double> gimbal_pitch_deg;
-  std::optional<double> max_speed_m_s;   // flying on from this photo to the next one, on the move
+  std::optional<double> max_speed_m_s;   // on the move: no faster than this from this photo to the next
 };
-
-// The waypoint a vehicle flies at a stop (docs/flying.md, "How a tour maps onto it"): the hold,
-// the heading and gimbal pitch (a photo's own; else aimed at the target point), a photo, the
-// stop's name and, on the move, the speed on from it.
-RouteWaypoint stopWaypoint(const TourStop& stop);
 
 // Seconds spent per phase of planTour.
 struct TourTimes {
@@ -114,6 +110,8 @@ struct TourResult {
   TourOrder order;
   SortiePlan plan;
   FlightRecord record;                // what the plan flies, sample by sample
+  std::vector<SortieRoute> routes;    // per sortie, as a vehicle flies it (autopilot files, maps)
+  std::vector<Trajectory> trajectories;  // the routes time-scaled into setpoints
   std::vector<PlanWear> wear;        // fec, xu, woehler, schmalstieg
   DutyProjection duty;
   double start_soc = 0.0;
@@ -121,6 +119,7 @@ struct TourResult {
   environment::UnknownSpace unknown_space;             // the map's policy, as planned
   environment::UnknownSpaceSummary unknown_summary;    // what it assumed free in the map
   double assumed_free_m = 0.0;                         // of the flown route, relying on the policy
+  std::optional<TourStandoff> standoff;  // free mode: where the conventional standoff was not kept
   // A coverage tour (the mission has surfaces): the views planned in this mode, the photos as
   // flown (flying order, with sortie and time of the shot) and the independent re-check of them.
   std::optional<CoveragePlan> coverage;

@@ -41,9 +41,15 @@ struct Viewpoint {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // body centre
   double distance_m = 0.0;        // to the target point
   double ceiling_gap_m = 0.0;     // nearest rotor-plane gap above; +inf if none
+  double standoff_m = 0.0;        // airframe to the nearest structure (planner::standoffAt)
   double dwell_current_a = 0.0;   // full model, hovering here
   double dwell_charge_ah = 0.0;   // dwell current x dwell time
 };
+
+// A target lies on structure: some occupied voxel within its standoff range (standoff_max_m)
+// of its point. Throws ceilplan::InputError naming the target when none is, a target in free
+// air (a point outside the map is left to chooseViewpoint, which names the map's extent).
+void requireOnStructure(const InspectionTarget& target, const environment::Environment& environment);
 
 // Pack current hovering at `body_m` under the full model: each rotor's mean gap and coverage
 // above, the mean gap below.
