@@ -1,14 +1,16 @@
 // `ceilplan current`: predicted battery current for one flight condition, or against ceiling gap.
 
+#include "cli_checks.hpp"
 #include "command_registry.hpp"
 #include "output.hpp"
 
-#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/energy/ceiling_gap_sweep.hpp"
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/report_json.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
+#include "ceilplan/planner/flight_cost_model.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -104,8 +106,9 @@ const CommandRegistration registration(30, [](CLI::App& parent) {
   command->add_option("--coverage", options->coverage, "fraction of each rotor disc under the ceiling, 0..1")
       ->capture_default_str();
   command->add_option("--speed-m-s", options->speed_m_s, "horizontal speed (m/s)")->capture_default_str();
+  constexpr double kMaxRate_m_s = planner::FlightSpeeds::kMaxVerticalSpeed_m_s;  // as a mission file allows
   command->add_option("--climb-m-s", options->climb_m_s, "climb rate (m/s), negative in descent")
-      ->capture_default_str();
+      ->capture_default_str()->check(finiteRange(-kMaxRate_m_s, kMaxRate_m_s));
   command->add_option("--soc", options->soc, "state of charge 0..1; default: the vehicle's reference_soc");
   command->add_option("--vehicle", options->vehicle_path, "vehicle YAML file; default: the built-in quadrotor");
   command->add_option("--json", options->json_path, "also write the result as JSON to this file");

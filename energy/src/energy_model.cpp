@@ -2,7 +2,6 @@
 
 #include "ceilplan/energy/thrust_to_power.hpp"
 #include "ceilplan/core/error.hpp"
-#include "ceilplan/core/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -77,9 +76,6 @@ void EnergyModel::checkFlight(const FlightCondition& flight) const {
     throw ceilplan::InputError(message.str());
   }
   if (!std::isfinite(flight.climb_m_s)) refuse("climb rate", flight.climb_m_s, "m/s must be finite");
-  if (std::abs(flight.climb_m_s) > parameters_.airframe.max_speed_m_s)
-    throw ceilplan::InputError("climb rate " + formatNumber(flight.climb_m_s) + " m/s is beyond the vehicle's max_speed_m_s (" +
-                               formatNumber(parameters_.airframe.max_speed_m_s) + " m/s)");
   if (!(flight.soc >= 0.0 && flight.soc <= 1.0)) refuse("state of charge", flight.soc, "is outside [0, 1]");
 }
 

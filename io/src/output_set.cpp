@@ -60,10 +60,6 @@ void checkWritableFile(const fs::path& file) {
     throw InputError("cannot write " + shown + ": the file exists and is read-only");
 }
 
-OutputSet::OutputSet(fs::path dir) : staging_(checkedDirectory(std::move(dir))) {
-  std::error_code ec;
-  fs::create_directories(staging_.path(), ec);
-  if (ec) throw Error("cannot create " + staging_.path().string() + ": " + ec.message());
-}
+OutputSet::OutputSet(fs::path dir) : staging_(checkedDirectory(std::move(dir)), true) {}
 
 }  // namespace ceilplan::io

@@ -5,6 +5,7 @@
 #include <pthread.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <mutex>
 #include <map>
@@ -50,9 +51,17 @@ sigset_t cleanupSignals() {
   }
   registryMutex().lock();
   std::error_code ignored;
-  for (const auto& [temporary, registered] : registry()) {
-    fs::remove_all(temporary, ignored);
-    for (const fs::path& parent : registered.created_parents) fs::remove(parent, ignored);  // only if still empty
+  // Other threads run on: no new temporary can start (its constructor waits for the lock), but a
+  // file of a registered one may be opened while remove_all walks its directory. Walk again.
+  for (int pass = 0; pass < 20; ++pass) {
+    bool left = false;
+    for (const auto& [temporary, registered] : registry()) {
+      fs::remove_all(temporary, ignored);
+      for (const fs::path& parent : registered.created_parents) fs::remove(parent, ignored);  // only if still empty
+      left |= fs::exists(temporary, ignored);
+    }
+    if (!left) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   // End the process the way the signal would have, so the caller sees "killed by SIGINT".
   std::signal(signal_number, SIG_DFL);
@@ -85,9 +94,11 @@ fs::path finalPathOf(const fs::path& path) {
   return path;
 }
 
-TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_path)) {
+TemporaryOutput::TemporaryOutput(fs::path final_path, bool directory) : final_(std::move(final_path)) {
   temporary_ = final_;
   temporary_ += ".tmp" + std::to_string(::getpid());
+  // Under the lock: once the signal cleanup has begun, nothing more is created on disk.
+  const std::lock_guard<std::mutex> lock(registryMutex());
   std::error_code ec;
   for (fs::path parent = final_.parent_path(); !parent.empty() && !fs::exists(parent, ec); parent = parent.parent_path())
     created_parents_.push_back(parent);
@@ -96,7 +107,14 @@ TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_p
     if (ec)
       throw ceilplan::Error("cannot create directory " + final_.parent_path().string() + ": " + ec.message());
   }
-  const std::lock_guard<std::mutex> lock(registryMutex());
+  if (directory) {
+    fs::create_directory(temporary_, ec);
+    if (ec) {
+      std::error_code ignored;
+      for (const fs::path& parent : created_parents_) fs::remove(parent, ignored);
+      throw ceilplan::Error("cannot create " + temporary_.string() + ": " + ec.message());
+    }
+  }
   registry().emplace(temporary_, Registered{final_, created_parents_});
 }
 

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <ostream>
 #include <random>
@@ -276,8 +277,8 @@ std::vector<Case> flagCases() {
       {"current_coverage_range", "current --coverage 2 --json {out}", 2, "coverage 2 is outside [0, 1]"},
       {"current_soc_nan", "current --soc nan --json {out}", 2, "state of charge nan"},
       {"current_speed_huge", "current --speed-m-s 1e9 --json {out}", 2, "beyond the vehicle's max_speed_m_s (15 m/s)"},
-      {"current_climb_huge", "current --climb-m-s 1e30 --json {out}", 2, "climb rate 1e+30 m/s is beyond"},
-      {"current_descent_huge", "current --climb-m-s -1e9 --json {out}", 2, "climb rate -1e+09 m/s is beyond"},
+      {"current_climb_huge", "current --climb-m-s 1e30 --json {out}", 2, "--climb-m-s: must be a finite number in [-10, 10], got 1e30"},
+      {"current_descent_huge", "current --climb-m-s -1e9 --json {out}", 2, "--climb-m-s: must be a finite number in [-10, 10]"},
       {"mapgen_resolution_nan", "mapgen --scene open --resolution nan --out {out}", 2, "resolution", Out::Absent, {}, "out.bt"},
       {"mapgen_resolution_tiny", "mapgen --scene open --resolution 1e-9 --out {out}", 2, "resolution", Out::Absent, {}, "out.bt"},
       {"mapgen_seed_negative", "mapgen --scene open --resolution 0.5 --seed -1 --out {out}", 2,
@@ -543,12 +544,18 @@ std::vector<Case> allCases() {
 
 // ---- Running a row ----------------------------------------------------------------------------
 
-// Every entry under `dir` (relative path), with a file's bytes; directories as "<dir>".
+// Every entry under `dir` (relative path), with a file's size and hash (short enough to print
+// when two snapshots differ); directories as "<dir>".
 std::map<std::string, std::string> snapshot(const fs::path& dir) {
   std::map<std::string, std::string> entries;
   for (auto it = fs::recursive_directory_iterator(dir); it != fs::recursive_directory_iterator(); ++it) {
     const std::string name = fs::relative(it->path(), dir).string();
-    entries[name] = it->is_directory() ? "<dir>" : readWholeFile(it->path());
+    if (it->is_directory()) {
+      entries[name] = "<dir>";
+    } else {
+      const std::string bytes = readWholeFile(it->path());
+      entries[name] = std::to_string(bytes.size()) + " bytes, hash " + std::to_string(std::hash<std::string>{}(bytes));
+    }
   }
   return entries;
 }
@@ -623,10 +630,11 @@ TEST_P(HostileInput, GivesTheDocumentedExitAndLeavesNothingBehind) {
     if (c.args.find("{out}") != std::string::npos) {
       EXPECT_TRUE(fs::exists(out)) << out << " not written";
     }
-    for (const auto& [name, bytes] : before)
-      if (bytes != "<dir>") {
-        EXPECT_EQ(readWholeFile(dir / name), bytes) << name << " changed";
-      }
+    const auto after = snapshot(dir);
+    for (const auto& [name, file] : before) {
+      ASSERT_EQ(after.count(name), 1u) << name << " removed";
+      EXPECT_EQ(after.at(name), file) << name << " changed";
+    }
   }
 }
 
@@ -669,6 +677,22 @@ TEST(HostileInputMessages, AFailedWriteSaysWhyAndLeavesNothing) {
     expectOneCleanLine(r.err);
     EXPECT_EQ(snapshot(dir), before) << name;
   }
+}
+
+// A seed is printed as given (1, not 0), and only for a planner that draws random numbers: the
+// lattice planners have neither a seed nor a time limit.
+TEST(HostileInputMessages, SeedsAndTimeLimitsAreShownOnlyWhereTheyApply) {
+  const fs::path dir = scratchDirectory("seed_lines");
+  const std::string query = "plan --map " + (fixtures() / "room.bt").string() + " --start -2,0,1 --goal 2,0,1";
+  const CommandResult lattice = runCeilplan(query + " --planner lattice --out " + (dir / "lattice").string());
+  ASSERT_EQ(lattice.exit_code, 0) << lattice.err;
+  EXPECT_EQ(lattice.out.find("seed"), std::string::npos) << lattice.out;
+  EXPECT_NE(lattice.out.find("planner lattice (lattice spacing 0.2 m)\n"), std::string::npos) << lattice.out;
+  const CommandResult sampled =
+      runCeilplan(query + " --planner RRTstar --seed 1 --time-limit-s 0.25 --out " + (dir / "sampled").string());
+  ASSERT_EQ(sampled.exit_code, 0) << sampled.err;
+  EXPECT_NE(sampled.out.find("planner RRTstar, seed 1, 0.25 s\n"), std::string::npos) << sampled.out;
+  EXPECT_NE(readWholeFile(dir / "sampled" / "plan.json").find("\"seed\": 1"), std::string::npos);
 }
 
 bool builtWithAddressSanitizer() {
@@ -807,6 +831,7 @@ TEST_P(InterruptedRun, LeavesNothingBehind) {
   }
   const auto before = snapshot(dir);
   const fs::path stdout_path = dir.parent_path() / ("interrupted_" + c.name + ".stdout");
+  fs::remove(stdout_path);  // a previous run's must not look like this one's progress
   const pid_t pid = ::fork();
   if (pid == 0) {
     const int out = ::open(stdout_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);

@@ -28,7 +28,10 @@ std::filesystem::path finalPathOf(const std::filesystem::path& path);
 // again if the output is never committed.
 class TemporaryOutput {
  public:
-  explicit TemporaryOutput(std::filesystem::path final_path);
+  // With `directory`, the temporary is made as an empty directory. Parents and the directory are
+  // made under the signal cleanup's lock: once an interruption is being cleaned up, no
+  // constructor creates anything.
+  explicit TemporaryOutput(std::filesystem::path final_path, bool directory = false);
   ~TemporaryOutput();  // removes the temporary unless committed
   TemporaryOutput(const TemporaryOutput&) = delete;
   TemporaryOutput& operator=(const TemporaryOutput&) = delete;
