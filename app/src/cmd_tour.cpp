@@ -101,6 +101,7 @@ void runTour(TourArguments a) {
   std::printf("unknown space: %s\n", io::unknownSpaceLine(context.environment()).c_str());
   std::fflush(stdout);
   std::vector<mission::TourResult> tours;
+  bool kmz_written = autopilot.has_value();
   for (mission::FlightMode mode : modes) {
     tours.push_back(mission::planTour(mission, context, mode, a.options));
     const std::filesystem::path dir = modes.size() > 1 ? out.path() / mission::flightModeName(mode) : out.path();
@@ -108,8 +109,10 @@ void runTour(TourArguments a) {
     std::printf("%s", io::tourSummary(tours.back()).c_str());
     printCoverage(tours.back());
     if (autopilot)
-      if (const std::optional<std::string> dji = io::djiExportProblem(tours.back(), mission))
+      if (const std::optional<std::string> dji = io::djiExportProblem(tours.back(), mission)) {
         std::printf("  DJI KMZ not written: %s\n", dji->c_str());
+        kmz_written = false;
+      }
     std::fflush(stdout);
   }
   if (tours.size() == 2) {
@@ -119,7 +122,10 @@ void runTour(TourArguments a) {
   out.commit();
   std::printf("\nwrote %s (tour.json, path.csv, trajectory, report.html%s%s); figures: scripts/plot-tour %s\n",
               a.out.c_str(), mission.surfaces.empty() ? "" : ", photos.csv, coverage.json",
-              autopilot ? ", mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson" : "", a.out.c_str());
+              !autopilot     ? ""
+              : kmz_written ? ", mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson"
+                            : ", mission.plan, mission.waypoints, routes.kml, routes.geojson",
+              a.out.c_str());
 }
 
 const CommandRegistration registration(50, [](CLI::App& parent) {
