@@ -3,6 +3,7 @@
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/core/format.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -42,17 +43,54 @@ std::string photosCsv(const std::vector<PhotoRow>& rows) {
   return out.str();
 }
 
-nlohmann::json coverageJson(const mission::CoveragePlan& plan, const mission::CoverageCheck& check) {
+namespace {
+
+// Throws unless `check` is a re-check of `plan`'s regions, element for element; `file` names the output.
+void requireMatchingCheck(const mission::CoveragePlan& plan, const mission::CoverageCheck& check, const char* file) {
   if (check.regions.size() != plan.regions.size())
-    throw ceilplan::InputError("coverage.json: the check has " + std::to_string(check.regions.size()) +
+    throw ceilplan::InputError(std::string(file) + ": the check has " + std::to_string(check.regions.size()) +
                                " regions, the plan " + std::to_string(plan.regions.size()));
+  for (std::size_t r = 0; r < plan.regions.size(); ++r) {
+    const mission::RegionPlan& planned = plan.regions[r];
+    const mission::RegionCoverageCheck& checked = check.regions[r];
+    if (checked.name != planned.region.name || checked.covered.size() != planned.surface.elements.size() ||
+        checked.best_gsd_mm_px.size() != checked.covered.size() || checked.view_count.size() != checked.covered.size() ||
+        planned.reachable.size() != checked.covered.size())
+      throw ceilplan::InputError(std::string(file) + ": region " + std::to_string(r) + " of the check is '" +
+                                 checked.name + "', of the plan '" + planned.region.name + "'");
+  }
+}
+
+}  // namespace
+
+std::string coverageElementsCsv(const mission::CoveragePlan& plan, const mission::CoverageCheck& check) {
+  requireMatchingCheck(plan, check, "coverage_elements.csv");
+  std::ostringstream out;
+  out << "region,x,y,z,nx,ny,nz,area_m2,reachable,covered,best_gsd_mm_px,views\n";
+  for (std::size_t r = 0; r < plan.regions.size(); ++r) {
+    const mission::RegionPlan& planned = plan.regions[r];
+    const mission::RegionCoverageCheck& checked = check.regions[r];
+    const std::string name = csvField(planned.region.name);
+    for (std::size_t e = 0; e < planned.surface.elements.size(); ++e) {
+      const environment::SurfaceElement& element = planned.surface.elements[e];
+      const double best = checked.best_gsd_mm_px[e];
+      out << name << ',' << formatFixed(element.centre_m.x(), 3) << ',' << formatFixed(element.centre_m.y(), 3) << ','
+          << formatFixed(element.centre_m.z(), 3) << ',' << formatFixed(element.normal.x(), 4) << ','
+          << formatFixed(element.normal.y(), 4) << ',' << formatFixed(element.normal.z(), 4) << ','
+          << formatNumber(element.area_m2, 6) << ',' << (planned.reachable[e] ? 1 : 0) << ','
+          << (checked.covered[e] ? 1 : 0) << ',' << (std::isfinite(best) ? formatFixed(best, 3) : "") << ','
+          << checked.view_count[e] << '\n';
+    }
+  }
+  return out.str();
+}
+
+nlohmann::json coverageJson(const mission::CoveragePlan& plan, const mission::CoverageCheck& check) {
+  requireMatchingCheck(plan, check, "coverage.json");
   nlohmann::json regions = nlohmann::json::array();
   for (std::size_t r = 0; r < plan.regions.size(); ++r) {
     const mission::RegionPlan& planned = plan.regions[r];
     const mission::RegionCoverageCheck& checked = check.regions[r];
-    if (checked.name != planned.region.name || checked.covered.size() != planned.surface.elements.size())
-      throw ceilplan::InputError("coverage.json: region " + std::to_string(r) + " of the check is '" + checked.name +
-                                 "', of the plan '" + planned.region.name + "'");
     const mission::CoverageRegion& region = planned.region;
     nlohmann::json faces = nlohmann::json::array();
     for (const mission::FaceKind kind : {mission::FaceKind::Down, mission::FaceKind::Side, mission::FaceKind::Up})
@@ -100,6 +138,8 @@ void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourRes
     throw ceilplan::InputError("the tour has no coverage plan: photos.csv and coverage.json belong to coverage tours");
   writePhotosCsv(dir / "photos.csv", tour.photos);
   writeCoverageJson(dir / "coverage.json", coverageJson(*tour.coverage, *tour.coverage_check));
+  const std::string elements = coverageElementsCsv(*tour.coverage, *tour.coverage_check);
+  writeTextAtomically(dir / "coverage_elements.csv", [&](std::ostream& out) { out << elements; });
 }
 
 double routeLength_m(const mission::TourResult& tour) {

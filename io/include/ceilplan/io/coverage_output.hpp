@@ -37,12 +37,21 @@ std::string photosCsv(const std::vector<PhotoRow>& rows);
 // Throws ceilplan::InputError when the check does not match the plan's regions.
 nlohmann::json coverageJson(const mission::CoveragePlan& plan, const mission::CoverageCheck& check);
 
+// coverage_elements.csv, for the coverage figures (scripts/plot-coverage): header
+// `region,x,y,z,nx,ny,nz,area_m2,reachable,covered,best_gsd_mm_px,views`, one line per surface
+// element of every region: its face centre (m, to the millimetre) and unit normal, its area, 1 or
+// 0 for reachable (some valid pose could cover it) and covered (by the re-check), the best GSD
+// of the photos seeing it anywhere in the frame (empty if none does) and how many photos see it
+// at or below the required GSD and incidence. Throws ceilplan::InputError as coverageJson does.
+std::string coverageElementsCsv(const mission::CoveragePlan& plan, const mission::CoverageCheck& check);
+
 // Both written atomically (whole or not at all).
 void writePhotosCsv(const std::filesystem::path& file, const std::vector<PhotoRow>& rows);
 void writeCoverageJson(const std::filesystem::path& file, const nlohmann::json& coverage);
 
 // A coverage tour's files in its directory: photos.csv (the photos as flown, with sortie and
-// time) and coverage.json (the plan with the re-check of the photos flown). Throws
+// time), coverage.json (the plan with the re-check of the photos flown) and
+// coverage_elements.csv (each element as the re-check found it). Throws
 // ceilplan::InputError when the tour has no coverage plan.
 void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourResult& tour);
 
