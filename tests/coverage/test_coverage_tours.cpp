@@ -118,30 +118,24 @@ void expectCovered(const PlannedTour& planned) {
   }
 }
 
-TEST(CoverageTours, BridgeSoffitCeilingMode) {
-  const PlannedTour planned = planShipped("bridge_soffit", FlightMode::Ceiling);
+// A shipped mission's tour, checked for safety, completeness and coverage.
+PlannedTour planAndCheckShipped(const std::string& name, FlightMode mode) {
+  PlannedTour planned = planShipped(name, mode);
   expectSafeAndComplete(planned);
   expectCovered(planned);
+  return planned;
+}
+
+TEST(CoverageTours, BridgeSoffitCeilingMode) {
+  const PlannedTour planned = planAndCheckShipped("bridge_soffit", FlightMode::Ceiling);
   EXPECT_EQ(planned.tour.order.method, "neighbour-list 2-opt+or-opt");
 }
 
-TEST(CoverageTours, BridgeSoffitFreeMode) {
-  const PlannedTour planned = planShipped("bridge_soffit", FlightMode::Free);
-  expectSafeAndComplete(planned);
-  expectCovered(planned);
-}
+TEST(CoverageTours, BridgeSoffitFreeMode) { planAndCheckShipped("bridge_soffit", FlightMode::Free); }
 
-TEST(CoverageTours, TunnelCrown) {
-  const PlannedTour planned = planShipped("tunnel_crown", FlightMode::Ceiling);
-  expectSafeAndComplete(planned);
-  expectCovered(planned);
-}
+TEST(CoverageTours, TunnelCrown) { planAndCheckShipped("tunnel_crown", FlightMode::Ceiling); }
 
-TEST(CoverageTours, WarehouseCeiling) {
-  const PlannedTour planned = planShipped("warehouse_ceiling", FlightMode::Ceiling);
-  expectSafeAndComplete(planned);
-  expectCovered(planned);
-}
+TEST(CoverageTours, WarehouseCeiling) { planAndCheckShipped("warehouse_ceiling", FlightMode::Ceiling); }
 
 TEST(CoverageTours, ContactGridUnderTheDeckIsHugged) {
   const PlannedTour planned = planShipped("bridge_contact_grid", FlightMode::Ceiling);
