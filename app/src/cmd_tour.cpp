@@ -121,7 +121,7 @@ void runTour(TourArguments a) {
   }
   out.commit();
   std::printf("\nwrote %s (tour.json, path.csv, trajectory, report.html%s%s); figures: scripts/plot-tour %s\n",
-              a.out.c_str(), mission.surfaces.empty() ? "" : ", photos.csv, coverage.json",
+              a.out.c_str(), mission.surfaces.empty() ? "" : ", photos.csv, coverage.json, coverage_elements.csv",
               !autopilot     ? ""
               : kmz_written ? ", mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson"
                             : ", mission.plan, mission.waypoints, routes.kml, routes.geojson",

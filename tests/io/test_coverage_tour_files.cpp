@@ -1,6 +1,7 @@
 // A coverage tour's files as `ceilplan tour --mode both` writes them (the ctest fixture plans
 // tests/coverage/missions/bridge_strip.yaml into CEILPLAN_TOURS_DIR/bridge_strip): photos.csv
-// with exactly its columns, coverage.json with every key docs/coverage.md lists, and the
+// with exactly its columns, coverage.json with every key docs/coverage.md lists,
+// coverage_elements.csv adding up to it, and the
 // autopilot files carrying the camera (docs/flying.md): every photo row is a waypoint at its
 // pose with its yaw, the gimbal pitch commanded before it, a hold and one
 // MAV_CMD_IMAGE_START_CAPTURE; speed commands only where the speed changes; the WPL the same
@@ -130,6 +131,24 @@ TEST(CoverageTourFiles, PhotosCoverageAndTheCameraInTheAutopilotFiles) {
     ASSERT_FALSE(rows.empty());
     const nlohmann::json coverage = nlohmann::json::parse(readWholeFile(dir / "coverage.json"));
     expectCoverageJson(coverage, mission, rows.size());
+    // coverage_elements.csv: the covered elements' areas add up to coverage.json's covered area.
+    std::stringstream elements(readWholeFile(dir / "coverage_elements.csv"));
+    std::string line;
+    std::getline(elements, line);
+    EXPECT_EQ(line, "region,x,y,z,nx,ny,nz,area_m2,reachable,covered,best_gsd_mm_px,views");
+    double covered_m2 = 0.0;
+    std::size_t element_rows = 0;
+    while (std::getline(elements, line)) {
+      const std::vector<std::string> f = fieldsOf(line, ',');
+      ASSERT_EQ(f.size(), 12u) << line;
+      ++element_rows;
+      if (f[9] == "1") {
+        covered_m2 += std::stod(f[7]);
+        EXPECT_GE(std::stoi(f[11]), 1) << line;  // a covered element is seen by some photo
+      }
+    }
+    EXPECT_GT(element_rows, 1000u);  // 0.1 m faces over 11 m^2
+    EXPECT_NEAR(covered_m2, coverage["regions"][0]["covered_area_m2"].get<double>(), 1e-6 * element_rows);
     const nlohmann::json tour = nlohmann::json::parse(readWholeFile(dir / "tour.json"));
     ASSERT_EQ(tour["sorties"].size(), 1u);  // so mission.plan holds every photo
     double last_t = 0.0;
