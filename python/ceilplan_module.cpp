@@ -113,6 +113,44 @@ py::dict evaluationDict(const planner::PathEvaluation& e) {
   return d;
 }
 
+// The photos of a coverage tour as flown (photos.csv's columns) as numpy arrays, regions as a list.
+py::dict photoArrays(const std::vector<mission::PhotoRow>& rows) {
+  const std::size_t n = rows.size();
+  py::array_t<int> index(n), sortie(n);
+  py::array_t<double> t(n), x(n), y(n), z(n), yaw(n), pitch(n), distance(n), gsd(n);
+  std::vector<std::string> regions;
+  for (std::size_t k = 0; k < n; ++k) {
+    const mission::PhotoRow& row = rows[k];
+    index.mutable_at(k) = row.index;
+    sortie.mutable_at(k) = row.sortie.value_or(0);
+    t.mutable_at(k) = row.t_s.value_or(std::nan(""));
+    x.mutable_at(k) = row.camera_m.x();
+    y.mutable_at(k) = row.camera_m.y();
+    z.mutable_at(k) = row.camera_m.z();
+    yaw.mutable_at(k) = row.yaw_deg;
+    pitch.mutable_at(k) = row.gimbal_pitch_deg;
+    distance.mutable_at(k) = row.distance_m;
+    gsd.mutable_at(k) = row.gsd_mm_px;
+    regions.push_back(row.region);
+  }
+  py::dict d;
+  d["index"] = index;
+  d["sortie"] = sortie;
+  d["t_s"] = t;
+  d["x"] = x;
+  d["y"] = y;
+  d["z"] = z;
+  d["yaw_deg"] = yaw;
+  d["gimbal_pitch_deg"] = pitch;
+  d["distance_m"] = distance;
+  d["gsd_mm_px"] = gsd;
+  d["region"] = regions;
+  return d;
+}
+
+// A JSON document as Python objects.
+py::object pythonJson(const nlohmann::json& json) { return py::module_::import("json").attr("loads")(json.dump()); }
+
 py::object noneIfEmpty(const std::optional<double>& value) { return value ? py::object(py::float_(*value)) : py::none(); }
 
 // A duty-series of samples as numpy arrays: t_s, current_a, soc, fec.
@@ -302,6 +340,18 @@ PYBIND11_MODULE(ceilplan, m) {
                                for (const auto& target : self.mission.targets) names.push_back(target.name);
                                return names;
                              })
+      .def_property_readonly("surfaces",
+                             [](const PyMission& self) {
+                               std::vector<std::string> names;
+                               for (const auto& surface : self.mission.surfaces) names.push_back(surface.name);
+                               return names;
+                             })
+      .def_property_readonly("contact_grids",
+                             [](const PyMission& self) {
+                               std::vector<std::string> names;
+                               for (const auto& grid : self.mission.contact_grids) names.push_back(grid.name);
+                               return names;
+                             })
       .def_property_readonly("vehicle", [](const PyMission& self) { return self.mission.vehicle; })
       .def_property_readonly("seed", [](const PyMission& self) { return self.mission.seed; });
 
@@ -350,6 +400,21 @@ PYBIND11_MODULE(ceilplan, m) {
                                }
                                return sampleArrays(sorties, offsets);
                              })
+      .def_property_readonly(
+          "photos",
+          [](const PyTour& t) -> py::object {
+            if (!t.tour.coverage) return py::none();
+            return photoArrays(t.tour.photos);
+          },
+          "A coverage tour's photos as flown, photos.csv's columns as arrays (None without surfaces)")
+      .def_property_readonly(
+          "coverage",
+          [](const PyTour& t) -> py::object {
+            if (!t.tour.coverage || !t.tour.coverage_check) return py::none();
+            return pythonJson(io::coverageJson(*t.tour.coverage, *t.tour.coverage_check));
+          },
+          "A coverage tour's coverage.json: per region the area, covered area and %, unreachable area, GSD "
+          "histogram, uncovered centres, by the independent re-check of the photos flown (None without surfaces)")
       .def(
           "write",
           [](const PyTour& t, const std::filesystem::path& dir, bool export_autopilot) {
@@ -362,7 +427,8 @@ PYBIND11_MODULE(ceilplan, m) {
             io::writeTourDirectory(out.path(), t.tour, *t.mission, t.context->environment(), autopilot, provenance);
             out.commit();
           },
-          "Writes tour.json, path.csv, map views and (with an origin) mission.plan and mission.waypoints, as `ceilplan tour`",
+          "Writes tour.json, path.csv, map views, photos.csv and coverage.json for a coverage tour and (with an origin) "
+          "mission.plan and mission.waypoints, as `ceilplan tour`",
           py::arg("dir"), py::arg("autopilot") = true);
 
   m.def(
@@ -380,7 +446,9 @@ PYBIND11_MODULE(ceilplan, m) {
         mission::TourResult tour = mission::planTour(*shared_mission, *context, flight_mode, options);
         return PyTour{std::move(tour), shared_mission, context};
       },
-      "Plans the mission's tour in one mode, as `ceilplan tour` does", py::arg("mission"), py::arg("mode") = "ceiling",
+      "Plans the mission's tour in one mode, as `ceilplan tour` does: point targets, contact grids and surfaces to "
+      "photograph",
+      py::arg("mission"), py::arg("mode") = "ceiling",
       py::arg("seed") = py::none(), py::arg("planner") = "roadmap", py::arg("ageing_model") = "xu");
 
   const battery::DutyStudyOptions paper;  // the defaults of the study and of `ceilplan duty`

@@ -1,12 +1,14 @@
-// `ceilplan tour`: an inspection tour of every target of a mission file, in ceiling mode, free
+// `ceilplan tour`: an inspection tour of every target of a mission file (point targets, contact
+// grid points and, for a coverage mission, the photos of its surfaces), in ceiling mode, free
 // mode or both, split into sorties for the least battery wear and exported to the autopilot.
-// docs/tours.md.
+// docs/tours.md, docs/coverage.md.
 
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
 #include "map_options.hpp"
 #include "output.hpp"
 
+#include "ceilplan/io/coverage_output.hpp"
 #include "ceilplan/io/mission_file.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/provenance.hpp"
@@ -18,6 +20,7 @@
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -37,6 +40,26 @@ struct TourArguments {
   UnknownSpaceFlags unknown;  // given: overrides the mission's `unknown:`
   mission::TourOptions options;
 };
+
+// What a coverage tour covers (by the independent re-check of the photos flown) and where the
+// time went.
+void printCoverage(const mission::TourResult& tour) {
+  const mission::TourTimes& t = tour.times;
+  std::printf("  phases: stops %.1f s, legs %.1f s, order and split %.1f s, routing %.1f s, refining %.1f s, record %.1f s",
+              t.stops_s, t.legs_s, t.order_s, t.routing_s, t.refining_s, t.record_s);
+  if (tour.coverage) std::printf(", coverage re-check %.1f s", t.coverage_check_s);
+  std::printf(" (%d rounds)\n", t.rounds);
+  if (!tour.coverage_check) return;
+  std::printf("  %zu photos, route %.1f m\n", tour.photos.size(), io::routeLength_m(tour));
+  for (std::size_t r = 0; r < tour.coverage_check->regions.size(); ++r) {
+    const mission::RegionCoverageCheck& region = tour.coverage_check->regions[r];
+    std::printf("  '%s': %.2f m2, %.2f %% of the reachable %.2f m2 covered at or below %s mm/px (re-check), mean GSD %.3f "
+                "mm/px, %.2f m2 unreachable\n",
+                region.name.c_str(), region.area_m2, 100.0 * region.coveredReachableShare(), region.reachable_area_m2,
+                formatNumber(tour.coverage->regions[r].region.gsd_mm_px).c_str(), region.mean_gsd_mm_px,
+                region.unreachable_area_m2);
+  }
+}
 
 void runTour(TourArguments a) {
   const mission::Mission mission = io::readMission(a.mission);
@@ -69,20 +92,27 @@ void runTour(TourArguments a) {
   provenance.input("mission", mission.file).input("map", mission.map_file).input("vehicle", mission.vehicle_file);
   provenance.seed = a.options.seed;
 
-  std::printf("tour of %s: %zu targets, mode %s, planner %s, seed %u, split for least %s wear\n",
-              mission.file.c_str(), mission.targets.size(), a.mode.c_str(), a.options.planner.c_str(), a.options.seed,
-              a.options.ageing_model.c_str());
+  std::string inspects = std::to_string(mission.targets.size()) + " targets";
+  if (mission.isCoverage())
+    inspects += ", " + std::to_string(mission.surfaces.size()) + " surface(s), " +
+                std::to_string(mission.contact_grids.size()) + " contact grid(s)";
+  std::printf("tour of %s: %s, mode %s, planner %s, seed %u, split for least %s wear\n", mission.file.c_str(),
+              inspects.c_str(), a.mode.c_str(), a.options.planner.c_str(), a.options.seed, a.options.ageing_model.c_str());
   std::printf("unknown space: %s\n", io::unknownSpaceLine(context.environment()).c_str());
   std::fflush(stdout);
   std::vector<mission::TourResult> tours;
+  bool kmz_written = autopilot.has_value();
   for (mission::FlightMode mode : modes) {
     tours.push_back(mission::planTour(mission, context, mode, a.options));
     const std::filesystem::path dir = modes.size() > 1 ? out.path() / mission::flightModeName(mode) : out.path();
     io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot, provenance);
     std::printf("%s", io::tourSummary(tours.back()).c_str());
+    printCoverage(tours.back());
     if (autopilot)
-      if (const std::optional<std::string> dji = io::djiExportProblem(tours.back(), mission))
+      if (const std::optional<std::string> dji = io::djiExportProblem(tours.back(), mission)) {
         std::printf("  DJI KMZ not written: %s\n", dji->c_str());
+        kmz_written = false;
+      }
     std::fflush(stdout);
   }
   if (tours.size() == 2) {
@@ -90,15 +120,20 @@ void runTour(TourArguments a) {
     io::writeTourComparison(out.path(), tours[0], tours[1], mission, context.environment(), provenance);
   }
   out.commit();
-  std::printf("\nwrote %s (tour.json, path.csv, trajectory, report.html%s); figures: scripts/plot-tour %s\n",
-              a.out.c_str(), autopilot ? ", mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson" : "",
+  std::printf("\nwrote %s (tour.json, path.csv, trajectory, report.html%s%s); figures: scripts/plot-tour %s\n",
+              a.out.c_str(), mission.surfaces.empty() ? "" : ", photos.csv, coverage.json, coverage_elements.csv",
+              !autopilot     ? ""
+              : kmz_written ? ", mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson"
+                            : ", mission.plan, mission.waypoints, routes.kml, routes.geojson",
               a.out.c_str());
 }
 
 const CommandRegistration registration(50, [](CLI::App& parent) {
   auto a = std::make_shared<TourArguments>();
   CLI::App* command = parent.add_subcommand(
-      "tour", "Inspect every target of a mission file: viewpoints, legs, order, sorties, autopilot files");
+      "tour",
+      "Inspect every target of a mission file (point targets, contact grids, surfaces to photograph): stops, legs, order, "
+      "sorties, autopilot files");
   command->add_option("--mission", a->mission, "mission file (docs/missions.md)")->required()->check(CLI::ExistingFile);
   command->add_option("--out", a->out, "output directory")->required();
   command->add_option("--mode", a->mode, "ceiling, free or both (default: the mission's `mode` if one of these, else ceiling)")
@@ -120,6 +155,21 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                       "roadmap and lattice: node spacing in voxels of the map instead (to be retired)")
       ->check(CLI::Range(1, 16));
   command->add_option("--workers", a->options.workers, "threads planning legs")->capture_default_str()->check(CLI::Range(1, 64));
+  command->add_option("--all-pairs-max-places", a->options.all_pairs_max_places,
+                      "a leg between every pair of places (home and the stops) up to this many; beyond, legs between "
+                      "near neighbours, routed once a plan flies them")
+      ->capture_default_str()->check(CLI::Range(2, 100000));
+  command->add_option("--neighbours", a->options.neighbours,
+                      "large tours: the order search joins each place only to its nearest this many")
+      ->capture_default_str()->check(CLI::Range(1, 1000));
+  command->add_option("--split-points", a->options.split_points,
+                      "large tours: sorties may start at this many evenly spaced positions of the order (and around the "
+                      "best of them)")
+      ->capture_default_str()->check(CLI::Range(1, 100000));
+  command->add_option("--order-kicks", a->options.order_kicks,
+                      "large tours: rounds of iterated local search after the first (from the seed; slower, a little "
+                      "cheaper)")
+      ->capture_default_str()->check(CLI::Range(0, 100000));
   command->add_option("--ageing-model", a->options.ageing_model, "the sortie split minimises this model's wear")
       ->capture_default_str()
       ->check(CLI::IsMember(battery::ageingModelNames()));

@@ -41,7 +41,7 @@ void BM_Sorties(benchmark::State& state) {
   TourCosts legs;
   legs.names.assign(targets + 1, "target");
   legs.dwells.assign(targets + 1, Dwell{20.0, 8.0, std::nullopt});
-  legs.legs.assign(targets + 1, std::vector<LegCost>(targets + 1));
+  legs.legs = PairTable<LegCost>(targets + 1);
   for (int i = 0; i <= targets; ++i)
     for (int j = 0; j <= targets; ++j) {
       const double duration_s = metres(i, j) / 2.0;

@@ -57,12 +57,18 @@ GlobalMission toGlobal(const AutopilotMission& mission) {
   const std::vector<double> headings = mission::headingsInEffect_deg(mission);
   const std::vector<double> pitches = mission::gimbalPitchesInEffect_deg(mission);
   std::optional<double> pitch_set;
+  // Speeds from the flight record differ by rounding where nothing changes (2.2356910794284737
+  // against 2.235691079428473): a change counts from 1 cm/s against the speed last commanded.
+  constexpr double kSpeedStep_m_s = 0.01;
+  double speed_set = mission.speedInto_m_s(0);
   int photos = 0;
   for (std::size_t k = 0; k < mission.waypoints.size(); ++k) {
     const ExportWaypoint& w = mission.waypoints[k];
     const double speed = mission.speedInto_m_s(k);
-    if (k > 0 && speed != mission.speedInto_m_s(k - 1))
+    if (std::abs(speed - speed_set) >= kSpeedStep_m_s) {
       global.items.push_back({mav::kDoChangeSpeed, mav::kFrameMission, {mav::kSpeedTypeGroundSpeed, speed, -1, 0, 0, 0, 0}});
+      speed_set = speed;
+    }
     if (w.gimbal_pitch_deg && pitch_set != pitches[k]) {
       global.items.push_back({mav::kDoGimbalManagerPitchYaw,
                               mav::kFrameMission,

@@ -3,6 +3,8 @@
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/core/format.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace ceilplan::io {
@@ -28,23 +30,6 @@ double percent(double part, double whole) { return whole > 0.0 ? 100.0 * part / 
 
 }  // namespace
 
-std::vector<PhotoRow> photoRows(const mission::CoveragePlan& plan) {
-  std::vector<PhotoRow> rows;
-  for (std::size_t k = 0; k < plan.photos.size(); ++k) {
-    const mission::PlannedPhoto& photo = plan.photos[k];
-    PhotoRow row;
-    row.index = static_cast<int>(k + 1);
-    row.camera_m = photo.camera_m;
-    row.yaw_deg = photo.pose.yaw_deg;
-    row.gimbal_pitch_deg = photo.pose.gimbal_pitch_deg;
-    row.distance_m = photo.distance_m;
-    row.gsd_mm_px = photo.gsd_mm_px;
-    row.region = plan.regions.at(static_cast<std::size_t>(photo.region)).region.name;
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 std::string photosCsv(const std::vector<PhotoRow>& rows) {
   std::ostringstream out;
   out << "index,sortie,t_s,x,y,z,yaw_deg,gimbal_pitch_deg,distance_m,gsd_mm_px,region\n";
@@ -58,17 +43,54 @@ std::string photosCsv(const std::vector<PhotoRow>& rows) {
   return out.str();
 }
 
-nlohmann::json coverageJson(const mission::CoveragePlan& plan, const mission::CoverageCheck& check) {
+namespace {
+
+// Throws unless `check` is a re-check of `plan`'s regions, element for element; `file` names the output.
+void requireMatchingCheck(const mission::CoveragePlan& plan, const mission::CoverageCheck& check, const char* file) {
   if (check.regions.size() != plan.regions.size())
-    throw ceilplan::InputError("coverage.json: the check has " + std::to_string(check.regions.size()) +
+    throw ceilplan::InputError(std::string(file) + ": the check has " + std::to_string(check.regions.size()) +
                                " regions, the plan " + std::to_string(plan.regions.size()));
+  for (std::size_t r = 0; r < plan.regions.size(); ++r) {
+    const mission::RegionPlan& planned = plan.regions[r];
+    const mission::RegionCoverageCheck& checked = check.regions[r];
+    if (checked.name != planned.region.name || checked.covered.size() != planned.surface.elements.size() ||
+        checked.best_gsd_mm_px.size() != checked.covered.size() || checked.view_count.size() != checked.covered.size() ||
+        planned.reachable.size() != checked.covered.size())
+      throw ceilplan::InputError(std::string(file) + ": region " + std::to_string(r) + " of the check is '" +
+                                 checked.name + "', of the plan '" + planned.region.name + "'");
+  }
+}
+
+}  // namespace
+
+std::string coverageElementsCsv(const mission::CoveragePlan& plan, const mission::CoverageCheck& check) {
+  requireMatchingCheck(plan, check, "coverage_elements.csv");
+  std::ostringstream out;
+  out << "region,x,y,z,nx,ny,nz,area_m2,reachable,covered,best_gsd_mm_px,views\n";
+  for (std::size_t r = 0; r < plan.regions.size(); ++r) {
+    const mission::RegionPlan& planned = plan.regions[r];
+    const mission::RegionCoverageCheck& checked = check.regions[r];
+    const std::string name = csvField(planned.region.name);
+    for (std::size_t e = 0; e < planned.surface.elements.size(); ++e) {
+      const environment::SurfaceElement& element = planned.surface.elements[e];
+      const double best = checked.best_gsd_mm_px[e];
+      out << name << ',' << formatFixed(element.centre_m.x(), 3) << ',' << formatFixed(element.centre_m.y(), 3) << ','
+          << formatFixed(element.centre_m.z(), 3) << ',' << formatFixed(element.normal.x(), 4) << ','
+          << formatFixed(element.normal.y(), 4) << ',' << formatFixed(element.normal.z(), 4) << ','
+          << formatNumber(element.area_m2, 6) << ',' << (planned.reachable[e] ? 1 : 0) << ','
+          << (checked.covered[e] ? 1 : 0) << ',' << (std::isfinite(best) ? formatFixed(best, 3) : "") << ','
+          << checked.view_count[e] << '\n';
+    }
+  }
+  return out.str();
+}
+
+nlohmann::json coverageJson(const mission::CoveragePlan& plan, const mission::CoverageCheck& check) {
+  requireMatchingCheck(plan, check, "coverage.json");
   nlohmann::json regions = nlohmann::json::array();
   for (std::size_t r = 0; r < plan.regions.size(); ++r) {
     const mission::RegionPlan& planned = plan.regions[r];
     const mission::RegionCoverageCheck& checked = check.regions[r];
-    if (checked.name != planned.region.name || checked.covered.size() != planned.surface.elements.size())
-      throw ceilplan::InputError("coverage.json: region " + std::to_string(r) + " of the check is '" + checked.name +
-                                 "', of the plan '" + planned.region.name + "'");
     const mission::CoverageRegion& region = planned.region;
     nlohmann::json faces = nlohmann::json::array();
     for (const mission::FaceKind kind : {mission::FaceKind::Down, mission::FaceKind::Side, mission::FaceKind::Up})
@@ -109,6 +131,93 @@ void writePhotosCsv(const std::filesystem::path& file, const std::vector<PhotoRo
 
 void writeCoverageJson(const std::filesystem::path& file, const nlohmann::json& coverage) {
   writeTextAtomically(file, [&](std::ostream& out) { out << coverage.dump(2) << '\n'; });
+}
+
+void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourResult& tour) {
+  if (!tour.coverage || !tour.coverage_check)
+    throw ceilplan::InputError("the tour has no coverage plan: photos.csv and coverage.json belong to coverage tours");
+  writePhotosCsv(dir / "photos.csv", tour.photos);
+  writeCoverageJson(dir / "coverage.json", coverageJson(*tour.coverage, *tour.coverage_check));
+  const std::string elements = coverageElementsCsv(*tour.coverage, *tour.coverage_check);
+  writeTextAtomically(dir / "coverage_elements.csv", [&](std::ostream& out) { out << elements; });
+}
+
+double routeLength_m(const mission::TourResult& tour) {
+  double length_m = 0.0;
+  for (const mission::Sortie& sortie : tour.plan.sorties)
+    for (const mission::SortieLeg& leg : sortie.legs) length_m += tour.legs[leg.from][leg.to].evaluation.length_m;
+  return length_m;
+}
+
+namespace {
+
+// Over every region: covered share of the reachable area (%) and the mean GSD of the covered area.
+struct CoverageTotals {
+  double covered_reachable_pct = 100.0;
+  double mean_gsd_mm_px = 0.0;
+};
+
+CoverageTotals coverageTotals(const mission::CoverageCheck& check) {
+  double reachable = 0.0, covered_reachable = 0.0, covered = 0.0, gsd_area = 0.0;
+  for (const mission::RegionCoverageCheck& region : check.regions) {
+    reachable += region.reachable_area_m2;
+    covered_reachable += region.covered_reachable_area_m2;
+    covered += region.covered_area_m2;
+    gsd_area += region.mean_gsd_mm_px * region.covered_area_m2;
+  }
+  return {percent(covered_reachable, reachable), covered > 0.0 ? gsd_area / covered : 0.0};
+}
+
+const mission::CoverageCheck& checked(const mission::TourResult& tour) {
+  if (!tour.coverage || !tour.coverage_check) throw ceilplan::InputError("the tour has no coverage plan");
+  return *tour.coverage_check;
+}
+
+}  // namespace
+
+nlohmann::json coverageSummaryJson(const mission::TourResult& tour) {
+  const mission::CoverageCheck& check = checked(tour);
+  nlohmann::json regions = nlohmann::json::array();
+  for (const mission::RegionCoverageCheck& region : check.regions)
+    regions.push_back({{"name", region.name},
+                       {"area_m2", region.area_m2},
+                       {"reachable_area_m2", region.reachable_area_m2},
+                       {"unreachable_area_m2", region.unreachable_area_m2},
+                       {"covered_area_m2", region.covered_area_m2},
+                       {"covered_pct", percent(region.covered_area_m2, region.area_m2)},
+                       {"covered_reachable_pct", percent(region.covered_reachable_area_m2, region.reachable_area_m2)},
+                       {"mean_gsd_mm_px", region.mean_gsd_mm_px}});
+  const CoverageTotals totals = coverageTotals(check);
+  return {{"photos", tour.photos.size()},
+          {"route_m", routeLength_m(tour)},
+          {"covered_reachable_pct", totals.covered_reachable_pct},
+          {"mean_gsd_mm_px", totals.mean_gsd_mm_px},
+          {"regions", regions}};
+}
+
+std::string coverageComparisonRows(const mission::TourResult& ceiling, const mission::TourResult& free) {
+  const CoverageTotals c = coverageTotals(checked(ceiling)), f = coverageTotals(checked(free));
+  std::ostringstream out;
+  char line[400];
+  const auto row = [&](const char* label, const std::string& c_text, const std::string& f_text, const std::string& reduction) {
+    std::snprintf(line, sizeof line, "%-40s %14s %14s %12s\n", label, c_text.c_str(), f_text.c_str(), reduction.c_str());
+    out << line;
+  };
+  const auto reductionPct = [](double with, double without) {
+    return without != 0.0 ? formatFixed(100.0 * (1.0 - with / without), 2) : std::string();
+  };
+  row("photos", std::to_string(ceiling.photos.size()), std::to_string(free.photos.size()),
+      reductionPct(static_cast<double>(ceiling.photos.size()), static_cast<double>(free.photos.size())));
+  const double c_route = routeLength_m(ceiling), f_route = routeLength_m(free);
+  row("route length [m]", formatFixed(c_route, 1), formatFixed(f_route, 1), reductionPct(c_route, f_route));
+  row("covered, of the reachable surface [%]", formatFixed(c.covered_reachable_pct, 2), formatFixed(f.covered_reachable_pct, 2),
+      "");
+  row("mean GSD [mm/px]", formatFixed(c.mean_gsd_mm_px, 3), formatFixed(f.mean_gsd_mm_px, 3), "");
+  return out.str();
+}
+
+nlohmann::json coverageComparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free) {
+  return {{"ceiling", coverageSummaryJson(ceiling)}, {"free", coverageSummaryJson(free)}};
 }
 
 }  // namespace ceilplan::io

@@ -3,6 +3,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/core/printable_text.hpp"
+#include "ceilplan/io/coverage_keys.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
 
@@ -76,7 +77,12 @@ mission::MissionSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
   return speeds;
 }
 
-std::vector<mission::InspectionTarget> readTargets(const Section& root) {
+// Point targets: required unless the mission inspects surfaces or contact grids.
+std::vector<mission::InspectionTarget> readTargets(const Section& root, bool required) {
+  if (!root.has("targets")) {
+    if (!required) return {};
+    root.fail("missing key 'targets' (a mission inspects point targets, or surfaces and contact grids: docs/missions.md)");
+  }
   const YAML::Node list = root.required("targets");
   if (!list.IsSequence() || list.size() == 0) root.fail("'targets' must be a non-empty list");
   std::vector<mission::InspectionTarget> targets;
@@ -132,8 +138,10 @@ environment::UnknownSpace readUnknownSpace(const Section& node) {
 mission::Mission readMission(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Mission);
   const Section root(yaml, yaml.root(), "");
-  root.allowOnly(
-      {"map", "vehicle", "battery", "home", "origin", "speeds", "mode", "seed", "unknown", "trajectory", "targets"});
+  std::vector<std::string> keys{"map", "vehicle", "battery", "home",    "origin",
+                                "speeds", "mode",  "seed",     "unknown", "trajectory", "targets"};
+  keys.insert(keys.end(), coverageKeyNames().begin(), coverageKeyNames().end());
+  root.allowOnly(keys);
   mission::Mission mission;
   mission.file = file;
   mission.map_file = existingFile(root, "map");
@@ -155,7 +163,24 @@ mission::Mission readMission(const std::filesystem::path& file) {
     t.stop_turn_deg = trajectory->number("stop_turn_deg", Range::closed(0.0, 90.0, "deg"), t.stop_turn_deg);
     mission.trajectory_ned = trajectory->choice("frame", {"enu", "ned"}, "enu") == "ned";
   }
-  mission.targets = readTargets(root);
+  try {
+    CoverageKeys coverage = readCoverageKeys(root.node());
+    mission.camera = std::move(coverage.camera);
+    mission.surfaces = std::move(coverage.surfaces);
+    mission.contact_grids = std::move(coverage.contact_grids);
+  } catch (const InputError& e) {
+    root.fail(e.what());
+  }
+  mission.targets = readTargets(root, !mission.isCoverage());
+  // Contact points are named "<grid>_<k>" and photos "<surface>_photo<k>": point targets keep clear.
+  std::vector<std::string> prefixes;
+  for (const mission::ContactGrid& grid : mission.contact_grids) prefixes.push_back(grid.name + "_");
+  for (const mission::CoverageRegion& surface : mission.surfaces) prefixes.push_back(surface.name + "_photo");
+  for (const mission::InspectionTarget& target : mission.targets)
+    for (const std::string& prefix : prefixes)
+      if (target.name.rfind(prefix, 0) == 0)
+        root.fail("target '" + target.name + "' may clash with the stops named '" + prefix +
+                  "N' a coverage tour makes: rename it");
   return mission;
 }
 
@@ -163,7 +188,7 @@ mission::BatterySpec readBattery(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Battery);
   const Section root(yaml, yaml.root(), "");
   // A mission file serves as a battery file: its other keys are the mission reader's to check.
-  if (root.has("battery") && root.has("targets")) return readBatterySection(root.section("battery"), true);
+  if (root.has("battery") && (root.has("targets") || root.has("surfaces") || root.has("contact_grid"))) return readBatterySection(root.section("battery"), true);
   return readBatterySection(root, false);
 }
 

@@ -2,6 +2,7 @@
 
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/io/atomic_file.hpp"
+#include "ceilplan/io/coverage_output.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/map_views.hpp"
 #include "ceilplan/io/dji_wpml.hpp"
@@ -165,6 +166,7 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
     wear[w.model] = {{"wear_name", w.wear_name}, {"cycle_wear", w.cycle_wear}, {"capacity_loss", w.capacity_loss}};
   json["wear"] = wear;
   json["duty"] = dutyJson(tour.duty, tour.options);
+  if (tour.coverage) json["coverage"] = coverageSummaryJson(tour);
   json["provenance"] = provenance.json();
   return json;
 }
@@ -213,6 +215,7 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
                       [&](std::ostream& out) { out << std::setw(2) << tourJson(tour, mission, provenance) << '\n'; });
   writeTourPathCsv(dir / "path.csv", tour, provenance);
   writeMapViews(dir, environment, flownRoute(tour), provenance);
+  if (tour.coverage) writeCoverageFiles(dir, tour);  // photos.csv, coverage.json
   const int count = static_cast<int>(tour.trajectories.size());
   const TrajectoryFrame frame = mission.trajectory_ned ? TrajectoryFrame::Ned : TrajectoryFrame::Enu;
   for (int k = 0; k < count; ++k) {
@@ -262,6 +265,7 @@ std::string comparisonTable(const mission::TourResult& ceiling, const mission::T
     row(c.model + ": " + c.wear_name, c.cycle_wear, f.cycle_wear, "%.4e", true);
     row(c.model + ": capacity loss [%]", 100.0 * c.capacity_loss, 100.0 * f.capacity_loss, "%.5f", true);
   }
+  if (ceiling.coverage && free.coverage) out << coverageComparisonRows(ceiling, free);
   if (ceiling.duty.result && free.duty.result) {
     std::snprintf(line, sizeof line, "duty projection: the tour %d times a day for %d days\n",
                   ceiling.duty.missions_per_day, ceiling.duty.days);
@@ -298,6 +302,7 @@ nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission:
         reductionPct(ceiling.wear[m].capacity_loss, free.wear[m].capacity_loss);
   }
   json["reduction_pct"] = reduction;
+  if (ceiling.coverage && free.coverage) json["coverage"] = coverageComparisonJson(ceiling, free);
   json["provenance"] = provenance.json();
   return json;
 }

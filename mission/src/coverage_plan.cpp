@@ -30,6 +30,25 @@ std::vector<Eigen::Vector3d> RegionPlan::unreachableCentres() const {
   return centres;
 }
 
+PhotoRow photoRow(const CoveragePlan& plan, std::size_t k, int index) {
+  const PlannedPhoto& photo = plan.photos.at(k);
+  PhotoRow row;
+  row.index = index;
+  row.camera_m = photo.camera_m;
+  row.yaw_deg = photo.pose.yaw_deg;
+  row.gimbal_pitch_deg = photo.pose.gimbal_pitch_deg;
+  row.distance_m = photo.distance_m;
+  row.gsd_mm_px = photo.gsd_mm_px;
+  row.region = plan.regions.at(static_cast<std::size_t>(photo.region)).region.name;
+  return row;
+}
+
+std::vector<PhotoRow> photoRows(const CoveragePlan& plan) {
+  std::vector<PhotoRow> rows;
+  for (std::size_t k = 0; k < plan.photos.size(); ++k) rows.push_back(photoRow(plan, k, static_cast<int>(k + 1)));
+  return rows;
+}
+
 CoveragePlan planCoverage(const environment::Environment& environment, const planner::FlightCostModel& cost_model,
                           const Camera& camera, const std::vector<CoverageRegion>& regions,
                           const CoveragePlanOptions& options) {

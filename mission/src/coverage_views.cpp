@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -520,19 +521,52 @@ void CandidateViews::add(const CameraPose& pose, const std::vector<SeenElement>&
   offsets.push_back(static_cast<std::uint32_t>(seen.size()));
 }
 
-std::vector<double> distanceLevels(const Camera& camera, const CoverageRegion& region, int levels) {
+std::vector<double> distanceLevels(const Camera& camera, const CoverageRegion& region, int levels, double room_m) {
   checkCameraReaches(camera, region);
   // Seen straight on, a flat surface at the corner of the covered part of the image lies
   // farther than its centre by 1 / cos(a) and is seen at incidence a, so its GSD is larger by
   // 1 / cos^2(a) = 1 + tw^2 + th^2: the farthest level keeps the whole covered part within the GSD.
   const double tw = camera.halfWidthTan() * region.widthShare(), th = camera.halfHeightTan() * region.heightShare();
-  const double far_m = camera.distanceForGsd_m(region.gsd_mm_px) / (1.0 + tw * tw + th * th);
-  const double near_m = std::min(far_m, camera.min_focus_m * 1.001 + 1e-3);
+  const double reach_m = camera.distanceForGsd_m(region.gsd_mm_px) / (1.0 + tw * tw + th * th);
+  const double near_m = std::min(reach_m, camera.min_focus_m * 1.001 + 1e-3);
+  const double far_m = std::max(near_m, std::min(reach_m, room_m));
   std::vector<double> distances;
   const int count = std::max(1, levels);
   for (int k = 0; k < count; ++k)
     distances.push_back(count == 1 ? far_m : far_m * std::pow(near_m / far_m, static_cast<double>(k) / (count - 1)));
   return distances;
+}
+
+double roomInFront_m(const environment::Environment& environment, const Camera& camera, const RegionSurface& surface,
+                     double far_m) {
+  const environment::VoxelGrid& grid = environment.grid();
+  const environment::GridFrame& frame = grid.frame();
+  const environment::VehicleGeometry& vehicle = environment.vehicle();
+  const double step_m = 0.5 * frame.resolution_m();
+  std::vector<double> rooms;
+  rooms.reserve(surface.elements.size());
+  for (const environment::SurfaceElement& element : surface.elements) {
+    // Beyond a camera at distance d the inflated airframe reaches along the normal: the body sits
+    // the mount offset back (the offset turns with the yaw, hence its horizontal length), then the
+    // cylinder's bottom or top and its radius, projected.
+    const Eigen::Vector3d& n = element.normal;
+    const double horizontal = std::sqrt(std::max(0.0, 1.0 - n.z() * n.z()));
+    const double extent_m = std::abs(n.z()) * (n.z() < 0.0 ? -vehicle.inflatedBottom_m() : vehicle.inflatedTop_m()) +
+                            horizontal * vehicle.inflatedRadius_m() - n.z() * camera.mount_offset_m.z() +
+                            horizontal * camera.mount_offset_m.head<2>().norm();
+    const double longest_m = far_m + extent_m;  // beyond it the room is at least far_m
+    double run_m = step_m;
+    for (; run_m < longest_m; run_m += step_m) {
+      const Eigen::Vector3d p = element.centre_m + run_m * n;
+      if (grid.at(frame.indexOf(0, p.x()), frame.indexOf(1, p.y()), frame.indexOf(2, p.z())) !=
+          environment::CellState::Free)
+        break;
+    }
+    rooms.push_back(std::min(run_m, longest_m) - extent_m);
+  }
+  if (rooms.empty()) return far_m;
+  std::nth_element(rooms.begin(), rooms.begin() + rooms.size() / 2, rooms.end());
+  return rooms[rooms.size() / 2];
 }
 
 double regionHeading(const RegionSurface& surface) {
@@ -566,7 +600,16 @@ std::vector<SeenElement> coveredElements(const environment::VoxelGrid& grid, con
 CandidateViews generateCandidateViews(const environment::Environment& environment, const Camera& camera,
                                       const CoverageRegion& region, const RegionSurface& surface,
                                       const ViewGenerationOptions& options) {
-  const std::vector<double> levels = distanceLevels(camera, region, options.distance_levels);
+  // The GSD's levels, and where the room in front of the surface is shorter than the farthest of
+  // them (a coarse GSD under a low deck), the same number of levels within the room as well.
+  std::vector<double> levels = distanceLevels(camera, region, options.distance_levels);
+  const double room_m = roomInFront_m(environment, camera, surface, levels.front());
+  if (room_m < levels.front()) {
+    for (const double d : distanceLevels(camera, region, options.distance_levels, room_m))
+      if (std::none_of(levels.begin(), levels.end(), [d](double level) { return std::abs(level - d) < 1e-6; }))
+        levels.push_back(d);
+    std::sort(levels.begin(), levels.end(), std::greater<double>());
+  }
   const double heading = regionHeading(surface);
   PoseMaker maker(environment, camera, region, options, heading);
   maker.setHeading(heading);

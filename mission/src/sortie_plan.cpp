@@ -33,46 +33,48 @@ class SortieBuilder {
  public:
   SortieBuilder(const TourCosts& legs, const BatterySpec& battery) : legs_(legs), battery_(battery) {}
 
+  SocIntegrator takeoff() const { return SocIntegrator(battery_.pack, battery_.start_soc, legs_.current_at_soc); }
+
+  // Flies the leg from `from` to `to`, and the dwell at a target; `history` (when given) gains a
+  // point per sample, each carrying the current drawn from it on.
+  void flyLeg(SocIntegrator& flight, int from, int to, std::vector<SocSample>* history = nullptr) const {
+    const LegCost* found = legs_.legs.find(from, to);
+    if (!found)
+      throw ceilplan::InputError("the tour has no leg from '" + legs_.names[from] + "' to '" + legs_.names[to] +
+                                  "' for a sortie to fly");
+    if (found->load_profile.size() >= 2) {
+      flyProfile(flight, found->load_profile, recorder(flight, history));
+    } else {
+      constant(flight, found->mean_current_a, found->duration_s, history);
+    }
+  }
+  void dwellAt(SocIntegrator& flight, int target, std::vector<SocSample>* history = nullptr) const {
+    const Dwell& dwell = legs_.dwells[target];
+    if (dwell.duration_s <= 0.0) return;
+    if (dwell.load) {
+      hover(flight, *dwell.load, dwell.duration_s, recorder(flight, history));
+    } else {
+      constant(flight, dwell.current_a, dwell.duration_s, history);
+    }
+  }
+
   // The sortie flying order[first..last] (inclusive).
   Sortie build(const std::vector<int>& order, int first, int last) const {
     Sortie sortie;
     sortie.targets.assign(order.begin() + first, order.begin() + last + 1);
-    SocIntegrator flight(battery_.pack, battery_.start_soc, legs_.current_at_soc);
+    SocIntegrator flight = takeoff();
     std::vector<SocSample>& history = sortie.soc_history;
     history.push_back({0.0, battery_.start_soc, 0.0});
-    // Each history point carries the current drawn from it on.
-    const SampleVisitor record = [&](std::size_t k, double current_a) {
-      if (k > 0) history.push_back({flight.time_s(), flight.soc(), 0.0});
-      history.back().current_a = current_a;
-    };
-    // A leg without a load profile, or a dwell without a load, draws its mean current throughout.
-    const auto constant = [&](double current_a, double duration_s) {
-      history.back().current_a = current_a;
-      flight.advance(duration_s, current_a);
-      history.push_back({flight.time_s(), flight.soc(), 0.0});
-    };
     int at = 0;
     auto fly = [&](int to) {
-      const LegCost& leg = legs_.legs[at][to];
       const double charge0_ah = flight.chargeAh(), t0_s = flight.time_s();
-      if (leg.load_profile.size() >= 2) {
-        flyProfile(flight, leg.load_profile, record);
-      } else {
-        constant(leg.mean_current_a, leg.duration_s);
-      }
+      flyLeg(flight, at, to, &history);
       sortie.legs.push_back({at, to, flight.chargeAh() - charge0_ah, flight.time_s() - t0_s});
       at = to;
     };
     for (int target : sortie.targets) {
       fly(target);
-      const Dwell& dwell = legs_.dwells[target];
-      if (dwell.duration_s > 0.0) {
-        if (dwell.load) {
-          hover(flight, *dwell.load, dwell.duration_s, record);
-        } else {
-          constant(dwell.current_a, dwell.duration_s);
-        }
-      }
+      dwellAt(flight, target, &history);
     }
     fly(0);
     const double used_ah = flight.chargeAh();
@@ -81,14 +83,30 @@ class SortieBuilder {
     sortie.lowest_soc = flight.lowestSoc();
     sortie.dod = battery_.start_soc - sortie.lowest_soc;
     sortie.fec = used_ah / battery_.pack.capacity_ah;  // discharge + equal recharge, over 2 C_nom
-    sortie.recharge_s = used_ah / battery_.pack.charge_current_a * kSecondsPerHour;
+    sortie.recharge_s = rechargeS(used_ah);
     sortie.turnaround_s = battery_.between_sorties == Turnaround::Swap ? battery_.swap_s : sortie.recharge_s;
     history.back().current_a = -battery_.pack.charge_current_a;
     history.push_back({sortie.flight_s + sortie.recharge_s, battery_.start_soc, -battery_.pack.charge_current_a});
     return sortie;
   }
 
+  double rechargeS(double used_ah) const { return used_ah / battery_.pack.charge_current_a * kSecondsPerHour; }
+
  private:
+  static SampleVisitor recorder(const SocIntegrator& flight, std::vector<SocSample>* history) {
+    if (!history) return {};
+    return [&flight, history](std::size_t k, double current_a) {
+      if (k > 0) history->push_back({flight.time_s(), flight.soc(), 0.0});
+      history->back().current_a = current_a;
+    };
+  }
+  // A leg without a load profile, or a dwell without a load, draws its mean current throughout.
+  static void constant(SocIntegrator& flight, double current_a, double duration_s, std::vector<SocSample>* history) {
+    if (history) history->back().current_a = current_a;
+    flight.advance(duration_s, current_a);
+    if (history) history->push_back({flight.time_s(), flight.soc(), 0.0});
+  }
+
   const TourCosts& legs_;
   const BatterySpec& battery_;
 };
@@ -139,20 +157,20 @@ std::string splitReason(const TourCosts& legs, const BatterySpec& battery, const
 void TourCosts::validate() const {
   const std::size_t n = names.size();
   if (n < 1) throw ceilplan::InputError("a tour needs home at index 0");
-  if (legs.size() != n || dwells.size() != n)
-    throw ceilplan::InputError("a tour of " + std::to_string(n) + " places needs " + std::to_string(n) + " x " +
-                                std::to_string(n) + " legs and " + std::to_string(n) + " dwells");
+  if (static_cast<std::size_t>(legs.placeCount()) != n || dwells.size() != n)
+    throw ceilplan::InputError("a tour of " + std::to_string(n) + " places needs legs between " + std::to_string(n) +
+                                " places and " + std::to_string(n) + " dwells");
   for (std::size_t i = 0; i < n; ++i) {
-    if (legs[i].size() != n)
-      throw ceilplan::InputError("legs from '" + names[i] + "' list " + std::to_string(legs[i].size()) +
-                                  " destinations, expected " + std::to_string(n));
-    for (std::size_t j = 0; j < n; ++j) {
-      if (i == j) continue;
+    for (const auto& [j, leg] : legs.row(static_cast<int>(i))) {
+      if (static_cast<std::size_t>(j) == i) continue;  // a place to itself is never flown
+      if (j < 0 || static_cast<std::size_t>(j) >= n)
+        throw ceilplan::InputError("a leg from '" + names[i] + "' leads to place " + std::to_string(j) + ", not one of the " +
+                                    std::to_string(n) + " others");
       const std::string what = "leg '" + names[i] + "' -> '" + names[j] + "'";
-      requireFiniteNonNegative(legs[i][j].charge_ah, what + " charge (Ah)");
-      requireFiniteNonNegative(legs[i][j].duration_s, what + " duration (s)");
-      requireFiniteNonNegative(legs[i][j].mean_current_a, what + " mean current (A)");
-      const auto& profile = legs[i][j].load_profile;
+      requireFiniteNonNegative(leg.charge_ah, what + " charge (Ah)");
+      requireFiniteNonNegative(leg.duration_s, what + " duration (s)");
+      requireFiniteNonNegative(leg.mean_current_a, what + " mean current (A)");
+      const auto& profile = leg.load_profile;
       for (std::size_t k = 0; k < profile.size(); ++k) {
         if (!std::isfinite(profile[k].load)) throw ceilplan::InputError(what + " profile load must be finite");
         if (!std::isfinite(profile[k].t_s) || (k > 0 && profile[k].t_s < profile[k - 1].t_s))
@@ -167,6 +185,53 @@ void TourCosts::validate() const {
     }
   }
 }
+
+namespace {
+
+// The best way found to fly order[0..split position - 1]; ties broken by fewer sorties.
+struct Best {
+  double wear = std::numeric_limits<double>::infinity();
+  int sorties = 0;
+  int split = -1;  // index of the last sortie's start
+};
+
+void offer(Best& best, const Best& before, double wear, int split) {
+  const double total = before.wear + wear;
+  const int sorties = before.sorties + 1;
+  const bool first = best.split < 0;
+  const double tie = first ? 0.0 : 1e-12 * std::max(std::fabs(total), std::fabs(best.wear));
+  if (first || total < best.wear - tie || (total <= best.wear + tie && sorties < best.sorties)) best = {total, sorties, split};
+}
+
+// The split points, sorted, 0 first, each a position of the order.
+std::vector<int> checkedSplitPoints(const std::vector<int>& split_points, int n) {
+  std::vector<int> starts{0};
+  for (int p : split_points) {
+    if (p < 0 || p >= std::max(n, 1))
+      throw ceilplan::InputError("sortie split point " + std::to_string(p) + " is not a position in the order 0.." +
+                                  std::to_string(n - 1));
+    starts.push_back(p);
+  }
+  std::sort(starts.begin(), starts.end());
+  starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
+  return starts;
+}
+
+// Cycle wear of a sortie from its SOC turning points alone (take-off, landing, the end of the
+// recharge, the flight at its mean current): within a flight the SOC only falls, so its rainflow
+// cycle is the same; the large-tour split ranks candidates by it.
+double turningPointWear(const battery::AgeingModel& prototype, const BatterySpec& battery, const SocIntegrator& flight,
+                        double recharge_s, double state_of_health) {
+  Sortie sortie;
+  const double flight_s = flight.time_s();
+  const double mean_a = flight_s > 0.0 ? flight.chargeAh() * kSecondsPerHour / flight_s : 0.0;
+  sortie.soc_history = {{0.0, battery.start_soc, mean_a},
+                        {flight_s, flight.soc(), -battery.pack.charge_current_a},
+                        {flight_s + recharge_s, battery.start_soc, -battery.pack.charge_current_a}};
+  return wearOf(prototype, sortie, state_of_health);
+}
+
+}  // namespace
 
 SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
                        const SortieOptions& options) {
@@ -184,63 +249,98 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
   const std::unique_ptr<battery::AgeingModel> prototype = battery::makeAgeingModel(options.ageing_model, options.ageing);
   const SortieBuilder builder(legs, battery);
   const double reserve_tolerance = 1e-12;
-  auto feasible = [&](const Sortie& sortie) { return sortie.lowest_soc >= battery.reserve_soc - reserve_tolerance; };
+  const auto above = [&](double soc) { return soc >= battery.reserve_soc - reserve_tolerance; };
+  auto feasible = [&](const Sortie& sortie) { return above(sortie.lowest_soc); };
+  const double soh = battery.pack.state_of_health;
+
+  // Sorties start at `starts` (every position by default); best[e] covers order[0..starts[e]-1].
+  const bool every_position = options.split_points.empty();
+  std::vector<int> starts;
+  if (every_position) {
+    for (int k = 0; k < n; ++k) starts.push_back(k);
+  } else {
+    starts = checkedSplitPoints(options.split_points, n);
+  }
+  const int stretches = static_cast<int>(starts.size());
+  starts.push_back(n);
+  std::vector<Best> best(stretches + 1);
+  best[0].wear = 0.0;
+  std::vector<std::uint8_t> stretch_flies(stretches, 0);  // the stretch between two split points, alone
+
+  if (every_position) {
+    // Every candidate sortie flown in full and priced by its whole SOC history: O(N^2) sorties.
+    for (int b = 0; b < stretches; ++b) stretch_flies[b] = feasible(builder.build(order, starts[b], starts[b + 1] - 1));
+    if (std::all_of(stretch_flies.begin(), stretch_flies.end(), [](std::uint8_t f) { return f != 0; }))
+      for (int e = 1; e <= stretches; ++e)
+        for (int b = 0; b < e; ++b) {
+          const Sortie sortie = builder.build(order, starts[b], starts[e] - 1);
+          if (feasible(sortie)) offer(best[e], best[b], wearOf(*prototype, sortie, soh), b);
+        }
+  } else {
+    // From each split point, fly on target by target; at each split point after it, the sortie
+    // turns home on a copy of the flight. Once the SOC before turning home is below the reserve
+    // no longer sortie can fly, so the search from that start ends: O(P x L) flying.
+    for (int b = 0; b < stretches; ++b) {
+      SocIntegrator flight = builder.takeoff();
+      int at = 0;
+      for (int e = b + 1; e <= stretches; ++e) {
+        for (int p = starts[e - 1]; p < starts[e]; ++p) {
+          builder.flyLeg(flight, at, order[p]);
+          builder.dwellAt(flight, order[p]);
+          at = order[p];
+        }
+        if (!above(flight.lowestSoc())) break;
+        SocIntegrator home = flight;
+        builder.flyLeg(home, at, 0);
+        if (!above(home.lowestSoc())) continue;
+        if (e == b + 1) stretch_flies[b] = 1;
+        if (std::isfinite(best[b].wear))
+          offer(best[e], best[b], turningPointWear(*prototype, battery, home, builder.rechargeS(home.chargeAh()), soh), b);
+      }
+    }
+  }
 
   std::vector<int> unreachable;
-  for (int k = 0; k < n; ++k)
-    if (!feasible(builder.build(order, k, k))) unreachable.push_back(order[k]);
+  int first_unreachable = -1;
+  for (int b = stretches - 1; b >= 0; --b)
+    if (!stretch_flies[b]) {
+      unreachable.insert(unreachable.begin(), order.begin() + starts[b], order.begin() + starts[b + 1]);
+      first_unreachable = b;
+    }
   if (!unreachable.empty()) {
-    const Sortie alone = builder.build(unreachable, 0, 0);
+    const int first = starts[first_unreachable], last = starts[first_unreachable + 1] - 1;
+    const Sortie alone = builder.build(order, first, last);
     throw ceilplan::InfeasibleError("no single sortie can reach, inspect and return from " + targetList(legs, unreachable) +
                                 " above the " + percent(battery.reserve_soc) + " reserve (home -> '" +
-                                legs.names[unreachable.front()] + "' -> home lands at " + percent(alone.lowest_soc) +
+                                legs.names[order[first]] + (last > first ? "' ... '" + legs.names[order[last]] : "") +
+                                "' -> home lands at " + percent(alone.lowest_soc) +
                                 "); move home closer or use a larger pack");
   }
 
-  // best[j]: least total wear covering order[0..j-1]; ties broken by fewer sorties.
-  struct Best {
-    double wear = std::numeric_limits<double>::infinity();
-    int sorties = 0;
-    int split = -1;  // the last sortie flies order[split..j-1]
-  };
-  std::vector<Best> best(n + 1);
-  best[0].wear = 0.0;
-  for (int j = 1; j <= n; ++j)
-    for (int i = 0; i < j; ++i) {
-      const Sortie sortie = builder.build(order, i, j - 1);
-      if (!feasible(sortie)) continue;
-      const double wear = best[i].wear + wearOf(*prototype, sortie, battery.pack.state_of_health);
-      const int sorties = best[i].sorties + 1;
-      const bool first = best[j].split < 0;
-      const double tie = first ? 0.0 : 1e-12 * std::max(std::fabs(wear), std::fabs(best[j].wear));
-      if (first || wear < best[j].wear - tie || (wear <= best[j].wear + tie && sorties < best[j].sorties))
-        best[j] = {wear, sorties, i};
-    }
-
-  std::vector<int> starts;
-  for (int j = n; j > 0; j = best[j].split) starts.push_back(best[j].split);
-  std::reverse(starts.begin(), starts.end());
-  starts.push_back(n);
+  std::vector<int> chosen;
+  for (int e = stretches; e > 0; e = best[e].split) chosen.push_back(starts[best[e].split]);
+  std::reverse(chosen.begin(), chosen.end());
+  chosen.push_back(n);
 
   SortiePlan plan;
   plan.ageing_model = prototype->name();
   plan.wear_name = prototype->cycleWearName();
-  plan.state_of_health = battery.pack.state_of_health;
-  for (std::size_t s = 0; s + 1 < starts.size(); ++s) {
-    Sortie sortie = builder.build(order, starts[s], starts[s + 1] - 1);
-    sortie.wear = wearOf(*prototype, sortie, battery.pack.state_of_health);
-    if (s + 2 < starts.size()) {
-      const Sortie next = builder.build(order, starts[s + 1], starts[s + 2] - 1);
-      const Sortie merged = builder.build(order, starts[s], starts[s + 2] - 1);
+  plan.state_of_health = soh;
+  for (std::size_t s = 0; s + 1 < chosen.size(); ++s) {
+    Sortie sortie = builder.build(order, chosen[s], chosen[s + 1] - 1);
+    sortie.wear = wearOf(*prototype, sortie, soh);
+    if (s + 2 < chosen.size()) {
+      const Sortie next = builder.build(order, chosen[s + 1], chosen[s + 2] - 1);
+      const Sortie merged = builder.build(order, chosen[s], chosen[s + 2] - 1);
       sortie.reason = splitReason(legs, battery, *prototype, sortie, next, merged, feasible(merged));
     } else {
-      sortie.reason = std::string(starts.size() == 2 ? "one sortie flies the whole tour" : "last sortie") +
+      sortie.reason = std::string(chosen.size() == 2 ? "one sortie flies the whole tour" : "last sortie") +
                       ": lands at " + percent(sortie.lowest_soc) + " SOC, above the " +
                       percent(battery.reserve_soc) + " reserve";
     }
     plan.charge_ah += sortie.charge_ah;
     plan.flight_s += sortie.flight_s;
-    plan.duration_s += sortie.flight_s + (s + 2 < starts.size() ? sortie.turnaround_s : 0.0);
+    plan.duration_s += sortie.flight_s + (s + 2 < chosen.size() ? sortie.turnaround_s : 0.0);
     plan.fec += sortie.fec;
     plan.wear += sortie.wear;
     plan.min_soc = std::min(plan.min_soc, sortie.lowest_soc);

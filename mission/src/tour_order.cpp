@@ -15,6 +15,7 @@ namespace ceilplan::mission {
 namespace {
 
 constexpr const char* kHeuristicName = "nearest-neighbour+2-opt+or-opt";
+constexpr const char* kNeighbourListName = "neighbour-list 2-opt+or-opt";
 
 // A move must gain more than this (relative to the tour's cost) to count, so rounding noise
 // cannot make the local search cycle.
@@ -141,6 +142,160 @@ class Walk {
   std::vector<double> backward_;
 };
 
+// The tour as a closed walk, as Walk, over lazily asked costs: moves join a place only to one
+// of its neighbours, found by position in O(1).
+class NeighbourWalk {
+ public:
+  NeighbourWalk(const PairCost& cost, const PairCost& bound, const std::vector<std::vector<int>>& neighbours,
+                const std::vector<int>& targets)
+      : cost_(&cost), bound_(&bound), neighbours_(&neighbours), position_(targets.size() + 1, 0) {
+    nodes_.reserve(targets.size() + 2);
+    nodes_.push_back(0);
+    nodes_.insert(nodes_.end(), targets.begin(), targets.end());
+    nodes_.push_back(0);
+    refresh();
+  }
+
+  double cost() const { return forward_.back(); }
+  std::vector<int> targets() const { return {nodes_.begin() + 1, nodes_.end() - 1}; }
+
+  void improve() {
+    while (sweep()) {
+    }
+  }
+
+  // A double bridge A B C D -> A C B D with B and C within `window` positions each, near a
+  // random position.
+  void kick(std::mt19937_64& random, int window) {
+    const int n = targetCount();
+    if (n < 4) return;
+    const int span = std::min(n, 3 * window);
+    std::uniform_int_distribution<int> where(1, n - span + 1);
+    std::uniform_int_distribution<int> cut(0, span);
+    const int base = where(random);
+    int c[3];
+    do {
+      for (int& value : c) value = cut(random);
+      std::sort(c, c + 3);
+    } while (c[0] == c[1] || c[1] == c[2]);
+    std::vector<int> part(nodes_.begin() + base + c[0], nodes_.begin() + base + c[2]);
+    std::rotate(part.begin(), part.begin() + (c[1] - c[0]), part.end());
+    std::copy(part.begin(), part.end(), nodes_.begin() + base + c[0]);
+    refresh();
+  }
+
+ private:
+  int targetCount() const { return static_cast<int>(nodes_.size()) - 2; }
+  double leg(int from_node, int to_node) const { return (*cost_)(from_node, to_node); }
+  double lowest(int from_node, int to_node) const { return (*bound_)(from_node, to_node); }
+  double legAt(int from, int to) const { return leg(nodes_[from], nodes_[to]); }
+  double along(int i, int j) const { return forward_[j] - forward_[i]; }
+  double against(int i, int j) const { return backward_[j] - backward_[i]; }
+  double threshold() const { return kRelativeGain * std::max(1.0, cost()); }
+
+  void refresh() {
+    const int legs = static_cast<int>(nodes_.size()) - 1;
+    forward_.assign(legs + 1, 0.0);
+    backward_.assign(legs + 1, 0.0);
+    for (int k = 0; k < legs; ++k) {
+      forward_[k + 1] = forward_[k] + legAt(k, k + 1);
+      backward_[k + 1] = backward_[k] + legAt(k + 1, k);
+    }
+    for (int k = 1; k <= targetCount(); ++k) position_[nodes_[k]] = k;
+  }
+
+
+  // Where a node stands in the walk: home at both ends.
+  std::vector<int> positionsOf(int node) const {
+    if (node == 0) return {0, targetCount() + 1};
+    return {position_[node]};
+  }
+
+  // One pass over the positions, applying every improving move found; whether any was.
+  bool sweep() {
+    bool improved = false;
+    for (int i = 1; i <= targetCount(); ++i) {
+      while (twoOptAt(i) || orOptAt(i)) improved = true;
+    }
+    return improved;
+  }
+
+  // Reverses positions i..j (i < j <= n) where that joins nodes_[i - 1] or nodes_[i] to a neighbour.
+  bool twoOptAt(int i) {
+    const int n = targetCount();
+    const auto tryMove = [&](int j) {
+      if (j <= i || j > n) return false;
+      const double before = legAt(i - 1, i) + along(i, j) + legAt(j, j + 1);
+      const int a = nodes_[i - 1], b = nodes_[i], c = nodes_[j], d = nodes_[j + 1];
+      if (lowest(a, c) + against(i, j) + lowest(b, d) >= before - threshold()) return false;
+      const double after = leg(a, c) + against(i, j) + leg(b, d);
+      if (after >= before - threshold()) return false;
+      std::reverse(nodes_.begin() + i, nodes_.begin() + j + 1);
+      refresh();
+      return true;
+    };
+    for (int c : (*neighbours_)[nodes_[i - 1]])  // new leg nodes_[i - 1] -> c
+      for (int j : positionsOf(c))
+        if (tryMove(j)) return true;
+    for (int c : (*neighbours_)[nodes_[i]])  // new leg nodes_[i] -> c
+      for (int q : positionsOf(c))
+        if (tryMove(q - 1)) return true;
+    return false;
+  }
+
+  // Moves the stretch starting at position i (1 to 3 targets) between two other neighbours
+  // where one of them is a neighbour of its first or last target, in either direction.
+  bool orOptAt(int i) {
+    const int n = targetCount();
+    for (int length = 1; length <= 3 && i + length - 1 <= n; ++length) {
+      const int last = i + length - 1;
+      const int first_node = nodes_[i], last_node = nodes_[last];
+      const int before_node = nodes_[i - 1], after_node = nodes_[last + 1];
+      const double cut = -legAt(i - 1, i) - legAt(last, last + 1);
+      const double turn = against(i, last) - along(i, last);
+      for (const int end_node : {first_node, last_node})
+        for (int c : (*neighbours_)[end_node])
+          for (int q : positionsOf(c))
+            for (int p : {q, q - 1}) {
+              if (p < 0 || p > n || (p >= i - 1 && p <= last)) continue;  // an edge touching the stretch
+              const int a = nodes_[p], b = nodes_[p + 1];
+              // Priced with bounds first, then exactly: closing the gap, opening a -> b.
+              const auto price = [&](const auto& cost) {
+                const double base = cost(before_node, after_node) + cut - legAt(p, p + 1);
+                return std::make_pair(base + cost(a, first_node) + cost(last_node, b),
+                                      base + cost(a, last_node) + cost(first_node, b) + turn);
+              };
+              const auto [kept_bound, reversed_bound] =
+                  price([this](int from, int to) { return lowest(from, to); });
+              if (std::min(kept_bound, reversed_bound) >= -threshold()) continue;
+              const auto [kept, reversed] = price([this](int from, int to) { return leg(from, to); });
+              if (std::min(kept, reversed) >= -threshold()) continue;
+              std::vector<int> stretch(nodes_.begin() + i, nodes_.begin() + last + 1);
+              if (reversed < kept) std::reverse(stretch.begin(), stretch.end());
+              std::vector<int> moved;
+              moved.reserve(nodes_.size());
+              for (int k = 0; k < static_cast<int>(nodes_.size()); ++k) {
+                if (k >= i && k <= last) continue;
+                moved.push_back(nodes_[k]);
+                if (k == p) moved.insert(moved.end(), stretch.begin(), stretch.end());
+              }
+              nodes_ = std::move(moved);
+              refresh();
+              return true;
+            }
+    }
+    return false;
+  }
+
+  const PairCost* cost_;
+  const PairCost* bound_;
+  const std::vector<std::vector<int>>* neighbours_;
+  std::vector<int> nodes_;
+  std::vector<int> position_;  // of each target in nodes_
+  std::vector<double> forward_;
+  std::vector<double> backward_;
+};
+
 std::vector<int> nearestNeighbour(const CostMatrix& costs) {
   const int n = targetCount(costs);
   std::vector<bool> visited(n + 1, false);
@@ -255,6 +410,119 @@ TourOrder heuristicTour(const CostMatrix& costs, std::uint64_t seed, int restart
   result.method = kHeuristicName;
   result.seed = seed;
   return result;
+}
+
+TourOrder neighbourListTour(int target_count, const PairCost& cost, const PairCost& bound,
+                            const std::vector<std::vector<int>>& neighbours, const std::vector<std::vector<int>>& starts,
+                            int kicks, std::uint64_t seed, int kick_window) {
+  if (target_count < 0) throw ceilplan::InputError("a tour cannot have a negative number of targets");
+  if (static_cast<int>(neighbours.size()) != target_count + 1)
+    throw ceilplan::InputError("neighbour lists for " + std::to_string(neighbours.size()) + " places, the tour has " +
+                                std::to_string(target_count + 1));
+  for (const std::vector<int>& list : neighbours)
+    for (int place : list)
+      if (place < 0 || place > target_count)
+        throw ceilplan::InputError("neighbour " + std::to_string(place) + " is not a place 0.." + std::to_string(target_count));
+  if (starts.empty()) throw ceilplan::InputError("the neighbour-list search needs at least one start order");
+  TourOrder result;
+  result.method = kNeighbourListName;
+  result.cost = std::numeric_limits<double>::infinity();
+  for (const std::vector<int>& start : starts) {
+    std::vector<int> sorted = start;
+    std::sort(sorted.begin(), sorted.end());
+    bool listed = static_cast<int>(sorted.size()) == target_count;
+    for (int k = 0; listed && k < target_count; ++k) listed = sorted[k] == k + 1;
+    if (!listed) throw ceilplan::InputError("a start order must list every target 1.." + std::to_string(target_count) + " once");
+    NeighbourWalk walk(cost, bound, neighbours, start);
+    walk.improve();
+    if (walk.cost() < result.cost) {
+      result.cost = walk.cost();
+      result.targets = walk.targets();
+    }
+  }
+  if (kicks > 0) {
+    if (kick_window < 1) throw ceilplan::InputError("the kick window must be at least 1 position");
+    std::mt19937_64 random(seed);
+    NeighbourWalk best(cost, bound, neighbours, result.targets);
+    for (int round = 0; round < kicks; ++round) {
+      NeighbourWalk trial = best;
+      trial.kick(random, kick_window);
+      trial.improve();
+      if (trial.cost() < best.cost() - kRelativeGain * std::max(1.0, best.cost())) best = trial;
+    }
+    result.targets = best.targets();
+    result.cost = best.cost();
+    result.seed = seed;
+  }
+  return result;
+}
+
+std::vector<std::vector<int>> nearestPlaces(const std::vector<Eigen::Vector3d>& places_m, int k) {
+  const int n = static_cast<int>(places_m.size());
+  if (k < 1) throw ceilplan::InputError("the neighbour count must be at least 1, got " + std::to_string(k));
+  std::vector<int> by_x(n);
+  std::iota(by_x.begin(), by_x.end(), 0);
+  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) {
+    return places_m[a].x() < places_m[b].x() || (places_m[a].x() == places_m[b].x() && a < b);
+  });
+  std::vector<int> rank(n);
+  for (int r = 0; r < n; ++r) rank[by_x[r]] = r;
+  std::vector<std::vector<int>> nearest(n);
+  using Candidate = std::pair<double, int>;  // squared distance, place
+  for (int p = 0; p < n; ++p) {
+    std::vector<Candidate> best;  // a max-heap of the k nearest so far
+    const auto consider = [&](int q) {
+      const double d2 = (places_m[q] - places_m[p]).squaredNorm();
+      if (static_cast<int>(best.size()) < k) {
+        best.emplace_back(d2, q);
+        std::push_heap(best.begin(), best.end());
+      } else if (Candidate{d2, q} < best.front()) {
+        std::pop_heap(best.begin(), best.end());
+        best.back() = {d2, q};
+        std::push_heap(best.begin(), best.end());
+      }
+    };
+    const auto farEnough = [&](int q) {
+      const double dx = places_m[q].x() - places_m[p].x();
+      return static_cast<int>(best.size()) == k && dx * dx > best.front().first;
+    };
+    for (int r = rank[p] + 1; r < n && !farEnough(by_x[r]); ++r) consider(by_x[r]);
+    for (int r = rank[p] - 1; r >= 0 && !farEnough(by_x[r]); --r) consider(by_x[r]);
+    std::sort(best.begin(), best.end());
+    for (const Candidate& c : best) nearest[p].push_back(c.second);
+  }
+  return nearest;
+}
+
+std::vector<int> nearestNeighbourOrder(const std::vector<Eigen::Vector3d>& places_m,
+                                       const std::vector<std::vector<int>>& neighbours) {
+  const int n = static_cast<int>(places_m.size()) - 1;
+  std::vector<bool> visited(n + 1, false);
+  visited[0] = true;
+  std::vector<int> order;
+  int at = 0;
+  for (int step = 0; step < n; ++step) {
+    int next = -1;
+    for (int c : neighbours.at(at))
+      if (!visited[c]) {
+        next = c;
+        break;
+      }
+    if (next < 0) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (int j = 1; j <= n; ++j) {
+        const double d2 = (places_m[j] - places_m[at]).squaredNorm();
+        if (!visited[j] && d2 < nearest) {
+          nearest = d2;
+          next = j;
+        }
+      }
+    }
+    visited[next] = true;
+    order.push_back(next);
+    at = next;
+  }
+  return order;
 }
 
 TourOrder orderTour(const CostMatrix& costs, const TourOrderOptions& options) {

@@ -1,8 +1,10 @@
 #include "ceilplan/mission/tour_planner.hpp"
 
+#include "ceilplan/mission/contact_points.hpp"
 #include "ceilplan/mission/duty_projection.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/core/parallel_for.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/lattice_roadmap.hpp"
@@ -11,18 +13,37 @@
 #include "ceilplan/core/format.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <iterator>
+#include <map>
 #include <memory>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 
 namespace ceilplan::mission {
 namespace {
+
+using Pairs = std::vector<std::pair<int, int>>;
 
 // The tour's progress callback for one stage.
 FractionCallback stageProgress(const TourOptions& options, const std::string& stage) {
   if (!options.progress) return {};
   return [callback = options.progress, stage](double fraction) { callback(stage, fraction); };
 }
+
+class Stopwatch {
+ public:
+  double lap_s() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    start_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
 
 // The rotors stay this much farther from the surface at a viewpoint than the planner's
 // minimum gap, so the leg's end passes the dense re-check with its rounding.
@@ -46,24 +67,97 @@ planner::PathSample hoverSample(const PlanningContext& context, const Eigen::Vec
   return hover;
 }
 
-std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext& context, FlightMode mode,
-                                  const TourOptions& options) {
-  ViewpointOptions viewpoint_options;
-  viewpoint_options.mode = mode;
-  viewpoint_options.min_ceiling_gap_m = context.options().min_ceiling_gap_m + kViewpointGapMarginM;
-  viewpoint_options.standoff_m = context.options().standoff_m;
-  const environment::Environment& environment = context.environment();
-  std::vector<TourStop> stops;
-  for (const InspectionTarget& target : mission.targets) {
-    requireOnStructure(target, environment);  // as the mission gives it, before free mode widens the range
-    TourStop stop{target, {}, {}};
-    // A conventional planner inspects from where its standoff lets it, with a zoom lens.
-    if (mode == FlightMode::Free)
-      stop.target.standoff_max_m = std::max(target.standoff_max_m, options.free_standoff_max_m);
-    stop.viewpoint = chooseViewpoint(stop.target, environment, context.energy(), viewpoint_options);
+ViewpointOptions viewpointOptions(const PlanningContext& context, FlightMode mode) {
+  ViewpointOptions options;
+  options.mode = mode;
+  options.min_ceiling_gap_m = context.options().min_ceiling_gap_m + kViewpointGapMarginM;
+  options.standoff_m = context.options().standoff_m;
+  return options;
+}
+
+// A viewpoint per target, searched on the tour's threads. Point targets in free mode are seen
+// from as far as a conventional planner's zoom lens allows; a contact probe has no zoom.
+std::vector<TourStop> viewpointStops(const std::vector<InspectionTarget>& targets, std::size_t point_targets,
+                                     const PlanningContext& context, FlightMode mode, const TourOptions& options) {
+  const ViewpointOptions viewpoint_options = viewpointOptions(context, mode);
+  // As the mission gives them, before free mode widens the range.
+  for (std::size_t k = 0; k < point_targets; ++k) requireOnStructure(targets[k], context.environment());
+  std::vector<TourStop> stops(targets.size());
+  parallelFor(targets.size(), options.workers, [&](std::size_t k) {
+    TourStop stop{targets[k], {}, {}, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
+    if (mode == FlightMode::Free && k < point_targets)
+      stop.target.standoff_max_m = std::max(targets[k].standoff_max_m, options.free_standoff_max_m);
+    stop.viewpoint = chooseViewpoint(stop.target, context.environment(), context.energy(), viewpoint_options);
     stop.hover = hoverSample(context, stop.viewpoint.position_m);
-    stops.push_back(stop);
+    stops[k] = std::move(stop);
+  });
+  return stops;
+}
+
+// The coverage plan of the mission's surfaces in this mode (docs/coverage.md).
+CoveragePlan planMissionCoverage(const Mission& mission, const PlanningContext& context, FlightMode mode,
+                                 const TourOptions& options) {
+  if (!mission.camera)
+    throw InputError(mission.name() + ": surfaces are photographed: add a 'camera' (docs/coverage.md, \"Mission keys\")");
+  CoveragePlanOptions coverage;
+  coverage.views.mode = mode;
+  coverage.views.free_standoff_m = context.options().standoff_m;
+  coverage.views.min_ceiling_gap_m = context.options().min_ceiling_gap_m + kViewpointGapMarginM;
+  coverage.views.workers = options.workers;
+  coverage.costs.transit_speed_m_s = mission.speeds.inspection_m_s;
+  coverage.costs.workers = options.workers;
+  if (options.progress)
+    coverage.progress = [&options, mode](const std::string& phase, double share) {
+      options.progress(flightModeName(mode) + " mode: " + phase, share);
+    };
+  const PlanningContext::Mode planning = context.mode(mode);
+  return planCoverage(context.environment(), *planning.model, *mission.camera, mission.surfaces, coverage);
+}
+
+// A photo of the plan as a stop: its pose as planned, its hold, aimed at the centre of what it covers.
+TourStop photoStop(const CoveragePlan& plan, std::size_t k, const Camera& camera, const PlanningContext& context) {
+  const PlannedPhoto& photo = plan.photos[k];
+  TourStop stop;
+  stop.photo = k;
+  stop.target.name = plan.regions.at(static_cast<std::size_t>(photo.region)).region.name + "_photo" + std::to_string(k + 1);
+  const CameraFrame frame(camera, photo.pose);
+  stop.target.point_m = frame.position_m() + photo.distance_m * frame.forward();
+  stop.target.standoff_min_m = stop.target.standoff_max_m = (stop.target.point_m - photo.pose.body_m).norm();
+  stop.target.dwell_s = photo.stop_s;
+  stop.viewpoint.position_m = photo.pose.body_m;
+  stop.viewpoint.distance_m = stop.target.standoff_min_m;
+  stop.hover = hoverSample(context, photo.pose.body_m);
+  stop.viewpoint.ceiling_gap_m = stop.hover.ceiling_gap_m;
+  stop.viewpoint.dwell_current_a =
+      hoverCurrentA(context.environment(), context.energy(), photo.pose.body_m, ViewpointOptions{}.soc);
+  stop.viewpoint.dwell_charge_ah = stop.viewpoint.dwell_current_a * photo.stop_s / 3600.0;
+  stop.yaw_deg = photo.pose.yaw_deg;
+  stop.gimbal_pitch_deg = photo.pose.gimbal_pitch_deg;
+  if (photo.stop_s == 0.0) stop.max_speed_m_s = photo.max_speed_m_s;
+  return stop;
+}
+
+// Every stop of the mission: the coverage plan's photos in its order (region by region, pass by
+// pass), the contact grids' points, then the point targets.
+std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext& context, FlightMode mode,
+                                  const TourOptions& options, TourResult& tour) {
+  std::vector<TourStop> stops;
+  if (!mission.surfaces.empty()) {
+    tour.coverage = planMissionCoverage(mission, context, mode, options);
+    for (std::size_t k = 0; k < tour.coverage->photos.size(); ++k)
+      stops.push_back(photoStop(*tour.coverage, k, *mission.camera, context));
   }
+  std::vector<InspectionTarget> targets = mission.targets;
+  for (const ContactGrid& grid : mission.contact_grids) {
+    const std::vector<InspectionTarget> points = contactTargets(context.environment().grid(), grid);
+    targets.insert(targets.end(), points.begin(), points.end());
+  }
+  // Point targets first in the search, so that free mode widens their standoff only; the stops
+  // list contact points before them.
+  std::vector<TourStop> viewpoints = viewpointStops(targets, mission.targets.size(), context, mode, options);
+  std::rotate(viewpoints.begin(), viewpoints.begin() + static_cast<std::ptrdiff_t>(mission.targets.size()), viewpoints.end());
+  stops.insert(stops.end(), viewpoints.begin(), viewpoints.end());
+  if (stops.empty()) throw InputError(mission.name() + ": nothing to inspect: no targets, surfaces or contact grid points");
   return stops;
 }
 
@@ -231,86 +325,413 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const PlanningCon
                     failures);
 }
 
-// Every leg from one roadmap over the map: the roadmap's route from each place to every other,
-// shortcut under the pair's rules, or the straight line where that is valid and cheaper. Raw:
-// the legs a plan flies are refined later.
-LegTable roadmapLegs(const TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options,
-                     const LegScorer& score) {
-  const Eigen::Vector3d& home = tour.places_m.front();
-  const LegPlanner roadmap_planner = legPlanner(context, mode, home, home);
-  const planner::SafetyRules& rules = *roadmap_planner.planning.rules;
-  const planner::FlightObjective& objective = roadmap_planner.planner->objective();
-  planner::LatticeSettings settings = latticeSettings(context, options);
-  settings.progress = stageProgress(options, flightModeName(tour.mode) + " mode: building the roadmap");
-  planner::LatticeRoadmap roadmap(roadmap_planner.planner->spaceInformation(), settings);
-  roadmap.build(objective, tour.places_m);
+// The roadmap over the map for the tour's places, with what its legs are judged by.
+class TourRoadmap {
+ public:
+  TourRoadmap(const TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options)
+      : tour_(tour), planner_(legPlanner(context, mode, tour.places_m.front(), tour.places_m.front())),
+        straight_when_clear_(options.straight_when_clear) {
+    planner::LatticeSettings settings = latticeSettings(context, options);
+    settings.progress = stageProgress(options, flightModeName(tour.mode) + " mode: building the roadmap");
+    roadmap_ = std::make_unique<planner::LatticeRoadmap>(planner_.planner->spaceInformation(), settings);
+    roadmap_->build(planner_.planner->objective(), tour.places_m);
+  }
 
-  const int places = static_cast<int>(tour.places_m.size());
-  const RoutesFrom routes_from = [&](int from) {
-    const std::vector<std::optional<planner::RoadmapRoute>> routes = roadmap.routesFrom(from);
+  // The raw legs from one place to `goals` (every other place when empty): the roadmap's route,
+  // shortcut under the pair's rules, or the straight line where that is valid and cheaper.
+  // Safe from several threads.
+  std::vector<std::vector<Eigen::Vector3d>> legsFrom(int from, const std::vector<int>& goals) const {
+    const std::vector<std::optional<planner::RoadmapRoute>> routes =
+        goals.empty() ? roadmap_->routesFrom(from) : roadmap_->routesFrom(from, goals);
+    const int places = static_cast<int>(tour_.places_m.size());
     std::vector<std::vector<Eigen::Vector3d>> paths(places);
-    for (int to = 0; to < places; ++to) {
-      if (to == from) continue;
-      const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
-      std::optional<std::vector<Eigen::Vector3d>> best;
-      if (routes[to]) best = planner::shortcutPath(routes[to]->waypoints, rules, objective);
-      if (options.straight_when_clear && rules.isMotionValid(a, b) &&
-          (!best || objective.motionCost(a, b) < objective.pathCost(*best)))
-        best = std::vector<Eigen::Vector3d>{a, b};
-      if (!best) {
-        const std::optional<planner::Blockage> blockage = roadmap.blockage(from, to);
-        throw NoPathError(flightModeName(tour.mode) + " mode: no path between " + tour.names[from] + " and " +
-                          tour.names[to] + ": " +
-                          (blockage ? blockage->describe() : std::string("the roadmap does not join them")));
-      }
-      paths[to] = std::move(*best);
+    const auto leg = [&](int to) {
+      paths[to] = bestLeg(from, to, routes[to] ? &routes[to]->waypoints : nullptr);
+    };
+    if (goals.empty()) {
+      for (int to = 0; to < places; ++to)
+        if (to != from) leg(to);
+    } else {
+      for (int to : goals) leg(to);
     }
     return paths;
-  };
-  return planLegsByPlace(places, routes_from, score, options.workers,
+  }
+
+  // A large tour's legs out of home and back (safe from several threads): the roadmap's route
+  // out of home, one search for every place, reversed for the way back, or the straight line
+  // where that is valid and cheaper; not shortcut (the legs a plan flies are post-processed).
+  std::vector<Eigen::Vector3d> homeLeg(int from, int to) const {
+    std::call_once(home_routes_once_, [this] { home_routes_ = roadmap_->routesFrom(0); });
+    const std::optional<planner::RoadmapRoute>& route = home_routes_[from == 0 ? to : from];
+    if (!route) return bestLeg(from, to, nullptr);
+    std::vector<Eigen::Vector3d> path = route->waypoints;
+    if (from != 0) std::reverse(path.begin(), path.end());
+    const planner::FlightObjective& objective = planner_.planner->objective();
+    const Eigen::Vector3d &a = tour_.places_m[from], &b = tour_.places_m[to];
+    if (straight_when_clear_ && planner_.planning.rules->isMotionValid(a, b) &&
+        objective.motionCost(a, b) < route->cost)
+      return {a, b};
+    return path;
+  }
+
+ private:
+  std::vector<Eigen::Vector3d> bestLeg(int from, int to, const std::vector<Eigen::Vector3d>* route) const {
+    const planner::SafetyRules& rules = *planner_.planning.rules;
+    const planner::FlightObjective& objective = planner_.planner->objective();
+    const Eigen::Vector3d &a = tour_.places_m[from], &b = tour_.places_m[to];
+    std::optional<std::vector<Eigen::Vector3d>> best;
+    if (route) best = planner::shortcutPath(*route, rules, objective);
+    if (straight_when_clear_ && rules.isMotionValid(a, b) && (!best || objective.motionCost(a, b) < objective.pathCost(*best)))
+      best = std::vector<Eigen::Vector3d>{a, b};
+    if (!best) {
+      const std::optional<planner::Blockage> blockage = roadmap_->blockage(from, to);
+      throw NoPathError(flightModeName(tour_.mode) + " mode: no path between " + tour_.names[from] + " and " +
+                        tour_.names[to] + ": " +
+                        (blockage ? blockage->describe() : std::string("the roadmap does not join them")));
+    }
+    return std::move(*best);
+  }
+
+  const TourResult& tour_;
+  LegPlanner planner_;
+  bool straight_when_clear_;
+  std::unique_ptr<planner::LatticeRoadmap> roadmap_;
+  mutable std::once_flag home_routes_once_;
+  mutable std::vector<std::optional<planner::RoadmapRoute>> home_routes_;
+};
+
+// Every leg from one roadmap over the map: each place's route to every other. Raw: the legs a
+// plan flies are refined later.
+LegTable roadmapLegs(const TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options,
+                     const LegScorer& score) {
+  const TourRoadmap roadmap(tour, context, mode, options);
+  const RoutesFrom routes_from = [&](int from) { return roadmap.legsFrom(from, {}); };
+  return planLegsByPlace(static_cast<int>(tour.places_m.size()), routes_from, score, options.workers,
                          stageProgress(options, flightModeName(tour.mode) + " mode: routing legs"));
 }
 
-// The visiting order and the sorties for the legs as they are.
-void orderAndSplit(TourResult& tour, const PlanningContext& context, const TourOptions& options) {
-  TourCosts legs;
-  legs.names = tour.names;
-  legs.current_at_soc = packCurrent(context.energy());
+// What a visit costs in the order: the leg into a stop and the stop's dwell.
+double visitCost(const TourResult& tour, const TourLeg& leg, int to) {
+  return leg.evaluation.charge_ah + (to > 0 ? tour.stops[to - 1].viewpoint.dwell_charge_ah : 0.0);
+}
+
+TourCosts tourCosts(const TourResult& tour, const PlanningContext& context) {
+  TourCosts costs;
+  costs.names = tour.names;
+  costs.current_at_soc = packCurrent(context.energy());
   const int places = static_cast<int>(tour.places_m.size());
-  CostMatrix costs = CostMatrix::Zero(places, places);
-  legs.legs.assign(places, std::vector<LegCost>(places));
-  legs.dwells.assign(places, {});
-  for (int i = 0; i < places; ++i)
-    for (int j = 0; j < places; ++j) {
-      if (i == j) continue;
-      legs.legs[i][j] = legCost(tour.legs[i][j].evaluation);
-      costs(i, j) = legs.legs[i][j].charge_ah;
-    }
+  costs.legs = PairTable<LegCost>(places);
+  costs.dwells.assign(places, {});
   for (int k = 1; k < places; ++k) {
     const TourStop& stop = tour.stops[k - 1];
-    legs.dwells[k] = {stop.target.dwell_s, stop.viewpoint.dwell_current_a, stop.hover.propulsion_power_w};
-    // The charge matrix orders by what a visit costs: the leg into a target and its dwell.
-    for (int i = 0; i < places; ++i)
-      if (i != k) costs(i, k) += stop.viewpoint.dwell_charge_ah;
+    costs.dwells[k] = {stop.target.dwell_s, stop.viewpoint.dwell_current_a, stop.hover.propulsion_power_w};
   }
-  TourOrderOptions order_options;
-  order_options.seed = options.seed;
-  tour.order = orderTour(costs, order_options);
+  return costs;
+}
+
+SortieOptions sortieOptions(const TourOptions& options) {
   SortieOptions sortie_options;
   sortie_options.ageing_model = options.ageing_model;
   sortie_options.ageing = ageingModelOptions(options.temperature_c);
-  tour.plan = planSorties(legs, tour.order.targets, context.battery(), sortie_options);
+  return sortie_options;
+}
+
+// The visiting order and the sorties for the legs as they are, every pair known.
+void orderAndSplit(TourResult& tour, const PlanningContext& context, const TourOptions& options) {
+  TourCosts legs = tourCosts(tour, context);
+  const int places = static_cast<int>(tour.places_m.size());
+  CostMatrix costs = CostMatrix::Zero(places, places);
+  for (int i = 0; i < places; ++i)
+    for (int j = 0; j < places; ++j) {
+      if (i == j) continue;
+      legs.legs(i, j) = legCost(tour.legs[i][j].evaluation);
+      // The charge matrix orders by what a visit costs: the leg into a target and its dwell.
+      costs(i, j) = visitCost(tour, tour.legs[i][j], j);
+    }
+  TourOrderOptions order_options;
+  order_options.seed = options.seed;
+  tour.order = orderTour(costs, order_options);
+  tour.plan = planSorties(legs, tour.order.targets, context.battery(), sortieOptions(options));
+}
+
+// Rounds of a large tour that search the order again (see SparseLegs::orderAndSplit).
+constexpr int kSearchRounds = 2;
+// A large tour's blocked leg (SparseLegs::firstLeg) is priced at this many times the straight
+// line's charge until it is routed.
+constexpr double kBlockedLegFactor = 2.0;
+
+// The legs of a large tour: estimated where the order search or the split looks, routed and
+// refined where the plan flies.
+class SparseLegs {
+ public:
+  SparseLegs(TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options,
+             const LegScorer& score)
+      : tour_(tour), context_(context), mode_(mode), options_(options), score_(score),
+        planning_(context.mode(mode)), neighbours_(nearestPlaces(tour.places_m, std::min<int>(options.neighbours,
+                                                                                         static_cast<int>(tour.places_m.size()) - 1))) {
+    tour_.legs = LegTable(static_cast<int>(tour.places_m.size()));
+    planner::CostWeights charge;
+    charge.per_ah = 1.0;
+    min_ah_per_m_ = context.fullModel().minCostPerMetre(charge);
+    if (planner::plannerInfo(options.planner).multiQuery()) roadmap_ = std::make_unique<TourRoadmap>(tour, context, mode, options);
+  }
+
+  const std::vector<std::vector<int>>& neighbours() const { return neighbours_; }
+  const std::set<int>& lastSplitPoints() const { return last_split_points_; }
+
+  // Estimates the legs not stored yet, on the tour's threads.
+  void estimate(Pairs pairs) {
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    Pairs missing;
+    std::vector<TourLeg*> cells;
+    for (const auto& [from, to] : pairs)
+      if (from != to && !tour_.legs.contains(from, to)) {
+        missing.emplace_back(from, to);
+        cells.push_back(&tour_.legs(from, to));  // stored before the threads start
+      }
+    parallelFor(missing.size(), options_.workers, [&](std::size_t k) { *cells[k] = firstLeg(missing[k].first, missing[k].second); });
+  }
+
+  // Every place's neighbours, both ways.
+  void estimateNeighbours() {
+    Pairs pairs;
+    for (int from = 0; from < static_cast<int>(neighbours_.size()); ++from)
+      for (int to : neighbours_[from]) pairs.insert(pairs.end(), {{from, to}, {to, from}});
+    estimate(pairs);
+  }
+
+  // What a visit costs, estimating the leg on first use (from the order search's thread).
+  double visitCost(int from, int to) {
+    if (const TourLeg* leg = tour_.legs.find(from, to)) return mission::visitCost(tour_, *leg, to);
+    TourLeg& leg = tour_.legs(from, to);
+    leg = firstLeg(from, to);
+    return mission::visitCost(tour_, leg, to);
+  }
+
+  // A lower bound on what a visit costs, the cost itself where the leg is known: the straight
+  // line at the least charge per metre any flight draws (with a margin for the model's
+  // rounding), then the dwell.
+  double visitBound(int from, int to) const {
+    if (const TourLeg* leg = tour_.legs.find(from, to)) return mission::visitCost(tour_, *leg, to);
+    return 0.9 * min_ah_per_m_ * (tour_.places_m[to] - tour_.places_m[from]).norm() +
+           (to > 0 ? tour_.stops[to - 1].viewpoint.dwell_charge_ah : 0.0);
+  }
+
+  // The order, from the last one (or a nearest-neighbour one), then the sorties: at evenly
+  // spaced split points first, then also around the sorties' starts. Legs the plan flies are
+  // refined between rounds, which changes their cost (free mode's refinement keeps the
+  // standoff, at a price in charge), so after kSearchRounds rounds the order is kept and the
+  // sorties may only keep or merge their boundaries: the loop ends once those legs are refined.
+  void orderAndSplit(int round) {
+    const int targets = static_cast<int>(tour_.stops.size());
+    if (round > kSearchRounds && !tour_.plan.sorties.empty()) {
+      std::set<int> boundaries;
+      int position = 0;
+      for (const Sortie& sortie : tour_.plan.sorties) {
+        boundaries.insert(position);
+        position += static_cast<int>(sortie.targets.size());
+      }
+      try {
+        tour_.plan = split(tour_.order.targets, boundaries);
+        return;
+      } catch (const InfeasibleError&) {
+        // Refined legs no longer fit those sorties: split afresh.
+      }
+    } else {
+      std::vector<std::vector<int>> starts{tour_.order.targets};
+      if (starts.front().empty()) starts.front() = nearestNeighbourOrder(tour_.places_m, neighbours_);
+      tour_.order = neighbourListTour(
+          targets, [this](int from, int to) { return visitCost(from, to); },
+          [this](int from, int to) { return visitBound(from, to); }, neighbours_, starts, round == 1 ? options_.order_kicks : 0,
+          options_.seed);
+    }
+    const std::vector<int>& order = tour_.order.targets;
+    std::set<int> split_points;
+    const int coarse = std::max(1, std::min(options_.split_points, targets));
+    for (int k = 0; k < coarse; ++k) split_points.insert(static_cast<int>(static_cast<long long>(k) * targets / coarse));
+    tour_.plan = split(order, split_points);
+    if (coarse < targets && tour_.plan.sorties.size() > 1) {
+      const int stride = (targets + coarse - 1) / coarse;
+      int position = 0;
+      for (const Sortie& sortie : tour_.plan.sorties) {
+        if (position > 0)
+          for (int p = std::max(0, position - stride); p <= std::min(targets - 1, position + stride); ++p) split_points.insert(p);
+        position += static_cast<int>(sortie.targets.size());
+      }
+      tour_.plan = split(order, split_points);
+    }
+  }
+
+
+  // The legs out of home to, and back from, the ends of every stretch between split points:
+  // what a sortie that cannot fly may need refined.
+  Pairs homeLegs(const std::vector<int>& order, const std::set<int>& split_points) const {
+    Pairs pairs;
+    for (int p : split_points) {
+      pairs.emplace_back(0, order[p]);
+      if (p > 0) pairs.emplace_back(order[p - 1], 0);
+    }
+    pairs.emplace_back(order.back(), 0);
+    return pairs;
+  }
+
+  // Routes the legs `which` that are estimates: over the roadmap (one search from each place
+  // to the estimates out of it), or with a pairwise planner (then post-processed).
+  void route(const Pairs& which) {
+    Pairs estimates;
+    for (const auto& [from, to] : which)
+      if (!tour_.legs.at(from, to).routed) estimates.emplace_back(from, to);
+    if (estimates.empty()) return;
+    std::sort(estimates.begin(), estimates.end());
+    const FractionCallback progress =
+        stageProgress(options_, flightModeName(tour_.mode) + " mode: routing " + std::to_string(estimates.size()) + " legs");
+    if (roadmap_) {
+      std::map<int, std::vector<int>> goals;
+      for (const auto& [from, to] : estimates) goals[from].push_back(to);
+      const std::vector<std::pair<int, std::vector<int>>> searches(goals.begin(), goals.end());
+      std::vector<std::vector<std::vector<Eigen::Vector3d>>> paths(searches.size());
+      parallelFor(
+          searches.size(), options_.workers,
+          [&](std::size_t k) { paths[k] = roadmap_->legsFrom(searches[k].first, searches[k].second); }, progress);
+      for (std::size_t k = 0; k < searches.size(); ++k)
+        for (int to : searches[k].second) tour_.legs(searches[k].first, to).waypoints = std::move(paths[k][to]);
+      parallelFor(estimates.size(), options_.workers, [&](std::size_t k) {
+        const auto [from, to] = estimates[k];
+        TourLeg& leg = *tour_.legs.find(from, to);
+        leg.evaluation = score_(from, to, leg.waypoints);
+        leg.routed = true;
+      });
+      return;
+    }
+    const LegRework search = [&](int from, int to, const std::vector<Eigen::Vector3d>&) {
+      return searchLeg(tour_, context_, legPlanner(context_, mode_, tour_.places_m[from], tour_.places_m[to]), options_, from,
+                       to);
+    };
+    routeLegs(tour_.legs, estimates, search, score_, options_.workers, progress);
+    for (const auto& [from, to] : estimates) tour_.legs(from, to).refined = true;
+  }
+
+ private:
+  // A leg as the search first sees it: the straight line where it is valid (near neighbours
+  // need no search; refinement bends it where that saves charge), else an L or a dogleg round
+  // what blocks it; out of home and back, the roadmap's route or the straight line, the
+  // cheaper. Else an estimate, routed once a plan flies it: the straight line scored at
+  // kBlockedLegFactor times its charge (a search here, in a pocket of the structure, may take
+  // a tenth of a second, and the order avoids such legs anyway).
+  TourLeg firstLeg(int from, int to) const {
+    const Eigen::Vector3d &a = tour_.places_m[from], &b = tour_.places_m[to];
+    TourLeg leg;
+    if (roadmap_ && (from == 0 || to == 0)) {
+      leg.waypoints = roadmap_->homeLeg(from, to);
+    } else if (options_.straight_when_clear && planning_.rules->isMotionValid(a, b)) {
+      leg.waypoints = {a, b};
+    } else if (std::optional<std::vector<Eigen::Vector3d>> turn = turningLeg(a, b)) {
+      leg.waypoints = std::move(*turn);
+    } else {
+      leg.waypoints = {a, b};
+      leg.routed = false;
+    }
+    leg.evaluation = score_(from, to, leg.waypoints);
+    if (!leg.routed) leg.evaluation.charge_ah *= kBlockedLegFactor;
+    return leg;
+  }
+
+  // Between near neighbours the straight line is often blocked by a flange or a pier cap's
+  // corner: an L round it (level then vertical, vertical then level), or a dogleg half a metre
+  // or a metre above or below the middle, the cheapest valid one, before any search.
+  std::optional<std::vector<Eigen::Vector3d>> turningLeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    if (!options_.straight_when_clear) return std::nullopt;
+    const planner::SafetyRules& rules = *planning_.rules;
+    const Eigen::Vector3d middle = 0.5 * (a + b);
+    std::optional<std::vector<Eigen::Vector3d>> best;
+    double best_cost = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& turn :
+         {Eigen::Vector3d(b.x(), b.y(), a.z()), Eigen::Vector3d(a.x(), a.y(), b.z()), Eigen::Vector3d(middle + 0.5 * Eigen::Vector3d::UnitZ()),
+          Eigen::Vector3d(middle - 0.5 * Eigen::Vector3d::UnitZ()), Eigen::Vector3d(middle + Eigen::Vector3d::UnitZ()),
+          Eigen::Vector3d(middle - Eigen::Vector3d::UnitZ())}) {
+      if ((turn - a).norm() < 1e-6 || (turn - b).norm() < 1e-6 || !rules.isStateValid(turn) ||
+          !rules.isMotionValid(a, turn) || !rules.isMotionValid(turn, b))
+        continue;
+      const std::vector<Eigen::Vector3d> path{a, turn, b};
+      const double cost = planning_.model->integrate(a, turn).charge_ah + planning_.model->integrate(turn, b).charge_ah;
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = path;
+      }
+    }
+    return best;
+  }
+
+  SortiePlan split(const std::vector<int>& order, const std::set<int>& split_points) {
+    estimate(homeLegs(order, split_points));
+    Pairs consecutive;
+    for (std::size_t k = 1; k < order.size(); ++k) consecutive.emplace_back(order[k - 1], order[k]);
+    estimate(consecutive);
+    TourCosts costs = tourCosts(tour_, context_);
+    const auto add = [&](int from, int to) { costs.legs(from, to) = legCost(tour_.legs.at(from, to).evaluation); };
+    for (const auto& [from, to] : consecutive) add(from, to);
+    for (const auto& [from, to] : homeLegs(order, split_points)) add(from, to);
+    SortieOptions sortie_options = sortieOptions(options_);
+    sortie_options.split_points.assign(split_points.begin(), split_points.end());
+    last_split_points_ = split_points;
+    return planSorties(costs, order, context_.battery(), sortie_options);
+  }
+
+  TourResult& tour_;
+  const PlanningContext& context_;
+  FlightMode mode_;
+  const TourOptions& options_;
+  const LegScorer& score_;
+  PlanningContext::Mode planning_;
+  std::vector<std::vector<int>> neighbours_;
+  std::unique_ptr<TourRoadmap> roadmap_;
+  std::set<int> last_split_points_;
+  double min_ah_per_m_ = 0.0;
+};
+
+// The photos as flown: in flying order, each with its sortie and the time of the shot on the
+// tour's clock (the end of the hold, or the passing), and the re-check of what they cover.
+void recordPhotos(TourResult& tour, const Mission& mission, const PlanningContext& context, const TourOptions& options) {
+  std::vector<CameraPose> poses;
+  for (std::size_t s = 0; s < tour.plan.sorties.size(); ++s) {
+    const SortieRecord& record = tour.record.sorties[s];
+    std::vector<double> shot_s(tour.plan.sorties[s].legs.size(), 0.0);
+    for (std::size_t i = 0; i < record.samples.size(); ++i) shot_s[record.steps[i]] = record.samples[i].t_s;
+    for (std::size_t step = 0; step < tour.plan.sorties[s].legs.size(); ++step) {
+      const int to = tour.plan.sorties[s].legs[step].to;
+      if (to == 0 || !tour.stops[to - 1].photo) continue;
+      const std::size_t k = *tour.stops[to - 1].photo;
+      PhotoRow row = photoRow(*tour.coverage, k, static_cast<int>(tour.photos.size() + 1));
+      row.sortie = static_cast<int>(s + 1);
+      row.t_s = record.takeoff_s + shot_s[step];
+      tour.photos.push_back(row);
+      poses.push_back(tour.coverage->photos[k].pose);
+    }
+  }
+  std::vector<RegionSurface> surfaces;
+  std::vector<std::vector<std::uint8_t>> reachable;
+  for (const RegionPlan& region : tour.coverage->regions) {
+    surfaces.push_back(region.surface);
+    reachable.push_back(region.reachable);
+  }
+  tour.coverage_check =
+      checkCoverage(context.map().tree(), *mission.camera, mission.surfaces, surfaces, reachable, poses, options.workers);
 }
 
 }  // namespace
 
 TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,
                     const TourOptions& options) {
+  if (options.all_pairs_max_places < 2 || options.neighbours < 1 || options.split_points < 1 || options.order_kicks < 0)
+    throw InputError("tour options: all_pairs_max_places must be at least 2, neighbours and split_points at least 1, "
+                     "order_kicks at least 0");
   TourResult tour;
   tour.mode = mode;
   tour.options = options;
   tour.start_soc = context.battery().start_soc;
   tour.reserve_soc = context.battery().reserve_soc;
+  Stopwatch clock;
 
   // Home as the planner would check a start (the same rules in both modes).
   const PlanningContext::Mode home_mode = context.mode(mode);
@@ -319,37 +740,52 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
                                 " is not a valid position for the vehicle (inside or too close to a structure, or "
                                 "outside the map); move it into free space");
 
-  tour.stops = chooseStops(mission, context, mode, options);
+  tour.stops = chooseStops(mission, context, mode, options, tour);
   tour.names.push_back("home");
   tour.places_m.push_back(mission.home_m);
   for (const TourStop& stop : tour.stops) {
     tour.names.push_back(stop.target.name);
     tour.places_m.push_back(stop.viewpoint.position_m);
   }
+  tour.times.stops_s = clock.lap_s();
 
   const battery::Pack& pack = context.battery().pack;
-  const LegScorer score = [&](const std::vector<Eigen::Vector3d>& waypoints) {
-    return planner::evaluatePath(context.fullModel(), pack, tour.start_soc, waypoints);
+  // On the move, the legs from photo to photo are flown no faster than the slower one allows.
+  const LegScorer score = [&](int from, int to, const std::vector<Eigen::Vector3d>& waypoints) {
+    double cap = std::numeric_limits<double>::infinity();
+    if (from > 0 && to > 0 && tour.stops[from - 1].photo && tour.stops[to - 1].photo)
+      for (const int place : {from, to})
+        if (const auto& speed = tour.stops[place - 1].max_speed_m_s) cap = std::min(cap, *speed);
+    return planner::evaluatePath(context.fullModel(), pack, tour.start_soc, waypoints, cap);
   };
   const auto legPlannerFor = [&](int from, int to) {
     return legPlanner(context, mode, tour.places_m[from], tour.places_m[to]);
   };
   const int places = static_cast<int>(tour.places_m.size());
+  const bool all_pairs = places <= options.all_pairs_max_places;
   planner::RefinementOptions refinement;
+  std::unique_ptr<SparseLegs> sparse;
   if (planner::plannerInfo(options.planner).multiQuery()) {
-    tour.legs = roadmapLegs(tour, context, mode, options, score);
+    if (all_pairs) tour.legs = roadmapLegs(tour, context, mode, options, score);
     refinement.time_limit_s = kRefinementTimeGuardS;
   } else {
     refinement.time_limit_s = options.time_limit_s;
     const PairPlanner plan_pair = [&](int from, int to) {
       return searchLeg(tour, context, legPlannerFor(from, to), options, from, to);
     };
-    tour.legs = planLegsByPair(places, plan_pair, score, options.workers,
-                               stageProgress(options, flightModeName(tour.mode) + " mode: planning legs"));
+    if (all_pairs)
+      tour.legs = planLegsByPair(places, plan_pair, score, options.workers,
+                                 stageProgress(options, flightModeName(tour.mode) + " mode: planning legs"));
   }
+  if (!all_pairs) {
+    sparse = std::make_unique<SparseLegs>(tour, context, mode, options, score);
+    sparse->estimateNeighbours();
+  }
+  tour.times.legs_s = clock.lap_s();
 
-  // Order and split with the legs as they are, post-process the raw legs the plan flies, and
-  // again until the plan flies post-processed legs only (each round refines at least one leg).
+  // Order and split with the legs as they are, post-process the raw legs the plan flies (a
+  // large tour routes the estimates among them first), and again until the plan flies
+  // post-processed legs only (each round refines at least one leg).
   const LegRefiner refine = [&](int from, int to, const std::vector<Eigen::Vector3d>& raw) {
     try {
       return legPlannerFor(from, to).planner->postProcess(raw, refinement);
@@ -357,31 +793,56 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
       rethrowWithContext(flightModeName(tour.mode) + " mode: leg " + legName(tour, from, to) + ": ");
     }
   };
-  const auto unrefined = [&](const std::vector<std::pair<int, int>>& candidates) {
-    std::vector<std::pair<int, int>> raw;
-    for (const auto& [from, to] : candidates)
-      if (!tour.legs[from][to].refined) raw.emplace_back(from, to);
+  // A straight hop between two photos is flown as it is: a pass is a stretch of such hops, and
+  // refining a hop of a few decimetres bends it by millimetres while multiplying the autopilot's
+  // mission items.
+  const auto passHop = [&](int from, int to, const TourLeg& leg) {
+    return from > 0 && to > 0 && tour.stops[from - 1].photo && tour.stops[to - 1].photo && leg.routed &&
+           leg.waypoints.size() == 2;
+  };
+  const auto unrefined = [&](const Pairs& candidates) {
+    Pairs raw;
+    for (const auto& [from, to] : candidates) {
+      const TourLeg& leg = tour.legs.at(from, to);
+      if (!leg.refined && !passHop(from, to, leg)) raw.emplace_back(from, to);
+    }
     std::sort(raw.begin(), raw.end());
     raw.erase(std::unique(raw.begin(), raw.end()), raw.end());
     return raw;
   };
   for (;;) {
-    std::vector<std::pair<int, int>> flown;
+    ++tour.times.rounds;
+    Pairs flown;
     try {
-      orderAndSplit(tour, context, options);
+      if (sparse) {
+        sparse->orderAndSplit(tour.times.rounds);
+      } else {
+        orderAndSplit(tour, context, options);
+      }
       for (const Sortie& sortie : tour.plan.sorties)
         for (const SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
     } catch (const InfeasibleError&) {
       // A target no sortie can reach and return from, perhaps only on raw legs: refine the
       // legs out of home and back, then decide.
-      for (int k = 1; k < places; ++k) flown.insert(flown.end(), {{0, k}, {k, 0}});
+      if (sparse) {
+        flown = sparse->homeLegs(tour.order.targets, sparse->lastSplitPoints());
+      } else {
+        for (int k = 1; k < places; ++k) flown.insert(flown.end(), {{0, k}, {k, 0}});
+      }
       if (unrefined(flown).empty()) throw;
     }
-    const std::vector<std::pair<int, int>> raw_legs = unrefined(flown);
+    tour.times.order_s += clock.lap_s();
+    const Pairs raw_legs = unrefined(flown);
     if (raw_legs.empty()) break;
-    refineLegs(tour.legs, raw_legs, refine, score, options.workers,
-               stageProgress(options, flightModeName(tour.mode) + " mode: refining " + std::to_string(raw_legs.size()) +
+    if (sparse) {
+      sparse->route(raw_legs);
+      tour.times.routing_s += clock.lap_s();
+    }
+    const Pairs to_refine = unrefined(raw_legs);
+    refineLegs(tour.legs, to_refine, refine, score, options.workers,
+               stageProgress(options, flightModeName(tour.mode) + " mode: refining " + std::to_string(to_refine.size()) +
                                           " legs"));
+    tour.times.refining_s += clock.lap_s();
   }
 
   // The independent re-check of every leg flown (the planner checked them too).
@@ -398,12 +859,18 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   if (mode == FlightMode::Free) tour.standoff = measureTourStandoff(tour, context.environment(), context.options().standoff_m);
   tour.record = recordFlight(tour, context);
   std::vector<RouteStop> route_stops;
-  for (const TourStop& stop : tour.stops) route_stops.push_back({stop.target.name, stop.target.point_m, stop.target.dwell_s});
+  for (const TourStop& stop : tour.stops)
+    route_stops.push_back({stop.target.name, stop.target.point_m, stop.target.dwell_s, stop.yaw_deg, stop.gimbal_pitch_deg});
   tour.routes = sortieRoutes(tour.plan, tour.legs, route_stops, mission);
   tour.trajectories = routeTrajectories(tour.routes, mission, context.baseRules());
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
     tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));
   tour.duty = projectDuty(tour, context.battery(), options);
+  tour.times.record_s = clock.lap_s();
+  if (tour.coverage) {
+    recordPhotos(tour, mission, context, options);
+    tour.times.coverage_check_s = clock.lap_s();
+  }
   return tour;
 }
 

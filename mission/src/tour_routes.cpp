@@ -51,9 +51,14 @@ std::vector<SortieRoute> sortieRoutes(const SortiePlan& plan, const LegTable& le
       const RouteStop& stop = stops.at(leg.to - 1);
       RouteWaypoint& at = route.waypoints.back();
       at.hold_s = stop.dwell_s;
-      const CameraAim aim = aimAt(at.position_m, stop.point_m);
-      at.yaw_deg = aim.yaw_deg;
-      at.gimbal_pitch_deg = aim.gimbal_pitch_deg;
+      if (stop.gimbal_pitch_deg) {
+        at.yaw_deg = stop.yaw_deg;
+        at.gimbal_pitch_deg = stop.gimbal_pitch_deg;
+      } else {
+        const CameraAim aim = aimAt(at.position_m, stop.point_m);
+        at.yaw_deg = aim.yaw_deg;
+        at.gimbal_pitch_deg = aim.gimbal_pitch_deg;
+      }
       at.take_photo = true;
       at.name = stop.name;
     }

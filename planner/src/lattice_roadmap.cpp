@@ -325,10 +325,29 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::routesFrom(int from) co
   return search(places_m_, places_, from);
 }
 
+std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::routesFrom(int from, const std::vector<int>& goals) const {
+  if (!built()) throw ceilplan::Error("the roadmap is not built: call build() first");
+  const int places = static_cast<int>(places_m_.size());
+  if (from < 0 || from >= places) throw ceilplan::InputError("roadmap place index out of range");
+  std::vector<int> targets;
+  for (int goal : goals) {
+    if (goal < 0 || goal >= places) throw ceilplan::InputError("roadmap place index out of range");
+    if (goal != from) targets.push_back(goal);
+  }
+  std::sort(targets.begin(), targets.end());
+  targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+  if (targets.empty()) return std::vector<std::optional<RoadmapRoute>>(places);
+  return search(places_m_, places_, from, targets);
+}
+
 std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vector<Eigen::Vector3d>& places_m,
-                                                                const std::vector<Place>& place_data,
-                                                                int from) const {
+                                                                const std::vector<Place>& place_data, int from,
+                                                                const std::vector<int>& goals) const {
   const int places = static_cast<int>(places_m.size());
+  std::vector<int> targets = goals;
+  if (targets.empty())
+    for (int goal = 0; goal < places; ++goal)
+      if (goal != from) targets.push_back(goal);
   const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
   const detail::LatticeDirections directions;
 
@@ -336,33 +355,69 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
   const std::size_t place_offset = node_count_ + bridge_positions_m_.size();
   const std::size_t state_count = place_offset + places;
   constexpr std::uint32_t kStart = std::numeric_limits<std::uint32_t>::max();
-  std::vector<double> cost_to(state_count, std::numeric_limits<double>::infinity());
-  std::vector<std::uint32_t> parent(state_count, kStart);
-  std::vector<char> closed(state_count, 0);
+  // The search's state, kept per thread between searches and reset where it was touched: a
+  // tour of many places runs thousands of short searches over a large lattice.
+  struct Buffers {
+    std::vector<double> cost_to;
+    std::vector<std::uint32_t> parent;
+    std::vector<char> closed;
+    std::vector<std::uint32_t> touched;
+  };
+  thread_local Buffers buffers;
+  if (buffers.cost_to.size() < state_count) {
+    buffers.cost_to.resize(state_count, std::numeric_limits<double>::infinity());
+    buffers.parent.resize(state_count, kStart);
+    buffers.closed.resize(state_count, 0);
+  }
+  struct Reset {
+    Buffers& b;
+    ~Reset() {
+      for (std::uint32_t state : b.touched) {
+        b.cost_to[state] = std::numeric_limits<double>::infinity();
+        b.parent[state] = kStart;
+        b.closed[state] = 0;
+      }
+      b.touched.clear();
+    }
+  } reset{buffers};
+  std::vector<double>& cost_to = buffers.cost_to;
+  std::vector<std::uint32_t>& parent = buffers.parent;
+  std::vector<char>& closed = buffers.closed;
+  // A few goals named: A* towards the nearest of them (c_min x distance is admissible and
+  // consistent), so a search between near places stays near them. Every place: Dijkstra.
+  const bool guided = !goals.empty() && targets.size() <= 8;
+  const auto heuristic = [&](std::size_t state) {
+    if (!guided || state >= place_offset) return 0.0;
+    const Eigen::Vector3d at = statePosition(static_cast<std::uint32_t>(state));
+    double h = std::numeric_limits<double>::infinity();
+    for (int goal : targets) h = std::min(h, objective_->heuristic(at, places_m[goal]));
+    return h;
+  };
   using Entry = std::pair<double, std::uint32_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
   const auto relax = [&](std::size_t state, std::uint32_t from_state, double g) {
     if (g < cost_to[state]) {
+      if (cost_to[state] == std::numeric_limits<double>::infinity()) buffers.touched.push_back(static_cast<std::uint32_t>(state));
       cost_to[state] = g;
       parent[state] = from_state;
-      open.emplace(g, static_cast<std::uint32_t>(state));
+      open.emplace(g + heuristic(state), static_cast<std::uint32_t>(state));
     }
   };
   const auto arrive = [&](std::uint32_t state, double g) {
-    for (int goal = 0; goal < places; ++goal) {
-      if (goal == from) continue;
+    for (int goal : targets) {
       for (const Join& join : place_data[goal].in)
         if (join.state == state) relax(place_offset + goal, state, g + join.cost);
     }
   };
 
   for (const Join& join : place_data[from].out) relax(join.state, kStart, join.cost);
-  int goals_left = places - 1;
+  int goals_left = static_cast<int>(targets.size());
   while (!open.empty() && goals_left > 0) {
-    const auto [g, state] = open.top();
+    const std::uint32_t state = open.top().second;
     open.pop();
     if (closed[state]) continue;
     closed[state] = 1;
+    const double g = cost_to[state];
     if (state >= place_offset) {
       --goals_left;
       continue;
@@ -387,17 +442,17 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
         relax(it->second.to, state, g + it->second.cost);
     }
     const Eigen::Vector3d here = lattice.position(node);
-    for (int goal = 0; goal < places; ++goal) {
-      if (goal == from || (places_m[goal] - here).norm() > lattice.joinRadius_m()) continue;
+    for (int goal : targets) {
+      if ((places_m[goal] - here).norm() > lattice.joinRadius_m()) continue;
       for (const Join& join : place_data[goal].in)
         if (join.state == node) relax(place_offset + goal, state, g + join.cost);
     }
   }
 
   std::vector<std::optional<RoadmapRoute>> routes(places);
-  for (int goal = 0; goal < places; ++goal) {
+  for (int goal : targets) {
     const std::size_t state = place_offset + goal;
-    if (goal == from || !std::isfinite(cost_to[state])) continue;
+    if (!std::isfinite(cost_to[state])) continue;
     std::vector<Eigen::Vector3d> backwards{places_m[goal]};
     for (std::uint32_t s = parent[state]; s != kStart; s = parent[s]) backwards.push_back(statePosition(s));
     backwards.push_back(places_m[from]);

@@ -10,8 +10,9 @@
 namespace ceilplan::planner {
 
 PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
-                            const std::vector<Eigen::Vector3d>& waypoints_m) {
+                            const std::vector<Eigen::Vector3d>& waypoints_m, double max_speed_m_s) {
   if (waypoints_m.size() < 2) throw ceilplan::InputError("a path needs at least 2 waypoints");
+  if (!(max_speed_m_s > 0.0)) throw ceilplan::InputError("the speed cap must be positive");
   if (!(start_soc > 0.0 && start_soc <= 1.0)) throw ceilplan::InputError("start SOC must lie in (0, 1]");
   const environment::Environment& environment = model.environment();
   battery::Simulator battery(pack, start_soc);
@@ -27,6 +28,10 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     sample.position_m = position_m;
     conditions = model.exactConditionsAt(position_m);
     if (!direction.isZero()) velocity = model.velocityAt(conditions, direction);
+    if (velocity.along_m_s > max_speed_m_s) {
+      const double slower = max_speed_m_s / velocity.along_m_s;
+      velocity = {max_speed_m_s, velocity.horizontal_m_s * slower, velocity.climb_m_s * slower};
+    }
     sample.speed_m_s = velocity.along_m_s;
     sample.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
     sample.ground_gap_m = conditions.ground_gap_m;

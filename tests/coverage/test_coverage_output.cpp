@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -91,6 +92,42 @@ TEST(CoverageJson, EveryFieldFromThePlanAndItsCheck) {
   mission::CoverageCheck other = check;
   other.regions[0].name = "roof";
   EXPECT_THROW(coverageJson(plan, other), ceilplan::InputError);
+  EXPECT_THROW(coverageElementsCsv(plan, other), ceilplan::InputError);
+
+  // coverage_elements.csv: one line per element, as the check found it.
+  std::stringstream elements(coverageElementsCsv(plan, check));
+  std::string line;
+  std::getline(elements, line);
+  EXPECT_EQ(line, "region,x,y,z,nx,ny,nz,area_m2,reachable,covered,best_gsd_mm_px,views");
+  const mission::RegionSurface& surface = plan.regions[0].surface;
+  const mission::RegionCoverageCheck& checked = check.regions[0];
+  std::size_t e = 0;
+  double covered_m2 = 0.0, unseen_m2 = 0.0;
+  while (std::getline(elements, line)) {
+    ASSERT_LT(e, surface.elements.size());
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+    if (line.back() == ',') f.emplace_back();
+    ASSERT_EQ(f.size(), 12u) << line;
+    EXPECT_EQ(f[0], "ceiling");
+    EXPECT_NEAR(std::stod(f[1]), surface.elements[e].centre_m.x(), 5e-4);
+    EXPECT_NEAR(std::stod(f[6]), surface.elements[e].normal.z(), 5e-5);
+    EXPECT_EQ(f[8], plan.regions[0].reachable[e] ? "1" : "0");
+    EXPECT_EQ(f[9], checked.covered[e] ? "1" : "0");
+    EXPECT_EQ(std::stoi(f[11]), checked.view_count[e]);
+    if (f[10].empty()) {
+      unseen_m2 += std::stod(f[7]);
+      EXPECT_TRUE(std::isinf(checked.best_gsd_mm_px[e]));
+    } else {
+      EXPECT_NEAR(std::stod(f[10]), checked.best_gsd_mm_px[e], 5e-4);
+    }
+    if (f[9] == "1") covered_m2 += std::stod(f[7]);
+    ++e;
+  }
+  EXPECT_EQ(e, surface.elements.size());
+  EXPECT_NEAR(covered_m2, checked.covered_area_m2, 1e-6);
+  EXPECT_NEAR(unseen_m2, checked.unseen_area_m2, 1e-6);
 }
 
 }  // namespace

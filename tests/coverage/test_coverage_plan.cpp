@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <iostream>
 #include <set>
 
 namespace ceilplan::mission {
@@ -97,6 +99,46 @@ TEST(CoveragePlan, CoversTheReachableCeilingAndReportsTheCloset) {
       EXPECT_DOUBLE_EQ(photo.stop_s, 2.0);
     }
   }
+}
+
+// A coarse GSD reaches farther than the room below the ceiling (8 m at 3 mm/px, 2.8 m from
+// ceiling to floor): the levels within the room come in too, so the photos stand as far off as
+// the room lets them, and a coarser GSD takes hardly more photos than a finer one (the greedy
+// cover is not monotone; with the GSD's levels alone, the bridge's first span took three times
+// as many at 3 mm/px as at 2).
+TEST(CoveragePlan, ACoarseGsdUnderALowCeilingKeepsLevelsWithinTheRoom) {
+  const Camera camera = testing::upwardCamera();
+  CoverageRegion coarse = ceiling();
+  coarse.gsd_mm_px = 3.0;
+  const RegionSurface surface =
+      extractRegionSurface(room().environment.grid(), coarse.shape, coarse.faces, "surface region 'ceiling'");
+  const double reach_m = distanceLevels(camera, coarse, 1).front();
+  EXPECT_GT(reach_m, 7.0);
+  const double room_m = roomInFront_m(room().environment, camera, surface, reach_m);
+  // The floor's top is 2.8 m below the ceiling; the airframe below the body and the mount take
+  // the rest (the beam and the closet are too few elements to move the median).
+  const environment::VehicleGeometry& vehicle = room().environment.vehicle();
+  EXPECT_NEAR(room_m, 2.8 + vehicle.inflatedBottom_m() - camera.mount_offset_m.z(), 0.05 + 1e-9);
+  EXPECT_DOUBLE_EQ(distanceLevels(camera, coarse, 4, room_m).front(), room_m);
+  EXPECT_EQ(distanceLevels(camera, coarse, 4, room_m).size(), 4u);
+  EXPECT_DOUBLE_EQ(distanceLevels(camera, coarse, 4, 0.1).front(), distanceLevels(camera, coarse, 4).back());
+  // Room enough: the GSD's reach stands.
+  EXPECT_GE(roomInFront_m(room().environment, camera, surface, 1.0), 1.0);
+
+  CoverageRegion fine = ceiling();
+  fine.gsd_mm_px = 2.0;
+  const CoveragePlan coarse_plan = plan({coarse}, FlightMode::Ceiling);
+  const CoveragePlan fine_plan = plan({fine}, FlightMode::Ceiling);
+  EXPECT_LE(coarse_plan.photos.size(), 1.25 * fine_plan.photos.size());
+  double farthest_m = 0.0;
+  for (const PlannedPhoto& photo : coarse_plan.photos) {
+    farthest_m = std::max(farthest_m, photo.distance_m);
+    EXPECT_TRUE(room().environment.isStateValid(photo.pose.body_m)) << formatPoint(photo.pose.body_m);
+  }
+  EXPECT_GT(farthest_m, 0.9 * room_m);
+  EXPECT_GE(recheck(coarse_plan).regions.at(0).coveredReachableShare(), 0.99);
+  std::cout << "3 mm/px: " << coarse_plan.photos.size() << " photos (2 mm/px: " << fine_plan.photos.size()
+            << "), room " << formatNumber(room_m, 3) << " m, farthest " << formatNumber(farthest_m, 3) << " m\n";
 }
 
 TEST(CoveragePlan, CeilingModeHugsTheCeilingToPhotographTheBeam) {

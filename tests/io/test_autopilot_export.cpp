@@ -254,6 +254,21 @@ TEST(AutopilotExport, CameraSpeedAndYawCommandsWithEveryParameter) {
   EXPECT_EQ(k, items.size());
 }
 
+// Speeds from a flight record differ by rounding where nothing changes: a command only where the
+// speed moves 1 cm/s or more from the one last commanded, so slow drift still gets one.
+TEST(AutopilotExport, ChangesSpeedOnlyWhereItChangesByACentimetrePerSecond) {
+  AutopilotMission mission = bridgeSortie();
+  mission.waypoints[0].speed_m_s = 2.0 + 1e-12;  // cruise, by rounding
+  mission.waypoints[1].speed_m_s = 2.006;        // under 1 cm/s from the cruise commanded
+  mission.waypoints[2].speed_m_s = 2.012;        // 1.2 cm/s from it: commanded
+  mission.waypoints[3].speed_m_s = 0.5;
+  const nlohmann::json plan = qgcPlan(mission);
+  std::vector<double> commanded;
+  for (const auto& item : plan["mission"]["items"])
+    if (item["command"] == mav::kDoChangeSpeed) commanded.push_back(item["params"][1].get<double>());
+  EXPECT_EQ(commanded, (std::vector<double>{2.012, 0.5}));
+}
+
 TEST(AutopilotExport, FromARouteAndOrigin) {
   mission::SortieRoute route = bridgeSortie();
   route.sortie = 2;

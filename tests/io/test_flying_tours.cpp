@@ -29,8 +29,9 @@ namespace {
 const std::filesystem::path kMaps = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps";
 const std::filesystem::path kTours = CEILPLAN_TOURS_DIR;
 
-void flyShippedMission(const std::string& name) {
-  const MissionFacts facts = readMissionFacts(kMaps / (name + ".yaml"));
+// `mission_file`'s tour, planned by the fixture into kTours / name.
+void flyShippedMission(const std::string& name, const std::filesystem::path& mission_file) {
+  const MissionFacts facts = readMissionFacts(mission_file);
   const MapCheck map(facts);
   const std::vector<TourOutput> outputs = readTourOutputs(kTours / name, facts);
   ASSERT_EQ(outputs.size(), 2u);
@@ -64,10 +65,16 @@ void flyShippedMission(const std::string& name) {
   }
 }
 
+void flyShippedMission(const std::string& name) { flyShippedMission(name, kMaps / (name + ".yaml")); }
+
 TEST(ShippedTrajectories, Bridge) { flyShippedMission("bridge"); }
 TEST(ShippedTrajectories, Tunnel) { flyShippedMission("tunnel"); }
 TEST(ShippedTrajectories, Warehouse) { flyShippedMission("warehouse"); }
 TEST(ShippedTrajectories, Open) { flyShippedMission("open"); }
+// A coverage tour: photo stops, contact points and a point target (test_coverage_tour_files.cpp).
+TEST(ShippedTrajectories, CoverageStrip) {
+  flyShippedMission("bridge_strip", std::filesystem::path(CEILPLAN_SOURCE_DIR) / "tests/coverage/missions/bridge_strip.yaml");
+}
 
 // The bridge's ceiling-mode sortie, every format written and read back.
 class BridgeExports : public ::testing::Test {

@@ -25,7 +25,7 @@ TourCosts lineTour(const std::vector<double>& positions, double ah_per_m, double
   const std::size_t n = x.size();
   tour.names.push_back("home");
   for (std::size_t k = 1; k < n; ++k) tour.names.push_back("t" + std::to_string(k));
-  tour.legs.assign(n, std::vector<LegCost>(n));
+  tour.legs = PairTable<LegCost>(static_cast<int>(n));
   tour.dwells.assign(n, Dwell{dwell_s, dwell_a, std::nullopt});
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j) {
@@ -161,9 +161,10 @@ TEST(SortiePlan, ALoadProfileIsIntegratedAtTheSocTheSortieHasReached) {
   // same leg costs more flown second than first, because it starts lower.
   TourCosts rising = lineTour({50, 100}, 0.0, 0, 10);
   rising.current_at_soc = [](double load, double soc) { return load / (0.5 + soc); };
-  for (auto& row : rising.legs)
-    for (LegCost& leg : row)
-      if (leg.duration_s > 0) leg.load_profile = {{0, 10}, {leg.duration_s, 10}};
+  for (int from = 0; from < rising.legs.placeCount(); ++from)
+    for (int to = 0; to < rising.legs.placeCount(); ++to)
+      if (LegCost* leg = rising.legs.find(from, to); leg && leg->duration_s > 0)
+        leg->load_profile = {{0, 10}, {leg->duration_s, 10}};
   rising.dwells[1] = {120, 0, 10.0};
   rising.dwells[2] = {120, 0, 10.0};
   const Sortie sortie = planSorties(rising, {1, 2}, kBattery, model("fec")).sorties[0];

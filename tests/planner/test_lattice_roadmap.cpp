@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <limits>
 #include <stdexcept>
@@ -53,6 +54,29 @@ TEST(LatticeRoadmap, RoutesAcrossTheBeamCostWhatTheLatticeAStarFinds) {
     EXPECT_FALSE(room.rules.checkPathDensely(routes[to]->waypoints)) << from << " -> " << to;
   }
   EXPECT_FALSE(roadmap.routesFrom(0)[0]);  // no route from a place to itself
+}
+
+// A tour of many places asks for a few goals at a time: the search stops once it has reached
+// them (A* towards the nearest), and finds the routes the search to every place finds.
+TEST(LatticeRoadmap, RoutesToAFewGoalsCostWhatTheSearchToEveryPlaceFinds) {
+  BeamRoom room;
+  planner::LatticeRoadmap roadmap(room.planner.spaceInformation(), spacing(0.3));
+  roadmap.build(room.planner.objective(), room.places);
+  for (int from = 0; from < 3; ++from) {
+    const auto every = roadmap.routesFrom(from);
+    for (const std::vector<int>& goals : std::vector<std::vector<int>>{{0, 1, 2}, {(from + 1) % 3}, {(from + 2) % 3}}) {
+      const auto some = roadmap.routesFrom(from, goals);
+      for (int to = 0; to < 3; ++to) {
+        const bool asked = to != from && std::find(goals.begin(), goals.end(), to) != goals.end();
+        ASSERT_EQ(some[to].has_value(), asked) << from << " -> " << to;
+        if (!asked) continue;
+        // Edge costs are stored in single precision; the order of additions may differ.
+        EXPECT_NEAR(some[to]->cost, every[to]->cost, 1e-6 * every[to]->cost) << from << " -> " << to;
+        EXPECT_FALSE(room.rules.checkPathDensely(some[to]->waypoints)) << from << " -> " << to;
+      }
+    }
+  }
+  EXPECT_THROW(roadmap.routesFrom(0, {3}), ceilplan::InputError);
 }
 
 // Like PRM: built on the first query, kept across clearQuery(), each answer what routesFrom

@@ -49,6 +49,26 @@ TEST(PathEvaluation, CountsCoulombsLikeTheBatterySimulator) {
   EXPECT_LT(e.charge_ah, planned.charge_ah * 1.05);
 }
 
+// A camera shooting on the move caps the speed (docs/coverage.md): every sample at or below the
+// cap, so the flight takes at least length / cap, and hovering longer draws more charge.
+TEST(PathEvaluation, HonoursASpeedCap) {
+  const environment::OccupancyMap map = corridor(flatCeiling);
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const planner::FlightCostModel model(environment, energy, planner::CostModelOptions{});
+  const battery::Pack pack;
+  const std::vector<Eigen::Vector3d> path{{0.5, 0.0, 2.0}, {5.5, 0.0, 2.0}, {5.5, 1.0, 3.4}};
+  const planner::PathEvaluation free = planner::evaluatePath(model, pack, 0.9, path);
+  const planner::PathEvaluation capped = planner::evaluatePath(model, pack, 0.9, path, 0.4);
+  for (const planner::PathSample& s : capped.samples) EXPECT_LE(s.speed_m_s, 0.4 + 1e-12);
+  EXPECT_GE(capped.duration_s, capped.length_m / 0.4 - 1e-9);
+  EXPECT_GT(capped.charge_ah, free.charge_ah);
+  EXPECT_DOUBLE_EQ(capped.length_m, free.length_m);
+  // A cap above every speed the model flies changes nothing.
+  EXPECT_DOUBLE_EQ(planner::evaluatePath(model, pack, 0.9, path, 100.0).charge_ah, free.charge_ah);
+  EXPECT_THROW(planner::evaluatePath(model, pack, 0.9, path, 0.0), ceilplan::InputError);
+}
+
 TEST(PathEvaluation, RefusesPathsItCannotScore) {
   const environment::OccupancyMap map = corridor(flatCeiling);
   const environment::Environment environment(map, quad());

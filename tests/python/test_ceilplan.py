@@ -77,3 +77,36 @@ def test_tour_matches_the_command_line(tmp_path):
     tour.write(tmp_path / "py")
     written = json.loads((tmp_path / "py" / "tour.json").read_text())
     assert written["charge_ah"] == cli["charge_ah"]
+    assert tour.photos is None and tour.coverage is None  # point targets only
+
+
+def test_coverage_tour_exposes_its_photos_and_coverage(tmp_path):
+    # A strip of the bridge's soffit at 1 mm/px, contact points and a target (tests/coverage/missions).
+    mission = ceilplan.Mission.load(SOURCE / "tests/coverage/missions/bridge_strip.yaml")
+    assert mission.surfaces == ["strip"]
+    assert mission.contact_grids == ["probe"]
+    tour = ceilplan.plan_tour(mission, mode="ceiling")
+    photos = tour.photos
+    n = len(photos["index"])
+    assert n > 5
+    assert list(photos["index"]) == list(range(1, n + 1))
+    assert set(photos["region"]) == {"strip"}
+    assert np.all(np.diff(photos["t_s"]) > 0.0)
+    assert np.all(photos["gsd_mm_px"] <= 1.0)
+    assert np.all((photos["gimbal_pitch_deg"] >= -30.0) & (photos["gimbal_pitch_deg"] <= 90.0))
+    (region,) = tour.coverage["regions"]
+    assert region["name"] == "strip"
+    assert region["photos"] == n
+    assert region["covered_reachable_pct"] >= 99.0
+    # The same photos and coverage as the files `ceilplan tour` writes.
+    tour.write(tmp_path / "strip")
+    rows = (tmp_path / "strip" / "photos.csv").read_text().splitlines()
+    assert rows[0] == "index,sortie,t_s,x,y,z,yaw_deg,gimbal_pitch_deg,distance_m,gsd_mm_px,region"
+    assert len(rows) == n + 1
+    for k, row in enumerate(rows[1:]):
+        fields = row.split(",")
+        assert int(fields[1]) == photos["sortie"][k]
+        assert float(fields[3]) == pytest.approx(photos["x"][k], abs=5e-4)
+        assert float(fields[5]) == pytest.approx(photos["z"][k], abs=5e-4)
+        assert float(fields[6]) == pytest.approx(photos["yaw_deg"][k], abs=5e-3)
+    assert json.loads((tmp_path / "strip" / "coverage.json").read_text()) == tour.coverage

@@ -21,6 +21,7 @@
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
 
+#include "ceilplan/mission/coverage_plan.hpp"
 #include "ceilplan/mission/mission.hpp"
 #include "ceilplan/mission/planning_context.hpp"
 #include "ceilplan/mission/route_planning.hpp"
@@ -28,6 +29,7 @@
 
 #include "ceilplan/io/autopilot_export.hpp"
 #include "ceilplan/io/calibration_file.hpp"
+#include "ceilplan/io/coverage_output.hpp"
 #include "ceilplan/io/duty_study_files.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/map_import.hpp"

@@ -5,7 +5,7 @@
 // the vehicle arms there.
 //
 // Item sequence, per waypoint (docs/flying.md): MAV_CMD_DO_CHANGE_SPEED (178) where the speed
-// into it differs from the speed before; MAV_CMD_DO_GIMBAL_MANAGER_PITCHYAW (1000) where the
+// into it differs from the speed last commanded by 1 cm/s or more; MAV_CMD_DO_GIMBAL_MANAGER_PITCHYAW (1000) where the
 // gimbal pitch changes, so the gimbal turns on the way; MAV_CMD_NAV_WAYPOINT (16) with the hold
 // time and the heading in effect as yaw; then MAV_CMD_IMAGE_START_CAPTURE (2000) for a photo
 // (after the hold, so the vehicle has settled) and MAV_CMD_DO_SET_CAM_TRIGG_DIST (206) where a

@@ -6,6 +6,7 @@
 
 #include "ceilplan/mission/coverage_check.hpp"
 #include "ceilplan/mission/coverage_plan.hpp"
+#include "ceilplan/mission/tour_planner.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -18,21 +19,9 @@
 
 namespace ceilplan::io {
 
-// One row of photos.csv.
-struct PhotoRow {
-  int index = 0;                  // 1-based, in flying order
-  std::optional<int> sortie;      // 1-based; empty until a tour assigns it
-  std::optional<double> t_s;      // when the photo is taken, from the first take-off; empty until a tour times it
-  Eigen::Vector3d camera_m = Eigen::Vector3d::Zero();  // the camera's optical centre, map frame
-  double yaw_deg = 0.0;           // heading, clockwise from north
-  double gimbal_pitch_deg = 0.0;  // +90 straight up
-  double distance_m = 0.0;        // area-weighted mean distance to the surface it covers
-  double gsd_mm_px = 0.0;         // area-weighted mean GSD over the surface it covers
-  std::string region;
-};
-
-// The plan's photos in its order, sortie and time left empty.
-std::vector<PhotoRow> photoRows(const mission::CoveragePlan& plan);
+// One row of photos.csv, and the plan's photos as rows (mission/coverage_plan.hpp).
+using mission::PhotoRow;
+using mission::photoRows;
 
 // Header `index,sortie,t_s,x,y,z,yaw_deg,gimbal_pitch_deg,distance_m,gsd_mm_px,region`, then one
 // line per row: positions and distances in metres to the millimetre, angles to 0.01 deg, GSD to
@@ -48,8 +37,34 @@ std::string photosCsv(const std::vector<PhotoRow>& rows);
 // Throws ceilplan::InputError when the check does not match the plan's regions.
 nlohmann::json coverageJson(const mission::CoveragePlan& plan, const mission::CoverageCheck& check);
 
+// coverage_elements.csv, for the coverage figures (scripts/plot-coverage): header
+// `region,x,y,z,nx,ny,nz,area_m2,reachable,covered,best_gsd_mm_px,views`, one line per surface
+// element of every region: its face centre (m, to the millimetre) and unit normal, its area, 1 or
+// 0 for reachable (some valid pose could cover it) and covered (by the re-check), the best GSD
+// of the photos seeing it anywhere in the frame (empty if none does) and how many photos see it
+// at or below the required GSD and incidence. Throws ceilplan::InputError as coverageJson does.
+std::string coverageElementsCsv(const mission::CoveragePlan& plan, const mission::CoverageCheck& check);
+
 // Both written atomically (whole or not at all).
 void writePhotosCsv(const std::filesystem::path& file, const std::vector<PhotoRow>& rows);
 void writeCoverageJson(const std::filesystem::path& file, const nlohmann::json& coverage);
+
+// A coverage tour's files in its directory: photos.csv (the photos as flown, with sortie and
+// time), coverage.json (the plan with the re-check of the photos flown) and
+// coverage_elements.csv (each element as the re-check found it). Throws
+// ceilplan::InputError when the tour has no coverage plan.
+void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourResult& tour);
+
+// tour.json's "coverage": photos, route_m, and per region name, area_m2, reachable_area_m2,
+// covered_area_m2, covered_pct, covered_reachable_pct, unreachable_area_m2, mean_gsd_mm_px.
+nlohmann::json coverageSummaryJson(const mission::TourResult& tour);
+
+// Both modes' coverage side by side (rows of the comparison table: photos, route length,
+// coverage of the reachable surface, mean GSD) and as comparison.json's "coverage".
+std::string coverageComparisonRows(const mission::TourResult& ceiling, const mission::TourResult& free);
+nlohmann::json coverageComparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free);
+
+// Length of the route flown (every leg of every sortie), metres.
+double routeLength_m(const mission::TourResult& tour);
 
 }  // namespace ceilplan::io

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,24 @@ struct CoveragePlanOptions {
   // Progress of the long phases: (phase name, fraction of that phase). Never prints.
   std::function<void(const std::string&, double)> progress;
 };
+
+// One photo as flown: a row of photos.csv (docs/coverage.md, "Outputs").
+struct PhotoRow {
+  int index = 0;                  // 1-based, in flying order
+  std::optional<int> sortie;      // 1-based; empty until a tour assigns it
+  std::optional<double> t_s;      // when the photo is taken, from the first take-off; empty until a tour times it
+  Eigen::Vector3d camera_m = Eigen::Vector3d::Zero();  // the camera's optical centre, map frame
+  double yaw_deg = 0.0;           // heading, clockwise from north
+  double gimbal_pitch_deg = 0.0;  // +90 straight up
+  double distance_m = 0.0;        // area-weighted mean distance to the surface it covers
+  double gsd_mm_px = 0.0;         // area-weighted mean GSD over the surface it covers
+  std::string region;
+};
+
+// The row of photo `k` of the plan, numbered `index`, sortie and time left empty.
+PhotoRow photoRow(const CoveragePlan& plan, std::size_t k, int index);
+// The plan's photos in its order, sortie and time left empty.
+std::vector<PhotoRow> photoRows(const CoveragePlan& plan);
 
 // Plans the views of every region. `cost_model` is the mode's (free mode: proximity effects
 // off, as a conventional planner prices hover) and must be built on `environment`.

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace ceilplan::mission {
@@ -60,6 +61,7 @@ struct ViewGenerationOptions {
   // Rotors never come closer than this to the surface above (as the tour's viewpoints).
   double min_ceiling_gap_m = 0.03;
   int distance_levels = 4;          // camera distances per seed, geometric from the GSD's reach down to min focus
+                                    // (and as many within the room in front of the surface, where that is shorter)
   double seed_spacing_share = 0.5;  // seeds every this share of the covered footprint at each distance
   double tilt_share = 0.6;          // lattice tilts: this share of the region's max incidence
   int workers = 2;
@@ -68,7 +70,17 @@ struct ViewGenerationOptions {
 
 // The distance levels of a region (largest first): from where the whole covered part of an
 // image meets the GSD down to the minimum focus distance. Throws via checkCameraReaches.
-std::vector<double> distanceLevels(const Camera& camera, const CoverageRegion& region, int levels);
+// With `room_m`, the farthest level is at most that far (never nearer than the nearest level):
+// a coarse GSD whose reach lies beyond the floor keeps its levels where a pose can fit.
+std::vector<double> distanceLevels(const Camera& camera, const CoverageRegion& region, int levels,
+                                   double room_m = std::numeric_limits<double>::infinity());
+
+// How far from a region's surface a camera can stand: the median, over its elements, of the run
+// of known free voxels along each element's normal, less how far the inflated airframe and the
+// mount offset reach beyond the camera along it (the body must fit there too); at most `far_m`
+// is looked for.
+double roomInFront_m(const environment::Environment& environment, const Camera& camera, const RegionSurface& surface,
+                     double far_m);
 
 // Heading (deg from north, [0, 180)) of the region's long horizontal axis: vertical views are
 // yawed along it, so passes along the region fly along the image height (front overlap).

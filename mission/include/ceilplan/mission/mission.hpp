@@ -1,9 +1,12 @@
 #pragma once
 // An inspection mission: the map, the vehicle, the battery, home, where the map lies on the
-// Earth, the speed rules and what to inspect. Read from a mission file by io::readMission
+// Earth, the speed rules and what to inspect: point targets, surfaces to photograph and contact
+// grids (a coverage mission: docs/coverage.md). Read from a mission file by io::readMission
 // (docs/missions.md).
 
 #include "ceilplan/mission/battery_spec.hpp"
+#include "ceilplan/mission/camera.hpp"
+#include "ceilplan/mission/coverage_region.hpp"
 #include "ceilplan/mission/geodetic_origin.hpp"
 #include "ceilplan/mission/trajectory.hpp"
 #include "ceilplan/mission/vehicle.hpp"
@@ -42,6 +45,13 @@ struct Mission {
   TrajectoryOptions trajectory;       // time scaling of the flown routes (key `trajectory:`, docs/flying.md)
   bool trajectory_ned = false;        // trajectory files in NED instead of the map's ENU
   std::vector<InspectionTarget> targets;
+  // Coverage (docs/coverage.md): surfaces photographed with the camera, contact grids probed.
+  std::optional<Camera> camera;             // required by surfaces
+  std::vector<CoverageRegion> surfaces;
+  std::vector<ContactGrid> contact_grids;
+
+  // A coverage mission: it has surfaces or contact grids (point targets may come along).
+  bool isCoverage() const { return !surfaces.empty() || !contact_grids.empty(); }
 
   // A name for messages: the mission file, or "mission".
   std::string name() const { return file.empty() ? std::string("mission") : file.string(); }

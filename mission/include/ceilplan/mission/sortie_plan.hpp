@@ -8,6 +8,7 @@
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/pack.hpp"
 #include "ceilplan/mission/battery_spec.hpp"
+#include "ceilplan/mission/pair_table.hpp"
 #include "ceilplan/mission/soc_integrator.hpp"
 #include "ceilplan/core/error.hpp"
 
@@ -38,7 +39,9 @@ struct Dwell {
 // Everything indexed like the tour's cost matrix: 0 is home, 1..N the targets.
 struct TourCosts {
   std::vector<std::string> names;        // names[0] is home's, e.g. "home"
-  std::vector<std::vector<LegCost>> legs;  // legs[i][j]: flying from i to j
+  // legs[i][j]: flying from i to j. Only the legs a split can fly are needed: between
+  // neighbours in the order, and out of home and back where a sortie may start and end.
+  PairTable<LegCost> legs;
   std::vector<Dwell> dwells;             // dwells[0] is ignored
   CurrentAtSoc current_at_soc;           // unset: loads are currents
 
@@ -50,6 +53,9 @@ struct TourCosts {
 struct SortieOptions {
   std::string ageing_model = "xu";  // battery::ageingModelNames()
   battery::AgeingModelOptions ageing;
+  // Positions in the order (0-based) where a sortie may start; 0 always may. Empty: every
+  // position. A tour of thousands of stops allows a few hundred (docs/tours.md, "Large tours").
+  std::vector<int> split_points;
 };
 
 struct SortieLeg {
@@ -95,10 +101,13 @@ struct SortiePlan {
 };
 
 // Chooses the sorties by dynamic programming over split points of `order` (matrix indices of
-// the targets in visiting order): O(N^2) candidate sorties, each priced by feeding its SOC
-// history (discharge, then recharge to the start SOC) to a fresh ageing model. Ties go to fewer
-// sorties. Throws ceilplan::InputError for bad input, and naming every target that no single
-// sortie can reach, inspect and return from above the reserve.
+// the targets in visiting order): O(P^2) candidate sorties for P split points, each priced by
+// feeding its SOC history (discharge, then recharge to the start SOC) to a fresh ageing model;
+// a candidate whose legs and dwells alone, at the start SOC, already use more than the charge
+// between the start SOC and the reserve is skipped unflown. Ties go to fewer sorties. Throws
+// ceilplan::InputError for bad input, and ceilplan::InfeasibleError naming every target that no
+// single sortie can reach, inspect and return from above the reserve (with split points: every
+// target of a stretch between two of them that no sortie can fly).
 SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
                        const SortieOptions& options = {});
 

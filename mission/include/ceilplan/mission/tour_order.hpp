@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,34 @@ TourOrder heuristicTour(const CostMatrix& costs, std::uint64_t seed, int restart
 
 // Held-Karp up to options.exact_max_targets targets, the heuristic beyond.
 TourOrder orderTour(const CostMatrix& costs, const TourOrderOptions& options = {});
+
+// A tour of many places (docs/tours.md, "Large tours"), where a full cost matrix is out of
+// reach: `cost(i, j)` is asked only for the pairs the search examines (from this thread; it may
+// route a leg on first use, so it should cache), and moves only join a place to one of its
+// `neighbours` (indexed 0..N like the places, each list nearest first; home may appear). A move
+// is first priced with `bound(i, j)`, a cheap lower bound on cost(i, j) (the cost itself where it
+// is known), and priced exactly only if that might gain. From each of `starts` (orders of the
+// targets 1..N), 2-opt and Or-opt moves (stretches of 1 to 3 targets, either way round,
+// asymmetric costs priced as in heuristicTour) are applied in sweeps over the tour until a sweep
+// finds none; the cheapest result wins (the first on a tie). Then `kicks` rounds of a double
+// bridge within a window of 3 x `kick_window` positions (chosen at random from `seed`), each
+// followed by the same local search, keeping the result when it is cheaper (iterated local
+// search). Deterministic for a seed. Throws ceilplan::InputError for bad starts or lists.
+using PairCost = std::function<double(int from, int to)>;
+TourOrder neighbourListTour(int target_count, const PairCost& cost, const PairCost& bound,
+                            const std::vector<std::vector<int>>& neighbours, const std::vector<std::vector<int>>& starts,
+                            int kicks = 0, std::uint64_t seed = 1, int kick_window = 10);
+
+// The `k` nearest other places of each place by straight-line distance (ties by index), nearest
+// first: every leg is at least that long, so its charge is at least the distance times the least
+// charge per metre the vehicle can fly (FlightCostModel::minCostPerMetre), and ranking by
+// distance ranks by that bound. Scans outwards in x order, near-linear for spread-out places.
+std::vector<std::vector<int>> nearestPlaces(const std::vector<Eigen::Vector3d>& places_m, int k);
+
+// A nearest-neighbour order of the targets 1..N from home, moving to the nearest unvisited of the
+// current place's `neighbours`, else the nearest unvisited of all (straight-line distance).
+std::vector<int> nearestNeighbourOrder(const std::vector<Eigen::Vector3d>& places_m,
+                                       const std::vector<std::vector<int>>& neighbours);
 
 // Throws ceilplan::InputError unless `costs` is square, at least 1 x 1, with finite,
 // non-negative entries.

@@ -1,11 +1,17 @@
 #pragma once
-// One inspection tour in one mode, end to end: viewpoints, legs between every pair of places
-// (home and the viewpoints), the visiting order, the sorties, the flown samples, the wear under
-// every ageing model and the founding paper's month-long duty projection. docs/tours.md.
+// One inspection tour in one mode, end to end: the stops (a viewpoint per point target and per
+// contact point; in a coverage mission, a fixed pose per photo of the coverage plan), legs
+// between the places (home and the stops: every pair in a small tour, near neighbours and what
+// the plan flies in a large one), the visiting order, the sorties, the flown samples, the wear
+// under every ageing model and the founding paper's month-long duty projection; for coverage,
+// the photos as flown and the independent re-check of what they cover. docs/tours.md,
+// docs/coverage.md.
 
 #include "ceilplan/battery/duty_cycle.hpp"
 #include "ceilplan/core/progress.hpp"
 #include "ceilplan/environment/map_index.hpp"
+#include "ceilplan/mission/coverage_check.hpp"
+#include "ceilplan/mission/coverage_plan.hpp"
 #include "ceilplan/mission/flight_mode.hpp"
 #include "ceilplan/mission/flight_record.hpp"
 #include "ceilplan/mission/mission.hpp"
@@ -46,13 +52,43 @@ struct TourOptions {
   int days = 30;
   double idle_min = 5.0;
   double charge_max_min = 60.0;  // per sortie, back to the start SOC
-  ProgressCallback progress;     // stages: the roadmap, routing, refining
+  // Large tours (docs/tours.md, "Large tours"). Up to `all_pairs_max_places` places (home and
+  // the stops) a leg joins every pair, as above. Beyond, the order search moves each place only
+  // next to its `neighbours` nearest (straight-line distance), legs are estimated (the straight
+  // line, scored) where the search looks and routed once a plan flies them, and sorties may
+  // start at `split_points` evenly spaced positions of the order and around the best of them.
+  // `order_kicks` rounds of iterated local search (segment double bridges, from `seed`) follow
+  // the first local search: on the bridge soffit 100 of them save 0.6 % of the charge and take
+  // about as long again as the search.
+  int all_pairs_max_places = 32;
+  int neighbours = 10;
+  int split_points = 60;
+  int order_kicks = 0;
+  ProgressCallback progress;     // stages: coverage views, the roadmap, routing, refining
 };
 
 struct TourStop {
-  InspectionTarget target;  // its standoff range as searched in this mode
+  InspectionTarget target;  // its standoff range as searched in this mode; a photo: its aim point and hold
   Viewpoint viewpoint;
   planner::PathSample hover;  // hovering at the viewpoint under the full model (the record's dwell)
+  // A photo stop: its index in TourResult::coverage->photos. The pose is the plan's (position,
+  // yaw, gimbal pitch), never searched again; the hold is the capture's stop (0 on the move).
+  std::optional<std::size_t> photo;
+  std::optional<double> yaw_deg;         // heading at the stop (photos; none: aim at the target)
+  std::optional<double> gimbal_pitch_deg;
+  std::optional<double> max_speed_m_s;   // on the move: no faster than this from this photo to the next
+};
+
+// Seconds spent per phase of planTour.
+struct TourTimes {
+  double stops_s = 0.0;     // coverage views and viewpoints
+  double legs_s = 0.0;      // every pair, or the neighbours' estimates
+  double order_s = 0.0;     // visiting order and sortie split, every round
+  double routing_s = 0.0;   // large tours: the legs a plan flies, routed (the roadmap built on first need)
+  double refining_s = 0.0;  // post-processing the legs flown
+  double record_s = 0.0;    // dense re-check, flight record, wear, duty
+  double coverage_check_s = 0.0;  // the independent re-check of the photos flown
+  int rounds = 0;           // order-split-refine rounds
 };
 
 // The founding paper's month for a tour: a report, never a reason to abort the plan.
@@ -70,7 +106,7 @@ struct TourResult {
   std::vector<std::string> names;             // places: 0 home, k the target of stops[k - 1]
   std::vector<Eigen::Vector3d> places_m;
   std::vector<TourStop> stops;
-  std::vector<std::vector<TourLeg>> legs;     // legs[i][j], i != j
+  LegTable legs;                              // legs[i][j]: every pair, or those a large tour looked at
   TourOrder order;
   SortiePlan plan;
   FlightRecord record;                // what the plan flies, sample by sample
@@ -84,10 +120,18 @@ struct TourResult {
   environment::UnknownSpaceSummary unknown_summary;    // what it assumed free in the map
   double assumed_free_m = 0.0;                         // of the flown route, relying on the policy
   std::optional<TourStandoff> standoff;  // free mode: where the conventional standoff was not kept
+  // A coverage tour (the mission has surfaces): the views planned in this mode, the photos as
+  // flown (flying order, with sortie and time of the shot) and the independent re-check of them.
+  std::optional<CoveragePlan> coverage;
+  std::vector<PhotoRow> photos;
+  std::optional<CoverageCheck> coverage_check;
+  TourTimes times;
 };
 
-// Plans the mission's tour in one mode with the context's map, vehicle and battery. Throws
-// ceilplan::InputError for an invalid home or a target without a viewpoint (named),
+// Plans the mission's tour in one mode with the context's map, vehicle and battery: its point
+// targets, contact grid points and, with surfaces, the photos of planCoverage in this mode.
+// Throws ceilplan::InputError for an invalid home, a target without a viewpoint (named), a bad
+// camera or region (planCoverage),
 // ceilplan::NoPathError for a leg without a path (naming both places),
 // ceilplan::InfeasibleError for a target no single sortie can reach and return from,
 // ceilplan::Error if a leg fails the dense re-check.

@@ -11,20 +11,26 @@
 
 #include <Eigen/Core>
 
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace ceilplan::mission {
 
-// A place a sortie stops at: its name, the point inspected and the dwell.
+// A place a sortie stops at: its name, the point inspected and the dwell; for a coverage photo,
+// the heading and gimbal pitch it was planned with (docs/coverage.md).
 struct RouteStop {
   std::string name;
   Eigen::Vector3d point_m = Eigen::Vector3d::Zero();
   double dwell_s = 0.0;
+  std::optional<double> yaw_deg;
+  std::optional<double> gimbal_pitch_deg;
 };
 
 // Each sortie's waypoints: every flown leg's waypoints after its first; at a stop's viewpoint a
-// hold of its dwell, the camera aimed at its point and a photo; each waypoint's speed the
-// slowest the leg's evaluation flies on the segment leaving it. `stops[k - 1]` is place k.
+// hold of its dwell, the camera aimed at its point (or set to a photo's planned heading and
+// pitch) and a photo; each waypoint's speed the slowest the leg's evaluation flies on the
+// segment leaving it (a photo's speed cap on the move shows there). `stops[k - 1]` is place k.
 std::vector<SortieRoute> sortieRoutes(const SortiePlan& plan, const LegTable& legs, const std::vector<RouteStop>& stops,
                                       const Mission& mission);
 

@@ -46,6 +46,9 @@ class LatticeRoadmap : public LatticePlannerBase {
   // The cheapest roadmap route from place `from` to every place; entry `from`, and places the
   // roadmap does not join, stay empty. Safe to call from several threads at once.
   std::vector<std::optional<RoadmapRoute>> routesFrom(int from) const;
+  // The same for the places `goals` only (other entries stay empty): the search stops once it
+  // has reached them, so near goals cost a search of their neighbourhood only.
+  std::vector<std::optional<RoadmapRoute>> routesFrom(int from, const std::vector<int>& goals) const;
   // For two places the roadmap does not join: where the way between their parts of the map is
   // blocked, and by which rule; nothing for places it joins.
   std::optional<Blockage> blockage(int from, int to) const;
@@ -100,8 +103,10 @@ class LatticeRoadmap : public LatticePlannerBase {
   std::uint32_t addVertex(const Eigen::Vector3d& position_m);
   Eigen::Vector3d statePosition(std::uint32_t state) const;
   float coreCost(std::uint32_t node, int direction) const;
+  // From place `from` to `goals` (every other place when empty).
   std::vector<std::optional<RoadmapRoute>> search(const std::vector<Eigen::Vector3d>& places_m,
-                                                  const std::vector<Place>& places, int from) const;
+                                                  const std::vector<Place>& places, int from,
+                                                  const std::vector<int>& goals = {}) const;
 
   void settingsChanged() override { clear(); }
 

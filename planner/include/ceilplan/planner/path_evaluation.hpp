@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <vector>
 
 namespace ceilplan::planner {
@@ -44,12 +45,14 @@ struct PathEvaluation {
   MotionTotals totals() const { return {length_m, duration_s, charge_ah}; }
 };
 
-// A path whose waypoints all coincide (a tour's two targets seen from the same place) is no
-// flight: one sample, hovering there, and zero length, time and charge.
-// Throws ceilplan::InputError for fewer than 2 waypoints or a start SOC outside (0, 1],
-// ceilplan::InputError for a waypoint outside the map, battery::DepletionError if the pack would
-// run below its floor.
+// Flown at the model's speeds, or no faster than `max_speed_m_s` along the path (a camera
+// shooting on the move: docs/coverage.md). A path whose waypoints all coincide (a tour's two
+// targets seen from the same place) is no flight: one sample, hovering there, and zero length,
+// time and charge. Throws ceilplan::InputError for fewer than 2 waypoints, a start SOC outside
+// (0, 1] or a speed cap that is not positive, ceilplan::InputError for a waypoint outside the
+// map, battery::DepletionError if the pack would run below its floor.
 PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
-                            const std::vector<Eigen::Vector3d>& waypoints_m);
+                            const std::vector<Eigen::Vector3d>& waypoints_m,
+                            double max_speed_m_s = std::numeric_limits<double>::infinity());
 
 }  // namespace ceilplan::planner

@@ -1,0 +1,90 @@
+// Coverage tours end to end, as `ceilplan tour` plans them (mission::planTour): the views, the
+// stops, the legs between near neighbours, the order, the sorties, the flight record, wear and
+// duty, and the independent re-check of the photos flown, with the phase split as counters.
+//   BM_FullBridgeSoffitTour/0 and /1: the full soffit of the shipped bridge (every downward face
+//     of the superstructure, 1 mm/px, 70 % / 60 % overlap, the camera of
+//     maps/coverage/bridge_soffit.yaml) in ceiling and free mode. Target: under 60 s.
+//   BM_LongDeckSoffitTour/0 and /1: the soffit between the girders of a generated 200 m bridge
+//     (ceilplan mapgen --scene bridge --bridge-length-m 200), same camera. Target: under 10 min.
+// Map loading and indexing (the PlanningContext) happen outside the timed loop. docs/coverage.md,
+// "Speed".
+
+#include "ceilplan/environment/scenes.hpp"
+#include "ceilplan/environment/voxel_grid.hpp"
+#include "ceilplan/io/coverage_output.hpp"
+#include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/mission/tour_planner.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <memory>
+
+namespace {
+
+using namespace ceilplan;
+
+mission::Mission soffitMission(const Eigen::Vector3d& min_m, const Eigen::Vector3d& max_m) {
+  mission::Mission mission =
+      io::readMission(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/coverage/bridge_soffit.yaml");
+  mission.surfaces.at(0).name = "soffit";
+  mission.surfaces.at(0).shape = mission::RegionShape::makeBox(min_m, max_m);
+  return mission;
+}
+
+void report(benchmark::State& state, const mission::TourResult& tour) {
+  state.SetLabel(mission::flightModeName(tour.mode));
+  const mission::RegionCoverageCheck& check = tour.coverage_check->regions.at(0);
+  state.counters["photos"] = static_cast<double>(tour.photos.size());
+  state.counters["sorties"] = static_cast<double>(tour.plan.sorties.size());
+  state.counters["charge_ah"] = tour.plan.charge_ah;
+  state.counters["route_m"] = io::routeLength_m(tour);
+  state.counters["area_m2"] = check.area_m2;
+  state.counters["covered_reachable_pct"] = 100.0 * check.coveredReachableShare();
+  state.counters["unreachable_m2"] = check.unreachable_area_m2;
+  state.counters["legs_stored"] = static_cast<double>(tour.legs.size());
+  const mission::CoverageTimes& views = tour.coverage->times;
+  state.counters["views_s"] = views.surfaces_s + views.candidates_s + views.costs_s;  // elements, candidates, prices
+  state.counters["selection_s"] = views.selection_s + views.passes_s;                 // set cover and passes
+  const mission::TourTimes& t = tour.times;
+  state.counters["stops_s"] = t.stops_s;
+  state.counters["legs_s"] = t.legs_s;
+  state.counters["order_s"] = t.order_s;
+  state.counters["routing_s"] = t.routing_s;
+  state.counters["refining_s"] = t.refining_s;
+  state.counters["record_s"] = t.record_s;
+  state.counters["check_s"] = t.coverage_check_s;
+  state.counters["rounds"] = t.rounds;
+}
+
+void runTour(benchmark::State& state, const mission::Mission& mission, const mission::PlanningContext& context) {
+  const mission::FlightMode mode = state.range(0) == 0 ? mission::FlightMode::Ceiling : mission::FlightMode::Free;
+  mission::TourOptions options;
+  options.seed = mission.seed;
+  mission::TourResult tour;
+  for (auto _ : state) tour = mission::planTour(mission, context, mode, options);
+  report(state, tour);
+}
+
+void BM_FullBridgeSoffitTour(benchmark::State& state) {
+  static const mission::Mission mission = soffitMission({-2.0, -5.5, 4.95}, {50.0, 5.5, 6.05});
+  static const mission::PlanningContext context(mission);
+  runTour(state, mission, context);
+}
+BENCHMARK(BM_FullBridgeSoffitTour)->Arg(0)->Arg(1)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+
+void BM_LongDeckSoffitTour(benchmark::State& state) {
+  constexpr double kLength_m = 200.0;
+  static const mission::Mission mission = soffitMission({0.0, -4.0, 5.95}, {kLength_m, 4.0, 6.05});
+  static const mission::PlanningContext context = [] {
+    environment::SceneOptions scene;
+    scene.bridge_length_m = kLength_m;
+    environment::OccupancyMap map(environment::toOcTree(environment::generateScene(environment::Scene::Bridge, scene)),
+                                  "bridge 200 m (generated)");
+    return mission::PlanningContext(std::move(map), mission.vehicle, mission.battery, mission::planningOptions(mission));
+  }();
+  runTour(state, mission, context);
+}
+BENCHMARK(BM_LongDeckSoffitTour)->Arg(0)->Arg(1)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+
+}  // namespace

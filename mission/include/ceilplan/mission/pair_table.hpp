@@ -1,0 +1,81 @@
+#pragma once
+// Values for ordered pairs of a tour's places (legs, leg costs), stored sparsely: a tour of a
+// few places keeps every pair, a tour of thousands keeps only the pairs it routes (near
+// neighbours, home, what the plan flies). Indexed like a matrix, `table[from][to]`: reading a
+// pair that is not stored throws std::out_of_range, writing one stores it. docs/tours.md,
+// "Large tours".
+
+#include <cstddef>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ceilplan::mission {
+
+template <class Value>
+class PairTable {
+ public:
+  PairTable() = default;
+  explicit PairTable(int place_count) : rows_(static_cast<std::size_t>(place_count)) {}
+
+  int placeCount() const { return static_cast<int>(rows_.size()); }
+  // Pairs stored.
+  std::size_t size() const {
+    std::size_t count = 0;
+    for (const auto& row : rows_) count += row.size();
+    return count;
+  }
+  bool contains(int from, int to) const { return find(from, to) != nullptr; }
+  // The stored value, or null.
+  const Value* find(int from, int to) const {
+    const auto& row = rows_.at(static_cast<std::size_t>(from));
+    const auto it = row.find(to);
+    return it == row.end() ? nullptr : &it->second;
+  }
+  Value* find(int from, int to) {
+    auto& row = rows_.at(static_cast<std::size_t>(from));
+    const auto it = row.find(to);
+    return it == row.end() ? nullptr : &it->second;
+  }
+  const Value& at(int from, int to) const {
+    if (const Value* value = find(from, to)) return *value;
+    throw std::out_of_range("no entry from place " + std::to_string(from) + " to place " + std::to_string(to));
+  }
+  // Stores a default value if the pair is not stored yet. References stay valid while other
+  // pairs are added, so several threads may fill cells stored beforehand, one cell each.
+  Value& operator()(int from, int to) { return rows_.at(static_cast<std::size_t>(from))[to]; }
+
+  // The stored pairs out of a place, by destination.
+  const std::map<int, Value>& row(int from) const { return rows_.at(static_cast<std::size_t>(from)); }
+
+  class ConstRow {
+   public:
+    explicit ConstRow(const std::map<int, Value>& row, int from) : row_(&row), from_(from) {}
+    const Value& operator[](int to) const {
+      const auto it = row_->find(to);
+      if (it == row_->end())
+        throw std::out_of_range("no entry from place " + std::to_string(from_) + " to place " + std::to_string(to));
+      return it->second;
+    }
+
+   private:
+    const std::map<int, Value>* row_;
+    int from_;
+  };
+  class Row {
+   public:
+    explicit Row(std::map<int, Value>& row) : row_(&row) {}
+    Value& operator[](int to) { return (*row_)[to]; }
+
+   private:
+    std::map<int, Value>* row_;
+  };
+  ConstRow operator[](int from) const { return ConstRow(rows_.at(static_cast<std::size_t>(from)), from); }
+  Row operator[](int from) { return Row(rows_.at(static_cast<std::size_t>(from))); }
+
+ private:
+  std::vector<std::map<int, Value>> rows_;
+};
+
+}  // namespace ceilplan::mission
