@@ -8,7 +8,6 @@
 #include "map_options.hpp"
 #include "output.hpp"
 
-#include "ceilplan/io/coverage_output.hpp"
 #include "ceilplan/io/mission_file.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/provenance.hpp"
@@ -40,26 +39,6 @@ struct TourArguments {
   UnknownSpaceFlags unknown;  // given: overrides the mission's `unknown:`
   mission::TourOptions options;
 };
-
-// What a coverage tour covers (by the independent re-check of the photos flown) and where the
-// time went.
-void printCoverage(const mission::TourResult& tour) {
-  const mission::TourTimes& t = tour.times;
-  std::printf("  phases: stops %.1f s, legs %.1f s, order and split %.1f s, routing %.1f s, refining %.1f s, record %.1f s",
-              t.stops_s, t.legs_s, t.order_s, t.routing_s, t.refining_s, t.record_s);
-  if (tour.coverage) std::printf(", coverage re-check %.1f s", t.coverage_check_s);
-  std::printf(" (%d rounds)\n", t.rounds);
-  if (!tour.coverage_check) return;
-  std::printf("  %zu photos, route %.1f m\n", tour.photos.size(), io::routeLength_m(tour));
-  for (std::size_t r = 0; r < tour.coverage_check->regions.size(); ++r) {
-    const mission::RegionCoverageCheck& region = tour.coverage_check->regions[r];
-    std::printf("  '%s': %.2f m2, %.2f %% of the reachable %.2f m2 covered at or below %s mm/px (re-check), mean GSD %.3f "
-                "mm/px, %.2f m2 unreachable\n",
-                region.name.c_str(), region.area_m2, 100.0 * region.coveredReachableShare(), region.reachable_area_m2,
-                formatNumber(tour.coverage->regions[r].region.gsd_mm_px).c_str(), region.mean_gsd_mm_px,
-                region.unreachable_area_m2);
-  }
-}
 
 void runTour(TourArguments a) {
   const mission::Mission mission = io::readMission(a.mission);
@@ -107,7 +86,6 @@ void runTour(TourArguments a) {
     const std::filesystem::path dir = modes.size() > 1 ? out.path() / mission::flightModeName(mode) : out.path();
     io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot, provenance);
     std::printf("%s", io::tourSummary(tours.back()).c_str());
-    printCoverage(tours.back());
     if (autopilot)
       if (const std::optional<std::string> dji = io::djiExportProblem(tours.back(), mission)) {
         std::printf("  DJI KMZ not written: %s\n", dji->c_str());

@@ -360,6 +360,26 @@ std::string tourSummary(const mission::TourResult& tour) {
   out << line;
   if (tour.standoff) out << "  " << standoffLine(tour) << '\n';
   if (!tour.duty.result) out << "  duty projection " << tour.duty.note << '\n';
+  const mission::TourTimes& t = tour.times;
+  std::snprintf(line, sizeof line,
+                "  phases: stops %.1f s, legs %.1f s, order and split %.1f s, routing %.1f s, refining %.1f s, record %.1f s",
+                t.stops_s, t.legs_s, t.order_s, t.routing_s, t.refining_s, t.record_s);
+  out << line;
+  if (tour.coverage) out << ", coverage re-check " << formatFixed(t.coverage_check_s, 1) << " s";
+  out << " (" << t.rounds << " rounds)\n";
+  if (!tour.coverage_check) return out.str();
+  out << "  " << tour.photos.size() << " photos, route " << formatFixed(routeLength_m(tour), 1) << " m\n";
+  // What the photos flown cover, by the independent re-check.
+  for (std::size_t r = 0; r < tour.coverage_check->regions.size(); ++r) {
+    const mission::RegionCoverageCheck& region = tour.coverage_check->regions[r];
+    std::snprintf(line, sizeof line,
+                  "  '%s': %.2f m2, %.2f %% of the reachable %.2f m2 covered at or below %s mm/px (re-check), mean GSD "
+                  "%.3f mm/px, %.2f m2 unreachable\n",
+                  region.name.c_str(), region.area_m2, 100.0 * region.coveredReachableShare(), region.reachable_area_m2,
+                  formatNumber(tour.coverage->regions[r].region.gsd_mm_px).c_str(), region.mean_gsd_mm_px,
+                  region.unreachable_area_m2);
+    out << line;
+  }
   return out.str();
 }
 

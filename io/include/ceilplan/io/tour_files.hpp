@@ -50,8 +50,8 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
                          const mission::TourResult& free, const mission::Mission& mission,
                          const environment::Environment& environment, const Provenance& provenance);
 
-// One paragraph for the terminal: targets, sorties with their reasons, totals and, in free
-// mode, standoffLine.
+// One paragraph for the terminal: targets, sorties with their reasons, totals, in free mode
+// standoffLine, where the time went and, for a coverage tour, what its photos cover (re-check).
 std::string tourSummary(const mission::TourResult& tour);
 // Free mode (tour.standoff set): where the tour kept less than the conventional standoff, e.g.
 // "standoff 1 m: kept over 20.3 of 55.1 m flown, narrowed over 34.8 m on 9 legs; 9 of 9
