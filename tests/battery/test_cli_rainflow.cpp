@@ -101,7 +101,8 @@ TEST(CliRainflow, ReadsTheSeriesThatDutyWrites) {
   const auto r = runCeilplan("rainflow --csv " + series.string() + " --column soc --json " + (dir / "c.json").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("30 rows: 0 full and 30 half cycles, 15 cycles in all"), std::string::npos) << r.out;
-  for (const auto& c : nlohmann::json::parse(readWholeFile(dir / "c.json")).at("cycles"))
+  const nlohmann::json cycles = nlohmann::json::parse(readWholeFile(dir / "c.json"));
+  for (const auto& c : cycles.at("cycles"))
     EXPECT_NEAR(c.at("range").get<double>(), 9.5 / 3.0 / 5.2, 1e-9);
 }
 
