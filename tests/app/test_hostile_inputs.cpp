@@ -682,7 +682,7 @@ TEST(HostileInputMessages, AFailedWriteSaysWhyAndLeavesNothing) {
 // A seed is printed as given (1, not 0), and only for a planner that draws random numbers: the
 // lattice planners have neither a seed nor a time limit.
 TEST(HostileInputMessages, SeedsAndTimeLimitsAreShownOnlyWhereTheyApply) {
-  const fs::path dir = scratchDirectory("seed_lines");
+  const fs::path dir = scratchDirectory("planner_lines");  // no "seed" in the paths it prints
   const std::string query = "plan --map " + (fixtures() / "room.bt").string() + " --start -2,0,1 --goal 2,0,1";
   const CommandResult lattice = runCeilplan(query + " --planner lattice --out " + (dir / "lattice").string());
   ASSERT_EQ(lattice.exit_code, 0) << lattice.err;
