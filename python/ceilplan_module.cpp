@@ -113,6 +113,79 @@ py::dict evaluationDict(const planner::PathEvaluation& e) {
   return d;
 }
 
+py::object noneIfEmpty(const std::optional<double>& value) { return value ? py::object(py::float_(*value)) : py::none(); }
+
+// A duty-series of samples as numpy arrays: t_s, current_a, soc, fec.
+py::dict dutySeries(const std::vector<battery::Sample>& samples) {
+  py::array_t<double> t(samples.size()), current(samples.size()), soc(samples.size()), fec(samples.size());
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    t.mutable_at(k) = samples[k].t_s;
+    current.mutable_at(k) = samples[k].current_a;
+    soc.mutable_at(k) = samples[k].soc;
+    fec.mutable_at(k) = samples[k].fec_continuous;
+  }
+  py::dict d;
+  d["t_s"] = t;
+  d["current_a"] = current;
+  d["soc"] = soc;
+  d["fec"] = fec;
+  return d;
+}
+
+py::dict dutyAgeingDict(const battery::DutyStudyAgeing& ageing) {
+  const battery::LifetimeResult& p = ageing.projection;
+  py::dict d;
+  d["cycle_wear_name"] = p.cycle_wear_name;
+  d["cycle_wear"] = p.cycle_wear;
+  d["cycle_wear_new_pack"] = ageing.new_pack.cycle_wear;
+  d["capacity_fade"] = p.capacity_loss;
+  d["fec"] = p.fec;
+  d["faded_pack_cycles"] = p.faded_pack_cycles;
+  d["min_soc"] = p.min_soc;
+  d["days_flown"] = p.days_flown;
+  d["days_to_end_of_life"] = noneIfEmpty(p.days_to_end_of_life);
+  d["missions_to_end_of_life"] = p.missions_to_end_of_life ? py::object(py::int_(*p.missions_to_end_of_life)) : py::none();
+  d["wear_reduction_pct"] = noneIfEmpty(ageing.wear_reduction_pct);
+  d["wear_reduction_new_pack_pct"] = noneIfEmpty(ageing.wear_reduction_new_pack_pct);
+  d["fade_reduction_pct"] = noneIfEmpty(ageing.fade_reduction_pct);
+  d["soh_by_day"] = py::array_t<double>(p.soh_by_day.size(), p.soh_by_day.data());
+  d["stopped_because"] = p.stopped_because;
+  d["warnings"] = p.warnings;
+  return d;
+}
+
+py::dict dutyStudyDict(const battery::DutyStudyOptions& options, const battery::DutyStudyResult& result) {
+  py::list cases;
+  for (const battery::DutyStudyCase& c : result.cases) {
+    py::dict d;
+    d["flight_current_a"] = c.flight_current_a;
+    d["min_soc"] = c.run.minSoc();
+    d["max_dod"] = c.max_dod;
+    d["charge_end_s"] = c.run.missions.back().charge_end_s;
+    d["fec"] = c.run.fecTotal();
+    d["fec_per_mission"] = c.run.fecPerMission();
+    d["fec_per_day"] = c.run.fecPerDay();
+    d["charge_ah"] = c.run.final_state.charge_ah;
+    d["discharge_ah"] = c.run.final_state.discharge_ah;
+    d["fec_reduction_pct"] = c.fec_reduction_pct;
+    py::dict ageing;
+    for (std::size_t m = 0; m < c.ageing.size(); ++m) ageing[py::str(options.ageing_models[m])] = dutyAgeingDict(c.ageing[m]);
+    d["ageing"] = ageing;
+    d["first_day"] = dutySeries(c.run.first_day);
+    cases.append(d);
+  }
+  py::dict comparison_days;
+  for (std::size_t m = 0; m < result.comparison_days.size(); ++m)
+    comparison_days[py::str(options.ageing_models[m])] = result.comparison_days[m];
+  py::dict d;
+  d["study_days"] = result.study_days;
+  d["span"] = options.spanText();
+  d["cases"] = cases;
+  d["comparison_days"] = comparison_days;
+  d["table"] = io::dutyStudyTable(options, result);
+  return d;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(ceilplan, m) {
@@ -121,8 +194,8 @@ PYBIND11_MODULE(ceilplan, m) {
 
   // The library's error hierarchy; pybind11 tries translators newest first, so the base goes first.
   // InputError is also a ValueError, as Python code expects of bad arguments.
-  const py::exception<Error> error(m, "Error", PyExc_RuntimeError);
-  const py::exception<InfeasibleError> infeasible(m, "InfeasibleError", error);
+  const auto& error = py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
+  const auto& infeasible = py::register_exception<InfeasibleError>(m, "InfeasibleError", error);
   py::register_exception<NoPathError>(m, "NoPathError", infeasible);
   py::register_exception<InputError>(m, "InputError", py::make_tuple(error, py::handle(PyExc_ValueError)));
 
@@ -163,15 +236,14 @@ PYBIND11_MODULE(ceilplan, m) {
       .def(
           "probe",
           [](const PyEnvironment& self, double x, double y, double z) {
-            const environment::Environment& environment = self.context->environment();
-            const Eigen::Vector3d body(x, y, z);
+            const environment::PositionProbe probe =
+                environment::probePosition(self.context->environment(), Eigen::Vector3d(x, y, z));
             py::dict d;
-            d["ceiling"] = gapsDict(environment.ceiling(body));
-            d["ground"] = gapsDict(environment.ground(body));
-            d["clearance_m"] = infinityAsNone(environment.clearance_m(body));
-            const auto violation = environment.stateViolation(body);
-            d["valid"] = !violation;
-            d["violation"] = violation ? py::object(py::str(violation->describe())) : py::none();
+            d["ceiling"] = gapsDict(probe.ceiling);
+            d["ground"] = gapsDict(probe.ground);
+            d["clearance_m"] = infinityAsNone(probe.clearance_m);
+            d["valid"] = !probe.violation;
+            d["violation"] = probe.violation ? py::object(py::str(probe.violation->describe())) : py::none();
             return d;
           },
           "Gaps above and below each rotor, clearance and validity with the body centre at (x, y, z)", py::arg("x"),
@@ -310,4 +382,48 @@ PYBIND11_MODULE(ceilplan, m) {
       },
       "Plans the mission's tour in one mode, as `ceilplan tour` does", py::arg("mission"), py::arg("mode") = "ceiling",
       py::arg("seed") = py::none(), py::arg("planner") = "roadmap", py::arg("ageing_model") = "xu");
+
+  const battery::DutyStudyOptions paper;  // the defaults of the study and of `ceilplan duty`
+  m.def(
+      "duty",
+      [](const std::vector<double>& flight_currents_a, double capacity_ah, double charge_current_a, double flight_s,
+         double idle_s, double charge_max_s, double soc_start, int missions_per_day, int days,
+         std::optional<double> years, double step_s, const std::vector<std::string>& models, double temperature_c,
+         const std::string& chemistry, double end_of_life_soh, double woehler_n100, double woehler_k) {
+        battery::DutyStudyOptions options;
+        options.flight_currents_a = flight_currents_a;
+        options.pack.capacity_ah = capacity_ah;
+        options.pack.charge_current_a = charge_current_a;
+        options.flight_s = flight_s;
+        options.idle_s = idle_s;
+        options.charge_max_s = charge_max_s;
+        options.soc_start = soc_start;
+        options.missions_per_day = missions_per_day;
+        options.days = days;
+        options.years = years.value_or(0.0);
+        options.step_s = step_s;
+        options.ageing_models = models;
+        options.temperature_c = temperature_c;
+        options.chemistry = chemistry;
+        options.end_of_life_soh = end_of_life_soh;
+        options.woehler.cycles_at_full_depth = woehler_n100;
+        options.woehler.exponent = woehler_k;
+        options.cell_voltage_of_soc = energy::lipoCellVoltageOfSoc();
+        const battery::DutyStudyResult result = [&] {
+          py::gil_scoped_release release;
+          return battery::runDutyStudy(options);
+        }();
+        return dutyStudyDict(options, result);
+      },
+      "The founding paper's duty study, as `ceilplan duty` runs it with the same defaults (times in seconds): per "
+      "case SOC, DoD, FEC and charge, each ageing model's wear, fade and end of life, reductions against the first "
+      "case, the first day's samples and the printed table",
+      py::arg("flight_currents_a") = paper.flight_currents_a, py::arg("capacity_ah") = paper.pack.capacity_ah,
+      py::arg("charge_current_a") = paper.pack.charge_current_a, py::arg("flight_s") = paper.flight_s,
+      py::arg("idle_s") = paper.idle_s, py::arg("charge_max_s") = paper.charge_max_s,
+      py::arg("soc_start") = paper.soc_start, py::arg("missions_per_day") = paper.missions_per_day,
+      py::arg("days") = paper.days, py::arg("years") = py::none(), py::arg("step_s") = paper.step_s,
+      py::arg("models") = paper.ageing_models, py::arg("temperature_c") = paper.temperature_c,
+      py::arg("chemistry") = paper.chemistry, py::arg("end_of_life_soh") = paper.end_of_life_soh,
+      py::arg("woehler_n100") = paper.woehler.cycles_at_full_depth, py::arg("woehler_k") = paper.woehler.exponent);
 }

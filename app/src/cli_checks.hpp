@@ -1,7 +1,14 @@
 #pragma once
-// CLI11 validators for numeric flags: CLI11's own PositiveNumber lets NaN through.
+// CLI11 validators for numeric flags: CLI11's own PositiveNumber and Range let NaN through,
+// Range prints its bounds with std::to_string ("0.010000"), and an unsigned flag takes "-1" as
+// 18446744073709551615.
+
+#include "ceilplan/core/format.hpp"
 
 #include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cctype>
 
 #include <cmath>
 #include <string>
@@ -20,6 +27,31 @@ inline CLI::Validator finiteAtLeast(double minimum, bool strict = false) {
         return {};
       },
       "NUMBER " + description);
+}
+
+// A finite number in [minimum, maximum].
+inline CLI::Validator finiteRange(double minimum, double maximum) {
+  const std::string range = "[" + formatNumber(minimum) + ", " + formatNumber(maximum) + "]";
+  return CLI::Validator(
+      [minimum, maximum, range](std::string& input) -> std::string {
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast(input, value)) return "'" + input + "' is not a number";
+        if (!(std::isfinite(value) && value >= minimum && value <= maximum))
+          return "must be a finite number in " + range + ", got " + input;
+        return {};
+      },
+      "NUMBER in " + range);
+}
+
+// Digits only: a whole number >= 0, for unsigned flags (their own range checks follow).
+inline CLI::Validator wholeNumber() {
+  return CLI::Validator(
+      [](std::string& input) -> std::string {
+        if (input.empty() || !std::all_of(input.begin(), input.end(), [](unsigned char c) { return std::isdigit(c); }))
+          return "must be a whole number >= 0, got '" + input + "'";
+        return {};
+      },
+      "WHOLE NUMBER");
 }
 
 inline CLI::Validator positiveFinite() { return finiteAtLeast(0.0, true); }

@@ -1,11 +1,16 @@
 // `ceilplan current`: predicted battery current for one flight condition, or against ceiling gap.
 
+#include "cli_checks.hpp"
 #include "command_registry.hpp"
 #include "output.hpp"
 
-#include "ceilplan/io/vehicle_file.hpp"
-
+#include "ceilplan/energy/ceiling_gap_sweep.hpp"
 #include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/output_set.hpp"
+#include "ceilplan/io/report_json.hpp"
+#include "ceilplan/io/vehicle_file.hpp"
+#include "ceilplan/planner/flight_cost_model.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -15,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ceilplan::app {
 namespace {
@@ -31,27 +37,11 @@ struct CurrentOptions {
   bool sweep = false;
 };
 
-constexpr int kSweepStepsPerRadius = 20;
-
 std::string gapText(const std::optional<double>& gap_m) {
   if (!gap_m) return "none";
   char text[32];
   std::snprintf(text, sizeof text, "%.4g m", *gap_m);
   return text;
-}
-
-nlohmann::json breakdownJson(const energy::CurrentBreakdown& b) {
-  return {{"current_a", b.current_a},
-          {"power_w", b.power_w},
-          {"terminal_voltage_v", b.terminal_voltage_v},
-          {"induced_w", b.induced_w},
-          {"profile_w", b.profile_w},
-          {"parasitic_w", b.parasitic_w},
-          {"climb_w", b.climb_w},
-          {"avionics_w", b.avionics_w},
-          {"ceiling_factor", b.ceiling_factor},
-          {"ground_factor", b.ground_factor},
-          {"induced_power_factor", b.induced_power_factor}};
 }
 
 void printBreakdown(const energy::CurrentBreakdown& b) {
@@ -69,6 +59,7 @@ void printBreakdown(const energy::CurrentBreakdown& b) {
 }
 
 void runCurrent(const CurrentOptions& options) {
+  if (!options.json_path.empty()) io::checkWritableFile(options.json_path);
   const mission::Vehicle vehicle =
       options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
   const energy::EnergyModel model(vehicle.energy);
@@ -80,41 +71,27 @@ void runCurrent(const CurrentOptions& options) {
   const double gap_m = options.gap_m.value_or(energy::kNoSurface);
   const energy::CurrentBreakdown at_point = model.breakdown(gap_m, options.coverage, flight);  // validates input
 
-  nlohmann::json report = {{"vehicle", vehicle.name},
-                           {"soc", flight.soc},
-                           {"coverage", options.coverage},
-                           {"ground_gap_m", options.ground_gap_m ? nlohmann::json(*options.ground_gap_m) : nullptr},
-                           {"speed_m_s", flight.speed_m_s},
-                           {"climb_m_s", flight.climb_m_s}};
   std::printf("vehicle               %s\n", vehicle.name.c_str());
   std::printf("soc %.3f  coverage %.3f  ground gap %s  speed %.3g m/s  climb %.3g m/s\n", flight.soc,
               options.coverage, gapText(options.ground_gap_m).c_str(), flight.speed_m_s, flight.climb_m_s);
+  nlohmann::json report;
   if (options.sweep) {
     const double radius_m = model.rotorRadiusM();
     const double free_air_a = model.currentA(energy::kNoSurface, options.coverage, flight);
     std::printf("free air: current_a %.4f\n", free_air_a);
     std::printf("%10s %8s %10s %10s %14s\n", "gap_m", "gap_R", "current_a", "power_w", "ceiling_factor");
-    nlohmann::json rows = nlohmann::json::array();
-    for (int i = 0; i <= 3 * kSweepStepsPerRadius; ++i) {
-      const double gap = radius_m * i / kSweepStepsPerRadius;
-      const energy::CurrentBreakdown b = model.breakdown(gap, options.coverage, flight);
-      std::printf("%10.4f %8.3f %10.4f %10.3f %14.5f\n", gap, gap / radius_m, b.current_a, b.power_w,
-                  b.ceiling_factor);
-      nlohmann::json row = breakdownJson(b);
-      row["gap_m"] = gap;
-      rows.push_back(row);
-    }
-    report["rotor_radius_m"] = radius_m;
-    report["free_air_current_a"] = free_air_a;
-    report["sweep"] = rows;
+    const std::vector<energy::GapPoint> sweep = energy::ceilingGapSweep(model, options.coverage, flight);
+    for (const energy::GapPoint& point : sweep)
+      std::printf("%10.4f %8.3f %10.4f %10.3f %14.5f\n", point.gap_m, point.gap_m / radius_m,
+                  point.breakdown.current_a, point.breakdown.power_w, point.breakdown.ceiling_factor);
+    report = io::currentSweepReportJson(vehicle.name, options.coverage, flight, radius_m, free_air_a, sweep);
   } else {
     std::printf("ceiling gap           %s\n", gapText(options.gap_m).c_str());
     printBreakdown(at_point);
-    report["gap_m"] = options.gap_m ? nlohmann::json(*options.gap_m) : nullptr;
-    report.update(breakdownJson(at_point));
+    report = io::currentReportJson(vehicle.name, gap_m, options.coverage, flight, at_point);
   }
   if (!options.json_path.empty()) {
-    writeTextAtomically(options.json_path, [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+    io::writeJsonFile(options.json_path, report);
     std::printf("wrote %s\n", options.json_path.c_str());
   }
 }
@@ -129,8 +106,9 @@ const CommandRegistration registration(30, [](CLI::App& parent) {
   command->add_option("--coverage", options->coverage, "fraction of each rotor disc under the ceiling, 0..1")
       ->capture_default_str();
   command->add_option("--speed-m-s", options->speed_m_s, "horizontal speed (m/s)")->capture_default_str();
+  constexpr double kMaxRate_m_s = planner::FlightSpeeds::kMaxVerticalSpeed_m_s;  // as a mission file allows
   command->add_option("--climb-m-s", options->climb_m_s, "climb rate (m/s), negative in descent")
-      ->capture_default_str();
+      ->capture_default_str()->check(finiteRange(-kMaxRate_m_s, kMaxRate_m_s));
   command->add_option("--soc", options->soc, "state of charge 0..1; default: the vehicle's reference_soc");
   command->add_option("--vehicle", options->vehicle_path, "vehicle YAML file; default: the built-in quadrotor");
   command->add_option("--json", options->json_path, "also write the result as JSON to this file");

@@ -29,7 +29,7 @@ struct EvaluateArguments {
 };
 
 void runEvaluate(const EvaluateArguments& a) {
-  if (!a.json.empty()) io::OutputSet::checkWritable(std::filesystem::path(a.json).parent_path());
+  if (!a.json.empty()) io::checkWritableFile(a.json);
   const std::vector<Eigen::Vector3d> waypoints = io::readPathWaypoints(a.path);
   const auto context = makePlanningContext(a.planning);
   mission::RouteCheck check;

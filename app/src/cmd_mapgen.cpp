@@ -1,17 +1,17 @@
 // `ceilplan mapgen`: writes one of the shipped inspection scenes as an OctoMap file.
 
+#include "cli_checks.hpp"
 #include "command_registry.hpp"
-#include "output.hpp"
 
-#include "ceilplan/environment/scenes.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/environment/scenes.hpp"
+#include "ceilplan/io/octomap_file.hpp"
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
-#include <stdexcept>
 #include <string>
 
 namespace ceilplan::app {
@@ -27,25 +27,12 @@ void runMapgen(const MapgenOptions& options) {
   using namespace environment;
   const Scene scene = sceneFromName(options.scene);
   const std::filesystem::path out(options.out);
-  const bool full_format = out.extension() == ".ot";
-  if (!full_format && out.extension() != ".bt")
+  if (!io::isOctoMapFileName(out))
     throw ceilplan::InputError("--out " + options.out + ": the map file must end in .bt (or .ot)");
+  io::checkWritableFile(out);
   const VoxelGrid grid = generateScene(scene, options.scene_options);
   const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
-  writeAtomically(out, [&](const std::filesystem::path& temporary) {
-    std::ofstream file(temporary, std::ios::binary);
-    if (full_format) {
-      tree->write(file);
-    } else {
-      // OctoMap's own header, written here because its writeBinary prints debug chatter on
-      // stderr in Debian's build.
-      file << "# Octomap OcTree binary file\n# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
-           << "id " << tree->getTreeType() << "\nsize " << tree->size() << "\nres " << tree->getResolution() << "\ndata\n";
-      tree->writeBinaryData(file);
-    }
-    file.flush();
-    if (!file) throw std::runtime_error("cannot write " + out.string());
-  });
+  io::writeOctoMapFile(out, *tree);
   const auto& size = grid.frame().size();
   const std::string length = scene == Scene::Bridge && options.scene_options.bridge_length_m != kShippedBridgeLength_m
                                  ? ", length " + formatNumber(options.scene_options.bridge_length_m) + " m"
@@ -64,7 +51,8 @@ const CommandRegistration registration(20, [](CLI::App& parent) {
   command->add_option("--out", options->out, "Output file (.bt, or .ot for OctoMap's full format)")->required();
   command->add_option("--resolution", options->scene_options.resolution_m, "Voxel size in metres (0.02 to 1)")
       ->capture_default_str();
-  command->add_option("--seed", options->scene_options.seed, "Seed placing the scene's clutter")->capture_default_str();
+  command->add_option("--seed", options->scene_options.seed, "Seed placing the scene's clutter")
+      ->capture_default_str()->check(wholeNumber());
   command->add_option("--bridge-length-m", options->scene_options.bridge_length_m,
                       "Bridge only: span between the abutments, a multiple of 4 m from 16 to 2000 (piers every 16 m)")
       ->capture_default_str();

@@ -2,19 +2,19 @@
 
 #include "command_registry.hpp"
 #include "map_options.hpp"
-
-#include "ceilplan/io/unknown_space_report.hpp"
 #include "output.hpp"
 
+#include "ceilplan/io/output_set.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/map_statistics.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
+#include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/map_slice_file.hpp"
+#include "ceilplan/io/report_json.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
-
-#include "ceilplan/core/format.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <memory>
@@ -32,49 +32,12 @@ struct MapinfoOptions {
   std::string vehicle;
 };
 
-const char* stateName(environment::CellState state, bool assumed_free) {
-  if (assumed_free) return "assumed_free";
-  switch (state) {
-    case environment::CellState::Occupied: return "occupied";
-    case environment::CellState::Free: return "free";
-    case environment::CellState::Unknown: return "unknown";
-  }
-  return "unknown";
-}
-
-// One row per column of the map at height z: what the map holds there, what the policy
-// assumed, whether the column lies under a ceiling, and with a vehicle whether its body
-// centre may be there and whether that relies on the policy.
-void writeSlice(const MapinfoOptions& options, const std::shared_ptr<const environment::MapIndex>& index) {
-  using namespace environment;
-  const GridFrame& frame = index->grid().frame();
-  const int k = frame.indexOf(2, options.slice_z_m);
-  if (k < 0 || k >= frame.size()[2])
-    throw ceilplan::InputError("--slice-z " + formatNumber(options.slice_z_m) + " lies outside the map, whose heights span " +
-                               formatNumber(frame.faceOf(2, 0)) + " to " + formatNumber(frame.faceOf(2, frame.size()[2])) + " m");
-  std::unique_ptr<Environment> environment;
-  if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
-  const std::vector<std::uint8_t> ceiling = ceilingColumns(*index);
-  writeTextAtomically(options.slice_csv, [&](std::ostream& out) {
-    out << "x_m,y_m,state,under_ceiling" << (environment ? ",valid,assumes_free" : "") << '\n';
-    for (int j = 0; j < frame.size()[1]; ++j)
-      for (int i = 0; i < frame.size()[0]; ++i) {
-        const Eigen::Vector3d centre(frame.centreOf(0, i), frame.centreOf(1, j), options.slice_z_m);
-        out << formatNumber(centre.x()) << ',' << formatNumber(centre.y()) << ','
-            << stateName(index->grid().at(i, j, k), index->isAssumedFree(centre)) << ','
-            << int(ceiling[static_cast<std::size_t>(j) * frame.size()[0] + i] == 2);
-        if (environment) out << ',' << int(environment->isStateValid(centre)) << ',' << int(environment->assumesFree(centre));
-        out << '\n';
-      }
-  });
-}
-
-nlohmann::json point(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
-
 void runMapinfo(const MapinfoOptions& options) {
   using namespace environment;
   MapIndexOptions index_options;
   index_options.unknown = options.unknown.value();
+  if (!options.json.empty()) io::checkWritableFile(options.json);  // before the map is read and indexed
+  if (!options.slice_csv.empty()) io::checkWritableFile(options.slice_csv);
   const OccupancyMap map = OccupancyMap::load(options.map);
   if (!options.vehicle.empty() && options.slice_csv.empty())
     throw ceilplan::InputError("--vehicle applies only to --slice-csv; add --slice-csv FILE or drop it");
@@ -82,7 +45,11 @@ void runMapinfo(const MapinfoOptions& options) {
   const auto index = MapIndex::build(map, index_options, [&](double f) { progress.update(f); });
   progress.finish();
   const MapStatistics stats = computeStatistics(map, *index);
-  if (!options.slice_csv.empty()) writeSlice(options, index);
+  if (!options.slice_csv.empty()) {
+    std::unique_ptr<Environment> environment;
+    if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
+    io::writeMapSliceCsv(options.slice_csv, *index, options.slice_z_m, environment.get(), "--slice-z");
+  }
   const Eigen::Vector3d lo = stats.extent_m.min(), hi = stats.extent_m.max();
   std::printf("map: %s\n", options.map.c_str());
   std::printf("resolution_m: %g\n", stats.resolution_m);
@@ -97,16 +64,9 @@ void runMapinfo(const MapinfoOptions& options) {
               stats.ceiling_area_share, formatNumber(stats.ceiling.min_headroom_m).c_str(),
               formatNumber(stats.ceiling.min_area_m2).c_str());
   if (options.json.empty()) return;
-  const nlohmann::json report = {
-      {"map", options.map},
-      {"resolution_m", stats.resolution_m},
-      {"extent_m", {{"min", point(lo)}, {"max", point(hi)}}},
-      {"leaves", {{"occupied", stats.occupied_leaves}, {"free", stats.free_leaves}}},
-      {"volume_m3", {{"occupied", stats.occupied_volume_m3}, {"free", stats.free_volume_m3}, {"unknown", stats.unknown_volume_m3}}},
-      {"unknown", io::unknownSpaceJson(stats.unknown, stats.unknown_summary)},
-      {"ceiling", {{"min_headroom_m", stats.ceiling.min_headroom_m}, {"min_area_m2", stats.ceiling.min_area_m2}}},
-      {"ceiling_area_share", stats.ceiling_area_share}};
-  writeTextAtomically(options.json, [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+  nlohmann::json report = io::mapStatisticsJson(stats);
+  report["map"] = options.map;
+  io::writeJsonFile(options.json, report);
 }
 
 const CommandRegistration registration(21, [](CLI::App& parent) {

@@ -80,6 +80,9 @@ void runTour(TourArguments a) {
     const std::filesystem::path dir = modes.size() > 1 ? out.path() / mission::flightModeName(mode) : out.path();
     io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot, provenance);
     std::printf("%s", io::tourSummary(tours.back()).c_str());
+    if (autopilot)
+      if (const std::optional<std::string> dji = io::djiExportProblem(tours.back(), mission))
+        std::printf("  DJI KMZ not written: %s\n", dji->c_str());
     std::fflush(stdout);
   }
   if (tours.size() == 2) {
@@ -87,8 +90,9 @@ void runTour(TourArguments a) {
     io::writeTourComparison(out.path(), tours[0], tours[1], mission, context.environment(), provenance);
   }
   out.commit();
-  std::printf("\nwrote %s (tour.json, path.csv%s); figures: scripts/plot-tour %s\n", a.out.c_str(),
-              autopilot ? ", mission.plan, mission.waypoints" : "", a.out.c_str());
+  std::printf("\nwrote %s (tour.json, path.csv, trajectory, report.html%s); figures: scripts/plot-tour %s\n",
+              a.out.c_str(), autopilot ? ", mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson" : "",
+              a.out.c_str());
 }
 
 const CommandRegistration registration(50, [](CLI::App& parent) {
@@ -111,7 +115,7 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                       "pairwise planners: search time per leg (refinement may take as long again)")
       ->capture_default_str()->check(positiveFinite());
   command->add_option("--lattice-spacing-m", a->options.lattice_spacing_m, "roadmap and lattice: node spacing")
-      ->capture_default_str()->check(CLI::Range(0.01, 2.0));
+      ->capture_default_str()->check(finiteRange(0.01, 2.0));
   command->add_option("--lattice-stride", a->options.lattice_stride,
                       "roadmap and lattice: node spacing in voxels of the map instead (to be retired)")
       ->check(CLI::Range(1, 16));

@@ -4,15 +4,20 @@
 #include "yaml_config.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/printable_text.hpp"
+#include "ceilplan/core/spelling.hpp"
 #include "ceilplan/core/version.hpp"
 #include "ceilplan/io/temporary_output.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <memory>
 #include <new>
+#include <string>
+#include <vector>
 
 int main(int argc, char** argv) {
   using namespace ceilplan::app;
@@ -31,16 +36,27 @@ int main(int argc, char** argv) {
   help->add_option("command", *topic, "the command to describe");
   addRegisteredCommands(app);
   help->callback([&app, topic] {
+    // CLI::App::help() would describe the selected subcommand, `help` itself: format the app.
     if (topic->empty()) {
-      std::cout << app.help();
+      std::cout << app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
       return;
     }
     try {
-      std::cout << app.get_subcommand(*topic)->help();
+      std::cout << app.get_subcommand(*topic)->help(app.get_name());
     } catch (const CLI::OptionNotFound&) {
       throw ceilplan::InputError("no command '" + *topic + "'; 'ceilplan help' lists them");
     }
   });
+  // CLI11 would say only "A subcommand is required" for a misspelt one.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const CLI::App* command : app.get_subcommands({})) names.push_back(command->get_name());
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      std::cerr << "ceilplan: error: no command '" << ceilplan::printableText(argv[1]) << "'"
+                << ceilplan::didYouMean(argv[1], names) << "; 'ceilplan help' lists them\n";
+      return kExitBadInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -21,6 +21,10 @@ Progress::~Progress() { finish(); }
 
 void Progress::update(double fraction) {
   if (!enabled_) return;
+  if (fraction >= 1.0) {  // done: whatever is printed next starts on a clean line
+    finish();
+    return;
+  }
   const int percent = static_cast<int>(std::lround(100.0 * std::clamp(fraction, 0.0, 1.0)));
   if (percent == last_percent_) return;
   last_percent_ = percent;
@@ -56,6 +60,7 @@ ProgressCallback terminalProgress() {
       lines->stage = stage;
     }
     lines->line->update(fraction);
+    if (fraction >= 1.0) lines->line.reset();  // the stage may run again (tour --mode both)
   };
 }
 

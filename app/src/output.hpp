@@ -4,6 +4,7 @@
 
 #include "ceilplan/core/progress.hpp"
 #include "ceilplan/io/atomic_file.hpp"
+#include "ceilplan/io/output_set.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -13,11 +14,12 @@
 
 namespace ceilplan::app {
 
+using io::checkWritableFile;
 using io::writeAtomically;
 using io::writeTextAtomically;
 
 // Progress for long work: a single updating line on stderr when stderr is a terminal,
-// nothing otherwise.
+// nothing otherwise. The line is cleared at 100 % and by finish() (or the destructor).
 class Progress {
  public:
   Progress(std::string label, bool enabled);

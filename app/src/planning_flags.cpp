@@ -8,6 +8,7 @@
 #include "ceilplan/planner/planner_factory.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/printable_text.hpp"
 
 #include <sstream>
 
@@ -47,7 +48,7 @@ void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objec
   command->add_option("--standoff-m", a.standoff_m, "free mode: the conventional distance from every structure, kept where it fits")
       ->capture_default_str()->check(nonNegativeFinite());
   command->add_option("--temperature-c", a.temperature_c, "cell temperature for the ageing model")
-      ->capture_default_str()->check(CLI::Range(-40.0, 80.0));
+      ->capture_default_str()->check(finiteRange(-40.0, 80.0));
 }
 
 void addSearchOptions(CLI::App* command, SearchArguments& a) {
@@ -56,10 +57,10 @@ void addSearchOptions(CLI::App* command, SearchArguments& a) {
   command->add_option("--time-limit-s", a.time_limit_s, "search time per plan")->capture_default_str()->check(positiveFinite());
   command->add_option("--seed", a.seed, "random seed (> 0)")->capture_default_str()->check(CLI::Range(1u, 4294967295u));
   command->add_option("--band-fraction", a.band_fraction, "share of samples aimed under ceilings")
-      ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+      ->capture_default_str()->check(finiteRange(0.0, 1.0));
   command->add_flag("--no-refine", a.no_refine, "skip shortcutting and NLopt refinement");
   command->add_option("--lattice-spacing-m", a.lattice_spacing_m, "lattice and roadmap planners: node spacing")
-      ->capture_default_str()->check(CLI::Range(0.01, 2.0));
+      ->capture_default_str()->check(finiteRange(0.01, 2.0));
 }
 
 planner::PlanRequest SearchArguments::request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const {
@@ -84,13 +85,17 @@ std::string SearchArguments::describe() const {
   return "planner " + name + ", seed " + std::to_string(seed) + ", " + formatNumber(time_limit_s) + " s";
 }
 
+// As the mission file's coordinates (io/): farther than any map, so a slip of the exponent is refused.
+constexpr double kCoordinateLimit_m = 1e6;
+
 Eigen::Vector3d parsePoint(const std::string& text, const std::string& flag) {
   std::istringstream in(text);
   Eigen::Vector3d point;
   char comma1 = 0, comma2 = 0;
   if (!(in >> point.x() >> comma1 >> point.y() >> comma2 >> point.z()) || comma1 != ',' || comma2 != ',' ||
-      !(in >> std::ws).eof() || !point.allFinite())
-    throw ceilplan::InputError(flag + " '" + text + "': expected three finite numbers x,y,z in metres");
+      !(in >> std::ws).eof() || !point.allFinite() || point.cwiseAbs().maxCoeff() > kCoordinateLimit_m)
+    throw ceilplan::InputError(flag + " '" + printableText(text) +
+                               "': expected three finite numbers x,y,z in metres, each within +-1e6 m");
   return point;
 }
 

@@ -1,9 +1,13 @@
 #include "yaml_config.hpp"
 
+#include "ceilplan/core/printable_text.hpp"
+#include "ceilplan/core/spelling.hpp"
+
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <sstream>
+#include <string>
 
 namespace ceilplan::app {
 namespace {
@@ -13,17 +17,40 @@ std::string flagName(std::string key) {
   return key;
 }
 
-void collect(const YAML::Node& map, std::vector<std::string> parents,
-             std::vector<CLI::ConfigItem>& items) {
+// The long flag names `command` takes (and the main app's, which subcommands fall through to).
+std::vector<std::string> flagNames(const CLI::App& command) {
+  std::vector<std::string> names;
+  for (const CLI::App* app = &command; app != nullptr; app = app->get_parent())
+    for (const CLI::Option* option : app->get_options())
+      if (option->get_configurable())
+        for (const std::string& name : option->get_lnames()) names.push_back(name);
+  return names;
+}
+
+// Keys must be flags of the chosen command: CLI11 would ignore the others, and a typo
+// (`planer: lattice`) would silently run the default.
+void requireFlag(const std::string& name, const YAML::Node& key, const std::vector<std::string>& known,
+                 const std::string& command) {
+  if (std::find(known.begin(), known.end(), name) != known.end()) return;
+  throw CLI::ConversionError("config file line " + std::to_string(key.Mark().line + 1) + ": unknown key '" +
+                             ceilplan::printableText(name, 40) + "'" + (command.empty() ? "" : " for '" + command + "'") +
+                             ceilplan::didYouMean(name, known));
+}
+
+void collect(const YAML::Node& map, const std::vector<std::string>& parents, const std::vector<std::string>& known,
+             const std::string& command, std::vector<CLI::ConfigItem>& items) {
   for (const auto& entry : map) {
-    const std::string name = flagName(entry.first.as<std::string>());
+    if (!entry.first.IsScalar())
+      throw CLI::ConversionError("config file line " + std::to_string(entry.first.Mark().line + 1) +
+                                 ": a key must be a flag name");
+    const std::string name = flagName(entry.first.Scalar());  // known (printable) once requireFlag passes
     const YAML::Node& value = entry.second;
-    if (value.IsMap()) {
-      auto nested = parents;
-      nested.push_back(name);
-      collect(value, nested, items);
+    if (value.IsMap() && !command.empty() && name == command) {
+      collect(value, parents, known, command, items);  // a section named after the chosen command
       continue;
     }
+    requireFlag(name, entry.first, known, command);
+    if (value.IsMap()) throw CLI::ConversionError("config key '" + name + "' holds a map; give a value or a list");
     CLI::ConfigItem item;
     item.parents = parents;
     item.name = name;
@@ -72,8 +99,12 @@ std::vector<CLI::ConfigItem> YamlConfig::from_config(std::istream& input) const 
     if (!root.IsMap())
       throw CLI::ConversionError("config file must be a YAML map of flag names to values");
     std::vector<std::string> parents;
-    for (const CLI::App* chosen : root_->get_subcommands()) parents.push_back(chosen->get_name());
-    collect(root, parents, items);
+    const CLI::App* command = root_;
+    for (const CLI::App* chosen : root_->get_subcommands()) {
+      parents.push_back(chosen->get_name());
+      command = chosen;
+    }
+    collect(root, parents, flagNames(*command), command == root_ ? "" : command->get_name(), items);
   } catch (const YAML::Exception& e) {
     std::ostringstream message;
     message << "malformed YAML config at line " << e.mark.line + 1 << ", column "

@@ -90,4 +90,14 @@ std::vector<RainflowCycle> countRainflowCycles(const std::vector<double>& series
   return cycles;
 }
 
+RainflowTotals rainflowTotals(const std::vector<RainflowCycle>& cycles) {
+  RainflowTotals totals;
+  for (const RainflowCycle& c : cycles) {
+    (c.count == 1.0 ? totals.full_cycles : totals.half_cycles) += 1.0;
+    totals.cycles += c.count;
+    totals.count_weighted_range += c.count * c.range;
+  }
+  return totals;
+}
+
 }  // namespace ceilplan::battery

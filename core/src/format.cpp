@@ -1,5 +1,6 @@
 #include "ceilplan/core/format.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <iomanip>
 #include <sstream>
@@ -13,6 +14,8 @@ std::string formatNumber(double value, int significant) {
 }
 
 std::string formatFixed(double value, int decimals) {
+  // Past 1e15 a double holds no fraction: hundreds of digits of fixed notation would say nothing.
+  if (std::abs(value) >= 1e15) return formatNumber(value);
   std::ostringstream text;
   text << std::fixed << std::setprecision(decimals) << value;
   return text.str();

@@ -1,4 +1,5 @@
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <algorithm>
@@ -33,7 +34,7 @@ LipoOpenCircuitVoltage::LipoOpenCircuitVoltage() {
 
 double LipoOpenCircuitVoltage::cellVoltageV(double soc) const {
   if (!(soc >= 0.0 && soc <= 1.0))
-    throw ceilplan::InputError("state of charge " + std::to_string(soc) +
+    throw ceilplan::InputError("state of charge " + formatNumber(soc) +
                                 " is outside [0, 1]: give it as a fraction, e.g. 0.65");
   return cellVoltageUncheckedV(soc);
 }
@@ -44,6 +45,11 @@ double LipoOpenCircuitVoltage::cellVoltageUncheckedV(double soc) const noexcept 
   const auto above = std::upper_bound(soc_.begin(), soc_.end(), soc);
   const auto i = static_cast<std::size_t>(std::min<std::ptrdiff_t>(above - soc_.begin(), kPointCount - 1) - 1);
   return voltage_v_[i] + slope_v_per_soc_[i] * (soc - soc_[i]);
+}
+
+std::function<double(double soc)> lipoCellVoltageOfSoc() {
+  const LipoOpenCircuitVoltage curve;
+  return [curve](double soc) { return curve.cellVoltageV(soc); };
 }
 
 }  // namespace ceilplan::energy

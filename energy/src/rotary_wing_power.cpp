@@ -1,4 +1,5 @@
 #include "ceilplan/energy/rotary_wing_power.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <cmath>
@@ -36,8 +37,8 @@ RotaryWingPower RotaryWingPower::scaledToHover(double hover_shaft_power_w, doubl
   const double induced = (1.0 + k) * std::pow(weight_n, 1.5) / std::sqrt(2.0 * rho * area_m2);
   const double profile = hover_shaft_power_w - induced;
   if (profile < 0.0)
-    throw ceilplan::InputError("hover shaft power " + std::to_string(hover_shaft_power_w) +
-                                " W is below the momentum-theory induced power " + std::to_string(induced) +
+    throw ceilplan::InputError("hover shaft power " + formatNumber(hover_shaft_power_w) +
+                                " W is below the momentum-theory induced power " + formatNumber(induced) +
                                 " W for this mass and rotor disc: raise hover_power_w or motor_efficiency");
   const double v0 = std::sqrt(weight_n / (2.0 * rho * area_m2));
   return RotaryWingPower(profile, induced, tip_speed_m_s, v0, 0.5 * rho * drag_area_m2);

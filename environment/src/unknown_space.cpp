@@ -8,9 +8,9 @@
 namespace ceilplan::environment {
 
 void UnknownSpace::validate() const {
-  if (!(fill_max_m > 0.0) || !std::isfinite(fill_max_m))
-    throw ceilplan::InputError("unknown space: the fill size must be a positive number of metres, got " +
-                               formatNumber(fill_max_m));
+  if (!(fill_max_m > 0.0 && fill_max_m <= kMaxFill_m))
+    throw ceilplan::InputError("unknown space: the fill size must be a number of metres in (0, " + formatNumber(kMaxFill_m) +
+                               "], got " + formatNumber(fill_max_m));
 }
 
 std::string UnknownSpace::describe() const {

@@ -1,4 +1,5 @@
 #include "ceilplan/environment/vehicle_geometry.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <cmath>
@@ -16,14 +17,14 @@ void requirePositive(double value, const char* field) {
   requireFinite(value, field);
   if (value <= 0.0)
     throw ceilplan::InputError(std::string("vehicle geometry: ") + field + " must be positive, got " +
-                                std::to_string(value));
+                                formatNumber(value));
 }
 
 void requireNonNegative(double value, const char* field) {
   requireFinite(value, field);
   if (value < 0.0)
     throw ceilplan::InputError(std::string("vehicle geometry: ") + field + " must not be negative, got " +
-                                std::to_string(value));
+                                formatNumber(value));
 }
 
 }  // namespace

@@ -6,26 +6,17 @@
 
 #include <GeographicLib/LocalCartesian.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 
 namespace ceilplan::io {
 
 namespace {
 
-// MAVLink identifiers (common.xml) and QGroundControl's plan constants.
-constexpr int kMavCmdNavWaypoint = 16;
-constexpr int kMavFrameGlobal = 0;
-constexpr int kMavFrameGlobalRelativeAlt = 3;
 constexpr int kMavAutopilotArdupilotMega = 3;
 constexpr int kMavAutopilotPx4 = 12;
 constexpr int kMavTypeQuadrotor = 2;
-
-void requireFinite(const Eigen::Vector3d& value, const std::string& what) {
-  if (!value.allFinite()) throw ceilplan::InputError(what + " must be finite, got (" + formatNumber(value.x()) + ", " +
-                                                      formatNumber(value.y()) + ", " + formatNumber(value.z()) + ")");
-}
 
 void requireNonNegative(double value, const std::string& what) {
   if (!std::isfinite(value) || value < 0.0)
@@ -37,50 +28,74 @@ const GeodeticOrigin& checkedOrigin(const AutopilotMission& mission) {
     throw ceilplan::InputError(
         "cannot export to an autopilot without the map's geodetic origin: add origin: {lat, lon, alt} to the mission file");
   mission.origin->validate();
-  requireFinite(mission.home_m, "home");
   if (mission.waypoints.empty()) throw ceilplan::InputError("cannot export a mission without waypoints");
-  for (std::size_t k = 0; k < mission.waypoints.size(); ++k) {
-    const ExportWaypoint& waypoint = mission.waypoints[k];
-    const std::string what = "waypoint " + std::to_string(k + 1);
-    requireFinite(waypoint.position_m, what);
-    requireNonNegative(waypoint.hold_s, what + " hold time (s)");
-    if (waypoint.yaw_deg && !std::isfinite(*waypoint.yaw_deg))
-      throw ceilplan::InputError(what + " yaw must be finite, got " + formatNumber(*waypoint.yaw_deg));
-  }
-  requireNonNegative(mission.cruise_speed_m_s, "cruise speed (m/s)");
+  mission.validate();
   requireNonNegative(mission.hover_speed_m_s, "hover speed (m/s)");
   requireNonNegative(mission.acceptance_radius_m, "acceptance radius (m)");
   requireNonNegative(mission.pass_radius_m, "pass radius (m)");
   return *mission.origin;
 }
 
-// A waypoint in the autopilot's terms: latitude, longitude, altitude relative to home.
-struct GlobalWaypoint {
-  double latitude_deg;
-  double longitude_deg;
-  double relative_altitude_m;
-  double hold_s;
-  std::optional<double> yaw_deg;
+// One mission item: a MAVLink command with its frame and seven parameters (for a waypoint,
+// params 4-6 are latitude, longitude and altitude relative to home).
+struct MissionItem {
+  int command;
+  int frame;
+  std::array<double, 7> params;
 };
 
 struct GlobalMission {
   Eigen::Vector3d home;  // latitude, longitude, altitude AMSL
-  std::vector<GlobalWaypoint> waypoints;
+  std::vector<MissionItem> items;
 };
 
 GlobalMission toGlobal(const AutopilotMission& mission) {
   const GeodeticOrigin& origin = checkedOrigin(mission);
+  const double nan = std::nan("");
   GlobalMission global;
   global.home = toGeodetic(origin, mission.home_m);
-  for (const ExportWaypoint& waypoint : mission.waypoints) {
-    const Eigen::Vector3d position = toGeodetic(origin, waypoint.position_m);
-    global.waypoints.push_back(
-        {position.x(), position.y(), position.z() - global.home.z(), waypoint.hold_s, waypoint.yaw_deg});
+  const std::vector<double> headings = mission::headingsInEffect_deg(mission);
+  const std::vector<double> pitches = mission::gimbalPitchesInEffect_deg(mission);
+  std::optional<double> pitch_set;
+  int photos = 0;
+  for (std::size_t k = 0; k < mission.waypoints.size(); ++k) {
+    const ExportWaypoint& w = mission.waypoints[k];
+    const double speed = mission.speedInto_m_s(k);
+    if (k > 0 && speed != mission.speedInto_m_s(k - 1))
+      global.items.push_back({mav::kDoChangeSpeed, mav::kFrameMission, {mav::kSpeedTypeGroundSpeed, speed, -1, 0, 0, 0, 0}});
+    if (w.gimbal_pitch_deg && pitch_set != pitches[k]) {
+      global.items.push_back({mav::kDoGimbalManagerPitchYaw,
+                              mav::kFrameMission,
+                              {pitches[k], 0.0, nan, nan, mav::kGimbalFlagsHorizonFollow, 0, 0}});
+      pitch_set = pitches[k];
+    }
+    const Eigen::Vector3d position = toGeodetic(origin, w.position_m);
+    global.items.push_back({mav::kNavWaypoint,
+                            mav::kFrameGlobalRelativeAlt,
+                            {w.hold_s, mission.acceptance_radius_m, mission.pass_radius_m, headings[k], position.x(),
+                             position.y(), position.z() - global.home.z()}});
+    if (w.take_photo)
+      global.items.push_back({mav::kImageStartCapture, mav::kFrameMission, {0, 0, 1, static_cast<double>(++photos), 0, 0, 0}});
+    if (w.trigger_distance_m) {
+      const double distance = *w.trigger_distance_m;
+      global.items.push_back(
+          {mav::kDoSetCamTriggDist, mav::kFrameMission, {distance, 0, distance > 0.0 ? 1.0 : 0.0, 0, 0, 0, 0}});
+    }
   }
   return global;
 }
 
+nlohmann::json numberOrNull(double value) { return std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value); }
+
 }  // namespace
+
+AutopilotMission autopilotMission(const mission::SortieRoute& route, const GeodeticOrigin& origin, Autopilot autopilot) {
+  AutopilotMission mission;
+  static_cast<mission::SortieRoute&>(mission) = route;
+  mission.origin = origin;
+  mission.autopilot = autopilot;
+  return mission;
+}
 
 Eigen::Vector3d toGeodetic(const GeodeticOrigin& origin, const Eigen::Vector3d& local_m) {
   const GeographicLib::LocalCartesian frame(origin.latitude_deg, origin.longitude_deg, origin.altitude_m);
@@ -100,17 +115,17 @@ nlohmann::json qgcPlan(const AutopilotMission& mission) {
   const GlobalMission global = toGlobal(mission);
   nlohmann::json items = nlohmann::json::array();
   int jump_id = 1;
-  for (const GlobalWaypoint& waypoint : global.waypoints) {
+  for (const MissionItem& item : global.items) {
+    nlohmann::json params = nlohmann::json::array();
+    for (double p : item.params) params.push_back(numberOrNull(p));
     items.push_back({{"type", "SimpleItem"},
-                     {"command", kMavCmdNavWaypoint},
-                     {"frame", kMavFrameGlobalRelativeAlt},
+                     {"command", item.command},
+                     {"frame", item.frame},
                      {"autoContinue", true},
                      {"doJumpId", jump_id++},
-                     {"params",
-                      {waypoint.hold_s, mission.acceptance_radius_m, mission.pass_radius_m,
-                       waypoint.yaw_deg ? nlohmann::json(*waypoint.yaw_deg) : nlohmann::json(nullptr),
-                       waypoint.latitude_deg, waypoint.longitude_deg, waypoint.relative_altitude_m}}});
+                     {"params", params}});
   }
+  const GeodeticOrigin& origin = *mission.origin;
   return {{"fileType", "Plan"},
           {"version", 1},
           {"groundStation", "ceilplan"},
@@ -123,23 +138,28 @@ nlohmann::json qgcPlan(const AutopilotMission& mission) {
             {"plannedHomePosition", {global.home.x(), global.home.y(), global.home.z()}},
             {"items", items}}},
           {"geoFence", {{"circles", nlohmann::json::array()}, {"polygons", nlohmann::json::array()}, {"version", 2}}},
-          {"rallyPoints", {{"points", nlohmann::json::array()}, {"version", 2}}}};
+          {"rallyPoints", {{"points", nlohmann::json::array()}, {"version", 2}}},
+          // Ignored by QGroundControl; where the map frame lies, for setting the EKF origin
+          // without GNSS (docs/flying.md).
+          {"ceilplan",
+           {{"ekf_origin", {{"lat_deg", origin.latitude_deg}, {"lon_deg", origin.longitude_deg}, {"alt_m", origin.altitude_m}}},
+            {"map_frame", "ENU: x east, y north, z up, metres from ekf_origin"},
+            {"sortie", mission.sortie}}}};
 }
 
 std::string qgcWpl(const AutopilotMission& mission) {
   const GlobalMission global = toGlobal(mission);
   std::string text = "QGC WPL 110\n";
-  char row[256];
+  char row[320];
   // Eight decimals of a degree are about a millimetre.
-  std::snprintf(row, sizeof row, "0\t1\t%d\t%d\t0\t0\t0\t0\t%.8f\t%.8f\t%.4f\t1\n", kMavFrameGlobal, kMavCmdNavWaypoint,
-                global.home.x(), global.home.y(), global.home.z());
+  std::snprintf(row, sizeof row, "0\t1\t%d\t%d\t0\t0\t0\t0\t%.8f\t%.8f\t%.4f\t1\n", mav::kFrameGlobal,
+                mav::kNavWaypoint, global.home.x(), global.home.y(), global.home.z());
   text += row;
   int index = 1;
-  for (const GlobalWaypoint& waypoint : global.waypoints) {
-    std::snprintf(row, sizeof row, "%d\t0\t%d\t%d\t%.3f\t%.3f\t%.3f\t%.3f\t%.8f\t%.8f\t%.4f\t1\n", index++,
-                  kMavFrameGlobalRelativeAlt, kMavCmdNavWaypoint, waypoint.hold_s, mission.acceptance_radius_m,
-                  mission.pass_radius_m, waypoint.yaw_deg.value_or(0.0), waypoint.latitude_deg, waypoint.longitude_deg,
-                  waypoint.relative_altitude_m);
+  for (const MissionItem& item : global.items) {
+    const auto& p = item.params;
+    std::snprintf(row, sizeof row, "%d\t0\t%d\t%d\t%.3f\t%.3f\t%.3f\t%.3f\t%.8f\t%.8f\t%.4f\t1\n", index++, item.frame,
+                  item.command, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
     text += row;
   }
   return text;

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 namespace ceilplan::io {
 namespace {
@@ -73,7 +74,7 @@ std::string columnList(const std::vector<std::string>& names) {
 }  // namespace
 
 CsvColumns CsvColumns::read(const std::filesystem::path& path, const std::vector<std::string>& required,
-                            const std::vector<std::string>& optional) {
+                            const std::vector<std::string>& optional, const std::vector<std::string>& none_is_infinite) {
   const std::string shown = printableText(path.string(), 256);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
@@ -82,17 +83,18 @@ CsvColumns CsvColumns::read(const std::filesystem::path& path, const std::vector
   if (!input)
     throw ceilplan::InputError("cannot open " + shown + ": " + std::strerror(errno) +
                                "; check the path and permissions");
-  return parse(input, shown, required, optional);
+  return parse(input, shown, required, optional, none_is_infinite);
 }
 
 CsvColumns CsvColumns::parse(std::istream& input, const std::string& source, const std::vector<std::string>& required,
-                             const std::vector<std::string>& optional) {
+                             const std::vector<std::string>& optional, const std::vector<std::string>& none_is_infinite) {
   CsvColumns table;
   table.source_ = source;
   std::string line;
   std::vector<std::string> fields;
   std::size_t line_number = 0;
   bool have_header = false;
+  std::vector<bool> none_allowed;  // per kept column
   while (std::getline(input, line)) {
     ++line_number;
     if (line_number == 1 && line.compare(0, kByteOrderMark.size(), kByteOrderMark) == 0)
@@ -123,6 +125,8 @@ CsvColumns CsvColumns::parse(std::istream& input, const std::string& source, con
           table.kept_fields_.push_back(static_cast<std::size_t>(it - table.names_.begin()));
         }
       table.kept_.resize(table.kept_names_.size());
+      for (const std::string& name : table.kept_names_)
+        none_allowed.push_back(std::find(none_is_infinite.begin(), none_is_infinite.end(), name) != none_is_infinite.end());
       have_header = true;
       continue;
     }
@@ -131,10 +135,15 @@ CsvColumns CsvColumns::parse(std::istream& input, const std::string& source, con
                                  std::to_string(table.names_.size()) + " columns");
     for (std::size_t k = 0; k < table.kept_fields_.size(); ++k) {
       const std::string& field = fields[table.kept_fields_[k]];
+      if (none_allowed[k] && (field.empty() || field == "none")) {
+        table.kept_[k].push_back(std::numeric_limits<double>::infinity());
+        continue;
+      }
       const std::string at = where + ", column " + quotedName(table.kept_names_[k]) + ": ";
       char* end = nullptr;
       const double value = std::strtod(field.c_str(), &end);
-      if (field.empty() || end != field.c_str() + field.size())
+      if (field.empty()) throw ceilplan::InputError(at + "empty field");
+      if (end != field.c_str() + field.size())
         throw ceilplan::InputError(at + "'" + printableText(field) + "' is not a number");
       if (!std::isfinite(value))
         throw ceilplan::InputError(at + "'" + printableText(field) + "' is not a finite number");

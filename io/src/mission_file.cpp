@@ -2,7 +2,9 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
+#include "ceilplan/planner/flight_cost_model.hpp"
 
 #include "yaml_reader.hpp"
 
@@ -66,7 +68,7 @@ mission::MissionSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
   node.allowOnly({"cruise_m_s", "inspection_m_s", "climb_m_s", "descent_m_s"});
   mission::MissionSpeeds speeds;
   const Range horizontal = Range::above(0.0, max_speed_m_s, "m/s (the vehicle's max_speed_m_s)");
-  const Range vertical = Range::above(0.0, std::min(10.0, max_speed_m_s), "m/s");
+  const Range vertical = Range::above(0.0, std::min(planner::FlightSpeeds::kMaxVerticalSpeed_m_s, max_speed_m_s), "m/s");
   speeds.cruise_m_s = node.number("cruise_m_s", horizontal, speeds.cruise_m_s);
   speeds.inspection_m_s = node.number("inspection_m_s", horizontal, speeds.inspection_m_s);
   speeds.climb_m_s = node.number("climb_m_s", vertical, speeds.climb_m_s);
@@ -106,8 +108,10 @@ std::vector<mission::InspectionTarget> readTargets(const Section& root) {
 std::filesystem::path existingFile(const Section& root, const std::string& key) {
   const std::filesystem::path path = root.file().path().parent_path() / root.text(key);
   std::error_code ec;
+  const std::string named = "'" + key + "' names " + printableText(path.string(), 256);
+  if (std::filesystem::is_directory(path, ec)) root.fail(named + ", which is a directory, not a file");
   if (!std::filesystem::is_regular_file(path, ec))
-    root.fail("'" + key + "' names " + path.string() + ", which does not exist (paths are relative to the mission file)");
+    root.fail(named + ", which does not exist (paths are relative to the mission file)");
   return path;
 }
 
@@ -118,7 +122,7 @@ environment::UnknownSpace readUnknownSpace(const Section& node) {
   if (node.has("fill_max_m")) {
     if (unknown.policy != environment::UnknownPolicy::Fill)
       node.fail("'" + node.keyPath("fill_max_m") + "' applies only to policy: fill");
-    unknown.fill_max_m = node.number("fill_max_m", Range::above(0.0, 1000.0, "m"));
+    unknown.fill_max_m = node.number("fill_max_m", Range::above(0.0, environment::UnknownSpace::kMaxFill_m, "m"));
   }
   return unknown;
 }
@@ -128,7 +132,8 @@ environment::UnknownSpace readUnknownSpace(const Section& node) {
 mission::Mission readMission(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Mission);
   const Section root(yaml, yaml.root(), "");
-  root.allowOnly({"map", "vehicle", "battery", "home", "origin", "speeds", "mode", "seed", "unknown", "targets"});
+  root.allowOnly(
+      {"map", "vehicle", "battery", "home", "origin", "speeds", "mode", "seed", "unknown", "trajectory", "targets"});
   mission::Mission mission;
   mission.file = file;
   mission.map_file = existingFile(root, "map");
@@ -142,6 +147,14 @@ mission::Mission readMission(const std::filesystem::path& file) {
   mission.mode = root.choice("mode", {"ceiling", "free", "both"}, "");
   mission.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, 1));
   if (const std::optional<Section> unknown = root.optionalSection("unknown")) mission.unknown = readUnknownSpace(*unknown);
+  if (const std::optional<Section> trajectory = root.optionalSection("trajectory")) {
+    trajectory->allowOnly({"rate_hz", "corner_tolerance_m", "stop_turn_deg", "frame"});
+    mission::TrajectoryOptions& t = mission.trajectory;
+    t.rate_hz = trajectory->number("rate_hz", Range::closed(1.0, 1000.0, "Hz"), t.rate_hz);
+    t.corner_tolerance_m = trajectory->number("corner_tolerance_m", Range::closed(0.0, 5.0, "m"), t.corner_tolerance_m);
+    t.stop_turn_deg = trajectory->number("stop_turn_deg", Range::closed(0.0, 90.0, "deg"), t.stop_turn_deg);
+    mission.trajectory_ned = trajectory->choice("frame", {"enu", "ned"}, "enu") == "ned";
+  }
   mission.targets = readTargets(root);
   return mission;
 }

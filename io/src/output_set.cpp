@@ -1,6 +1,7 @@
 #include "ceilplan/io/output_set.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/printable_text.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -43,10 +44,22 @@ void OutputSet::checkWritable(const fs::path& dir) {
     throw InputError("cannot write next to " + dir.string() + ": " + parent.string() + " is read-only");
 }
 
-OutputSet::OutputSet(fs::path dir) : staging_(checkedDirectory(std::move(dir))) {
+void checkWritableFile(const fs::path& file) {
+  if (file.empty()) throw InputError("the output file name is empty: name a file");
+  const std::string shown = printableText(file.string(), 256);
   std::error_code ec;
-  fs::create_directories(staging_.path(), ec);
-  if (ec) throw Error("cannot create " + staging_.path().string() + ": " + ec.message());
+  if (fs::is_directory(file, ec)) throw InputError(shown + " is a directory: name a file for the output");
+  fs::path existing = fs::absolute(file, ec).parent_path();
+  while (!fs::exists(existing, ec)) existing = existing.parent_path();
+  if (!fs::is_directory(existing, ec))
+    throw InputError("cannot create " + shown + ": " + printableText(existing.string(), 256) + " is a file, not a directory");
+  if (!writable(existing))
+    throw InputError("cannot write " + shown + ": the directory " + printableText(existing.string(), 256) + " is read-only");
+  struct stat status {};
+  if (::stat(file.c_str(), &status) == 0 && (status.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0)
+    throw InputError("cannot write " + shown + ": the file exists and is read-only");
 }
+
+OutputSet::OutputSet(fs::path dir) : staging_(checkedDirectory(std::move(dir)), true) {}
 
 }  // namespace ceilplan::io

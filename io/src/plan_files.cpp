@@ -70,9 +70,14 @@ void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanRes
 std::vector<Eigen::Vector3d> readPathWaypoints(const std::filesystem::path& file) {
   const CsvColumns table = CsvColumns::read(file, {}, {"x", "y", "z", "x_m", "y_m", "z_m"});
   const std::string suffix = table.hasColumn("x") ? "" : "_m";
+  const std::vector<std::string>& names = table.columnNames();
+  if (!table.hasColumn("x" + suffix) && std::find(names.begin(), names.end(), "north_m") != names.end())
+    throw InputError(file.string() +
+                     " is in the NED frame (north_m, east_m, down_m); a path is read in the map frame: "
+                     "write the trajectory in ENU (x_m, y_m, z_m)");
   for (const char* axis : {"x", "y", "z"})
     if (!table.hasColumn(axis + suffix))
-      throw InputError(file.string() + ": a path CSV needs columns x, y, z (or x_m, y_m, z_m)");
+      throw InputError(file.string() + " has neither x, y, z (path.csv) nor x_m, y_m, z_m (trajectory.csv) columns");
   const std::vector<double>&x = table.column("x" + suffix), &y = table.column("y" + suffix), &z = table.column("z" + suffix);
   std::vector<Eigen::Vector3d> waypoints;
   for (std::size_t row = 0; row < table.rowCount(); ++row) {

@@ -78,7 +78,7 @@ ProjectedFrame::ProjectedFrame(const std::string& crs, const Eigen::Vector3d& or
   if (!std::isfinite(geodetic.lp.lam) || !std::isfinite(geodetic.lp.phi) || std::abs(geodetic.lp.phi) > 90.0)
     throw ceilplan::InputError("the origin " + formatPoint(origin_projected) + " lies outside where " + crs + " is defined");
   origin_ = GeodeticOrigin{geodetic.lp.phi, geodetic.lp.lam, origin_projected.z() * p.unit_m};
-  p.enu.Reset(origin_.lat_deg, origin_.lon_deg, origin_.alt_m);
+  p.enu.Reset(origin_.latitude_deg, origin_.longitude_deg, origin_.altitude_m);
 }
 
 ProjectedFrame::~ProjectedFrame() = default;

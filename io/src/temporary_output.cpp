@@ -5,9 +5,10 @@
 #include <pthread.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <mutex>
-#include <set>
+#include <map>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -24,8 +25,15 @@ std::mutex& registryMutex() {
   return mutex;
 }
 
-std::set<fs::path>& registry() {
-  static std::set<fs::path> paths;
+// Each registered temporary, with the final path it will take and the parent directories
+// created for it (deepest first).
+struct Registered {
+  fs::path final_path;
+  std::vector<fs::path> created_parents;
+};
+
+std::map<fs::path, Registered>& registry() {
+  static std::map<fs::path, Registered> paths;
   return paths;
 }
 
@@ -43,7 +51,18 @@ sigset_t cleanupSignals() {
   }
   registryMutex().lock();
   std::error_code ignored;
-  for (const fs::path& path : registry()) fs::remove_all(path, ignored);
+  // Other threads run on: no new temporary can start (its constructor waits for the lock), but a
+  // file of a registered one may be opened while remove_all walks its directory. Walk again.
+  for (int pass = 0; pass < 20; ++pass) {
+    bool left = false;
+    for (const auto& [temporary, registered] : registry()) {
+      fs::remove_all(temporary, ignored);
+      for (const fs::path& parent : registered.created_parents) fs::remove(parent, ignored);  // only if still empty
+      left |= fs::exists(temporary, ignored);
+    }
+    if (!left) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
   // End the process the way the signal would have, so the caller sees "killed by SIGINT".
   std::signal(signal_number, SIG_DFL);
   sigset_t only;
@@ -65,9 +84,21 @@ void installSignalCleanup() {
   });
 }
 
-TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_path)) {
+fs::path finalPathOf(const fs::path& path) {
+  const std::lock_guard<std::mutex> lock(registryMutex());
+  for (const auto& [temporary, registered] : registry()) {
+    const fs::path inside = path.lexically_relative(temporary);
+    if (!inside.empty() && *inside.begin() != "..")
+      return inside == "." ? registered.final_path : registered.final_path / inside;
+  }
+  return path;
+}
+
+TemporaryOutput::TemporaryOutput(fs::path final_path, bool directory) : final_(std::move(final_path)) {
   temporary_ = final_;
   temporary_ += ".tmp" + std::to_string(::getpid());
+  // Under the lock: once the signal cleanup has begun, nothing more is created on disk.
+  const std::lock_guard<std::mutex> lock(registryMutex());
   std::error_code ec;
   for (fs::path parent = final_.parent_path(); !parent.empty() && !fs::exists(parent, ec); parent = parent.parent_path())
     created_parents_.push_back(parent);
@@ -76,8 +107,15 @@ TemporaryOutput::TemporaryOutput(fs::path final_path) : final_(std::move(final_p
     if (ec)
       throw ceilplan::Error("cannot create directory " + final_.parent_path().string() + ": " + ec.message());
   }
-  const std::lock_guard<std::mutex> lock(registryMutex());
-  registry().insert(temporary_);
+  if (directory) {
+    fs::create_directory(temporary_, ec);
+    if (ec) {
+      std::error_code ignored;
+      for (const fs::path& parent : created_parents_) fs::remove(parent, ignored);
+      throw ceilplan::Error("cannot create " + temporary_.string() + ": " + ec.message());
+    }
+  }
+  registry().emplace(temporary_, Registered{final_, created_parents_});
 }
 
 TemporaryOutput::~TemporaryOutput() {

@@ -4,7 +4,12 @@
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/map_views.hpp"
+#include "ceilplan/io/dji_wpml.hpp"
+#include "ceilplan/io/geo_export.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/report_html.hpp"
+#include "ceilplan/io/tour_report.hpp"
+#include "ceilplan/io/trajectory_file.hpp"
 #include "ceilplan/io/unknown_space_report.hpp"
 
 #include <cmath>
@@ -73,6 +78,19 @@ std::vector<Eigen::Vector3d> flownRoute(const mission::TourResult& tour) {
 
 }  // namespace
 
+std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission) {
+  if (!mission.origin) return "no geodetic origin";
+  for (const mission::SortieRoute& route : tour.routes) {
+    try {
+      djiWpml(route, *mission.origin);
+    } catch (const InputError& e) {
+      return "sortie " + std::to_string(route.sortie) + ": " + e.what() +
+             " (the default payload, a Zenmuse H20 underslung; an upward-mounted payload is needed)";
+    }
+  }
+  return std::nullopt;
+}
+
 nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission, const Provenance& provenance) {
   nlohmann::json json;
   json["mission"] = mission.name();
@@ -86,6 +104,8 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   json["between_sorties"] = mission.battery.between_sorties == mission::Turnaround::Swap ? "swap" : "recharge";
   json["unknown_space"] = unknownSpaceJson(tour.unknown_space, tour.unknown_summary);
   json["assumed_free_m"] = tour.assumed_free_m;
+  const std::optional<std::string> dji = djiExportProblem(tour, mission);
+  json["dji_kmz"] = dji ? "not written: " + *dji : "written";
   json["targets_total"] = tour.stops.size();
   int visited = 0;
   for (const mission::Sortie& sortie : tour.plan.sorties) visited += static_cast<int>(sortie.targets.size());
@@ -179,19 +199,9 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
                                                 Autopilot autopilot) {
   const mission::GeodeticOrigin& origin = mission.requireOrigin();
   std::vector<AutopilotMission> missions;
-  for (const mission::Sortie& sortie : tour.plan.sorties) {
-    AutopilotMission m;
-    m.home_m = mission.home_m;
-    m.origin = origin;
-    m.autopilot = autopilot;
-    m.cruise_speed_m_s = mission.speeds.cruise_m_s;
-    m.hover_speed_m_s = mission.speeds.inspection_m_s;
-    for (const mission::SortieLeg& leg : sortie.legs) {
-      const std::vector<Eigen::Vector3d>& waypoints = tour.legs[leg.from][leg.to].waypoints;
-      for (std::size_t i = 1; i < waypoints.size(); ++i) m.waypoints.push_back({waypoints[i], 0.0, std::nullopt});
-      if (leg.to != 0) m.waypoints.back().hold_s = tour.stops[leg.to - 1].target.dwell_s;
-    }
-    missions.push_back(std::move(m));
+  for (const mission::SortieRoute& route : tour.routes) {
+    missions.push_back(autopilotMission(route, origin, autopilot));
+    missions.back().hover_speed_m_s = mission.speeds.inspection_m_s;
   }
   return missions;
 }
@@ -203,13 +213,29 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
                       [&](std::ostream& out) { out << std::setw(2) << tourJson(tour, mission, provenance) << '\n'; });
   writeTourPathCsv(dir / "path.csv", tour, provenance);
   writeMapViews(dir, environment, flownRoute(tour), provenance);
+  const int count = static_cast<int>(tour.trajectories.size());
+  const TrajectoryFrame frame = mission.trajectory_ned ? TrajectoryFrame::Ned : TrajectoryFrame::Enu;
+  for (int k = 0; k < count; ++k) {
+    writeTrajectoryCsv(sortieFileName(dir / "trajectory.csv", k + 1, count), tour.trajectories[k], frame);
+    writeTrajectoryJson(sortieFileName(dir / "trajectory.json", k + 1, count), tour.trajectories[k], frame,
+                        mission.origin);
+  }
+  writeReportHtml(dir / "report.html",
+                  tourReport({&tour}, mission, environment,
+                             mission.name() + ": " + mission::flightModeName(tour.mode) + " mode"));
   if (!autopilot) return;
   const std::vector<AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
-  const int count = static_cast<int>(missions.size());
   for (int k = 0; k < count; ++k) {
     writeQgcPlan(sortieFileName(dir / "mission.plan", k + 1, count), missions[k]);
     writeQgcWpl(sortieFileName(dir / "mission.waypoints", k + 1, count), missions[k]);
   }
+  // DJI's payloads look up only so far: a tour that looks straight up at a soffit cannot be
+  // flown with the default one, and tour.json's dji_kmz says so instead of a wrong photo angle.
+  if (!djiExportProblem(tour, mission))
+    for (int k = 0; k < count; ++k)
+      writeDjiKmz(sortieFileName(dir / "mission.kmz", k + 1, count), tour.routes[k], *mission.origin);
+  writeRoutesKml(dir / "routes.kml", tour.routes, *mission.origin, mission.name());
+  writeRoutesGeoJson(dir / "routes.geojson", tour.routes, *mission.origin);
 }
 
 std::string comparisonTable(const mission::TourResult& ceiling, const mission::TourResult& free) {
@@ -284,6 +310,7 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
   routes.insert(routes.end(), free_route.begin(), free_route.end());
   writeMapViews(dir, environment, routes, provenance);
   writeTextAtomically(dir / "comparison.txt", [&](std::ostream& stream) { stream << comparisonTable(ceiling, free); });
+  writeReportHtml(dir / "report.html", tourReport({&ceiling, &free}, mission, environment, mission.name() + ": both modes"));
   writeTextAtomically(dir / "comparison.json", [&](std::ostream& stream) {
     stream << std::setw(2) << comparisonJson(ceiling, free, mission, provenance) << '\n';
   });

@@ -192,7 +192,7 @@ YAML::Node defaultVehicleDocument() {
 mission::Vehicle readVehicle(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Vehicle);
   const Section root(yaml, yaml.root(), "");
-  root.allowOnly({"name", "mass_kg", "rotors", "airframe", "clearance", "max_speed_m_s", "power"});
+  root.allowOnly({"name", "mass_kg", "rotors", "airframe", "clearance", "max_speed_m_s", "power", "limits"});
   const std::string name = root.text("name", file.stem().string());
   try {
     environment::VehicleGeometry shape;
@@ -204,7 +204,16 @@ mission::Vehicle readVehicle(const std::filesystem::path& file) {
     energy.airframe.rotor_count = rotor_count;
     energy.airframe.rotor_radius_m = shape.rotor_radius_m;
     readPower(root, energy);
-    return mission::Vehicle::assemble(name, std::move(shape), energy);
+    mission::Vehicle vehicle = mission::Vehicle::assemble(name, std::move(shape), energy);
+    if (const std::optional<Section> limits = root.optionalSection("limits")) {
+      limits->allowOnly({"max_acceleration_m_s2", "max_jerk_m_s3", "max_yaw_rate_deg_s"});
+      mission::MotionLimits& l = vehicle.limits;
+      l.max_acceleration_m_s2 =
+          limits->number("max_acceleration_m_s2", Range::above(0.0, 50.0, "m/s^2"), l.max_acceleration_m_s2);
+      l.max_jerk_m_s3 = limits->number("max_jerk_m_s3", Range::above(0.0, 500.0, "m/s^3"), l.max_jerk_m_s3);
+      l.max_yaw_rate_deg_s = limits->number("max_yaw_rate_deg_s", Range::above(0.0, 720.0, "deg/s"), l.max_yaw_rate_deg_s);
+    }
+    return vehicle;
   } catch (const InputError& e) {
     const std::string message = e.what();
     if (message.rfind(file.string() + ": ", 0) == 0) throw;

@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
+#include <sstream>
 #include <system_error>
 
 namespace ceilplan::io::detail {
@@ -61,12 +63,17 @@ YamlFile::YamlFile(const std::filesystem::path& file, FileKind kind) : path_(fil
   if (!std::filesystem::exists(file, ec)) fail("no such " + kindName(kind));
   if (std::filesystem::is_directory(file, ec)) fail("is a directory, not a " + kindName(kind));
   if (!std::filesystem::is_regular_file(file, ec)) fail("is not a regular file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) fail("cannot be read");
+  std::ostringstream bytes;
+  bytes << in.rdbuf();  // an empty file leaves `text` empty: refused below, as not a map
+  const std::string text = bytes.str();
+  // A map or a program given by mistake: say so, rather than quote the parser on its bytes.
+  if (text.find('\0') != std::string::npos) fail("holds binary data, not YAML text; is it a " + kindName(kind) + "?");
   try {
-    root_ = YAML::LoadFile(file.string());
-  } catch (const YAML::BadFile&) {
-    fail("cannot be read");
+    root_ = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    fail("malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+    fail("malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " + printableText(e.msg));
   }
   if (!root_.IsMap()) fail("a " + kindName(kind) + " must be a YAML map of keys (docs/missions.md)");
 }
@@ -76,6 +83,15 @@ void YamlFile::fail(const std::string& problem) const { throw InputError(path_.s
 Section::Section(const YamlFile& file, YAML::Node node, std::string path)
     : file_(&file), node_(std::move(node)), path_(std::move(path)) {
   if (!node_.IsMap()) fail("'" + path_ + "' must be a map of keys");
+  // yaml-cpp keeps a repeated key and answers with its first value: refuse it, as a typo.
+  std::vector<std::string> keys;
+  for (const auto& entry : node_) {
+    if (!entry.first.IsScalar()) fail("'" + (path_.empty() ? std::string("the top level") : path_) + "' has a key that is not text");
+    const std::string& key = entry.first.Scalar();
+    if (std::find(keys.begin(), keys.end(), key) != keys.end())
+      fail("key '" + keyPath(printableText(key, 40)) + "' is given twice");
+    keys.push_back(key);
+  }
 }
 
 std::string Section::keyPath(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }

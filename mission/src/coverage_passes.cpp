@@ -75,9 +75,10 @@ PassPlan orderIntoPasses(const std::vector<CameraPose>& poses, const std::vector
     for (auto& [lane, members] : lanes) {
       ViewPass pass;
       pass.views = std::move(members);
+      // C++17 lambdas cannot capture a structured binding (clang refuses): capture the direction.
+      const Eigen::Vector3d along = family.along;
       std::stable_sort(pass.views.begin(), pass.views.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return forward ? camera_m[a].dot(family.along) < camera_m[b].dot(family.along)
-                       : camera_m[a].dot(family.along) > camera_m[b].dot(family.along);
+        return forward ? camera_m[a].dot(along) < camera_m[b].dot(along) : camera_m[a].dot(along) > camera_m[b].dot(along);
       });
       pass.direction = forward ? family.along : Eigen::Vector3d(-family.along);
       for (std::size_t k = 1; k < pass.views.size(); ++k)

@@ -65,6 +65,7 @@ PlanningContext::PlanningContext(environment::OccupancyMap map, Vehicle vehicle,
   vehicle_.validate();
   battery_.validate();
   energy_ = std::make_unique<energy::EnergyModel>(vehicle_.energy);
+  options_.speeds.validate(energy_->maxSpeedM_s());  // before the map is indexed
   const std::string stage = "indexing " + map_.name();
   environment_ = std::make_unique<environment::Environment>(
       map_, vehicle_.geometry, options_.environment, environment::MapIndexOptions{options_.unknown, options_.environment.workers},

@@ -1,4 +1,5 @@
 #include "ceilplan/mission/tour_order.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <algorithm>
@@ -166,7 +167,7 @@ void validateCostMatrix(const CostMatrix& costs) {
     for (Eigen::Index j = 0; j < costs.cols(); ++j)
       if (!std::isfinite(costs(i, j)) || costs(i, j) < 0.0)
         throw ceilplan::InputError("tour cost from " + std::to_string(i) + " to " + std::to_string(j) +
-                                    " must be finite and non-negative, got " + std::to_string(costs(i, j)));
+                                    " must be finite and non-negative, got " + formatNumber(costs(i, j)));
 }
 
 double tourCost(const CostMatrix& costs, const std::vector<int>& targets) {

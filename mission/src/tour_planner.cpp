@@ -55,6 +55,7 @@ std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext&
   const environment::Environment& environment = context.environment();
   std::vector<TourStop> stops;
   for (const InspectionTarget& target : mission.targets) {
+    requireOnStructure(target, environment);  // as the mission gives it, before free mode widens the range
     TourStop stop{target, {}, {}};
     // A conventional planner inspects from where its standoff lets it, with a zoom lens.
     if (mode == FlightMode::Free)
@@ -396,6 +397,10 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
     for (const SortieLeg& leg : sortie.legs) tour.assumed_free_m += tour.legs[leg.from][leg.to].evaluation.assumed_free_m;
   if (mode == FlightMode::Free) tour.standoff = measureTourStandoff(tour, context.environment(), context.options().standoff_m);
   tour.record = recordFlight(tour, context);
+  std::vector<RouteStop> route_stops;
+  for (const TourStop& stop : tour.stops) route_stops.push_back({stop.target.name, stop.target.point_m, stop.target.dwell_s});
+  tour.routes = sortieRoutes(tour.plan, tour.legs, route_stops, mission);
+  tour.trajectories = routeTrajectories(tour.routes, mission, context.baseRules());
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
     tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));
   tour.duty = projectDuty(tour, context.battery(), options);

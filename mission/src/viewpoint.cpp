@@ -136,6 +136,30 @@ void InspectionTarget::validate() const {
     throw ceilplan::InputError(what + ": dwell time must be finite and non-negative, got " + formatNumber(dwell_s) + " s");
 }
 
+void requireOnStructure(const InspectionTarget& target, const environment::Environment& environment) {
+  if (!environment.contains(target.point_m)) return;
+  const environment::VoxelGrid& grid = environment.grid();
+  const environment::GridFrame& frame = grid.frame();
+  const double reach_m = target.standoff_max_m;
+  int low[3], high[3];
+  for (int axis = 0; axis < 3; ++axis) {
+    low[axis] = std::max(0, frame.indexOf(axis, target.point_m[axis] - reach_m));
+    high[axis] = std::min(frame.size()[axis] - 1, frame.indexOf(axis, target.point_m[axis] + reach_m));
+  }
+  for (int k = low[2]; k <= high[2]; ++k)
+    for (int j = low[1]; j <= high[1]; ++j)
+      for (int i = low[0]; i <= high[0]; ++i) {
+        if (grid.at(i, j, k) != environment::CellState::Occupied) continue;
+        // Distance from the point to the voxel's box.
+        const Eigen::Vector3d lower(frame.faceOf(0, i), frame.faceOf(1, j), frame.faceOf(2, k));
+        const Eigen::Vector3d upper = lower + Eigen::Vector3d::Constant(frame.resolution_m());
+        if ((target.point_m.cwiseMax(lower).cwiseMin(upper) - target.point_m).norm() <= reach_m) return;
+      }
+  throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
+                              " lies in free air: no structure within its standoff range of " +
+                              formatNumber(reach_m) + " m; put the point on the surface it inspects");
+}
+
 double hoverCurrentA(const environment::Environment& environment, const energy::EnergyModel& model,
                      const Eigen::Vector3d& body_m, double soc) {
   const environment::SurfaceGaps above = environment.ceiling(body_m);

@@ -16,7 +16,7 @@ namespace {
 void requirePositive(double value, const char* name) {
   if (!(std::isfinite(value) && value > 0.0))
     throw ceilplan::InputError(std::string("speeds: ") + name + " must be a positive finite number, got " +
-                                std::to_string(value));
+                                formatNumber(value));
 }
 
 }  // namespace
@@ -29,7 +29,15 @@ void FlightSpeeds::validate(double max_speed_m_s) const {
   requirePositive(descent_m_s, "descent_m_s");
   if (cruise_m_s > max_speed_m_s || near_ceiling_m_s > max_speed_m_s)
     throw ceilplan::InputError("speeds: horizontal speeds must not exceed the vehicle's max_speed_m_s (" +
-                                std::to_string(max_speed_m_s) + " m/s)");
+                                formatNumber(max_speed_m_s) + " m/s)");
+  // Vertical rates as a mission file allows them (io/): a multirotor climbs far slower than it cruises.
+  const double vertical_max_m_s = std::min(kMaxVerticalSpeed_m_s, max_speed_m_s);
+  if (climb_m_s > vertical_max_m_s || descent_m_s > vertical_max_m_s)
+    throw ceilplan::InputError("speeds: climb_m_s " + formatNumber(climb_m_s) + " and descent_m_s " +
+                                formatNumber(descent_m_s) + " must not exceed " + formatNumber(vertical_max_m_s) + " m/s");
+  if (near_ceiling_gap_radii > kMaxNearCeilingGapRadii)
+    throw ceilplan::InputError("speeds: near_ceiling_gap_radii must be at most " + formatNumber(kMaxNearCeilingGapRadii) +
+                                " rotor radii (the ceiling effect has faded by 2.5), got " + formatNumber(near_ceiling_gap_radii));
 }
 
 FlightCostModel::FlightCostModel(const environment::Environment& environment, const energy::EnergyModel& energy,
@@ -37,7 +45,7 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
     : environment_(environment), energy_(energy), options_(options) {
   options_.speeds.validate(energy_.maxSpeedM_s());
   if (!(options_.planning_soc > 0.0 && options_.planning_soc <= 1.0))
-    throw ceilplan::InputError("planning SOC must lie in (0, 1], got " + std::to_string(options_.planning_soc));
+    throw ceilplan::InputError("planning SOC must lie in (0, 1], got " + formatNumber(options_.planning_soc));
   if (!(std::isfinite(options_.step_m) && options_.step_m >= 0.0))
     throw ceilplan::InputError("integration step must be >= 0 (0: half a voxel)");
   if (!(std::isfinite(options_.standoff_m) && options_.standoff_m >= 0.0))

@@ -63,7 +63,7 @@ void FlightPlanner::requireValidEndpoint(const Eigen::Vector3d& p, const std::st
     throw ceilplan::InputError(what + " " + formatPoint(p) + " is not a valid state: " + violation->describe());
   if (!rules_.isStateValid(p))
     throw ceilplan::InputError(what + " " + formatPoint(p) + " is too close to a ceiling (rotor plane within " +
-                                std::to_string(rules_.minCeilingGap_m()) + " m) or violates the standoff");
+                                formatNumber(rules_.minCeilingGap_m()) + " m) or violates the standoff");
 }
 
 void FlightPlanner::installBandSampler(double band_fraction) const {

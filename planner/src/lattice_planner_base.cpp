@@ -1,4 +1,5 @@
 #include "ceilplan/planner/lattice_planner_base.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include "ceilplan/core/error.hpp"
 
@@ -21,7 +22,7 @@ LatticePlannerBase::LatticePlannerBase(const ompl::base::SpaceInformationPtr& si
   specs_.directed = true;
   declareParam<double>("spacing_m", this, &LatticePlannerBase::setSpacing, &LatticePlannerBase::getSpacing,
                        "0.01:0.01:2.0");
-  addPlannerProgressProperty("best cost REAL", [this] { return std::to_string(best_cost_.load()); });
+  addPlannerProgressProperty("best cost REAL", [this] { return formatNumber(best_cost_.load(), 17); });
 }
 
 void LatticePlannerBase::setSpacing(double spacing_m) {

@@ -1,4 +1,5 @@
 #include "ceilplan/planner/lattice_roadmap.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/parallel_for.hpp"
@@ -78,7 +79,7 @@ bool LatticeRoadmap::buildGraph(const FlightObjective& objective, const std::fun
   const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
   node_count_ = lattice.nodeCount();
   if (node_count_ >= kNoSlot)
-    throw ceilplan::InputError("the map has too many lattice nodes for a " + std::to_string(lattice.spacing_m()) +
+    throw ceilplan::InputError("the map has too many lattice nodes for a " + formatNumber(lattice.spacing_m()) +
                                " m spacing: raise the spacing");
   // Shares of the build time, roughly as on the shipped bridge: nodes 10 %, edges 80 %, places 10 %.
   std::atomic<bool> stop{false};

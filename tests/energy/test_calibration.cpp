@@ -94,6 +94,18 @@ TEST(Calibration, ReportsEachFittedValueWithItsAllowedRange) {
   EXPECT_LE(hover.value, hover.upper);
   EXPECT_GT(result.rmse_a, 0.0);  // K1, K2 left wrong on purpose
   EXPECT_GE(result.max_abs_error_a, result.rmse_a);
+  EXPECT_FALSE(hover.atBound());
+}
+
+TEST(Calibration, AFitAtAnEndOfItsRangeSaysSo) {
+  FittedParameter fitted{FreeParameter::kK1, 2.0, 1.0, 4.0, 2.0};
+  EXPECT_FALSE(fitted.atBound());
+  fitted.value = 1.0 + 1e-7;  // within 1e-6 of the lower end
+  EXPECT_TRUE(fitted.atBound());
+  fitted.value = 4.0;
+  EXPECT_TRUE(fitted.atBound());
+  fitted.value = 4.0 * (1 - 1e-5);
+  EXPECT_FALSE(fitted.atBound());
 }
 
 namespace {

@@ -118,7 +118,7 @@ TEST(EnergyModel, ClimbCostsMgVOverEfficiencyAndDescentIsFloored) {
   EXPECT_NEAR(model.breakdown(kNoSurface, 1.0, climb).climb_w,
               p.airframe.mass_kg * kStandardGravityM_s2 / p.rotor.motor_efficiency, 1e-9);
   FlightCondition fast_descent = hover();
-  fast_descent.climb_m_s = -50.0;
+  fast_descent.climb_m_s = -p.airframe.max_speed_m_s;  // the fastest descent the vehicle allows
   const CurrentBreakdown b = model.breakdown(kNoSurface, 1.0, fast_descent);
   EXPECT_NEAR(b.induced_w + b.profile_w + b.parasitic_w + b.climb_w,
               p.rotor.descent_power_floor * (b.induced_w + b.profile_w + b.parasitic_w), 1e-9);

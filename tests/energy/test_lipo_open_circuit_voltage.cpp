@@ -42,3 +42,11 @@ TEST(LipoOpenCircuitVoltage, RefusesChargeOutsideZeroToOne) {
   EXPECT_THROW(ocv.cellVoltageV(1.01), ceilplan::InputError);
   EXPECT_THROW(ocv.cellVoltageV(std::nan("")), ceilplan::InputError);
 }
+
+TEST(LipoOpenCircuitVoltage, AsAFunctionOfSocItIsTheSameCheckedCurve) {
+  const LipoOpenCircuitVoltage ocv;
+  const auto cell_voltage_v = ceilplan::energy::lipoCellVoltageOfSoc();
+  for (double soc : {0.0, 0.02, 0.5, 0.95, 1.0}) EXPECT_EQ(cell_voltage_v(soc), ocv.cellVoltageV(soc)) << soc;
+  EXPECT_DOUBLE_EQ(cell_voltage_v(1.0), 4.173);
+  EXPECT_THROW(cell_voltage_v(1.5), ceilplan::InputError);
+}

@@ -20,9 +20,9 @@ constexpr double kVoxelAndRounding = 0.1 + 1e-9;
 TEST(ProjectedFrame, TheUtmFalseOriginIsOnTheEquatorAtTheCentralMeridian) {
   // UTM zone 32N: easting 500 000 m lies on 9 deg E, northing 0 on the equator, by definition.
   const io::ProjectedFrame frame("EPSG:32632", {500000.0, 0.0, 12.5});
-  EXPECT_NEAR(frame.origin().lat_deg, 0.0, 1e-9);
-  EXPECT_NEAR(frame.origin().lon_deg, 9.0, 1e-9);
-  EXPECT_DOUBLE_EQ(frame.origin().alt_m, 12.5);
+  EXPECT_NEAR(frame.origin().latitude_deg, 0.0, 1e-9);
+  EXPECT_NEAR(frame.origin().longitude_deg, 9.0, 1e-9);
+  EXPECT_DOUBLE_EQ(frame.origin().altitude_m, 12.5);
   EXPECT_EQ(frame.crsName(), "WGS 84 / UTM zone 32N");
 }
 
@@ -31,8 +31,8 @@ TEST(ProjectedFrame, LocalCoordinatesAgreeWithGeographicLib) {
   const io::ProjectedFrame frame("EPSG:32632", origin);
   double lat0, lon0;
   GeographicLib::UTMUPS::Reverse(32, true, origin.x(), origin.y(), lat0, lon0);
-  EXPECT_NEAR(frame.origin().lat_deg, lat0, 1e-9);
-  EXPECT_NEAR(frame.origin().lon_deg, lon0, 1e-9);
+  EXPECT_NEAR(frame.origin().latitude_deg, lat0, 1e-9);
+  EXPECT_NEAR(frame.origin().longitude_deg, lon0, 1e-9);
 
   std::vector<Eigen::Vector3d> points = {origin, origin + Eigen::Vector3d(120.0, -80.0, 15.0), origin + Eigen::Vector3d(-300.0, 450.0, -5.0)};
   const std::vector<Eigen::Vector3d> projected = points;

@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -74,6 +75,16 @@ TEST(CsvColumns, RefusesBadInputInOneLineNamingLineAndColumn) {
   EXPECT_EQ(errorOf("soc,soc\n", {"soc"}), "log.csv line 1: column 'soc' appears twice in the header");
   EXPECT_EQ(errorOf("", {"soc"}), "log.csv is empty; expected a header row of column names");
   EXPECT_NE(errorOf("\x7f" "ELF\x02\x01,x\n", {"soc"}).find("header holds control characters"), std::string::npos);
+}
+
+TEST(CsvColumns, ReadsAnEmptyFieldOrNoneAsInfinityOnlyWhereAsked) {
+  std::istringstream input("gap_m,current_a\nnone,9.5\n,9.4\n0.05,8\n");
+  const CsvColumns table = CsvColumns::parse(input, "log.csv", {"current_a"}, {"gap_m"}, {"gap_m"});
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(table.column("gap_m"), (std::vector<double>{inf, inf, 0.05}));
+  EXPECT_EQ(errorOf("gap_m,current_a\nnone,9.5\n", {"gap_m"}), "log.csv line 2, column 'gap_m': 'none' is not a number");
+  std::istringstream elsewhere("gap_m,current_a\n0.05,\n");
+  EXPECT_THROW(CsvColumns::parse(elsewhere, "log.csv", {"current_a"}, {"gap_m"}, {"gap_m"}), ceilplan::InputError);
 }
 
 TEST(TemporaryOutput, AppearsOnlyWhenCommittedAndIsRemovedOtherwise) {

@@ -20,13 +20,17 @@
 #include <map>
 #include <memory>
 
+#include <unistd.h>
+
 namespace ceilplan::mission {
 namespace {
 
 const std::filesystem::path kBridge = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.yaml";
 
 std::filesystem::path scratch(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("ceilplan_tour_record_" + name);
+  // One directory per process: ctest runs this suite's tests in parallel processes.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("ceilplan_tour_record_" + std::to_string(::getpid()) + "_" + name);
   std::filesystem::remove_all(dir);
   return dir;
 }
@@ -151,6 +155,32 @@ TEST_F(BridgeTour, WearFromPathCsvSocEqualsTheTourJson) {
     const double expected = written_->json["wear"][model]["cycle_wear"].get<double>();
     EXPECT_NEAR(ageing->cycleWear(), expected, 1e-6 * expected) << model;
   }
+}
+
+TEST_F(BridgeTour, WritesTheFlyingFilesAndItsTrajectoryPassesTheDenseRecheck) {
+  for (const char* file : {"trajectory.csv", "trajectory.json", "report.html", "mission.plan", "mission.waypoints",
+                           "routes.kml", "routes.geojson"})
+    EXPECT_TRUE(std::filesystem::is_regular_file(written_->dir / file)) << file;
+  // The KMZ needs a payload that can look where the tour looks; tour.json says which happened.
+  const std::string dji = written_->json["dji_kmz"].get<std::string>();
+  EXPECT_EQ(std::filesystem::is_regular_file(written_->dir / "mission.kmz"), dji == "written") << dji;
+  const TourResult& tour = written_->tour;
+  ASSERT_EQ(tour.trajectories.size(), tour.plan.sorties.size());
+  for (const Trajectory& trajectory : tour.trajectories) {
+    std::vector<Eigen::Vector3d> positions;
+    for (const TrajectorySetpoint& s : trajectory.setpoints) positions.push_back(s.position_m);
+    EXPECT_FALSE(context_->baseRules().checkPathDensely(positions)) << "sortie " << trajectory.sortie;
+  }
+  // Every viewpoint is a waypoint with the target's dwell, the camera aimed and a photo.
+  int photos = 0;
+  for (const SortieRoute& route : tour.routes)
+    for (const RouteWaypoint& w : route.waypoints)
+      if (w.take_photo) {
+        ++photos;
+        EXPECT_GT(w.hold_s, 0.0) << w.name;
+        EXPECT_TRUE(w.gimbal_pitch_deg.has_value()) << w.name;
+      }
+  EXPECT_EQ(photos, 13);
 }
 
 TEST_F(BridgeTour, TheDutyProjectionIsAReportWithItsSettings) {

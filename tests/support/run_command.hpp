@@ -32,15 +32,16 @@ inline std::filesystem::path scratchDirectory(const std::string& name) {
   return dir;
 }
 
-// `arguments` is passed through the shell after the executable's path.
-inline CommandResult runCeilplan(const std::string& arguments) {
+// `arguments` is passed through the shell after the executable's path; `shell_prefix`, if any,
+// runs first in the same shell (e.g. "ulimit -v 1000000;").
+inline CommandResult runCeilplan(const std::string& arguments, const std::string& shell_prefix = "") {
   const std::filesystem::path dir = std::filesystem::path(CEILPLAN_TEST_TMP);
   std::filesystem::create_directories(dir);
   static int calls = 0;  // tests run in parallel processes: pid + call count names the capture files
   const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(++calls);
   const auto out_path = dir / ("stdout_" + tag);
   const auto err_path = dir / ("stderr_" + tag);
-  const std::string command = std::string(CEILPLAN_EXE) + " " + arguments + " </dev/null >" +
+  const std::string command = shell_prefix + " " + std::string(CEILPLAN_EXE) + " " + arguments + " </dev/null >" +
                               out_path.string() + " 2>" + err_path.string();
   const int status = std::system(command.c_str());
   CommandResult result;

@@ -7,13 +7,16 @@
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/duty_cycle.hpp"
+#include "ceilplan/battery/duty_study.hpp"
 #include "ceilplan/battery/lifetime.hpp"
 #include "ceilplan/battery/rainflow.hpp"
 
 #include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
+#include "ceilplan/environment/position_probe.hpp"
 
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
@@ -24,7 +27,14 @@
 #include "ceilplan/mission/tour_planner.hpp"
 
 #include "ceilplan/io/autopilot_export.hpp"
+#include "ceilplan/io/calibration_file.hpp"
+#include "ceilplan/io/duty_study_files.hpp"
+#include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/map_import.hpp"
 #include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/io/octomap_file.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/report_json.hpp"
+#include "ceilplan/io/soc_series_file.hpp"
 #include "ceilplan/io/tour_files.hpp"
 #include "ceilplan/io/vehicle_file.hpp"

@@ -61,4 +61,14 @@ class RainflowCounter {
 // cycles.
 std::vector<RainflowCycle> countRainflowCycles(const std::vector<double>& series);
 
+// What a count adds up to: full and half cycles, cycles in all (a half counts 0.5), and the sum
+// of count x range (the FEC of an SOC series' swings).
+struct RainflowTotals {
+  double full_cycles = 0.0;
+  double half_cycles = 0.0;
+  double cycles = 0.0;
+  double count_weighted_range = 0.0;
+};
+RainflowTotals rainflowTotals(const std::vector<RainflowCycle>& cycles);
+
 }  // namespace ceilplan::battery

@@ -11,7 +11,7 @@ namespace ceilplan {
 // At most `significant` significant digits, no trailing zeros: "5.2", "0.009655", "1e-09", "nan", "inf".
 std::string formatNumber(double value, int significant = 6);
 
-// Exactly `decimals` decimals: formatFixed(43.5, 2) == "43.50".
+// Exactly `decimals` decimals: formatFixed(43.5, 2) == "43.50"; from 1e15 on, as formatNumber.
 std::string formatFixed(double value, int decimals);
 
 // "(x, y, z)" with `decimals` decimals each: formatPoint({1, 2, 3}) == "(1.00, 2.00, 3.00)".

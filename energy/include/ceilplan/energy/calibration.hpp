@@ -35,6 +35,9 @@ struct FittedParameter {
   double lower;  // the range it was allowed
   double upper;
   double start;
+
+  // The fit ended at (within 1e-6 of) an end of the allowed range: the data would take it further.
+  bool atBound() const { return value <= lower * (1 + 1e-6) || value >= upper * (1 - 1e-6); }
 };
 
 struct CalibrationResult {

@@ -4,6 +4,7 @@
 #include "ceilplan/core/error.hpp"
 
 #include <array>
+#include <functional>
 
 namespace ceilplan::energy {
 
@@ -33,5 +34,9 @@ class LipoOpenCircuitVoltage {
   std::array<double, kPointCount> voltage_v_{};
   std::array<double, kPointCount> slope_v_per_soc_{};  // slope of the segment starting at each point
 };
+
+// The curve as a function of SOC, checked (cellVoltageV), in the form the battery module's ageing
+// models take it (battery::CellVoltageOfSoc, needed by Schmalstieg's model).
+std::function<double(double soc)> lipoCellVoltageOfSoc();
 
 }  // namespace ceilplan::energy

@@ -16,6 +16,8 @@ struct UnknownSpace {
   // Fill's default: the under-scanned pockets of an indoor scan (up to about 2 m in geb079's
   // corridor), not a room.
   static constexpr double kDefaultFillMax_m = 2.0;
+  // The largest fill a mission file takes (io/): far beyond any pocket, a slip of the exponent is refused.
+  static constexpr double kMaxFill_m = 1000.0;
 
   UnknownPolicy policy = UnknownPolicy::Occupied;
   // Fill only: a connected unknown region counts as free air when it borders known free space,
@@ -23,7 +25,7 @@ struct UnknownSpace {
   // axis-aligned bounding box, between voxel faces) is at most this many metres.
   double fill_max_m = kDefaultFillMax_m;
 
-  // Throws ceilplan::InputError when fill_max_m is not a positive finite number.
+  // Throws ceilplan::InputError when fill_max_m is not in (0, kMaxFill_m].
   void validate() const;
   // "occupied", "free", or "fill (pockets up to 1 m)".
   std::string describe() const;

@@ -9,8 +9,9 @@
 namespace ceilplan::io {
 
 // Calls `write` with a temporary path in the same directory, then renames it to `path`.
-// Creates the parent directory. On any failure the temporary file is removed and the error
-// (ceilplan::Error) names `path`.
+// Checks `path` first (checkWritableFile: ceilplan::InputError) and creates the parent
+// directory. On any other failure the temporary file is removed and the error (ceilplan::Error)
+// names `path` and the reason.
 void writeAtomically(const std::filesystem::path& path,
                      const std::function<void(const std::filesystem::path& temporary)>& write);
 

@@ -17,13 +17,17 @@ class CsvColumns {
   // byte-order mark, CRLF line ends, fields padded with spaces and double-quoted fields (RFC
   // 4180, "" for a quote); skips blank lines and lines starting with '#'. Keeps the columns
   // named in `required` (each must be in the header) and in `optional` (if present), each field
-  // a finite number. Throws ceilplan::InputError on a missing, unreadable or empty file, a
-  // directory, a bad header, a row of the wrong width or a field that is not a finite number.
+  // a finite number; in the kept columns named in `none_is_infinite` an empty field or "none"
+  // reads as infinity (a gap with no surface). Throws ceilplan::InputError on a missing,
+  // unreadable or empty file, a directory, a bad header, a row of the wrong width or a field
+  // that is not a finite number.
   static CsvColumns read(const std::filesystem::path& path, const std::vector<std::string>& required,
-                         const std::vector<std::string>& optional = {});
+                         const std::vector<std::string>& optional = {},
+                         const std::vector<std::string>& none_is_infinite = {});
   // Same, from a stream; `source` names it in errors.
   static CsvColumns parse(std::istream& input, const std::string& source, const std::vector<std::string>& required,
-                          const std::vector<std::string>& optional = {});
+                          const std::vector<std::string>& optional = {},
+                          const std::vector<std::string>& none_is_infinite = {});
 
   const std::vector<std::string>& columnNames() const { return names_; }  // the whole header
   bool hasColumn(const std::string& name) const;                         // kept (read) or not

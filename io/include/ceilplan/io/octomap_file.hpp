@@ -1,8 +1,9 @@
 #pragma once
-// Writing OctoMap's binary (.bt) format.
+// Writing OctoMap files: the binary (.bt) format and OctoMap's full (.ot) format.
 
 #include <octomap/OcTree.h>
 
+#include <filesystem>
 #include <ostream>
 
 namespace ceilplan::io {
@@ -11,5 +12,13 @@ namespace ceilplan::io {
 // header is written here because its writeBinary prints debug chatter on stderr in Debian's
 // build. Throws ceilplan::Error if the stream fails.
 void writeOctoMapBinary(const octomap::OcTree& tree, std::ostream& out);
+
+// True for a file name ending in .bt or .ot, the two formats writeOctoMapFile writes.
+bool isOctoMapFileName(const std::filesystem::path& file);
+
+// Writes `tree` to `file` atomically (io::writeAtomically): .bt as writeOctoMapBinary, .ot in
+// OctoMap's full format (occupancy probabilities kept). Throws ceilplan::InputError for another
+// extension and ceilplan::Error naming the file if writing fails.
+void writeOctoMapFile(const std::filesystem::path& file, const octomap::OcTree& tree);
 
 }  // namespace ceilplan::io

@@ -9,6 +9,12 @@
 
 namespace ceilplan::io {
 
+// Checks, before any work, that the output file `file` can be written: it is not a directory,
+// the nearest existing directory above it is one and is writable (permission bits count, as in
+// OutputSet::checkWritable), and an existing file there is not read-only. Throws
+// ceilplan::InputError naming the file and the problem.
+void checkWritableFile(const std::filesystem::path& file);
+
 class OutputSet {
  public:
   // Checks, before any work, that `dir` can receive outputs: it is a directory or does not exist

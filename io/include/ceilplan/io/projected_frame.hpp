@@ -3,6 +3,7 @@
 // frame (x east, y north, z up, metres) around a geodetic origin, with PROJ and GeographicLib.
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/mission/geodetic_origin.hpp"
 
 #include <Eigen/Core>
 
@@ -12,12 +13,9 @@
 
 namespace ceilplan::io {
 
-// The geodetic position (WGS 84) of the local frame's origin, as a mission file's `origin`.
-struct GeodeticOrigin {
-  double lat_deg;
-  double lon_deg;
-  double alt_m;  // the origin's height in the data's own height system (usually above sea level)
-};
+// The local frame's origin is a mission file's `origin` (mission::GeodeticOrigin); its altitude
+// is in the data's own height system (usually above sea level).
+using mission::GeodeticOrigin;
 
 class ProjectedFrame {
  public:

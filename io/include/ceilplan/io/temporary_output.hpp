@@ -5,8 +5,9 @@
 //
 // Nothing runs in signal context. installSignalCleanup() blocks SIGINT and SIGTERM in the calling
 // thread, and so in every thread started after it, and starts one thread that takes them with
-// sigwait(): it removes every temporary output still registered, then lets the signal end the
-// process as it would have (exit status 128 + the signal's number).
+// sigwait(): it removes every temporary output still registered (and the parent directories
+// created for it, when empty), then lets the signal end the process as it would have (exit
+// status 128 + the signal's number).
 
 #include <filesystem>
 #include <vector>
@@ -18,12 +19,19 @@ namespace ceilplan::io {
 // nothing.
 void installSignalCleanup();
 
+// Where `path`, a file being written inside a temporary output (or the temporary itself), will
+// be once committed; any other path as it is. For messages: the user named the final path.
+std::filesystem::path finalPathOf(const std::filesystem::path& path);
+
 // One output (a file, or a directory the caller fills) under a temporary sibling name:
 // "<name>.tmp<pid>" next to the final path. Missing parent directories are created, and removed
 // again if the output is never committed.
 class TemporaryOutput {
  public:
-  explicit TemporaryOutput(std::filesystem::path final_path);
+  // With `directory`, the temporary is made as an empty directory. Parents and the directory are
+  // made under the signal cleanup's lock: once an interruption is being cleaned up, no
+  // constructor creates anything.
+  explicit TemporaryOutput(std::filesystem::path final_path, bool directory = false);
   ~TemporaryOutput();  // removes the temporary unless committed
   TemporaryOutput(const TemporaryOutput&) = delete;
   TemporaryOutput& operator=(const TemporaryOutput&) = delete;

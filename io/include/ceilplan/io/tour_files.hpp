@@ -16,6 +16,10 @@
 
 namespace ceilplan::io {
 
+// Why the tour's DJI KMZ cannot be written with the default payload (a gimbal pitch beyond its
+// range, naming the sortie and waypoint), or none.
+std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission);
+
 // Everything of the tour (docs/tours.md, "Outputs"), with the mission, map and vehicle named.
 nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission, const Provenance& provenance);
 
@@ -25,12 +29,14 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
 // pack's recharge back to the start SOC (phase recharge: its end, on the pack's clock).
 void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour, const Provenance& provenance);
 
-// One autopilot mission per sortie: every leg's waypoints after home, a hold of the target's
-// dwell at each viewpoint, home last. Throws ceilplan::InputError without a geodetic origin.
+// One autopilot mission per sortie from the tour's routes (mission/tour_routes.hpp): the camera
+// aimed and a photo at each viewpoint. Throws ceilplan::InputError without a geodetic origin.
 std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour, const mission::Mission& mission, Autopilot autopilot);
 
-// DIR/tour.json, DIR/path.csv, DIR/map_top.csv, DIR/map_side.csv and, with `autopilot`,
-// DIR/mission.plan and DIR/mission.waypoints (per sortie when several).
+// DIR/tour.json, DIR/path.csv, DIR/map_top.csv, DIR/map_side.csv, DIR/trajectory.csv and
+// DIR/trajectory.json (per sortie when several: trajectory_sortie2.csv, ...), DIR/report.html
+// and, with `autopilot`, DIR/mission.plan, DIR/mission.waypoints and DIR/mission.kmz (DJI WPML)
+// per sortie, DIR/routes.kml and DIR/routes.geojson (docs/tours.md, docs/flying.md).
 void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour, const mission::Mission& mission,
                         const environment::Environment& environment, std::optional<Autopilot> autopilot,
                         const Provenance& provenance);
@@ -39,7 +45,7 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
 std::string comparisonTable(const mission::TourResult& ceiling, const mission::TourResult& free);
 nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free,
                               const mission::Mission& mission, const Provenance& provenance);
-// DIR/comparison.txt, DIR/comparison.json and map views covering both routes.
+// DIR/comparison.txt, DIR/comparison.json, DIR/report.html (both modes) and map views covering both routes.
 void writeTourComparison(const std::filesystem::path& dir, const mission::TourResult& ceiling,
                          const mission::TourResult& free, const mission::Mission& mission,
                          const environment::Environment& environment, const Provenance& provenance);

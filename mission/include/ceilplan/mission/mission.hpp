@@ -5,6 +5,7 @@
 
 #include "ceilplan/mission/battery_spec.hpp"
 #include "ceilplan/mission/geodetic_origin.hpp"
+#include "ceilplan/mission/trajectory.hpp"
 #include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
 #include "ceilplan/environment/unknown_space.hpp"
@@ -38,6 +39,8 @@ struct Mission {
   std::string mode;       // "ceiling", "free" or "both"; empty: the command decides
   std::uint32_t seed = 1;  // of every random choice
   environment::UnknownSpace unknown;  // what the map's unknown voxels count as (docs/environment.md)
+  TrajectoryOptions trajectory;       // time scaling of the flown routes (key `trajectory:`, docs/flying.md)
+  bool trajectory_ned = false;        // trajectory files in NED instead of the map's ENU
   std::vector<InspectionTarget> targets;
 
   // A name for messages: the mission file, or "mission".

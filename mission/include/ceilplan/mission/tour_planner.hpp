@@ -13,6 +13,7 @@
 #include "ceilplan/mission/sortie_plan.hpp"
 #include "ceilplan/mission/tour_legs.hpp"
 #include "ceilplan/mission/tour_order.hpp"
+#include "ceilplan/mission/tour_routes.hpp"
 #include "ceilplan/mission/tour_standoff.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
@@ -73,6 +74,8 @@ struct TourResult {
   TourOrder order;
   SortiePlan plan;
   FlightRecord record;                // what the plan flies, sample by sample
+  std::vector<SortieRoute> routes;    // per sortie, as a vehicle flies it (autopilot files, maps)
+  std::vector<Trajectory> trajectories;  // the routes time-scaled into setpoints
   std::vector<PlanWear> wear;        // fec, xu, woehler, schmalstieg
   DutyProjection duty;
   double start_soc = 0.0;

@@ -11,10 +11,20 @@
 
 namespace ceilplan::mission {
 
+// How hard the vehicle may accelerate and turn when a route is time-scaled into setpoints
+// (mission/trajectory.hpp). Defaults: PX4 v1.14's auto-mode MPC_ACC_HOR, MPC_JERK_AUTO and
+// MPC_YAWRAUTO_MAX (docs/flying.md).
+struct MotionLimits {
+  double max_acceleration_m_s2 = 3.0;
+  double max_jerk_m_s3 = 4.0;
+  double max_yaw_rate_deg_s = 45.0;
+};
+
 struct Vehicle {
   std::string name;
   environment::VehicleGeometry geometry;  // rotor discs, collision cylinder, clearance margins
   energy::EnergyParameters energy;        // mass, rotor spacing, power model, pack electrics
+  MotionLimits limits;                    // vehicle file key `limits:`
 
   // The default vehicle, equal to maps/vehicles/quad.yaml (a test reads the file and compares):
   // the founding paper's quadrotor, 1.4 kg, 10-inch propellers on a 450 mm X frame, 9.5 A in

@@ -46,6 +46,11 @@ struct Viewpoint {
   double dwell_charge_ah = 0.0;   // dwell current x dwell time
 };
 
+// A target lies on structure: some occupied voxel within its standoff range (standoff_max_m)
+// of its point. Throws ceilplan::InputError naming the target when none is, a target in free
+// air (a point outside the map is left to chooseViewpoint, which names the map's extent).
+void requireOnStructure(const InspectionTarget& target, const environment::Environment& environment);
+
 // Pack current hovering at `body_m` under the full model: each rotor's mean gap and coverage
 // above, the mean gap below.
 double hoverCurrentA(const environment::Environment& environment, const energy::EnergyModel& model,

@@ -17,14 +17,18 @@ namespace ceilplan::planner {
 
 // The speed rules (mission files' `speeds:` block, docs/missions.md).
 struct FlightSpeeds {
+  static constexpr double kMaxVerticalSpeed_m_s = 10.0;
+  static constexpr double kMaxNearCeilingGapRadii = 10.0;
+
   double cruise_m_s = 2.0;            // horizontal, in free air
   double near_ceiling_m_s = 1.8;      // horizontal, when a rotor is closer than near_ceiling_gap_radii R to a ceiling (docs/planner.md: break-even)
   double near_ceiling_gap_radii = 2.0;  // where the ceiling effect has nearly faded (docs/models.md, "Ceiling effect")
   double climb_m_s = 1.0;             // vertical rate limits
   double descent_m_s = 0.8;
 
-  // Throws ceilplan::InputError naming the bad field (non-positive, non-finite, or a
-  // horizontal speed beyond `max_speed_m_s`, the energy model's limit).
+  // Throws ceilplan::InputError naming the bad field (non-positive, non-finite, a horizontal
+  // speed beyond `max_speed_m_s`, the energy model's limit, a vertical rate beyond
+  // kMaxVerticalSpeed_m_s or `max_speed_m_s`, or a slow zone beyond kMaxNearCeilingGapRadii).
   void validate(double max_speed_m_s) const;
 };
 

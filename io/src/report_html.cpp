@@ -1,0 +1,255 @@
+#include "ceilplan/io/report_html.hpp"
+
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/io/atomic_file.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <unordered_map>
+
+namespace ceilplan::io {
+
+// The page parts compiled in by io/CMakeLists.txt (io/report/embed_text.cmake).
+namespace report_assets {
+extern const std::string_view Three;
+extern const std::string_view OrbitControls;
+extern const std::string_view PageTemplate;
+extern const std::string_view ViewerScript;
+}  // namespace report_assets
+
+namespace {
+
+// Millimetres are plenty for a view; shorter numbers keep the file small. Dividing by the
+// count per unit gives the double nearest the decimal, so it prints short.
+double rounded(double value, double per_unit = 1e3) { return std::round(value * per_unit) / per_unit; }
+
+nlohmann::json point(const Eigen::Vector3d& p) { return {rounded(p.x()), rounded(p.y()), rounded(p.z())}; }
+
+void requireFinite(const Eigen::Vector3d& p, const std::string& what) {
+  if (!p.allFinite()) throw InputError("report: " + what + " must be finite, got " + formatPoint(p));
+}
+
+nlohmann::json samplesJson(const std::vector<ReportSample>& samples) {
+  nlohmann::json t = nlohmann::json::array(), x = t, y = t, z = t, current = t, soc = t, sortie = t;
+  for (const ReportSample& s : samples) {
+    t.push_back(rounded(s.t_s));
+    x.push_back(rounded(s.position_m.x()));
+    y.push_back(rounded(s.position_m.y()));
+    z.push_back(rounded(s.position_m.z()));
+    current.push_back(rounded(s.current_a));
+    soc.push_back(rounded(s.soc, 1e5));
+    sortie.push_back(s.sortie);
+  }
+  return {{"t", t}, {"x", x}, {"y", y}, {"z", z}, {"current", current}, {"soc", soc}, {"sortie", sortie}};
+}
+
+nlohmann::json planJson(const ReportPlan& plan) {
+  nlohmann::json targets = nlohmann::json::array(), photos = nlohmann::json::array(), patches = nlohmann::json::array();
+  for (const ReportTarget& t : plan.targets)
+    targets.push_back({{"name", t.name},
+                       {"point", point(t.point_m)},
+                       {"viewpoint", t.viewpoint_m ? point(*t.viewpoint_m) : nlohmann::json(nullptr)}});
+  for (const ReportPhoto& p : plan.photos)
+    photos.push_back({{"p", point(p.position_m)},
+                      {"yaw_deg", rounded(p.yaw_deg, 100)},
+                      {"pitch_deg", rounded(p.gimbal_pitch_deg, 100)},
+                      {"hfov_deg", p.horizontal_fov_deg},
+                      {"vfov_deg", p.vertical_fov_deg},
+                      {"range_m", p.range_m}});
+  for (const ReportSurfacePatch& p : plan.coverage)
+    patches.push_back({{"c", point(p.centre_m)},
+                       {"n", {rounded(p.normal.x()), rounded(p.normal.y()), rounded(p.normal.z())}},
+                       {"s", p.size_m},
+                       {"v", std::isnan(p.value) ? nlohmann::json(nullptr) : nlohmann::json(p.value)}});
+  nlohmann::json summary = nlohmann::json::array();
+  for (const auto& [figure, value] : plan.summary) summary.push_back({figure, value});
+  return {{"name", plan.name},
+          {"samples", samplesJson(plan.samples)},
+          {"targets", targets},
+          {"photos", photos},
+          {"coverage", {{"label", plan.coverage_label}, {"patches", patches}}},
+          {"summary", summary}};
+}
+
+// Voxel centres as integer steps from the lowest corner, each followed by its face bits: a
+// third of the text of coordinates.
+nlohmann::json structureJson(const ReportStructure& structure) {
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(0.0);
+  if (!structure.centres_m.empty()) {
+    low = structure.centres_m.front();
+    for (const Eigen::Vector3d& c : structure.centres_m) low = low.cwiseMin(c);
+  }
+  nlohmann::json cells = nlohmann::json::array();
+  for (std::size_t v = 0; v < structure.centres_m.size(); ++v) {
+    for (int axis = 0; axis < 3; ++axis)
+      cells.push_back(std::lround((structure.centres_m[v][axis] - low[axis]) / structure.voxel_m));
+    cells.push_back(structure.faces.empty() ? 63 : structure.faces[v]);
+  }
+  return {{"voxel_m", structure.voxel_m}, {"origin", point(low)}, {"cells", cells}};
+}
+
+// JSON inside a <script> element: "</" must not appear.
+std::string scriptSafe(std::string text) {
+  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) text.replace(at, 2, "<\\/");
+  return text;
+}
+
+void replaceOnce(std::string& page, const std::string& placeholder, std::string_view value) {
+  const std::size_t at = page.find(placeholder);
+  if (at == std::string::npos) throw Error("report template lacks " + placeholder);
+  page.replace(at, placeholder.size(), value.data(), value.size());
+}
+
+}  // namespace
+
+void ReportModel::validate() const {
+  if (plans.empty()) throw InputError("report: no plan to show");
+  requireFinite(home_m, "home");
+  if (!(reserve_soc >= 0.0 && reserve_soc <= 1.0))
+    throw InputError("report: reserve SOC must lie in [0, 1], got " + formatNumber(reserve_soc));
+  if (!(structure.voxel_m > 0.0) || !std::isfinite(structure.voxel_m))
+    throw InputError("report: structure voxel size must be positive, got " + formatNumber(structure.voxel_m));
+  for (const Eigen::Vector3d& c : structure.centres_m) requireFinite(c, "structure voxel");
+  if (!structure.faces.empty() && structure.faces.size() != structure.centres_m.size())
+    throw InputError("report: structure has " + std::to_string(structure.faces.size()) + " face masks for " +
+                     std::to_string(structure.centres_m.size()) + " voxels");
+  for (const ReportPlan& plan : plans) {
+    const std::string what = "plan '" + plan.name + "'";
+    if (plan.samples.empty()) throw InputError("report: " + what + " has no samples");
+    for (std::size_t k = 0; k < plan.samples.size(); ++k) {
+      const ReportSample& s = plan.samples[k];
+      const std::string where = what + " sample " + std::to_string(k + 1);
+      requireFinite(s.position_m, where + " position");
+      if (!std::isfinite(s.t_s) || !std::isfinite(s.current_a))
+        throw InputError("report: " + where + " has a non-finite time or current");
+      if (!(s.soc >= 0.0 && s.soc <= 1.0))
+        throw InputError("report: " + where + " SOC must lie in [0, 1], got " + formatNumber(s.soc));
+      if (k > 0 && s.t_s < plan.samples[k - 1].t_s) throw InputError("report: " + where + ": time goes backwards");
+    }
+    for (const ReportTarget& t : plan.targets) {
+      requireFinite(t.point_m, what + " target " + t.name);
+      if (t.viewpoint_m) requireFinite(*t.viewpoint_m, what + " viewpoint of " + t.name);
+    }
+    for (const ReportPhoto& p : plan.photos) {
+      requireFinite(p.position_m, what + " photo");
+      if (!(p.range_m > 0.0) || !(p.horizontal_fov_deg > 0.0 && p.horizontal_fov_deg < 180.0) ||
+          !(p.vertical_fov_deg > 0.0 && p.vertical_fov_deg < 180.0) || !std::isfinite(p.yaw_deg) ||
+          !std::isfinite(p.gimbal_pitch_deg))
+        throw InputError("report: " + what + " has a photo with a bad angle, field of view or range");
+    }
+    for (const ReportSurfacePatch& p : plan.coverage) {
+      requireFinite(p.centre_m, what + " coverage patch");
+      if (!(p.normal.norm() > 0.0) || !(p.size_m > 0.0))
+        throw InputError("report: " + what + " has a coverage patch without a normal or size");
+    }
+  }
+  for (const auto& row : comparison_rows)
+    if (!comparison_header.empty() && row.size() != comparison_header.size())
+      throw InputError("report: a comparison row has " + std::to_string(row.size()) + " cells, the header " +
+                       std::to_string(comparison_header.size()));
+}
+
+ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vector<Eigen::Vector3d>& route_m,
+                              double radius_m, std::size_t max_voxels) {
+  if (!(radius_m >= 0.0) || !std::isfinite(radius_m))
+    throw InputError("report: structure radius must be finite and non-negative, got " + formatNumber(radius_m));
+  const environment::GridFrame& frame = grid.frame();
+  const double r = frame.resolution_m();
+  // Probes along the route, half a metre apart.
+  constexpr double kProbeSpacing_m = 0.5;
+  std::vector<Eigen::Vector3d> probes;
+  for (std::size_t k = 0; k < route_m.size(); ++k) {
+    requireFinite(route_m[k], "route point");
+    if (probes.empty()) {
+      probes.push_back(route_m[k]);
+      continue;
+    }
+    const Eigen::Vector3d d = route_m[k] - probes.back();
+    const int steps = static_cast<int>(std::floor(d.norm() / kProbeSpacing_m));
+    const Eigen::Vector3d from = probes.back();
+    for (int s = 1; s <= steps; ++s) probes.push_back(from + d * (s * kProbeSpacing_m / d.norm()));
+  }
+  if (route_m.size() > 1 && (route_m.back() - probes.back()).norm() > 0.0) probes.push_back(route_m.back());
+  const auto occupied = [&](int i, int j, int k) { return grid.at(i, j, k) == environment::CellState::Occupied; };
+  const auto isFree = [&](int i, int j, int k) { return grid.at(i, j, k) == environment::CellState::Free; };
+  std::unordered_map<std::size_t, std::uint8_t> chosen;  // voxel -> faces towards free space
+  const int reach = static_cast<int>(std::ceil(radius_m / r));
+  for (const Eigen::Vector3d& p : probes) {
+    const int cj = frame.indexOf(1, p.y()), ck = frame.indexOf(2, p.z());
+    for (int k = ck - reach; k <= ck + reach; ++k)
+      for (int j = cj - reach; j <= cj + reach; ++j) {
+        // The row's run of voxel centres inside the sphere.
+        const double dz = frame.centreOf(2, k) - p.z(), dy = frame.centreOf(1, j) - p.y();
+        const double rest = radius_m * radius_m - dz * dz - dy * dy;
+        if (rest < 0.0) continue;
+        const double half = std::sqrt(rest);
+        for (int i = frame.indexOf(0, p.x() - half); i <= frame.indexOf(0, p.x() + half); ++i) {
+          if (!frame.inside(i, j, k) || !occupied(i, j, k)) continue;
+          if (std::abs(frame.centreOf(0, i) - p.x()) > half) continue;
+          const std::uint8_t faces = static_cast<std::uint8_t>(
+              isFree(i - 1, j, k) | isFree(i + 1, j, k) << 1 | isFree(i, j - 1, k) << 2 | isFree(i, j + 1, k) << 3 |
+              isFree(i, j, k - 1) << 4 | isFree(i, j, k + 1) << 5);
+          if (faces) chosen.emplace(frame.linear(i, j, k), faces);
+        }
+      }
+  }
+  std::vector<std::pair<std::size_t, std::uint8_t>> voxels(chosen.begin(), chosen.end());
+  std::sort(voxels.begin(), voxels.end());
+  // Coarsen until it fits: a coarse cell holds any chosen voxel and draws any face they show.
+  for (int factor = 1;; ++factor) {
+    std::vector<environment::Index3> cells;
+    std::vector<std::uint8_t> faces;
+    std::unordered_map<std::size_t, std::size_t> cell_of;
+    for (const auto& [voxel, voxel_faces] : voxels) {
+      const environment::Index3 index = frame.unlinear(voxel);
+      const environment::Index3 cell{index[0] / factor, index[1] / factor, index[2] / factor};
+      const auto [at, inserted] = cell_of.emplace(frame.linear(cell[0], cell[1], cell[2]), cells.size());
+      if (inserted) {
+        cells.push_back(cell);
+        faces.push_back(0);
+      }
+      faces[at->second] |= voxel_faces;
+    }
+    if (cells.size() <= max_voxels || factor > 16) {
+      ReportStructure structure;
+      structure.voxel_m = r * factor;
+      structure.faces = faces;
+      for (const environment::Index3& cell : cells) {
+        Eigen::Vector3d centre;
+        for (int axis = 0; axis < 3; ++axis) centre[axis] = frame.faceOf(axis, cell[axis] * factor) + 0.5 * r * factor;
+        structure.centres_m.push_back(centre);
+      }
+      return structure;
+    }
+  }
+}
+
+std::string reportHtml(const ReportModel& model) {
+  model.validate();
+  nlohmann::json plans = nlohmann::json::array();
+  for (const ReportPlan& plan : model.plans) plans.push_back(planJson(plan));
+  const nlohmann::json data = {{"title", model.title},
+                               {"home", point(model.home_m)},
+                               {"reserve_soc", model.reserve_soc},
+                               {"structure", structureJson(model.structure)},
+                               {"plans", plans},
+                               {"comparison", {{"header", model.comparison_header}, {"rows", model.comparison_rows}}}};
+  std::string page(report_assets::PageTemplate);
+  // Largest last, so each search runs over the template, not over three.js.
+  replaceOnce(page, "/*CEILPLAN:APP*/", report_assets::ViewerScript);
+  replaceOnce(page, "/*CEILPLAN:DATA*/", scriptSafe(data.dump()));
+  replaceOnce(page, "/*CEILPLAN:ORBIT*/", report_assets::OrbitControls);
+  replaceOnce(page, "/*CEILPLAN:THREE*/", report_assets::Three);
+  return page;
+}
+
+void writeReportHtml(const std::filesystem::path& file, const ReportModel& model) {
+  const std::string page = reportHtml(model);
+  writeTextAtomically(file, [&](std::ostream& out) { out << page; });
+}
+
+}  // namespace ceilplan::io

@@ -1,0 +1,112 @@
+#include "ceilplan/io/trajectory_file.hpp"
+
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/io/atomic_file.hpp"
+
+#include <cmath>
+
+namespace ceilplan::io {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// ENU -> NED: swap x and y, negate z.
+Eigen::Vector3d toNed(const Eigen::Vector3d& enu) { return {enu.y(), enu.x(), -enu.z()}; }
+
+double wrapAngle(double radians) {
+  const double wrapped = std::remainder(radians, 2.0 * kPi);
+  return wrapped <= -kPi ? wrapped + 2.0 * kPi : wrapped;
+}
+
+// Decimals per column: time, then 9 lengths, yaw, yaw rate, pitch, trigger.
+constexpr int kDecimals[] = {3, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 4, 0};
+
+}  // namespace
+
+std::vector<std::string> trajectoryColumns(TrajectoryFrame frame) {
+  if (frame == TrajectoryFrame::Ned)
+    return {"t_s",    "north_m", "east_m",  "down_m",  "vn_m_s",         "ve_m_s",           "vd_m_s",
+            "an_m_s2", "ae_m_s2", "ad_m_s2", "yaw_rad", "yaw_rate_rad_s", "gimbal_pitch_deg", "trigger"};
+  return {"t_s",     "x_m",     "y_m",     "z_m",     "vx_m_s",         "vy_m_s",           "vz_m_s",
+          "ax_m_s2", "ay_m_s2", "az_m_s2", "yaw_rad", "yaw_rate_rad_s", "gimbal_pitch_deg", "trigger"};
+}
+
+std::vector<double> trajectoryRow(const mission::TrajectorySetpoint& s, TrajectoryFrame frame) {
+  const bool ned = frame == TrajectoryFrame::Ned;
+  const Eigen::Vector3d p = ned ? toNed(s.position_m) : s.position_m;
+  const Eigen::Vector3d v = ned ? toNed(s.velocity_m_s) : s.velocity_m_s;
+  const Eigen::Vector3d a = ned ? toNed(s.acceleration_m_s2) : s.acceleration_m_s2;
+  // NED yaw is clockwise from north: pi/2 - ENU yaw.
+  const double yaw = ned ? wrapAngle(0.5 * kPi - s.yaw_rad) : s.yaw_rad;
+  const double yaw_rate = ned ? -s.yaw_rate_rad_s : s.yaw_rate_rad_s;
+  return {s.t_s, p.x(), p.y(), p.z(), v.x(), v.y(), v.z(), a.x(), a.y(), a.z(), yaw, yaw_rate,
+          s.gimbal_pitch_deg, s.trigger ? 1.0 : 0.0};
+}
+
+std::string trajectoryCsv(const mission::Trajectory& trajectory, TrajectoryFrame frame) {
+  std::string text;
+  const std::vector<std::string> columns = trajectoryColumns(frame);
+  for (std::size_t c = 0; c < columns.size(); ++c) text += (c ? "," : "") + columns[c];
+  text += '\n';
+  for (const mission::TrajectorySetpoint& s : trajectory.setpoints) {
+    const std::vector<double> row = trajectoryRow(s, frame);
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      // Rounding may leave "-0.000000": write a plain zero.
+      std::string field = formatFixed(row[c], kDecimals[c]);
+      if (field.find_first_not_of("-0.") == std::string::npos) field = formatFixed(0.0, kDecimals[c]);
+      text += (c ? "," : "") + field;
+    }
+    text += '\n';
+  }
+  return text;
+}
+
+nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryFrame frame,
+                              const std::optional<mission::GeodeticOrigin>& origin) {
+  nlohmann::json setpoints = nlohmann::json::array();
+  for (const mission::TrajectorySetpoint& s : trajectory.setpoints) {
+    std::vector<double> row = trajectoryRow(s, frame);
+    nlohmann::json values = nlohmann::json::array();
+    for (std::size_t c = 0; c + 1 < row.size(); ++c) values.push_back(row[c]);
+    values.push_back(s.trigger ? 1 : 0);
+    setpoints.push_back(std::move(values));
+  }
+  const mission::TrajectoryLimits& l = trajectory.limits;
+  return {{"format", "ceilplan-trajectory"},
+          {"version", 1},
+          {"sortie", trajectory.sortie},
+          {"frame", frame == TrajectoryFrame::Ned ? "NED" : "ENU"},
+          {"rate_hz", trajectory.rate_hz},
+          {"duration_s", trajectory.duration_s()},
+          {"length_m", trajectory.length_m},
+          {"stops", trajectory.stops},
+          {"blended_corners", trajectory.blended_corners},
+          {"photos", trajectory.photos},
+          {"max_corner_deviation_m", trajectory.max_corner_deviation_m},
+          {"limits",
+           {{"climb_m_s", l.climb_m_s},
+            {"descent_m_s", l.descent_m_s},
+            {"max_acceleration_m_s2", l.max_acceleration_m_s2},
+            {"max_jerk_m_s3", l.max_jerk_m_s3},
+            {"max_yaw_rate_deg_s", l.max_yaw_rate_deg_s}}},
+          {"origin", origin ? nlohmann::json{{"lat_deg", origin->latitude_deg},
+                                             {"lon_deg", origin->longitude_deg},
+                                             {"alt_m", origin->altitude_m}}
+                            : nlohmann::json(nullptr)},
+          {"columns", trajectoryColumns(frame)},
+          {"setpoints", setpoints}};
+}
+
+void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajectory& trajectory,
+                        TrajectoryFrame frame) {
+  const std::string text = trajectoryCsv(trajectory, frame);
+  writeTextAtomically(file, [&](std::ostream& out) { out << text; });
+}
+
+void writeTrajectoryJson(const std::filesystem::path& file, const mission::Trajectory& trajectory,
+                         TrajectoryFrame frame, const std::optional<mission::GeodeticOrigin>& origin) {
+  const std::string text = trajectoryJson(trajectory, frame, origin).dump() + "\n";
+  writeTextAtomically(file, [&](std::ostream& out) { out << text; });
+}
+
+}  // namespace ceilplan::io
