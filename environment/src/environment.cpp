@@ -16,6 +16,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kDenseStepVoxels = 0.1;  // checkPathDensely's step: finer than any planner's
+constexpr double kReachMargin_m = 1e-6;    // validReach_m stays this far short of a blocked voxel or the box
 
 constexpr int kKeptGaps = 256;  // columns under a rotor disc: 9 for a 10" rotor at 0.1 m, 196 at 0.02 m
 
@@ -204,6 +205,17 @@ double Environment::clearance_m(const Eigen::Vector3d& body_m) const {
 double Environment::clearanceLowerBound_m(const Eigen::Vector3d& body_m) const {
   requireInside(body_m, "clearance");
   return distance_->lowerBound_m(body_m);
+}
+
+double Environment::validReach_m(const Eigen::Vector3d& body_m) const {
+  if (!body_m.allFinite() || !contains(body_m)) return 0.0;
+  // Within the reach the bounding sphere stays clear of every blocked voxel (the field's lower
+  // bound, which counts the box as blocked when unknown space is), and the body centre inside
+  // the box (under the free policy the field does not count it). The margin covers rounding.
+  const Eigen::AlignedBox3d box = grid().frame().bounds();
+  const double inside_m = std::min((body_m - box.min()).minCoeff(), (box.max() - body_m).minCoeff());
+  const double reach_m = std::min(distance_->lowerBound_m(body_m) - bounding_sphere_m_, inside_m);
+  return std::max(0.0, reach_m - kReachMargin_m);
 }
 
 std::optional<Violation> Environment::exactCylinderViolation(const Eigen::Vector3d& body_m) const {

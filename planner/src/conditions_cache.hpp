@@ -17,10 +17,14 @@ namespace ceilplan::planner::detail {
 class ConditionsCache {
  public:
   explicit ConditionsCache(const FlightCostModel& model)
-      : model_(model), inverse_step_(1.0 / model.step_m()), rotors_(model.energy().rotorCount()) {}
+      : model_(model), inverse_step_(1.0 / model.step_m()), rotors_(model.energy().rotorCount()) {
+    const environment::GridFrame& frame = model.environment().grid().frame();
+    for (int axis = 0; axis < 3; ++axis) anchor_m_[axis] = frame.centreOf(axis, 0);
+  }
 
   PointConditions operator()(const Eigen::Vector3d& point_m) {
-    const Eigen::Vector3d scaled = point_m * inverse_step_;
+    // The sampling lattice of lattice motions: step_m() apart from a voxel centre.
+    const Eigen::Vector3d scaled = (point_m - anchor_m_) * inverse_step_;
     const Eigen::Vector3d rounded = scaled.array().round();
     if ((scaled - rounded).cwiseAbs().maxCoeff() > 1e-6 || model_.farFromStructure(point_m))
       return model_.conditionsAt(point_m);
@@ -53,6 +57,7 @@ class ConditionsCache {
  private:
   const FlightCostModel& model_;
   double inverse_step_;
+  Eigen::Vector3d anchor_m_;
   int rotors_;
   std::unordered_map<std::uint64_t, std::size_t> offsets_;
   std::vector<double> values_;

@@ -13,6 +13,9 @@
 namespace ceilplan::planner {
 namespace {
 
+// The default integration step is never finer than this.
+constexpr double kFinestDefaultStepM = 0.05;
+
 void requirePositive(double value, const char* name) {
   if (!(std::isfinite(value) && value > 0.0))
     throw ceilplan::InputError(std::string("speeds: ") + name + " must be a positive finite number, got " +
@@ -56,7 +59,14 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
     throw ceilplan::InputError("the vehicle geometry has " +
                                 std::to_string(environment_.vehicle().rotor_positions_m.size()) +
                                 " rotors but the energy model " + std::to_string(energy_.rotorCount()));
-  step_m_ = options_.step_m > 0.0 ? options_.step_m : 0.5 * environment_.grid().frame().resolution_m();
+  if (options_.step_m > 0.0) {
+    step_m_ = options_.step_m;
+  } else {
+    // Half a voxel, or as many half voxels as fit in kFinestDefaultStepM: the current varies
+    // over a rotor disc (25 cm), so sampling a 2 cm map every centimetre only costs time.
+    const double half_voxel = 0.5 * environment_.grid().frame().resolution_m();
+    step_m_ = half_voxel * std::max(1.0, std::floor(kFinestDefaultStepM / half_voxel + 1e-9));
+  }
   const environment::VehicleGeometry& vehicle = environment_.vehicle();
   near_ceiling_gap_m_ = options_.speeds.near_ceiling_gap_radii * vehicle.rotor_radius_m;
   // A surface matters to a rotor if it lies over (under) the disc within the environment's

@@ -39,8 +39,21 @@ bool SafetyRules::isMotionValid(const Eigen::Vector3d& from_m, const Eigen::Vect
   const double length = (to_m - from_m).norm();
   if (!std::isfinite(length)) return false;
   const long steps = std::max(1L, static_cast<long>(std::ceil(length / dense_step_m_)));
-  for (long s = 0; s <= steps; ++s)
-    if (!isStateValid(from_m + (to_m - from_m) * (static_cast<double>(s) / steps))) return false;
+  const double step_m = length / static_cast<double>(steps);
+  for (long s = 0; s <= steps;) {
+    const Eigen::Vector3d state = from_m + (to_m - from_m) * (static_cast<double>(s) / steps);
+    // Sphere tracing: far from structure every state within the distance field's reach is
+    // valid (Environment::validReach_m; the cylinder then keeps the ceiling gap too), so the
+    // states of this motion within it are skipped.
+    const double reach_m = gap_implied_by_cylinder_ ? environment_.validReach_m(state) : 0.0;
+    if (reach_m <= 0.0) {
+      if (!isStateValid(state)) return false;
+      ++s;
+      continue;
+    }
+    const double skipped = step_m > 0.0 ? std::floor(reach_m / step_m) : static_cast<double>(steps);
+    s += std::max(1L, static_cast<long>(std::min(skipped, static_cast<double>(steps))));
+  }
   return true;
 }
 

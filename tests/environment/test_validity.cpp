@@ -99,11 +99,10 @@ std::optional<ViolationKind> scanCylinder(const Environment& environment, const 
   return found;
 }
 
-TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {
-  // Occupied slabs and pillars with unknown pockets next to them, and unknown beyond x = 1.5,
-  // under both unknown-space policies, states close to everything (and poking out of the map).
-  // 70 voxels high: the masks' bits span two words, the slab at 6.4 m straddles them.
-  const OccupancyMap map = analyticMap({-2, -2, 0}, {2, 2, 7.0}, 0.1, [](const Eigen::Vector3d& c) {
+// Occupied slabs and pillars with unknown pockets next to them, and unknown beyond x = 1.5.
+// 70 voxels high: the masks' bits span two words, the slab at 6.4 m straddles them.
+OccupancyMap slabsAndPockets() {
+  return analyticMap({-2, -2, 0}, {2, 2, 7.0}, 0.1, [](const Eigen::Vector3d& c) {
     if (c.x() > 1.5) return CellState::Unknown;
     if (c.z() < 0.2 || c.z() > 6.6 || (c.z() > 6.2 && c.z() < 6.5 && c.y() < 0.0)) return CellState::Occupied;
     if (c.x() > 0.3 && c.x() < 0.7 && c.z() > 1.0 && c.z() < 1.3) return CellState::Unknown;
@@ -111,6 +110,11 @@ TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {
     if (c.y() > 1.0 && c.z() > 2.0 && c.z() < 2.2) return CellState::Occupied;
     return CellState::Free;
   });
+}
+
+TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {
+  // Under both unknown-space policies, states close to everything (and poking out of the map).
+  const OccupancyMap map = slabsAndPockets();
   for (const bool unknown_blocks : {true, false}) {
     const Environment environment(map, quad(), {}, unknown_blocks ? MapIndexOptions{} : freeUnknown());
     std::mt19937 random(11);
@@ -133,6 +137,63 @@ TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {
     if (unknown_blocks) EXPECT_GT(unknown, 200);
     else EXPECT_EQ(unknown, 0);
   }
+}
+
+// A random point at most `radius` from `centre` (on the sphere itself one time in four).
+Eigen::Vector3d pointWithin(const Eigen::Vector3d& centre, double radius, std::mt19937& random) {
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Eigen::Vector3d direction = Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
+  const double u = unit(random);
+  return centre + direction * radius * (u < 0.25 ? 1.0 : std::cbrt(u));
+}
+
+TEST(ValidReach, EveryStateWithinTheReachIsValidByTheExactTestUnderEveryPolicy) {
+  const OccupancyMap map = slabsAndPockets();
+  for (const UnknownPolicy policy : {UnknownPolicy::Occupied, UnknownPolicy::Free, UnknownPolicy::Fill}) {
+    MapIndexOptions options;
+    options.unknown.policy = policy;
+    const Environment environment(map, quad(), {}, options);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> xy(-1.95, 1.95), z(0.05, 6.95);
+    int reaching = 0;
+    double longest = 0.0;
+    for (int n = 0; n < 4000; ++n) {
+      const Eigen::Vector3d p(xy(random), xy(random), z(random));
+      const double reach = environment.validReach_m(p);
+      ASSERT_GE(reach, 0.0);
+      if (reach == 0.0) continue;
+      ++reaching;
+      longest = std::max(longest, reach);
+      ASSERT_TRUE(environment.isStateValid(p)) << p.transpose();
+      for (int m = 0; m < 20; ++m) {
+        const Eigen::Vector3d q = pointWithin(p, reach, random);
+        ASSERT_TRUE(environment.contains(q)) << p.transpose() << " -> " << q.transpose();
+        ASSERT_FALSE(environment.checkPathDensely({q})) << p.transpose() << " -> " << q.transpose();  // exact test
+        ASSERT_TRUE(environment.isStateValid(q)) << p.transpose() << " -> " << q.transpose();
+      }
+    }
+    // The reach is no formality: many states have one, some well over a voxel.
+    EXPECT_GT(reaching, 400) << unknownPolicyName(policy);
+    EXPECT_GT(longest, 0.5) << unknownPolicyName(policy);
+  }
+}
+
+TEST(ValidReach, IsZeroAtAnInvalidStateAndOutsideAndStopsAtTheMapsBox) {
+  const OccupancyMap map = pillarRoom(1.5);  // nothing known for x > 1.5: the box ends there
+  const Environment cautious(map, quad());
+  EXPECT_EQ(cautious.validReach_m({1.2, 0, 1.5}), 0.0);  // inside the pillar
+  EXPECT_EQ(cautious.validReach_m({0, 0, 0.3}), 0.0);    // the cylinder's bottom margin in the floor
+  EXPECT_EQ(cautious.validReach_m({0, -3, 1.5}), 0.0);   // outside the map
+  EXPECT_EQ(cautious.validReach_m({0, 0, std::nan("")}), 0.0);
+  // Mid-room: the lower bound (box, floor and ceiling a metre and more away) beyond the bounding sphere.
+  EXPECT_GT(cautious.validReach_m({-1.0, -1.0, 1.6}), 0.2);
+  // Under the free policy the field ignores the box, the reach does not: the body centre stays inside.
+  const Environment bold(map, quad(), {}, freeUnknown());
+  const Eigen::Vector3d near_edge(-1.0, -1.95, 1.6);
+  EXPECT_GT(bold.validReach_m(near_edge), 0.0);
+  EXPECT_LE(bold.validReach_m(near_edge), 0.05);
+  EXPECT_FALSE(bold.contains(near_edge - Eigen::Vector3d(0, 0.05 + 1e-9, 0)));
 }
 
 TEST(Clearance, IsTheDistanceToTheNearestBlockedVoxelSurface) {

@@ -7,6 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace ceilplan::testing {
 namespace {
@@ -49,6 +52,39 @@ TEST(PlanCli, WritesThePlanAndThePathAndEvaluateAgrees) {
   // path.csv repeats each waypoint's samples: the same route, so the same charge within the
   // change of integration points.
   EXPECT_NEAR(figures["charge_ah"].get<double>(), json["charge_ah"].get<double>(), 0.01 * json["charge_ah"].get<double>());
+}
+
+TEST(PlanCli, EvaluateReadsThePathOfAPlanWithNothingOverhead) {
+  // On the open scene nothing is overhead: path.csv leaves ceiling_gap_m empty on every row.
+  const auto dir = scratchDirectory("plan_open");
+  const std::string open = " --map " + kMapDir + "open.bt" + kVehicle;
+  const CommandResult plan =
+      runCeilplan("plan" + open + " --start -4,0,0.5 --goal 4,1,1.5 --planner lattice --out " + dir.string());
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  const std::string csv = readWholeFile(dir / "path.csv");
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);  // provenance
+  std::getline(lines, line);  // header
+  ASSERT_EQ(line.substr(0, 24), "t_s,x,y,z,speed_m_s,ceil");
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    ++rows;
+    std::vector<std::string> fields;
+    std::istringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    ASSERT_GE(fields.size(), 6u) << line;
+    EXPECT_EQ(fields[5], "") << line;  // ceiling_gap_m: no surface
+  }
+  EXPECT_GE(rows, 2);
+  const CommandResult evaluate =
+      runCeilplan("evaluate" + open + " --path " + (dir / "path.csv").string() + " --json " + (dir / "e.json").string());
+  ASSERT_EQ(evaluate.exit_code, 0) << evaluate.err;
+  const nlohmann::json planned = nlohmann::json::parse(readWholeFile(dir / "plan.json"));
+  const nlohmann::json figures = nlohmann::json::parse(readWholeFile(dir / "e.json"));
+  EXPECT_TRUE(figures["valid"].get<bool>());
+  EXPECT_TRUE(figures["min_ceiling_gap_m"].is_null());
+  EXPECT_NEAR(figures["charge_ah"].get<double>(), planned["charge_ah"].get<double>(), 0.01 * planned["charge_ah"].get<double>());
 }
 
 TEST(PlanCli, EvaluateSaysWhereAPathIsUnsafe) {

@@ -30,6 +30,27 @@ TEST(SafetyRules, EveryAcceptedMotionPassesTheDenseRecheck) {
   EXPECT_GT(accepted, 300);
 }
 
+TEST(SafetyRules, SkippingStatesWithinTheValidReachChangesNoAnswer) {
+  // Long motions across open space and into the beams: the states skipped far from structure
+  // (Environment::validReach_m) never hide a collision, so accepting and rejecting both agree
+  // with the dense re-check's exact test of every state.
+  const environment::OccupancyMap map = corridor(beams);
+  const environment::Environment environment(map, quad());
+  const planner::SafetyRules rules(environment, 0.05);
+  std::mt19937 random(13);
+  std::uniform_real_distribution<double> x(-0.4, 6.4), y(-2.4, 2.4), z(0.3, 3.45);
+  int accepted = 0, rejected = 0;
+  for (int k = 0; k < 1500; ++k) {
+    const Eigen::Vector3d a(x(random), y(random), z(random)), b(x(random), y(random), z(random));
+    if (!environment.contains(a) || !environment.contains(b)) continue;
+    const bool valid = rules.isMotionValid(a, b);
+    EXPECT_EQ(valid, !rules.checkPathDensely({a, b})) << a.transpose() << " -> " << b.transpose();
+    ++(valid ? accepted : rejected);
+  }
+  EXPECT_GT(accepted, 100);
+  EXPECT_GT(rejected, 100);
+}
+
 TEST(SafetyRules, AMinimumGapLargerThanTheCylinderAllowsIsEnforced) {
   const environment::OccupancyMap map = corridor(flatCeiling);
   const environment::Environment environment(map, quad());

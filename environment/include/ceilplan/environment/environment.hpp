@@ -126,6 +126,13 @@ class Environment {
   // callers skip gap queries far from any structure. Throws ceilplan::InputError outside the map.
   double clearanceLowerBound_m(const Eigen::Vector3d& body_m) const;
 
+  // How far the body may move from `body_m`, in any direction, and stay valid: the distance
+  // field's lower bound beyond the sphere holding the inflated cylinder, and no further than the
+  // map's box (0 when the bound is not beyond the sphere, or outside the map). Every state
+  // within it is valid by isStateValid and by checkPathDensely's exact test, under every
+  // unknown-space policy.
+  double validReach_m(const Eigen::Vector3d& body_m) const;
+
   // A state is valid when the collision cylinder inflated by the margins touches no occupied
   // (or, by policy, unknown) voxel and the body centre lies in the map.
   bool isStateValid(const Eigen::Vector3d& body_m) const { return !stateViolation(body_m); }

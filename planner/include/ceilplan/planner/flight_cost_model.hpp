@@ -39,7 +39,8 @@ struct CostModelOptions {
   double planning_soc = 0.95;
   // false: "free" mode, currents predicted as in free air whatever the map says.
   bool proximity_effects = true;
-  // Samples a motion at most this far apart along every axis; 0: half the map resolution.
+  // Samples a motion at most this far apart along every axis; 0: half the map resolution, or
+  // the largest multiple of it up to 5 cm (on maps finer than 0.1 m).
   double step_m = 0.0;
   // Free mode's standoff preference (0: none): every metre flown with the airframe's bounding
   // sphere closer than `standoff_m` to a structure (standoffAt, standoff.hpp) costs, per metre
@@ -153,7 +154,8 @@ class FlightCostModel {
                                                           ConditionsAt&& conditions_at) const;
 
   // Number of sample intervals integrate() uses for a motion: the axis-wise (Chebyshev) length
-  // over step_m(), so lattice motions sample a half-voxel lattice exactly.
+  // over step_m(), so lattice motions (between voxel centres, whole voxels apart) sample a
+  // lattice of step_m() anchored at a voxel centre exactly.
   int intervalCount(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
 
   // The cheapest cost per metre under `weights` anywhere, in any direction: the current at

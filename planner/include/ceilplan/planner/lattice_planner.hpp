@@ -1,7 +1,7 @@
 #pragma once
 // The deterministic reference, as an OMPL planner ("lattice"): A* over a lattice of voxel
 // centres (LatticeSettings::spacing_m apart, 26-connected) with exactly the problem's objective
-// (a FlightObjective; lattice motions sample the half-voxel lattice, whose map conditions are
+// (a FlightObjective; lattice motions sample the cost model's step lattice, whose map conditions are
 // cached) and the admissible, consistent heuristic c_min x distance, under the space's
 // validity checker (FlightStateValidityChecker). Optimal over the lattice; the quality oracle.
 // Start and goal join the lattice nodes within sqrt(3) spacings.
