@@ -565,9 +565,11 @@ class SparseLegs {
 
 
   // The legs out of home to, and back from, the ends of every stretch between split points:
-  // what a sortie that cannot fly may need refined.
+  // what a sortie that cannot fly may need refined. None before there is an order (the order
+  // search itself may have failed).
   Pairs homeLegs(const std::vector<int>& order, const std::set<int>& split_points) const {
     Pairs pairs;
+    if (order.empty()) return pairs;
     for (int p : split_points) {
       pairs.emplace_back(0, order[p]);
       if (p > 0) pairs.emplace_back(order[p - 1], 0);

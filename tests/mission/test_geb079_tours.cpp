@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <fstream>
 #include <set>
 
 namespace ceilplan::mission {
@@ -207,6 +208,37 @@ TEST(Geb079Cli, TourTakesTheUnknownFlagsAndSaysWhereFreeModeNarrowed) {
   EXPECT_GT(plan["assumed_free_m"].get<double>(), 0.0);
   EXPECT_FALSE(plan["standoff"]["narrowed"].empty());
   EXPECT_FALSE(nlohmann::json::parse(testing::readWholeFile(dir / "compare/ceiling/plan.json")).contains("standoff"));
+}
+
+// A coverage tour of the corridor's ceiling through the command line, from a mission written
+// outside the checkout: ceiling mode covers the reachable ceiling (re-check). Free mode under the
+// occupied policy ends in a plan or a "no path" that names two places, never a crash (its order
+// search met an unreachable photo before there was an order, and crashed).
+TEST(Geb079Cli, ACeilingCoverageTourCoversTheCorridorAndNeverCrashes) {
+  const auto dir = testing::scratchDirectory("geb079_coverage");
+  const std::filesystem::path mission = dir / "geb079_ceiling.yaml";
+  std::ofstream(mission) << "map: " << corridorMission().map_file.string() << "\n"
+                         << "vehicle: " << CEILPLAN_SOURCE_DIR << "/maps/vehicles/quad.yaml\n"
+                         << "battery: {capacity_ah: 5.2, start_soc: 0.95, reserve_soc: 0.25, charge_current_a: 10.4}\n"
+                         << "home: [-4.5, 0.0, 0.6]\nseed: 1\nunknown: {policy: fill, fill_max_m: 2.0}\n"
+                         << "speeds: {cruise_m_s: 1.0, inspection_m_s: 0.5, climb_m_s: 0.8, descent_m_s: 0.6}\n"
+                         << "camera: {preset: zenmuse_h20_wide, gimbal_pitch_deg: [-30, 90], mount_offset_m: [0, 0, 0.05]}\n"
+                         << "surfaces:\n  - {name: corridor_ceiling, box: {min: [0.0, -1.5, 2.3], max: [8.0, 1.5, 2.9]}, "
+                            "faces: [down], gsd_mm_px: 1.0, overlap: {front: 70, side: 60}, max_incidence_deg: 45}\n";
+  const auto ceiling = testing::runCeilplan("tour --mission " + mission.string() + " --mode ceiling --no-export --out " +
+                                            (dir / "ceiling").string());
+  ASSERT_EQ(ceiling.exit_code, 0) << ceiling.err;
+  const nlohmann::json coverage = nlohmann::json::parse(testing::readWholeFile(dir / "ceiling/coverage.json"));
+  const nlohmann::json& region = coverage["regions"].at(0);
+  EXPECT_GT(region["reachable_area_m2"].get<double>(), 0.5 * region["area_m2"].get<double>());
+  EXPECT_GE(region["covered_reachable_pct"].get<double>(), 99.0);
+
+  const auto free = testing::runCeilplan("tour --mission " + mission.string() +
+                                         " --mode free --unknown occupied --no-export --out " + (dir / "free").string());
+  ASSERT_TRUE(free.exit_code == 0 || free.exit_code == 3) << "exit " << free.exit_code << ": " << free.err;
+  if (free.exit_code == 3) {
+    EXPECT_NE(free.err.find("no path between corridor_ceiling_photo"), std::string::npos) << free.err;
+  }
 }
 
 }  // namespace
