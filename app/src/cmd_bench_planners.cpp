@@ -40,7 +40,6 @@ struct BenchArguments {
   std::string start, goal, planners = joined(planner::samplingPlannerNames());
   std::string mode = "ceiling";
   unsigned runs = 10;
-  double reference_time_limit_s = 600.0;
   std::string json, log;
 };
 
@@ -80,7 +79,6 @@ void runBench(const BenchArguments& a) {
   // The reference: the lattice optimum, post-processed like every other path.
   planner::PlanRequest reference_request = a.search.request(start, goal);
   reference_request.planner = planner::referencePlannerName();
-  reference_request.time_limit_s = a.reference_time_limit_s;
   planner::PlanResult reference;
   try {
     reference = flight_planner.plan(reference_request);
@@ -111,8 +109,6 @@ const CommandRegistration registration(43, [](CLI::App& parent) {
   command->add_option("--planners", arguments->planners, "comma-separated planner names (lattice and roadmap too)")
       ->capture_default_str();
   command->add_option("--runs", arguments->runs, "runs per planner")->capture_default_str()->check(CLI::Range(1u, 10000u));
-  command->add_option("--reference-time-limit-s", arguments->reference_time_limit_s, "lattice reference search time")
-      ->capture_default_str()->check(positiveFinite());
   command->add_option("--json", arguments->json, "write the table as JSON");
   command->add_option("--log", arguments->log, "write OMPL's benchmark log (ompl_benchmark_statistics format)");
   command->callback([arguments] { runBench(*arguments); });

@@ -115,17 +115,18 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
   const ompl::base::PlannerPtr planner = makePlanner(result.planner, si_, request.lattice);
   planner->setProblemDefinition(definition);
   planner->setup();
-  const ompl::base::PlannerStatus status = planner->solve(request.time_limit_s);
+  // A deterministic search runs to completion, so its answer does not depend on the machine's speed
+  // or load; only the sampling planners are anytime and stop at the clock.
+  const ompl::base::PlannerStatus status = info.deterministic()
+                                               ? planner->solve(ompl::base::plannerNonTerminatingCondition())
+                                               : planner->solve(request.time_limit_s);
   if (sampling) clearBandSampler();
   if (status != ompl::base::PlannerStatus::EXACT_SOLUTION || !definition->hasExactSolution()) {
-    const std::string limit = formatNumber(request.time_limit_s) + " s";
     if (!info.deterministic())
-      throw ceilplan::NoPathError("no path found by " + result.planner + " within " + limit + " (status: " +
-                                  status.asString() + "); raise --time-limit-s, or try --planner " +
-                                  referencePlannerName() + ", which says where the way is blocked");
-    if (status == ompl::base::PlannerStatus::TIMEOUT)
-      throw ceilplan::NoPathError("the " + result.planner + " search ran out of time (" + limit +
-                                  "); raise --time-limit-s or the lattice spacing");
+      throw ceilplan::NoPathError("no path found by " + result.planner + " within " +
+                                  formatNumber(request.time_limit_s) + " s (status: " + status.asString() +
+                                  "); raise --time-limit-s, or try --planner " + referencePlannerName() +
+                                  ", which says where the way is blocked");
     const auto* reporter = dynamic_cast<const BlockageReporter*>(planner.get());
     const std::optional<Blockage> blockage = reporter ? reporter->lastBlockage() : std::nullopt;
     throw ceilplan::NoPathError("no collision-free route joins start and goal (" + result.planner + ")" +

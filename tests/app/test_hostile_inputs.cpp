@@ -173,8 +173,7 @@ const std::string kPlan = "plan --map {fx}/room.bt --start -2,0,1 --goal 2,0,1 -
 const std::string kCompare = "compare --map {fx}/room.bt --start -2,0,1 --goal 2,0,1 --planner lattice";
 const std::string kEvaluate = "evaluate --map {fx}/room.bt --path {fx}/path.csv";
 const std::string kBench =
-    "bench-planners --map {fx}/room.bt --start -2,0,1 --goal 2,0,1 --planners RRTstar --runs 1 --time-limit-s 0.2 "
-    "--reference-time-limit-s 2";
+    "bench-planners --map {fx}/room.bt --start -2,0,1 --goal 2,0,1 --planners RRTstar --runs 1 --time-limit-s 0.2";
 const std::string kProbe = "probe --map {fx}/room.bt --at 0,0,1";
 const std::string kMapinfo = "mapinfo --map {fx}/room.bt";
 const std::string kTour = "tour --mission {dir}/mission.yaml --out {out}";

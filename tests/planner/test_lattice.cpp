@@ -86,6 +86,25 @@ TEST(LatticePlanner, SaysNoPathWhenAWallSeparatesStartAndGoal) {
             ompl::base::PlannerStatus::ABORT);  // proved: not stopped by the clock
 }
 
+// The lattice planners are deterministic: a slow or loaded machine gets the same route as a
+// fast one, so the clock that stops a sampling planner does not stop them.
+TEST(LatticePlanner, RunsToCompletionWhateverTheTimeLimit) {
+  const CeilingScene scene(beamRoom());
+  for (const std::string name : {"lattice", "roadmap"}) {
+    planner::PlanRequest request;
+    request.start_m = {-0.8, -0.3, 1.9};
+    request.goal_m = {1.0, 0.4, 1.9};
+    request.planner = name;
+    request.refine = false;
+    request.time_limit_s = 600.0;
+    const planner::PlanResult unhurried = scene.planner.plan(request);
+    request.time_limit_s = 1e-9;  // over before the first node is expanded
+    const planner::PlanResult hurried = scene.planner.plan(request);
+    EXPECT_EQ(hurried.waypoints, unhurried.waypoints) << name;
+    EXPECT_DOUBLE_EQ(hurried.cost, unhurried.cost) << name;
+  }
+}
+
 TEST(LatticePlanner, IsChosenByNameLikeEveryOtherPlannerAndTheSpacingIsInMetres) {
   const CeilingScene scene(beamRoom());
   const ompl::base::PlannerPtr lattice =

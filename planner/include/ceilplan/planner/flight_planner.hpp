@@ -26,7 +26,9 @@ struct PlanRequest {
   Eigen::Vector3d start_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d goal_m = Eigen::Vector3d::Zero();
   std::string planner;            // empty: defaultPlannerName()
-  double time_limit_s = 5.0;      // for the search; post-processing takes up to refinement.time_limit_s more
+  // For a sampling search; the deterministic ones run to completion. Post-processing takes up to
+  // refinement.time_limit_s more.
+  double time_limit_s = 5.0;
   double band_fraction = 0.0;     // share of samples aimed at the ceiling band (0, the default: uniform; docs/planner.md)
   bool refine = true;             // shortcuts + NLopt refinement
   RefinementOptions refinement;
