@@ -9,38 +9,55 @@
 
 #include <algorithm>
 #include <cctype>
-
 #include <cmath>
+#include <functional>
 #include <string>
 
 namespace ceilplan::app {
 
-// A finite number >= `minimum` (or > `minimum` when `strict`).
-inline CLI::Validator finiteAtLeast(double minimum, bool strict = false) {
-  const std::string description = std::string(strict ? "> " : ">= ") + CLI::detail::to_string(minimum);
+// A number that `accepts`; otherwise "must be <requirement>, got <input>". `name` is the help's.
+inline CLI::Validator numberWhere(std::function<bool(double)> accepts, const std::string& requirement,
+                                  const std::string& name) {
   return CLI::Validator(
-      [minimum, strict, description](std::string& input) -> std::string {
+      [accepts, requirement](std::string& input) -> std::string {
         double value = 0.0;
         if (!CLI::detail::lexical_cast(input, value)) return "'" + input + "' is not a number";
-        if (!std::isfinite(value) || value < minimum || (strict && value == minimum))
-          return "must be a finite number " + description + ", got " + input;
-        return {};
+        return accepts(value) ? std::string() : "must be " + requirement + ", got " + input;
       },
-      "NUMBER " + description);
+      name);
 }
+
+// A finite number >= `minimum` (or > `minimum` when `strict`).
+inline CLI::Validator finiteAtLeast(double minimum, bool strict = false) {
+  const std::string bound = std::string(strict ? "> " : ">= ") + CLI::detail::to_string(minimum);
+  return numberWhere([minimum, strict](double v) { return std::isfinite(v) && (strict ? v > minimum : v >= minimum); },
+                     "a finite number " + bound, "NUMBER " + bound);
+}
+inline CLI::Validator positiveFinite() { return finiteAtLeast(0.0, true); }
+inline CLI::Validator nonNegativeFinite() { return finiteAtLeast(0.0); }
 
 // A finite number in [minimum, maximum].
 inline CLI::Validator finiteRange(double minimum, double maximum) {
   const std::string range = "[" + formatNumber(minimum) + ", " + formatNumber(maximum) + "]";
-  return CLI::Validator(
-      [minimum, maximum, range](std::string& input) -> std::string {
-        double value = 0.0;
-        if (!CLI::detail::lexical_cast(input, value)) return "'" + input + "' is not a number";
-        if (!(std::isfinite(value) && value >= minimum && value <= maximum))
-          return "must be a finite number in " + range + ", got " + input;
-        return {};
-      },
-      "NUMBER in " + range);
+  return numberWhere([minimum, maximum](double v) { return std::isfinite(v) && v >= minimum && v <= maximum; },
+                     "a finite number in " + range, "NUMBER in " + range);
+}
+
+// A number strictly between `low` and `high`.
+inline CLI::Validator finiteBetween(double low, double high) {
+  const std::string range = "(" + formatNumber(low) + ", " + formatNumber(high) + ")";
+  return numberWhere([low, high](double v) { return v > low && v < high; }, "a number in " + range, "NUMBER in " + range);
+}
+
+// At most `maximum`; NaN is left to the finiteness check it is combined with.
+inline CLI::Validator atMost(double maximum) {
+  return numberWhere([maximum](double v) { return !(v > maximum); }, "at most " + formatNumber(maximum),
+                     "<= " + formatNumber(maximum));
+}
+
+// A state of charge as a fraction in (0, 1].
+inline CLI::Validator socFraction() {
+  return numberWhere([](double v) { return v > 0.0 && v <= 1.0; }, "a state of charge in (0, 1]", "SOC in (0, 1]");
 }
 
 // Digits only: a whole number >= 0, for unsigned flags (their own range checks follow).
@@ -52,21 +69,6 @@ inline CLI::Validator wholeNumber() {
         return {};
       },
       "WHOLE NUMBER");
-}
-
-inline CLI::Validator positiveFinite() { return finiteAtLeast(0.0, true); }
-inline CLI::Validator nonNegativeFinite() { return finiteAtLeast(0.0); }
-
-// A state of charge as a fraction in (0, 1].
-inline CLI::Validator socFraction() {
-  return CLI::Validator(
-      [](std::string& input) -> std::string {
-        double value = 0.0;
-        if (!CLI::detail::lexical_cast(input, value)) return "'" + input + "' is not a number";
-        if (!(value > 0.0 && value <= 1.0)) return "must be a state of charge in (0, 1], got " + input;
-        return {};
-      },
-      "SOC in (0, 1]");
 }
 
 }  // namespace ceilplan::app

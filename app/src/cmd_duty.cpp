@@ -89,41 +89,8 @@ void runDuty(const DutyArguments& args) {
 
 // 0 (the exact scheme), or a step of 1 ms to an hour.
 CLI::Validator timeStep() {
-  return CLI::Validator(
-      [](std::string& input) -> std::string {
-        double value = 0.0;
-        if (!CLI::detail::lexical_cast(input, value)) return "'" + input + "' is not a number";
-        if (!(value == 0.0 || (value >= 1e-3 && value <= 3600.0)))
-          return "must be 0 (exact) or a step of 0.001 to 3600 s, got " + input;
-        return {};
-      },
-      "0 or 0.001..3600");
-}
-
-// At most `maximum` (CLI::Range would print its bounds as "0.000000"); NaN is left to the
-// finiteness check it is combined with.
-CLI::Validator atMost(double maximum) {
-  return CLI::Validator(
-      [maximum](std::string& input) -> std::string {
-        double value = 0.0;
-        if (!CLI::detail::lexical_cast(input, value)) return "'" + input + "' is not a number";
-        if (value > maximum) return "must be at most " + formatNumber(maximum) + ", got " + input;
-        return {};
-      },
-      "<= " + formatNumber(maximum));
-}
-
-// A finite number strictly between `low` and `high`.
-CLI::Validator finiteBetween(double low, double high) {
-  const std::string range = "(" + formatNumber(low) + ", " + formatNumber(high) + ")";
-  return CLI::Validator(
-      [low, high, range](std::string& input) -> std::string {
-        double value = 0.0;
-        if (!CLI::detail::lexical_cast(input, value)) return "'" + input + "' is not a number";
-        if (!(value > low && value < high)) return "must be a number in " + range + ", got " + input;
-        return {};
-      },
-      "NUMBER in " + range);
+  return numberWhere([](double v) { return v == 0.0 || (v >= 1e-3 && v <= 3600.0); },
+                     "0 (exact) or a step of 0.001 to 3600 s", "0 or 0.001..3600");
 }
 
 // A chemistry name as the models' validity ranges spell them ("LiPo", "NMC", "LFP"): letters,
