@@ -273,11 +273,9 @@ struct LegPlanner {
   std::unique_ptr<planner::FlightPlanner> planner;
 };
 
-planner::LatticeSettings latticeSettings(const PlanningContext& context, const TourOptions& options) {
+planner::LatticeSettings latticeSettings(const TourOptions& options) {
   planner::LatticeSettings settings;
-  settings.spacing_m = options.lattice_stride > 0
-                           ? options.lattice_stride * context.environment().grid().frame().resolution_m()
-                           : options.lattice_spacing_m;
+  settings.spacing_m = options.lattice_spacing_m;
   settings.workers = options.workers;
   return settings;
 }
@@ -290,8 +288,8 @@ LegPlanner legPlanner(const PlanningContext& context, FlightMode mode, const Eig
 
 // One search between two places with a pairwise planner (OMPL's or the lattice A*), the path
 // post-processed.
-std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const PlanningContext& context, const LegPlanner& leg,
-                                       const TourOptions& options, int from, int to) {
+std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner& leg, const TourOptions& options, int from,
+                                       int to) {
   const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
   planner::PlanRequest request;
   request.start_m = a;
@@ -299,7 +297,7 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const PlanningCon
   request.planner = options.planner;
   request.time_limit_s = options.time_limit_s;
   request.refinement.time_limit_s = options.time_limit_s;
-  request.lattice = latticeSettings(context, options);
+  request.lattice = latticeSettings(options);
   request.lattice.workers = 1;
   // A clear straight line needs no search: the refinement bends it where that saves charge
   // (up towards a ceiling), and the dense re-check still applies.
@@ -331,7 +329,7 @@ class TourRoadmap {
   TourRoadmap(const TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options)
       : tour_(tour), planner_(legPlanner(context, mode, tour.places_m.front(), tour.places_m.front())),
         straight_when_clear_(options.straight_when_clear) {
-    planner::LatticeSettings settings = latticeSettings(context, options);
+    planner::LatticeSettings settings = latticeSettings(options);
     settings.progress = stageProgress(options, flightModeName(tour.mode) + " mode: building the roadmap");
     roadmap_ = std::make_unique<planner::LatticeRoadmap>(planner_.planner->spaceInformation(), settings);
     roadmap_->build(planner_.planner->objective(), tour.places_m);
@@ -607,7 +605,7 @@ class SparseLegs {
       return;
     }
     const LegRework search = [&](int from, int to, const std::vector<Eigen::Vector3d>&) {
-      return searchLeg(tour_, context_, legPlanner(context_, mode_, tour_.places_m[from], tour_.places_m[to]), options_, from,
+      return searchLeg(tour_, legPlanner(context_, mode_, tour_.places_m[from], tour_.places_m[to]), options_, from,
                        to);
     };
     routeLegs(tour_.legs, estimates, search, score_, options_.workers, progress);
@@ -773,7 +771,7 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   } else {
     refinement.time_limit_s = options.time_limit_s;
     const PairPlanner plan_pair = [&](int from, int to) {
-      return searchLeg(tour, context, legPlannerFor(from, to), options, from, to);
+      return searchLeg(tour, legPlannerFor(from, to), options, from, to);
     };
     if (all_pairs)
       tour.legs = planLegsByPair(places, plan_pair, score, options.workers,

@@ -314,7 +314,7 @@ TEST(TourCommand, PairwisePlannersStillPlanEveryLeg) {
   const std::filesystem::path dir = scratchDirectory("tour_pairwise");
   const std::filesystem::path mission = writeMission(dir);
   const testing::CommandResult result =
-      runCeilplan("tour --mission " + mission.string() + " --mode ceiling --planner lattice --lattice-stride 4 "
+      runCeilplan("tour --mission " + mission.string() + " --mode ceiling --planner lattice --lattice-spacing-m 0.4 "
                   "--time-limit-s 20 --out " + (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json tour = readJson(dir / "out" / "tour.json");

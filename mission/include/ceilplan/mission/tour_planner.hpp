@@ -41,7 +41,6 @@ struct TourOptions {
   std::string planner = planner::defaultTourPlannerName();
   double time_limit_s = 0.5;            // pairwise planners: search time per leg, and as much again for refinement
   double lattice_spacing_m = 0.4;       // roadmap and lattice: between lattice nodes
-  int lattice_stride = 0;               // when > 0, the spacing in voxels of the map instead
   bool straight_when_clear = true;      // a pair joined by a valid straight motion skips the search
   std::string ageing_model = "xu";      // the split minimises this model's wear
   double free_standoff_max_m = 3.0;     // free mode: farthest viewpoint (a conventional planner zooms)
