@@ -71,12 +71,7 @@ void runTour(TourArguments a) {
   provenance.input("mission", mission.file).input("map", mission.map_file).input("vehicle", mission.vehicle_file);
   provenance.seed = a.options.seed;
 
-  std::string inspects = std::to_string(mission.targets.size()) + " targets";
-  if (mission.isCoverage())
-    inspects += ", " + std::to_string(mission.surfaces.size()) + " surface(s), " +
-                std::to_string(mission.contact_grids.size()) + " contact grid(s)";
-  std::printf("tour of %s: %s, mode %s, planner %s, seed %u, split for least %s wear\n", mission.file.c_str(),
-              inspects.c_str(), a.mode.c_str(), a.options.planner.c_str(), a.options.seed, a.options.ageing_model.c_str());
+  std::printf("%s", io::tourHeadline(mission, a.mode, a.options).c_str());
   std::printf("unknown space: %s\n", io::unknownSpaceLine(context.environment()).c_str());
   std::fflush(stdout);
   std::vector<mission::TourResult> tours;
@@ -98,12 +93,7 @@ void runTour(TourArguments a) {
     io::writeTourComparison(out.path(), tours[0], tours[1], mission, context.environment(), provenance);
   }
   out.commit();
-  std::printf("\nwrote %s (tour.json, path.csv, trajectory, report.html%s%s); figures: scripts/plot-tour %s\n",
-              a.out.c_str(), mission.surfaces.empty() ? "" : ", photos.csv, coverage.json, coverage_elements.csv",
-              !autopilot     ? ""
-              : kmz_written ? ", mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson"
-                            : ", mission.plan, mission.waypoints, routes.kml, routes.geojson",
-              a.out.c_str());
+  std::printf("\n%s", io::tourFilesLine(a.out, mission, autopilot, kmz_written).c_str());
 }
 
 const CommandRegistration registration(50, [](CLI::App& parent) {
@@ -129,9 +119,6 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
       ->capture_default_str()->check(positiveFinite());
   command->add_option("--lattice-spacing-m", a->options.lattice_spacing_m, "roadmap and lattice: node spacing")
       ->capture_default_str()->check(finiteRange(0.01, 2.0));
-  command->add_option("--lattice-stride", a->options.lattice_stride,
-                      "roadmap and lattice: node spacing in voxels of the map instead (to be retired)")
-      ->check(CLI::Range(1, 16));
   command->add_option("--workers", a->options.workers, "threads planning legs")->capture_default_str()->check(CLI::Range(1, 64));
   command->add_option("--all-pairs-max-places", a->options.all_pairs_max_places,
                       "a leg between every pair of places (home and the stops) up to this many; beyond, legs between "

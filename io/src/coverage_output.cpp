@@ -151,29 +151,24 @@ double routeLength_m(const mission::TourResult& tour) {
 
 namespace {
 
-// Over every region: covered share of the reachable area (%) and the mean GSD of the covered area.
-struct CoverageTotals {
-  double covered_reachable_pct = 100.0;
-  double mean_gsd_mm_px = 0.0;
-};
-
-CoverageTotals coverageTotals(const mission::CoverageCheck& check) {
-  double reachable = 0.0, covered_reachable = 0.0, covered = 0.0, gsd_area = 0.0;
-  for (const mission::RegionCoverageCheck& region : check.regions) {
-    reachable += region.reachable_area_m2;
-    covered_reachable += region.covered_reachable_area_m2;
-    covered += region.covered_area_m2;
-    gsd_area += region.mean_gsd_mm_px * region.covered_area_m2;
-  }
-  return {percent(covered_reachable, reachable), covered > 0.0 ? gsd_area / covered : 0.0};
-}
-
 const mission::CoverageCheck& checked(const mission::TourResult& tour) {
   if (!tour.coverage || !tour.coverage_check) throw ceilplan::InputError("the tour has no coverage plan");
   return *tour.coverage_check;
 }
 
 }  // namespace
+
+CoverageSummary coverageSummary(const mission::TourResult& tour) {
+  double reachable = 0.0, covered_reachable = 0.0, covered = 0.0, gsd_area = 0.0;
+  for (const mission::RegionCoverageCheck& region : checked(tour).regions) {
+    reachable += region.reachable_area_m2;
+    covered_reachable += region.covered_reachable_area_m2;
+    covered += region.covered_area_m2;
+    gsd_area += region.mean_gsd_mm_px * region.covered_area_m2;
+  }
+  return {tour.photos.size(), routeLength_m(tour), percent(covered_reachable, reachable),
+          covered > 0.0 ? gsd_area / covered : 0.0};
+}
 
 nlohmann::json coverageSummaryJson(const mission::TourResult& tour) {
   const mission::CoverageCheck& check = checked(tour);
@@ -187,33 +182,12 @@ nlohmann::json coverageSummaryJson(const mission::TourResult& tour) {
                        {"covered_pct", percent(region.covered_area_m2, region.area_m2)},
                        {"covered_reachable_pct", percent(region.covered_reachable_area_m2, region.reachable_area_m2)},
                        {"mean_gsd_mm_px", region.mean_gsd_mm_px}});
-  const CoverageTotals totals = coverageTotals(check);
-  return {{"photos", tour.photos.size()},
-          {"route_m", routeLength_m(tour)},
-          {"covered_reachable_pct", totals.covered_reachable_pct},
-          {"mean_gsd_mm_px", totals.mean_gsd_mm_px},
+  const CoverageSummary summary = coverageSummary(tour);
+  return {{"photos", summary.photos},
+          {"route_m", summary.route_m},
+          {"covered_reachable_pct", summary.covered_reachable_pct},
+          {"mean_gsd_mm_px", summary.mean_gsd_mm_px},
           {"regions", regions}};
-}
-
-std::string coverageComparisonRows(const mission::TourResult& ceiling, const mission::TourResult& free) {
-  const CoverageTotals c = coverageTotals(checked(ceiling)), f = coverageTotals(checked(free));
-  std::ostringstream out;
-  char line[400];
-  const auto row = [&](const char* label, const std::string& c_text, const std::string& f_text, const std::string& reduction) {
-    std::snprintf(line, sizeof line, "%-40s %14s %14s %12s\n", label, c_text.c_str(), f_text.c_str(), reduction.c_str());
-    out << line;
-  };
-  const auto reductionPct = [](double with, double without) {
-    return without != 0.0 ? formatFixed(100.0 * (1.0 - with / without), 2) : std::string();
-  };
-  row("photos", std::to_string(ceiling.photos.size()), std::to_string(free.photos.size()),
-      reductionPct(static_cast<double>(ceiling.photos.size()), static_cast<double>(free.photos.size())));
-  const double c_route = routeLength_m(ceiling), f_route = routeLength_m(free);
-  row("route length [m]", formatFixed(c_route, 1), formatFixed(f_route, 1), reductionPct(c_route, f_route));
-  row("covered, of the reachable surface [%]", formatFixed(c.covered_reachable_pct, 2), formatFixed(f.covered_reachable_pct, 2),
-      "");
-  row("mean GSD [mm/px]", formatFixed(c.mean_gsd_mm_px, 3), formatFixed(f.mean_gsd_mm_px, 3), "");
-  return out.str();
 }
 
 nlohmann::json coverageComparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free) {

@@ -7,6 +7,7 @@
 #include "ceilplan/io/map_views.hpp"
 
 #include "ceilplan/core/format.hpp"
+#include "reduction.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -125,12 +126,6 @@ std::string standoffLine(const planner::StandoffReport& report) {
          std::to_string(report.spans.size()) + (report.spans.size() == 1 ? " place" : " places") + ", to " +
          formatFixed(narrowest->min_standoff_m, 2) + " m at " + formatPoint(narrowest->narrowest_m);
 }
-
-namespace {
-
-double reductionPct(double with, double without) { return without != 0.0 ? 100.0 * (1.0 - with / without) : 0.0; }
-
-}  // namespace
 
 std::string routeComparisonTable(const mission::RouteComparison& comparison, const mission::DutyOptions& duty,
                                  const mission::BatterySpec& battery) {

@@ -12,6 +12,7 @@
 #include "ceilplan/io/tour_report.hpp"
 #include "ceilplan/io/trajectory_file.hpp"
 #include "ceilplan/io/unknown_space_report.hpp"
+#include "reduction.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -26,8 +27,6 @@ std::string format(const char* pattern, double value) {
   std::snprintf(text, sizeof text, pattern, value);
   return text;
 }
-
-double reductionPct(double with, double without) { return without != 0.0 ? 100.0 * (1.0 - with / without) : 0.0; }
 
 const char* phaseName(mission::FlightPhase phase) { return phase == mission::FlightPhase::Leg ? "leg" : "dwell"; }
 
@@ -265,7 +264,13 @@ std::string comparisonTable(const mission::TourResult& ceiling, const mission::T
     row(c.model + ": " + c.wear_name, c.cycle_wear, f.cycle_wear, "%.4e", true);
     row(c.model + ": capacity loss [%]", 100.0 * c.capacity_loss, 100.0 * f.capacity_loss, "%.5f", true);
   }
-  if (ceiling.coverage && free.coverage) out << coverageComparisonRows(ceiling, free);
+  if (ceiling.coverage && free.coverage) {
+    const CoverageSummary c = coverageSummary(ceiling), f = coverageSummary(free);
+    row("photos", static_cast<double>(c.photos), static_cast<double>(f.photos), "%.0f", true);
+    row("route length [m]", c.route_m, f.route_m, "%.1f", true);
+    row("covered, of the reachable surface [%]", c.covered_reachable_pct, f.covered_reachable_pct, "%.2f", false);
+    row("mean GSD [mm/px]", c.mean_gsd_mm_px, f.mean_gsd_mm_px, "%.3f", false);
+  }
   if (ceiling.duty.result && free.duty.result) {
     std::snprintf(line, sizeof line, "duty projection: the tour %d times a day for %d days\n",
                   ceiling.duty.missions_per_day, ceiling.duty.days);
@@ -336,6 +341,25 @@ std::string standoffLine(const mission::TourResult& tour) {
   if (std::isfinite(standoff.min_standoff_m) && standoff.min_standoff_m < standoff.standoff_m)
     line += "; closest " + formatFixed(standoff.min_standoff_m, 2) + " m at " + formatPoint(standoff.narrowest_m);
   return line + " (tour.json: standoff)";
+}
+
+std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options) {
+  std::string inspects = std::to_string(mission.targets.size()) + " targets";
+  if (mission.isCoverage())
+    inspects += ", " + std::to_string(mission.surfaces.size()) + " surface(s), " +
+                std::to_string(mission.contact_grids.size()) + " contact grid(s)";
+  return "tour of " + mission.file.string() + ": " + inspects + ", mode " + mode + ", planner " + options.planner + ", seed " +
+         std::to_string(options.seed) + ", split for least " + options.ageing_model + " wear\n";
+}
+
+std::string tourFilesLine(const std::string& dir, const mission::Mission& mission, std::optional<Autopilot> autopilot,
+                          bool kmz_written) {
+  std::string files = "tour.json, path.csv, trajectory, report.html";
+  if (!mission.surfaces.empty()) files += ", photos.csv, coverage.json, coverage_elements.csv";
+  if (autopilot)
+    files += kmz_written ? ", mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson"
+                         : ", mission.plan, mission.waypoints, routes.kml, routes.geojson";
+  return "wrote " + dir + " (" + files + "); figures: scripts/plot-tour " + dir + "\n";
 }
 
 std::string tourSummary(const mission::TourResult& tour) {

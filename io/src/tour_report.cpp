@@ -1,13 +1,9 @@
 #include "ceilplan/io/tour_report.hpp"
 
 #include "ceilplan/core/format.hpp"
+#include "reduction.hpp"
 
 namespace ceilplan::io {
-namespace {
-
-double reductionPct(double with, double without) { return without != 0.0 ? 100.0 * (1.0 - with / without) : 0.0; }
-
-}  // namespace
 
 ReportPlan tourReportPlan(const mission::TourResult& tour) {
   ReportPlan plan;

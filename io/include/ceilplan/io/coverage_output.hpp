@@ -59,9 +59,18 @@ void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourRes
 // covered_area_m2, covered_pct, covered_reachable_pct, unreachable_area_m2, mean_gsd_mm_px.
 nlohmann::json coverageSummaryJson(const mission::TourResult& tour);
 
-// Both modes' coverage side by side (rows of the comparison table: photos, route length,
-// coverage of the reachable surface, mean GSD) and as comparison.json's "coverage".
-std::string coverageComparisonRows(const mission::TourResult& ceiling, const mission::TourResult& free);
+// A coverage tour's totals over every region, by the re-check: the photos, the route length,
+// the share of the reachable surface covered (%) and the mean GSD of the covered area. Throws
+// ceilplan::InputError when the tour has no coverage plan.
+struct CoverageSummary {
+  std::size_t photos = 0;
+  double route_m = 0.0;
+  double covered_reachable_pct = 100.0;
+  double mean_gsd_mm_px = 0.0;
+};
+CoverageSummary coverageSummary(const mission::TourResult& tour);
+
+// Both modes' coverage side by side, as comparison.json's "coverage".
 nlohmann::json coverageComparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free);
 
 // Length of the route flown (every leg of every sortie), metres.

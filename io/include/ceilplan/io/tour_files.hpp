@@ -50,6 +50,14 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
                          const mission::TourResult& free, const mission::Mission& mission,
                          const environment::Environment& environment, const Provenance& provenance);
 
+// `ceilplan tour`'s first line: what the mission inspects, the mode ("ceiling", "free" or
+// "both"), the leg planner, the seed and the model whose wear the sortie split minimises.
+std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options);
+// Its last line: DIR and the files written there (with `autopilot`, its missions; the DJI KMZ
+// only when `kmz_written`), then the command that draws the figures.
+std::string tourFilesLine(const std::string& dir, const mission::Mission& mission, std::optional<Autopilot> autopilot,
+                          bool kmz_written);
+
 // One paragraph for the terminal: targets, sorties with their reasons, totals, in free mode
 // standoffLine, where the time went and, for a coverage tour, what its photos cover (re-check).
 std::string tourSummary(const mission::TourResult& tour);
