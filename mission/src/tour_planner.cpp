@@ -267,6 +267,13 @@ constexpr double kRefinementTimeGuardS = 30.0;
 
 std::string legName(const TourResult& tour, int from, int to) { return tour.names[from] + " -> " + tour.names[to]; }
 
+// "no path between home at (x, y, z) and NAME at (x, y, z)": where the places are, since a
+// viewpoint's position is the planner's choice, not the mission's.
+std::string noPathBetween(const TourResult& tour, int from, int to) {
+  return flightModeName(tour.mode) + " mode: no path between " + tour.names[from] + " at " +
+         formatPoint(tour.places_m[from]) + " and " + tour.names[to] + " at " + formatPoint(tour.places_m[to]) + ": ";
+}
+
 // The rules, cost model and planner for the legs between two places.
 struct LegPlanner {
   PlanningContext::Mode planning;
@@ -319,8 +326,7 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
       rethrowWithContext(flightModeName(tour.mode) + " mode: leg " + legName(tour, from, to) + ": ");
     }
   }
-  throw NoPathError(flightModeName(tour.mode) + " mode: no path between " + tour.names[from] + " and " + tour.names[to] + ": " +
-                    failures);
+  throw NoPathError(noPathBetween(tour, from, to) + failures);
 }
 
 // The roadmap over the map for the tour's places, with what its legs are judged by.
@@ -383,8 +389,7 @@ class TourRoadmap {
       best = std::vector<Eigen::Vector3d>{a, b};
     if (!best) {
       const std::optional<planner::Blockage> blockage = roadmap_->blockage(from, to);
-      throw NoPathError(flightModeName(tour_.mode) + " mode: no path between " + tour_.names[from] + " and " +
-                        tour_.names[to] + ": " +
+      throw NoPathError(noPathBetween(tour_, from, to) +
                         (blockage ? blockage->describe() : std::string("the roadmap does not join them")));
     }
     return std::move(*best);
