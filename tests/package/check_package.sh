@@ -33,9 +33,12 @@ test -f "$work/tour/mission.plan"
 
 echo "== the installed Python module"
 python=${CEILPLAN_PYTHON:-python3}
-# A sanitizer build's module needs the ASan runtime loaded before python3 (which leaks at exit).
+# A sanitizer build's module needs the ASan and C++ runtimes loaded before python3 (which leaks
+# at exit).
 preload=()
-if [[ -n ${CEILPLAN_ASAN_RUNTIME:-} ]]; then preload=(env "LD_PRELOAD=$CEILPLAN_ASAN_RUNTIME" ASAN_OPTIONS=detect_leaks=0); fi
+if [[ -n ${CEILPLAN_SANITIZER_PRELOAD:-} ]]; then
+  preload=(env "LD_PRELOAD=$CEILPLAN_SANITIZER_PRELOAD" ASAN_OPTIONS=detect_leaks=0)
+fi
 PYTHONPATH=$prefix/lib/python3/dist-packages "${preload[@]}" "$python" - "$share/bridge.yaml" "$work/tour/tour.json" <<'PY'
 import json, sys
 import ceilplan
