@@ -288,17 +288,21 @@ PYBIND11_MODULE(ceilplan, m) {
           py::arg("y"), py::arg("z"))
       .def_property_readonly("resolution_m", [](const PyEnvironment& self) { return self.context->map().resolution_m(); });
 
+  const planner::PlanRequest defaults;  // `ceilplan plan`'s defaults too
   m.def(
       "plan",
       [](const PyEnvironment& env, const std::vector<double>& start, const std::vector<double>& goal,
          const std::string& mode, const std::string& objective, const std::string& planner, double time_limit_s,
-         std::uint32_t seed) {
+         std::uint32_t seed, double lattice_spacing_m, double band_fraction, bool refine) {
         planner::seedOmpl(seed);  // only the first seed of a process takes effect (OMPL's generators)
         planner::PlanRequest request;
         request.start_m = point(start, "start");
         request.goal_m = point(goal, "goal");
         request.planner = planner;
         request.time_limit_s = time_limit_s;
+        request.lattice.spacing_m = lattice_spacing_m;
+        request.band_fraction = band_fraction;
+        request.refine = refine;
         const mission::FlightMode flight_mode = mission::flightModeFromName(mode);
         const mission::RoutePlan route = [&] {
           py::gil_scoped_release release;
@@ -314,9 +318,11 @@ PYBIND11_MODULE(ceilplan, m) {
         d["seed"] = seed;
         return d;
       },
-      "Plans one route; figures from the full model", py::arg("env"), py::arg("start"), py::arg("goal"),
-      py::arg("mode") = "ceiling", py::arg("objective") = "charge", py::arg("planner") = "", py::arg("time_limit_s") = 5.0,
-      py::arg("seed") = 1u);
+      "Plans one route as `ceilplan plan` does, with its defaults; figures from the full model", py::arg("env"),
+      py::arg("start"), py::arg("goal"), py::arg("mode") = "ceiling", py::arg("objective") = "charge",
+      py::arg("planner") = "", py::arg("time_limit_s") = defaults.time_limit_s, py::arg("seed") = 1u,
+      py::arg("lattice_spacing_m") = defaults.lattice.spacing_m, py::arg("band_fraction") = defaults.band_fraction,
+      py::arg("refine") = defaults.refine);
 
   m.def(
       "evaluate",

@@ -115,7 +115,7 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
       ->capture_default_str()
       ->check(CLI::IsMember(planner::plannerNames()));
   command->add_option("--time-limit-s", a->options.time_limit_s,
-                      "pairwise planners: search time per leg (refinement may take as long again)")
+                      "pairwise planners: search time per leg")
       ->capture_default_str()->check(positiveFinite());
   command->add_option("--lattice-spacing-m", a->options.lattice_spacing_m, "roadmap and lattice: node spacing")
       ->capture_default_str()->check(finiteRange(0.01, 2.0));

@@ -41,11 +41,12 @@ std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlag
 // The search flags shared by plan, compare and bench-planners.
 struct SearchArguments {
   std::string planner;  // empty: the default
-  double time_limit_s = 5.0;
+  // The library's defaults, as Python's keywords have them.
+  double time_limit_s = planner::PlanRequest{}.time_limit_s;
   std::uint32_t seed = 1;
-  double band_fraction = 0.0;  // uniform by default: the band did not help BIT* in the study (docs/planner.md)
+  double band_fraction = planner::PlanRequest{}.band_fraction;
   bool no_refine = false;
-  double lattice_spacing_m = 0.2;  // the lattice planners' node spacing
+  double lattice_spacing_m = planner::kQueryLatticeSpacing_m;  // the lattice planners' node spacing
 
   planner::PlanRequest request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
   std::string plannerName() const;

@@ -261,10 +261,6 @@ DutyProjection projectDuty(const TourResult& tour, const BatterySpec& battery, c
   return projection;
 }
 
-// Refinement of roadmap legs stops at its evaluation budget; this time limit only guards
-// against a pathological case, so refined legs do not depend on the machine's speed.
-constexpr double kRefinementTimeGuardS = 30.0;
-
 std::string legName(const TourResult& tour, int from, int to) { return tour.names[from] + " -> " + tour.names[to]; }
 
 // "no path between home at (x, y, z) and NAME at (x, y, z)": where the places are, since a
@@ -303,7 +299,6 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
   request.goal_m = b;
   request.planner = options.planner;
   request.time_limit_s = options.time_limit_s;
-  request.refinement.time_limit_s = options.time_limit_s;
   request.lattice = latticeSettings(options);
   request.lattice.workers = 1;
   // A clear straight line needs no search: the refinement bends it where that saves charge
@@ -768,13 +763,11 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   };
   const int places = static_cast<int>(tour.places_m.size());
   const bool all_pairs = places <= options.all_pairs_max_places;
-  planner::RefinementOptions refinement;
+  const planner::RefinementOptions refinement;
   std::unique_ptr<SparseLegs> sparse;
   if (planner::plannerInfo(options.planner).multiQuery()) {
     if (all_pairs) tour.legs = roadmapLegs(tour, context, mode, options, score);
-    refinement.time_limit_s = kRefinementTimeGuardS;
   } else {
-    refinement.time_limit_s = options.time_limit_s;
     const PairPlanner plan_pair = [&](int from, int to) {
       return searchLeg(tour, legPlannerFor(from, to), options, from, to);
     };

@@ -97,6 +97,8 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
   const auto started = std::chrono::steady_clock::now();
   if (!(std::isfinite(request.time_limit_s) && request.time_limit_s > 0.0))
     throw ceilplan::InputError("time limit must be a positive number of seconds");
+  if (!(request.band_fraction >= 0.0 && request.band_fraction <= 1.0))
+    throw ceilplan::InputError("band fraction must be a share in [0, 1], got " + formatNumber(request.band_fraction));
   requireValidEndpoint(request.start_m, "start");
   requireValidEndpoint(request.goal_m, "goal");
   if ((request.goal_m - request.start_m).norm() < 1e-6) throw ceilplan::InputError("start and goal coincide: nothing to plan");

@@ -94,7 +94,6 @@ Waypoints refinePath(const Waypoints& path, const SafetyRules& rules, const Flig
   optimiser.set_lower_bounds(lower);
   optimiser.set_upper_bounds(upper);
   optimiser.set_maxeval(options.max_evaluations);
-  optimiser.set_maxtime(options.time_limit_s);
   optimiser.set_xtol_abs(0.2 * rules.environment().grid().frame().resolution_m());
   optimiser.set_initial_step(0.25 * options.max_move_m);
   optimiser.set_min_objective(

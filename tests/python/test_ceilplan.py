@@ -51,6 +51,23 @@ def test_plan_then_evaluate_the_same_route(bridge):
     assert again["charge_ah"] == pytest.approx(route["charge_ah"], rel=1e-12)
 
 
+def test_a_route_matches_the_command_line_with_the_same_defaults(bridge, tmp_path):
+    # The lattice planner is deterministic: with the defaults both front ends share (its 0.2 m
+    # spacing among them), Python and `ceilplan plan` fly the same route.
+    start, goal = (6.0, 0.7, 5.85), (14.0, 0.7, 5.85)
+    route = ceilplan.plan(bridge, start, goal, planner="lattice")
+    subprocess.run([os.environ["CEILPLAN_EXE"], "plan", "--map", str(MAPS / "bridge.bt"), "--planner", "lattice",
+                    "--start", ",".join(map(str, start)), "--goal", ",".join(map(str, goal)), "--out",
+                    str(tmp_path / "cli")], check=True, capture_output=True)
+    cli = json.loads((tmp_path / "cli" / "plan.json").read_text())
+    assert route["charge_ah"] == pytest.approx(cli["charge_ah"], abs=1e-12)
+    np.testing.assert_allclose(np.array(route["waypoints"]), np.array(cli["waypoints"]), rtol=0, atol=1e-12)
+    coarser = ceilplan.plan(bridge, start, goal, planner="lattice", lattice_spacing_m=0.4, refine=False)
+    assert coarser["charge_ah"] != pytest.approx(cli["charge_ah"], abs=1e-9)
+    with pytest.raises(ValueError, match="band fraction"):
+        ceilplan.plan(bridge, start, goal, band_fraction=1.5)
+
+
 def test_bad_input_raises_a_value_error(bridge):
     with pytest.raises(ValueError, match="outside the map"):
         ceilplan.plan(bridge, (1e6, 0, 0), (10.0, 0.0, 5.5), planner="lattice")

@@ -39,8 +39,8 @@ struct TourOptions {
   // The leg planner, by the factory's name: the roadmap (the default) searches one lattice
   // roadmap from each place, deterministic; the other planners search each pair of places.
   std::string planner = planner::defaultTourPlannerName();
-  double time_limit_s = 0.5;            // pairwise planners: search time per leg, and as much again for refinement
-  double lattice_spacing_m = 0.4;       // roadmap and lattice: between lattice nodes
+  double time_limit_s = 0.5;            // pairwise planners: search time per leg
+  double lattice_spacing_m = planner::kTourLatticeSpacing_m;       // roadmap and lattice: between lattice nodes
   bool straight_when_clear = true;      // a pair joined by a valid straight motion skips the search
   std::string ageing_model = "xu";      // the split minimises this model's wear
   double free_standoff_max_m = 3.0;     // free mode: farthest viewpoint (a conventional planner zooms)

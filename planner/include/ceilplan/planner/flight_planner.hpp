@@ -22,17 +22,19 @@
 
 namespace ceilplan::planner {
 
+// Its defaults are every front end's (the CLI's flags, Python's keywords), so one query gives
+// one route whichever asks.
 struct PlanRequest {
   Eigen::Vector3d start_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d goal_m = Eigen::Vector3d::Zero();
   std::string planner;            // empty: defaultPlannerName()
-  // For a sampling search; the deterministic ones run to completion. Post-processing takes up to
-  // refinement.time_limit_s more.
+  // For a sampling search; the deterministic ones run to completion, and so does the
+  // post-processing (RefinementOptions::max_evaluations bounds it, not a clock).
   double time_limit_s = 5.0;
   double band_fraction = 0.0;     // share of samples aimed at the ceiling band (0, the default: uniform; docs/planner.md)
   bool refine = true;             // shortcuts + NLopt refinement
   RefinementOptions refinement;
-  LatticeSettings lattice;        // the lattice planners' spacing
+  LatticeSettings lattice = queryLatticeSettings();  // the lattice planners' spacing
   // Known routes from start to goal (e.g. the free-mode plan): each that is valid under these
   // rules is post-processed too, and returned if cheaper than what the search found, so a
   // plan is never worse than a route it was shown.

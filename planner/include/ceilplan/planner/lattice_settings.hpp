@@ -7,10 +7,15 @@
 
 namespace ceilplan::planner {
 
+// Default node spacings: a tour's roadmap covers the whole map once for all its legs; a single
+// query's lattice A* searches one route and affords a finer lattice (docs/planner.md).
+inline constexpr double kTourLatticeSpacing_m = 0.4;
+inline constexpr double kQueryLatticeSpacing_m = 0.2;
+
 struct LatticeSettings {
   // Between lattice nodes; rounded to a whole number of voxels (at least one), so nodes sit on
   // voxel centres and lattice motions sample the cost model's half-voxel lattice exactly.
-  double spacing_m = 0.4;
+  double spacing_m = kTourLatticeSpacing_m;
   int workers = 1;                          // threads building the roadmap
   std::size_t max_expansions = 50'000'000;  // the lattice A* gives up beyond
   std::function<void(double)> progress;     // share of the roadmap's build done, from the calling thread
@@ -18,5 +23,12 @@ struct LatticeSettings {
   // Throws ceilplan::InputError for a spacing that is not a positive number or fewer than one worker.
   void validate() const;
 };
+
+// The settings of a single query (PlanRequest's default): the query spacing.
+inline LatticeSettings queryLatticeSettings() {
+  LatticeSettings settings;
+  settings.spacing_m = kQueryLatticeSpacing_m;
+  return settings;
+}
 
 }  // namespace ceilplan::planner

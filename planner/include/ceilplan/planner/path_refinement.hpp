@@ -18,8 +18,9 @@ using Waypoints = std::vector<Eigen::Vector3d>;
 // whose straight motion is valid and cheaper than the path between them.
 Waypoints shortcutPath(const Waypoints& path, const SafetyRules& rules, const FlightObjective& objective);
 
+// No clock: the refinement stops after max_evaluations, so a route does not depend on the
+// machine's speed or load.
 struct RefinementOptions {
-  double time_limit_s = 1.0;
   int max_evaluations = 600;
   int max_waypoints = 12;      // the path is resampled to at most this many waypoints first
   double max_move_m = 0.6;     // each inner waypoint moves at most this far per axis
