@@ -240,8 +240,12 @@ std::vector<std::optional<Blockage>> LatticeRoadmap::connect(const std::vector<E
     for (const auto& [node, arc] : node_arcs_) unite(node, arc.to);
     for (std::size_t v = 0; v < bridge_arcs_.size(); ++v)
       for (const Arc& arc : bridge_arcs_[v]) unite(static_cast<std::uint32_t>(node_count_ + v), arc.to);
+    // A search ends at a place, never passes through it: a place joined to two parts (in a
+    // doorway, say) must not make them one, or the parts would stay apart for the search with
+    // no refinement between them. It counts with the part of its first join; the others are
+    // then refined towards it.
     for (std::size_t p = 0; p < place_count; ++p)
-      for (const Join& join : places[p].out) unite(placeElement(p), join.state);
+      if (!places[p].out.empty()) unite(placeElement(p), places[p].out.front().state);
   };
   // Lattice nodes missing an edge: where a part of the roadmap ends.
   std::vector<std::uint32_t> rim;

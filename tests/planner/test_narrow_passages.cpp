@@ -140,6 +140,26 @@ TEST_P(DoorwayOneVoxelWiderThanTheVehicle, TheRoadmapFindsTheWayThroughForEveryP
 
 INSTANTIATE_TEST_SUITE_P(Widths, DoorwayOneVoxelWiderThanTheVehicle, ::testing::Values(1.0, 1.1));
 
+TEST(RoadmapPlaces, APlaceInTheDoorwayDoesNotJoinTheRoomsForTheOthers) {
+  // A place just past the wall in the 1.1 m doorway joins lattice nodes of both rooms. A search
+  // ends at a place and never passes through it, so start and goal are still apart on the
+  // lattice: the roadmap must refine between the rooms rather than count them as one.
+  const CeilingScene scene(twoRooms(0.4, 1.5));
+  const Eigen::Vector3d in_the_doorway(0.275, 0.975, 1.2);
+  ASSERT_TRUE(scene.rules.isStateValid(in_the_doorway));
+  planner::LatticeSettings settings;  // 0.4 m, the tour's spacing
+  planner::LatticeRoadmap roadmap(scene.planner.spaceInformation(), settings);
+  roadmap.build(scene.planner.objective(), {kStart, in_the_doorway, kGoal});
+  for (int from = 0; from < 3; ++from) {
+    const auto routes = roadmap.routesFrom(from);
+    for (int to = 0; to < 3; ++to)
+      if (to != from) {
+        ASSERT_TRUE(routes[to]) << from << " -> " << to;
+        EXPECT_FALSE(scene.rules.checkPathDensely(routes[to]->waypoints)) << from << " -> " << to;
+      }
+  }
+}
+
 // A hall (z up to 2.2 m) under a loft (z from 2.6 m), 6 x 6 m at 0.1 m, the slab between
 // them pierced by six 1.2 m holes the scan never saw (unknown: obstacles under the default
 // policy) and one shaft 1.0 m square, in the corner, that it did: the only way up, 8 cm wider
