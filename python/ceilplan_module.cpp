@@ -367,6 +367,8 @@ PYBIND11_MODULE(ceilplan, m) {
       .def_property_readonly("fec", [](const PyTour& t) { return t.tour.plan.fec; })
       .def_property_readonly("min_soc", [](const PyTour& t) { return t.tour.plan.min_soc; })
       .def_property_readonly("duration_s", [](const PyTour& t) { return t.tour.plan.flight_s; })
+      .def_property_readonly("stops_rechosen", [](const PyTour& t) { return t.tour.stops_rechosen; },
+                             "whether the first stops left one no route from home reaches, and they were chosen again")
       .def_property_readonly("sorties",
                              [](const PyTour& t) {
                                py::list list;

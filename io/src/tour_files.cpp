@@ -104,6 +104,7 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   json["between_sorties"] = mission.battery.between_sorties == mission::Turnaround::Swap ? "swap" : "recharge";
   json["unknown_space"] = unknownSpaceJson(tour.unknown_space, tour.unknown_summary);
   json["assumed_free_m"] = tour.assumed_free_m;
+  json["stops_rechosen"] = tour.stops_rechosen;
   const std::optional<std::string> dji = djiExportProblem(tour, mission);
   json["dji_kmz"] = dji ? "not written: " + *dji : "written";
   json["targets_total"] = tour.stops.size();
@@ -383,6 +384,9 @@ std::string tourSummary(const mission::TourResult& tour) {
                 100.0 * tour.plan.min_soc, 100.0 * tour.reserve_soc);
   out << line;
   if (tour.standoff) out << "  " << standoffLine(tour) << '\n';
+  if (tour.stops_rechosen)
+    out << "  stops chosen again among the places a route from home reaches (the first choice left one where none "
+           "did)\n";
   if (!tour.duty.result) out << "  duty projection " << tour.duty.note << '\n';
   const mission::TourTimes& t = tour.times;
   std::snprintf(line, sizeof line,

@@ -250,9 +250,9 @@ class PoseMaker {
           element.normal * std::cos(tilt_rad) + (t1 * std::cos(phi) + t2 * std::sin(phi)) * std::sin(tilt_rad);
       const auto pose = looking(aim_m + d * direction, aim_m, tried);
       if (!pose) continue;
-      out.push_back(*pose);
+      if (reachable(*pose)) out.push_back(*pose);
       if (!free())
-        if (const auto up = raised(*pose, aim_m, element.normal, tried)) out.push_back(*up);
+        if (const auto up = raised(*pose, aim_m, element.normal, tried); up && reachable(*up)) out.push_back(*up);
     }
   }
 
@@ -261,6 +261,9 @@ class PoseMaker {
   }
 
  private:
+  // Asked of finished poses only: the test costs motion checks.
+  bool reachable(const Pose& pose) const { return !options_.reachable || options_.reachable(pose.pose.body_m); }
+
   bool admissible(const Eigen::Vector3d& body_m) const {
     return environment_.contains(body_m) && environment_.isStateValid(body_m) &&
            environment_.ceiling(body_m).nearest_gap_m >= options_.min_ceiling_gap_m;

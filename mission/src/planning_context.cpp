@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 namespace ceilplan::mission {
 namespace {
@@ -77,7 +78,14 @@ PlanningContext::PlanningContext(environment::OccupancyMap map, Vehicle vehicle,
   full.planning_soc = battery_.start_soc;
   full_model_ = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, full);
   base_rules_ = std::make_unique<planner::SafetyRules>(*environment_, options_.min_ceiling_gap_m);
+  reachable_ = std::make_shared<ReachableCache>();
 }
+
+// The floods asked for so far; each stays where it is, so a returned reference stays valid.
+struct PlanningContext::ReachableCache {
+  std::mutex mutex;
+  std::vector<std::unique_ptr<planner::ReachableSpace>> spaces;
+};
 
 PlanningContext::PlanningContext(const Mission& mission, const ProgressCallback& progress)
     : PlanningContext(environment::OccupancyMap::load(mission.map_file), mission.vehicle, mission.battery,
@@ -93,6 +101,15 @@ PlanningContext::Mode PlanningContext::mode(FlightMode mode) const {
   result.model = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, options);
   result.rules = std::make_unique<planner::SafetyRules>(*environment_, options_.min_ceiling_gap_m);
   return result;
+}
+
+const planner::ReachableSpace& PlanningContext::reachableFrom(const Eigen::Vector3d& origin_m, double spacing_m,
+                                                            int workers) const {
+  const std::lock_guard<std::mutex> lock(reachable_->mutex);
+  for (const auto& space : reachable_->spaces)
+    if (space->origin_m() == origin_m && space->requestedSpacing_m() == spacing_m) return *space;
+  reachable_->spaces.push_back(std::make_unique<planner::ReachableSpace>(*base_rules_, origin_m, spacing_m, workers));
+  return *reachable_->spaces.back();
 }
 
 planner::ObjectiveChoice PlanningContext::objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m,

@@ -9,6 +9,7 @@
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/lattice_roadmap.hpp"
 #include "ceilplan/planner/path_refinement.hpp"
+#include "ceilplan/planner/reachable_space.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 
@@ -67,9 +68,11 @@ planner::PathSample hoverSample(const PlanningContext& context, const Eigen::Vec
   return hover;
 }
 
-ViewpointOptions viewpointOptions(const PlanningContext& context, FlightMode mode) {
+ViewpointOptions viewpointOptions(const PlanningContext& context, FlightMode mode,
+                                  const planner::ReachablePredicate& reachable) {
   ViewpointOptions options;
   options.mode = mode;
+  options.reachable = reachable;
   options.min_ceiling_gap_m = context.options().min_ceiling_gap_m + kViewpointGapMarginM;
   options.standoff_m = context.options().standoff_m;
   return options;
@@ -78,8 +81,9 @@ ViewpointOptions viewpointOptions(const PlanningContext& context, FlightMode mod
 // A viewpoint per target, searched on the tour's threads. Point targets in free mode are seen
 // from as far as a conventional planner's zoom lens allows; a contact probe has no zoom.
 std::vector<TourStop> viewpointStops(const std::vector<InspectionTarget>& targets, std::size_t point_targets,
-                                     const PlanningContext& context, FlightMode mode, const TourOptions& options) {
-  const ViewpointOptions viewpoint_options = viewpointOptions(context, mode);
+                                     const PlanningContext& context, FlightMode mode, const TourOptions& options,
+                                     const planner::ReachablePredicate& reachable) {
+  const ViewpointOptions viewpoint_options = viewpointOptions(context, mode, reachable);
   // As the mission gives them, before free mode widens the range.
   for (std::size_t k = 0; k < point_targets; ++k) requireOnStructure(targets[k], context.environment());
   std::vector<TourStop> stops(targets.size());
@@ -96,7 +100,7 @@ std::vector<TourStop> viewpointStops(const std::vector<InspectionTarget>& target
 
 // The coverage plan of the mission's surfaces in this mode (docs/coverage.md).
 CoveragePlan planMissionCoverage(const Mission& mission, const PlanningContext& context, FlightMode mode,
-                                 const TourOptions& options) {
+                                 const TourOptions& options, const planner::ReachablePredicate& reachable) {
   if (!mission.camera)
     throw InputError(mission.name() + ": surfaces are photographed: add a 'camera' (docs/coverage.md, \"Mission keys\")");
   CoveragePlanOptions coverage;
@@ -104,6 +108,7 @@ CoveragePlan planMissionCoverage(const Mission& mission, const PlanningContext& 
   coverage.views.free_standoff_m = context.options().standoff_m;
   coverage.views.min_ceiling_gap_m = context.options().min_ceiling_gap_m + kViewpointGapMarginM;
   coverage.views.workers = options.workers;
+  coverage.views.reachable = reachable;
   coverage.costs.transit_speed_m_s = mission.speeds.inspection_m_s;
   coverage.costs.workers = options.workers;
   if (options.progress)
@@ -140,10 +145,11 @@ TourStop photoStop(const CoveragePlan& plan, std::size_t k, const Camera& camera
 // Every stop of the mission: the coverage plan's photos in its order (region by region, pass by
 // pass), the contact grids' points, then the point targets.
 std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext& context, FlightMode mode,
-                                  const TourOptions& options, TourResult& tour) {
+                                  const TourOptions& options, const planner::ReachablePredicate& reachable,
+                                  TourResult& tour) {
   std::vector<TourStop> stops;
   if (!mission.surfaces.empty()) {
-    tour.coverage = planMissionCoverage(mission, context, mode, options);
+    tour.coverage = planMissionCoverage(mission, context, mode, options, reachable);
     for (std::size_t k = 0; k < tour.coverage->photos.size(); ++k)
       stops.push_back(photoStop(*tour.coverage, k, *mission.camera, context));
   }
@@ -154,7 +160,7 @@ std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext&
   }
   // Point targets first in the search, so that free mode widens their standoff only; the stops
   // list contact points before them.
-  std::vector<TourStop> viewpoints = viewpointStops(targets, mission.targets.size(), context, mode, options);
+  std::vector<TourStop> viewpoints = viewpointStops(targets, mission.targets.size(), context, mode, options, reachable);
   std::rotate(viewpoints.begin(), viewpoints.begin() + static_cast<std::ptrdiff_t>(mission.targets.size()), viewpoints.end());
   stops.insert(stops.end(), viewpoints.begin(), viewpoints.end());
   if (stops.empty()) throw InputError(mission.name() + ": nothing to inspect: no targets, surfaces or contact grid points");
@@ -719,13 +725,9 @@ void recordPhotos(TourResult& tour, const Mission& mission, const PlanningContex
       checkCoverage(context.map().tree(), *mission.camera, mission.surfaces, surfaces, reachable, poses, options.workers);
 }
 
-}  // namespace
-
-TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,
-                    const TourOptions& options) {
-  if (options.all_pairs_max_places < 2 || options.neighbours < 1 || options.split_points < 1 || options.order_kicks < 0)
-    throw InputError("tour options: all_pairs_max_places must be at least 2, neighbours and split_points at least 1, "
-                     "order_kicks at least 0");
+// The tour with stops where `reachable` holds (every valid place when empty).
+TourResult planTourWith(const Mission& mission, const PlanningContext& context, FlightMode mode,
+                        const TourOptions& options, const planner::ReachablePredicate& reachable) {
   TourResult tour;
   tour.mode = mode;
   tour.options = options;
@@ -733,14 +735,7 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   tour.reserve_soc = context.battery().reserve_soc;
   Stopwatch clock;
 
-  // Home as the planner would check a start (the same rules in both modes).
-  const PlanningContext::Mode home_mode = context.mode(mode);
-  if (!home_mode.rules->isStateValid(mission.home_m))
-    throw ceilplan::InputError(mission.name() + ": home " + formatPoint(mission.home_m) +
-                                " is not a valid position for the vehicle (inside or too close to a structure, or "
-                                "outside the map); move it into free space");
-
-  tour.stops = chooseStops(mission, context, mode, options, tour);
+  tour.stops = chooseStops(mission, context, mode, options, reachable, tour);
   tour.names.push_back("home");
   tour.places_m.push_back(mission.home_m);
   for (const TourStop& stop : tour.stops) {
@@ -870,6 +865,33 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
     tour.times.coverage_check_s = clock.lap_s();
   }
   return tour;
+}
+
+}  // namespace
+
+TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,
+                    const TourOptions& options) {
+  if (options.all_pairs_max_places < 2 || options.neighbours < 1 || options.split_points < 1 || options.order_kicks < 0)
+    throw InputError("tour options: all_pairs_max_places must be at least 2, neighbours and split_points at least 1, "
+                     "order_kicks at least 0");
+  // Home as the planner would check a start (the same rules in both modes).
+  if (!context.baseRules().isStateValid(mission.home_m))
+    throw ceilplan::InputError(mission.name() + ": home " + formatPoint(mission.home_m) +
+                                " is not a valid position for the vehicle (inside or too close to a structure, or "
+                                "outside the map); move it into free space");
+  try {
+    return planTourWith(mission, context, mode, options, {});
+  } catch (const NoPathError&) {
+    // A stop where no route from home reaches: choose the stops again among the places a flood
+    // from home reaches (the best reachable viewpoint of a target, the reachable photo poses).
+    // The flood is sound but sees no passage narrower than its lattice, which the roadmap's
+    // refinement finds: hence only now, after the first choice failed.
+    const planner::ReachableSpace& space = context.reachableFrom(mission.home_m, options.lattice_spacing_m, options.workers);
+    TourResult tour = planTourWith(mission, context, mode, options,
+                                   [&space](const Eigen::Vector3d& body_m) { return space.reaches(body_m); });
+    tour.stops_rechosen = true;
+    return tour;
+  }
 }
 
 }  // namespace ceilplan::mission

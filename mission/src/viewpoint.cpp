@@ -17,6 +17,7 @@ namespace {
 
 constexpr double kCurrentResolutionA = 1e-3;
 constexpr double kStandoffResolutionM = 1e-3;
+constexpr double kCoarseStepM = 0.1;  // the first lattice over the standoff shell, at most
 
 // Whether the segment from the body to the target point crosses only free voxels (stopping
 // half a voxel short of the point, which lies on an occupied voxel's face).
@@ -55,8 +56,10 @@ class ViewpointSearch {
         }
   }
 
-  bool found() const { return best_key_ < std::numeric_limits<double>::infinity(); }
-  const Eigen::Vector3d& best() const { return best_m_; }
+  bool found() const { return any_.found(); }
+  // The best reachable position, or the best of all where none is reachable.
+  const Eigen::Vector3d& best() const { return reachable_.found() ? reachable_.position_m : any_.position_m; }
+  bool bestReachable() const { return reachable_.found() || !options_.reachable; }
 
  private:
   // A lattice point within a step outside the standoff shell, moved radially onto it, so that
@@ -102,24 +105,34 @@ class ViewpointSearch {
     return std::round(shortfall_m / kStandoffResolutionM);
   }
 
-  // Keeps an admissible position if it beats the best so far and sees the target.
+  // The best position so far by key, ties by distance to the point.
+  struct Best {
+    double key = std::numeric_limits<double>::infinity();
+    double distance_m = std::numeric_limits<double>::infinity();
+    Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+    bool found() const { return key < std::numeric_limits<double>::infinity(); }
+    bool beatenBy(double other_key, double other_distance_m) const {
+      return other_key < key || (other_key == key && other_distance_m < distance_m);
+    }
+  };
+
+  // Keeps an admissible position that sees the target if it beats the best so far, and the
+  // best reachable one apart (the reachability test, the costliest, last).
   void consider(const Eigen::Vector3d& body_m) {
     const double distance_m = (body_m - target_.point_m).norm();
     const double key = this->key(body_m);
-    const bool better = !found() || key < best_key_ || (key == best_key_ && distance_m < best_distance_m_);
-    if (!better || !seesPoint(environment_.grid(), body_m, target_.point_m)) return;
-    best_key_ = key;
-    best_distance_m_ = distance_m;
-    best_m_ = body_m;
+    const bool better = any_.beatenBy(key, distance_m);
+    const bool better_reachable = options_.reachable && reachable_.beatenBy(key, distance_m);
+    if (!(better || better_reachable) || !seesPoint(environment_.grid(), body_m, target_.point_m)) return;
+    if (better) any_ = Best{key, distance_m, body_m};
+    if (better_reachable && options_.reachable(body_m)) reachable_ = Best{key, distance_m, body_m};
   }
 
   const InspectionTarget& target_;
   const environment::Environment& environment_;
   const energy::EnergyModel& model_;
   const ViewpointOptions& options_;
-  double best_key_ = std::numeric_limits<double>::infinity();
-  double best_distance_m_ = std::numeric_limits<double>::infinity();
-  Eigen::Vector3d best_m_ = Eigen::Vector3d::Zero();
+  Best any_, reachable_;
 };
 
 }  // namespace
@@ -186,17 +199,26 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
   ViewpointSearch search(target, environment, model, options);
   const double resolution_m = environment.grid().frame().resolution_m();
   const bool hug = options.mode == FlightMode::Ceiling;
-  search.scan(target.point_m, resolution_m, target.standoff_max_m, hug);
+  // The shell in metres, as the lattice planners are: at most kCoarseStepM apart (a whole number
+  // of voxels), so a fine scan does not cost (1 / resolution)^3 lattice points per target.
+  double step_m = resolution_m * std::max(1.0, std::floor(kCoarseStepM / resolution_m + 1e-9));
+  search.scan(target.point_m, step_m, target.standoff_max_m, hug);
   if (!search.found())
     throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
                                 ": no valid viewpoint within " + formatNumber(target.standoff_min_m) + "-" +
                                 formatNumber(target.standoff_max_m) +
                                 " m that sees it; check the point lies on a surface facing free space, or widen its "
                                 "standoff range");
-  search.scan(search.best(), 0.25 * resolution_m, resolution_m, hug);
+  // Then finer around the best, a quarter of the step at a time, down to a quarter voxel.
+  while (step_m > 0.25 * resolution_m * (1.0 + 1e-9)) {
+    const double reach_m = step_m;
+    step_m = std::max(0.25 * step_m, 0.25 * resolution_m);
+    search.scan(search.best(), step_m, reach_m, hug);
+  }
 
   Viewpoint viewpoint;
   viewpoint.position_m = search.best();
+  viewpoint.reachable = search.bestReachable();
   viewpoint.distance_m = (viewpoint.position_m - target.point_m).norm();
   viewpoint.ceiling_gap_m = environment.ceiling(viewpoint.position_m).nearest_gap_m;
   viewpoint.standoff_m = planner::standoffAt(environment, viewpoint.position_m);

@@ -95,6 +95,7 @@ def test_tour_matches_the_command_line(tmp_path):
     written = json.loads((tmp_path / "py" / "tour.json").read_text())
     assert written["charge_ah"] == cli["charge_ah"]
     assert tour.photos is None and tour.coverage is None  # point targets only
+    assert tour.stops_rechosen is False and cli["stops_rechosen"] is False
 
 
 def test_coverage_tour_exposes_its_photos_and_coverage(tmp_path):

@@ -11,6 +11,7 @@
 #include "ceilplan/mission/coverage_region.hpp"
 #include "ceilplan/mission/region_surface.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
+#include "ceilplan/planner/reachable_space.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <cstdint>
@@ -66,6 +67,10 @@ struct ViewGenerationOptions {
   double tilt_share = 0.6;          // lattice tilts: this share of the region's max incidence
   int workers = 2;
   std::function<void(double)> progress;  // fraction of the visibility work done
+  // Poses only where this holds (a tour's planner::ReachableSpace, when its first stops left a
+  // place no route from home reaches); empty: every admissible pose. An element seen only from
+  // elsewhere counts as unreachable.
+  planner::ReachablePredicate reachable;
 };
 
 // The distance levels of a region (largest first): from where the whole covered part of an

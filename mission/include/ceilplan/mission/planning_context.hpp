@@ -15,6 +15,7 @@
 #include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
 #include "ceilplan/planner/objective_factory.hpp"
+#include "ceilplan/planner/reachable_space.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
 
 #include <Eigen/Core>
@@ -79,7 +80,13 @@ class PlanningContext {
   planner::ObjectiveChoice objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m,
                                      const std::string& name = {}) const;
 
+  // Where a route from `origin_m` reaches under the safety rules (planner::ReachableSpace at
+  // `spacing_m`): flooded on first use and kept, so the two modes of a tour share one flood.
+  // Safe to call from several threads.
+  const planner::ReachableSpace& reachableFrom(const Eigen::Vector3d& origin_m, double spacing_m, int workers = 1) const;
+
  private:
+  struct ReachableCache;
   PlanningOptions options_;
   Vehicle vehicle_;
   BatterySpec battery_;
@@ -89,6 +96,7 @@ class PlanningContext {
   std::unique_ptr<energy::EnergyModel> energy_;
   std::unique_ptr<planner::FlightCostModel> full_model_;
   std::unique_ptr<planner::SafetyRules> base_rules_;
+  std::shared_ptr<ReachableCache> reachable_;
 };
 
 }  // namespace ceilplan::mission

@@ -124,6 +124,10 @@ struct TourResult {
   std::optional<CoveragePlan> coverage;
   std::vector<PhotoRow> photos;
   std::optional<CoverageCheck> coverage_check;
+  // The first choice of stops left one where no route from home reached (a pocket a fine scan
+  // resolves, a room behind a door narrower than the vehicle): the stops were chosen again among
+  // the places a flood from home reaches (planner::ReachableSpace). This is that second plan.
+  bool stops_rechosen = false;
   TourTimes times;
 };
 
@@ -131,7 +135,8 @@ struct TourResult {
 // targets, contact grid points and, with surfaces, the photos of planCoverage in this mode.
 // Throws ceilplan::InputError for an invalid home, a target without a viewpoint (named), a bad
 // camera or region (planCoverage),
-// ceilplan::NoPathError for a leg without a path (naming both places),
+// ceilplan::NoPathError for a leg without a path (naming both places) that remains after the
+// stops were chosen again among the places a route from home reaches (TourResult::stops_rechosen),
 // ceilplan::InfeasibleError for a target no single sortie can reach and return from,
 // ceilplan::Error if a leg fails the dense re-check.
 TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,

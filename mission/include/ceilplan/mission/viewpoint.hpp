@@ -10,6 +10,7 @@
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/mission/flight_mode.hpp"
+#include "ceilplan/planner/reachable_space.hpp"
 #include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
@@ -35,6 +36,11 @@ struct ViewpointOptions {
   double min_ceiling_gap_m = 0.03;
   double soc = 0.65;  // SOC at which the dwell current is evaluated (energy model's reference)
   double standoff_m = 1.0;  // free mode: the conventional standoff from every structure
+  // Whether a route from home reaches a position (a tour's planner::ReachableSpace); empty:
+  // every valid position. The best reachable position wins; only where none is reachable is
+  // the best of the others kept (a passage finer than the reachability lattice may still lead
+  // there, and the tour's planner then says where the way is blocked).
+  planner::ReachablePredicate reachable;
 };
 
 struct Viewpoint {
@@ -44,6 +50,7 @@ struct Viewpoint {
   double standoff_m = 0.0;        // airframe to the nearest structure (planner::standoffAt)
   double dwell_current_a = 0.0;   // full model, hovering here
   double dwell_charge_ah = 0.0;   // dwell current x dwell time
+  bool reachable = true;          // ViewpointOptions::reachable held (or was not given)
 };
 
 // A target lies on structure: some occupied voxel within its standoff range (standoff_max_m)
@@ -56,10 +63,11 @@ void requireOnStructure(const InspectionTarget& target, const environment::Envir
 double hoverCurrentA(const environment::Environment& environment, const energy::EnergyModel& model,
                      const Eigen::Vector3d& body_m, double soc);
 
-// Searches a lattice over the standoff shell (map resolution, then a quarter of it around the
-// best) for states valid in `environment` with a clear line of sight to the point through free
-// voxels, choosing under `options.mode` (ceiling: the least dwell charge; free: the smallest
-// standoff shortfall, to the millimetre), ties by distance to the point.
+// Searches a lattice over the standoff shell (whole voxels at most 0.1 m apart, then a quarter
+// of the step at a time around the best, down to a quarter voxel) for states valid in
+// `environment` with a clear line of sight to the point through free voxels, preferring those
+// ViewpointOptions::reachable accepts, choosing under `options.mode` (ceiling: the least dwell
+// charge; free: the smallest standoff shortfall, to the millimetre), ties by distance to the point.
 // Throws ceilplan::InputError naming the target when it is invalid or no viewpoint exists.
 // Reads the environment and the model only: safe to run for several targets at once.
 Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Environment& environment,
