@@ -28,8 +28,7 @@ struct CalibrateOptions {
 void runCalibrate(const CalibrateOptions& options) {
   io::checkWritableFile(options.out_path);  // before the fit
   if (!options.json_path.empty()) io::checkWritableFile(options.json_path);
-  const mission::Vehicle vehicle =
-      options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
+  const mission::Vehicle vehicle = io::readVehicleOrDefault(options.vehicle_path);
   const auto samples = io::readCalibrationSamples(options.data_path, vehicle.energy.reference_soc);
   std::vector<energy::FreeParameter> free;
   for (const std::string& name : options.fit) free.push_back(energy::parseFreeParameter(name));

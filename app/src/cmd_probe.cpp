@@ -36,8 +36,7 @@ void runProbe(const ProbeOptions& options) {
   using namespace environment;
   if (!options.json.empty()) io::checkWritableFile(options.json);
   const Eigen::Vector3d body = parsePoint(options.at, "--at");
-  const VehicleGeometry vehicle =
-      (options.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle)).geometry;
+  const VehicleGeometry vehicle = io::readVehicleOrDefault(options.vehicle).geometry;
   MapIndexOptions index_options;
   index_options.unknown = options.unknown.value();
   const OccupancyMap map = OccupancyMap::load(options.map);

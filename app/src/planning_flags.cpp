@@ -99,9 +99,8 @@ io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std:
 }
 
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags) {
-  const mission::Vehicle vehicle =
-      flags.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(flags.vehicle);
-  const mission::BatterySpec battery = flags.battery.empty() ? mission::BatterySpec{} : io::readBattery(flags.battery);
+  const mission::Vehicle vehicle = io::readVehicleOrDefault(flags.vehicle);
+  const mission::BatterySpec battery = io::readBatteryOrDefault(flags.battery);
   mission::PlanningOptions options = flags.options;
   options.unknown = flags.unknown.value();
   return std::make_unique<mission::PlanningContext>(environment::OccupancyMap::load(flags.map), vehicle, battery,
