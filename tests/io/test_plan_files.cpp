@@ -1,9 +1,10 @@
-// What plan, evaluate and compare write and print about a route (io/plan_files.hpp), in a
-// small room.
+// What plan, evaluate and compare write and print about a route (io/plan_files.hpp), and a
+// tour's provenance (io/tour_files.hpp), in a small room.
 
 #include "analytic_maps.hpp"
 
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/tour_files.hpp"
 
 #include "run_command.hpp"
 
@@ -149,6 +150,20 @@ TEST(PlanFiles, AComparisonNamesTheObjectivePlannerSeedAndUnknownSpaceInEveryFil
     EXPECT_EQ(plan.contains("standoff"), mode == "free");
   }
   EXPECT_TRUE(std::filesystem::exists(dir / "map_top.csv"));
+}
+
+TEST(TourFiles, ATourRecordsTheMissionMapAndVehicleFilesAndTheSeed) {
+  mission::Mission mission;
+  mission.file = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.yaml";
+  mission.map_file = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.bt";
+  const Provenance provenance = tourProvenance("ceilplan tour", mission, 5);
+  EXPECT_EQ(provenance.command_line, "ceilplan tour");
+  EXPECT_EQ(provenance.seed, std::optional<std::uint64_t>(5));
+  const nlohmann::json json = provenance.json();
+  ASSERT_EQ(json["inputs"].size(), 2u);  // no vehicle file: the built-in vehicle
+  EXPECT_EQ(json["inputs"][0]["role"], "mission");
+  EXPECT_EQ(json["inputs"][1]["role"], "map");
+  EXPECT_EQ(json["inputs"][1]["sha256"].get<std::string>().size(), 64u);
 }
 
 }  // namespace
