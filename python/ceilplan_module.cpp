@@ -428,9 +428,7 @@ PYBIND11_MODULE(ceilplan, m) {
           [](const PyTour& t, const std::filesystem::path& dir, bool export_autopilot) {
             std::optional<io::Autopilot> autopilot;
             if (export_autopilot) autopilot = io::Autopilot::PX4;
-            io::Provenance provenance = io::Provenance::of("python: ceilplan.plan_tour");
-            provenance.input("mission", t.mission->file).input("map", t.mission->map_file).input("vehicle", t.mission->vehicle_file);
-            provenance.seed = t.tour.options.seed;
+            const io::Provenance provenance = io::tourProvenance("python: ceilplan.plan_tour", *t.mission, t.tour.options.seed);
             io::OutputSet out(dir);
             io::writeTourDirectory(out.path(), t.tour, *t.mission, t.context->environment(), autopilot, provenance);
             out.commit();

@@ -8,55 +8,38 @@
 #include "planning_flags.hpp"
 
 #include "ceilplan/core/error.hpp"
-#include "ceilplan/core/format.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/report_json.hpp"
 #include "ceilplan/io/report_text.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/planner_benchmark.hpp"
-#include "ceilplan/planner/planner_factory.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace ceilplan::app {
 namespace {
 
-std::string joined(const std::vector<std::string>& names) {
-  std::string list;
-  for (const std::string& name : names) list += (list.empty() ? "" : ",") + name;
-  return list;
-}
-
 struct BenchArguments {
   PlanningFlags planning;
   SearchArguments search;
-  std::string start, goal, planners = joined(planner::samplingPlannerNames());
+  std::string start, goal, planners = planner::plannerList(planner::samplingPlannerNames());
   std::string mode = "ceiling";
   unsigned runs = 10;
   std::string json, log;
 };
-
-std::vector<std::string> splitNames(const std::string& list) {
-  std::vector<std::string> names;
-  std::stringstream in(list);
-  for (std::string name; std::getline(in, name, ',');)
-    if (!name.empty()) names.push_back(name);
-  return names;
-}
 
 void runBench(const BenchArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
   if (!a.json.empty()) io::checkWritableFile(a.json);  // before the runs
   if (!a.log.empty()) io::checkWritableFile(a.log);
   planner::PlannerBenchmarkOptions options;
-  options.planners = splitNames(a.planners);
+  options.planners = planner::plannerNamesOfList(a.planners);
   options.runs = a.runs;
   options.time_limit_s = a.search.time_limit_s;
   options.band_fraction = a.search.band_fraction;
@@ -72,25 +55,15 @@ void runBench(const BenchArguments& a) {
   const auto context = makePlanningContext(a.planning);
   const mission::PlanningContext::Mode planning = context->mode(mission::flightModeFromName(a.mode));
   const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, context->objective(start, goal));
-  std::printf("bench-planners: %s mode, objective %s (%s), %u runs of %.1f s per planner, seed %u\n", a.mode.c_str(),
-              a.planning.options.objective.c_str(), flight_planner.objective().unit().c_str(), a.runs,
-              a.search.time_limit_s, a.search.seed);
+  std::printf("%s", io::plannerBenchmarkHeadline(a.mode, a.planning.options.objective, flight_planner.objective().unit(),
+                                                 options, a.search.seed).c_str());
 
-  // The reference: the lattice optimum, post-processed like every other path.
-  planner::PlanRequest reference_request = a.search.request(start, goal);
-  reference_request.planner = planner::referencePlannerName();
-  planner::PlanResult reference;
-  try {
-    reference = flight_planner.plan(reference_request);
-  } catch (const ceilplan::NoPathError&) {
-    rethrowWithContext("lattice reference: ");
-  }
-  std::printf("lattice reference (spacing %s m): %.6g raw, %.6g post-processed, %.1f s\n",
-              formatNumber(a.search.lattice_spacing_m).c_str(), reference.search_cost, reference.cost,
-              reference.total_time_s);
+  const planner::PlanRequest request = a.search.request(start, goal);
+  const planner::PlanResult reference = planner::planLatticeReference(flight_planner, request);
+  std::printf("%s", io::latticeReferenceLine(reference, request.lattice.spacing_m).c_str());
   std::fflush(stdout);
 
-  options.lattice = reference_request.lattice;
+  options.lattice = request.lattice;
   const std::vector<planner::PlannerBenchmarkRow> rows =
       planner::benchmarkPlanners(flight_planner, start, goal, reference, options);
   std::cout << io::plannerBenchmarkTable(rows, a.search.time_limit_s);

@@ -6,11 +6,12 @@
 #include "ceilplan/energy/calibration.hpp"
 #include "ceilplan/io/calibration_file.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
 #include <cstdio>
+#include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -28,30 +29,16 @@ struct CalibrateOptions {
 void runCalibrate(const CalibrateOptions& options) {
   io::checkWritableFile(options.out_path);  // before the fit
   if (!options.json_path.empty()) io::checkWritableFile(options.json_path);
-  const mission::Vehicle vehicle =
-      options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
+  const mission::Vehicle vehicle = io::readVehicleOrDefault(options.vehicle_path);
   const auto samples = io::readCalibrationSamples(options.data_path, vehicle.energy.reference_soc);
   std::vector<energy::FreeParameter> free;
   for (const std::string& name : options.fit) free.push_back(energy::parseFreeParameter(name));
   if (free.empty()) free = energy::identifiableParameters(vehicle.energy, samples);
   const energy::CalibrationResult result = energy::calibrate(vehicle.energy, samples, free);
 
-  std::printf("vehicle     %s\n", vehicle.name.c_str());
-  std::printf("data        %s (%zu samples)\n", options.data_path.c_str(), samples.size());
-  std::printf("rmse_a      %.5f   (largest error %.5f A, %d model evaluations)\n", result.rmse_a,
-              result.max_abs_error_a, result.evaluations);
-  std::printf("%-20s %14s %14s %14s %14s\n", "parameter", "fitted", "allowed_min", "allowed_max", "start");
-  std::string summary;
-  for (const energy::FittedParameter& f : result.fitted) {
-    const std::string name = energy::parameterName(f.parameter);
-    std::printf("%-20s %14.6g %14.6g %14.6g %14.6g%s\n", name.c_str(), f.value, f.lower, f.upper, f.start,
-                f.atBound() ? "  (at its bound)" : "");
-    summary += (summary.empty() ? "" : ", ") + name;
-  }
-  std::ostringstream comment;
-  comment << "Calibrated by `ceilplan calibrate` from " << options.data_path << " (" << samples.size()
-          << " samples; fitted " << summary << "; RMSE " << result.rmse_a << " A).";
-  io::writeCalibratedVehicle(options.out_path, options.vehicle_path, result.parameters, comment.str());
+  std::cout << io::calibrationText(vehicle.name, options.data_path, samples.size(), result);
+  io::writeCalibratedVehicle(options.out_path, options.vehicle_path, result.parameters,
+                             io::calibratedVehicleComment(options.data_path, samples.size(), result));
   std::printf("wrote %s\n", options.out_path.c_str());
   if (!options.json_path.empty()) {
     io::writeJsonFile(options.json_path, io::calibrationReportJson(options.data_path, samples.size(), result));

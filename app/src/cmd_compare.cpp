@@ -11,7 +11,6 @@
 #include "ceilplan/mission/route_planning.hpp"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <string>
@@ -40,10 +39,7 @@ void runCompare(const CompareArguments& a) {
     std::printf("ceiling mode found nothing better than the free-mode route: it flies that route, post-processed\n");
   std::printf("\n%s", io::routeComparisonTable(comparison, a.duty, context->battery()).c_str());
   if (comparison.free.standoff) std::printf("\nfree mode's %s\n", io::standoffLine(*comparison.free.standoff).c_str());
-  const nlohmann::json extra{
-      {"objective", a.planning.options.objective}, {"seed", a.search.seed}, {"planner", a.search.plannerName()},
-      {"unknown_space", io::unknownSpaceJson(context->environment())}};
-  io::writeRouteComparison(out.path(), comparison, a.duty, extra, context->environment(),
+  io::writeRouteComparison(out.path(), comparison, a.duty, *context, a.search.plannerName(), a.search.seed,
                            planningProvenance(a.planning, a.search.seed));
   out.commit();
   std::printf("\nwrote %s/{compare.json, ceiling/, free/, map_top.csv, map_side.csv}; figures: scripts/plot-compare %s\n",

@@ -39,8 +39,7 @@ struct CurrentOptions {
 
 void runCurrent(const CurrentOptions& options) {
   if (!options.json_path.empty()) io::checkWritableFile(options.json_path);
-  const mission::Vehicle vehicle =
-      options.vehicle_path.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle_path);
+  const mission::Vehicle vehicle = io::readVehicleOrDefault(options.vehicle_path);
   const energy::EnergyModel model(vehicle.energy);
   energy::FlightCondition flight;
   flight.ground_gap_m = options.ground_gap_m.value_or(energy::kNoSurface);

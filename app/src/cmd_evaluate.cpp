@@ -2,21 +2,17 @@
 // whether it is safe.
 
 #include "command_registry.hpp"
-#include "output.hpp"
 #include "planning_flags.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/plan_files.hpp"
-#include "ceilplan/io/unknown_space_report.hpp"
 #include "ceilplan/mission/route_planning.hpp"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <iomanip>
-#include <iostream>
 #include <string>
 
 namespace ceilplan::app {
@@ -38,24 +34,11 @@ void runEvaluate(const EvaluateArguments& a) {
   } catch (...) {
     rethrowWithContext(a.path + ": ");
   }
-  std::printf("%zu points: %s\n%s cost %.6g %s\nvalid: %s\n", waypoints.size(), io::figuresLine(check.evaluation).c_str(),
-              a.planning.options.objective.c_str(), check.cost, check.cost_unit.c_str(), check.violation ? "false" : "true");
-  if (check.violation) std::printf("violation: %s\n", check.violation->c_str());
-  std::printf("unknown space: %s\n", io::unknownSpaceLine(context->environment()).c_str());
-  if (!a.json.empty()) {
-    nlohmann::json out = io::figuresJson(check.evaluation);
-    out["valid"] = !check.violation;
-    out["violation"] = check.violation ? nlohmann::json(*check.violation) : nlohmann::json(nullptr);
-    out["objective"] = a.planning.options.objective;
-    out["cost"] = check.cost;
-    out["cost_unit"] = check.cost_unit;
-    out["waypoints"] = io::waypointsJson(waypoints);
-    out["unknown_space"] = io::unknownSpaceJson(context->environment());
-    io::Provenance provenance = planningProvenance(a.planning, std::nullopt);
-    provenance.input("path", a.path);
-    out["provenance"] = provenance.json();
-    writeTextAtomically(a.json, [&](std::ostream& stream) { stream << std::setw(2) << out << '\n'; });
-  }
+  std::printf("%s", io::routeCheckText(check, waypoints.size(), *context).c_str());
+  if (a.json.empty()) return;
+  io::Provenance provenance = planningProvenance(a.planning, std::nullopt);
+  provenance.input("path", a.path);
+  io::writeJsonFile(a.json, io::routeCheckJson(check, waypoints, *context, provenance));
 }
 
 const CommandRegistration registration(41, [](CLI::App& parent) {

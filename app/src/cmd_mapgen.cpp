@@ -5,9 +5,9 @@
 
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/core/error.hpp"
-#include "ceilplan/core/format.hpp"
 #include "ceilplan/environment/scenes.hpp"
 #include "ceilplan/io/octomap_file.hpp"
+#include "ceilplan/io/report_text.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -33,15 +33,7 @@ void runMapgen(const MapgenOptions& options) {
   const VoxelGrid grid = generateScene(scene, options.scene_options);
   const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
   io::writeOctoMapFile(out, *tree);
-  const auto& size = grid.frame().size();
-  const std::string length = scene == Scene::Bridge && options.scene_options.bridge_length_m != kShippedBridgeLength_m
-                                 ? ", length " + formatNumber(options.scene_options.bridge_length_m) + " m"
-                                 : "";
-  std::printf("scene %s%s, resolution %g m, seed %llu: %d x %d x %d voxels, %zu octree nodes -> %s (%ju bytes)\n",
-              options.scene.c_str(), length.c_str(), options.scene_options.resolution_m,
-              static_cast<unsigned long long>(options.scene_options.seed), size[0],
-              size[1], size[2], tree->size(), out.string().c_str(),
-              static_cast<std::uintmax_t>(std::filesystem::file_size(out)));
+  std::printf("%s", io::generatedSceneLine(options.scene, options.scene_options, grid, tree->size(), out).c_str());
 }
 
 const CommandRegistration registration(20, [](CLI::App& parent) {

@@ -50,10 +50,7 @@ void runMapinfo(const MapinfoOptions& options) {
     io::writeMapSliceCsv(options.slice_csv, *index, options.slice_z_m, environment.get(), "--slice-z");
   }
   std::cout << io::mapStatisticsText(options.map, stats);
-  if (options.json.empty()) return;
-  nlohmann::json report = io::mapStatisticsJson(stats);
-  report["map"] = options.map;
-  io::writeJsonFile(options.json, report);
+  if (!options.json.empty()) io::writeJsonFile(options.json, io::mapStatisticsJson(options.map, stats));
 }
 
 const CommandRegistration registration(21, [](CLI::App& parent) {

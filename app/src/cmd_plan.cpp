@@ -9,7 +9,6 @@
 #include "ceilplan/mission/route_planning.hpp"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <string>
@@ -30,36 +29,16 @@ void runPlan(const PlanArguments& a) {
   planner::seedOmpl(a.search.seed);  // before anything makes an OMPL random generator
   const auto context = makePlanningContext(a.planning);
   const planner::ObjectiveChoice objective = context->objective(start, goal);
-  if (objective.name == "ageing")
-    std::printf("ageing objective: %s model at %.1f %% depth of discharge: %.4g per Ah, %.4g per s of capacity\n",
-                objective.ageing.model.c_str(), 100 * objective.ageing.depth_of_discharge, objective.ageing.loss_per_ah,
-                objective.ageing.loss_per_s);
+  if (objective.name == "ageing") std::printf("%s\n", io::ageingObjectiveLine(objective.ageing).c_str());
   std::printf("planning %s mode, objective %s, %s\nunknown space: %s\n", a.mode.c_str(),
               a.planning.options.objective.c_str(), a.search.describe().c_str(),
               io::unknownSpaceLine(context->environment()).c_str());
   std::fflush(stdout);
   const mission::RoutePlan route = mission::planRoute(*context, mode, a.search.request(start, goal));
-  nlohmann::json extra{{"seed", a.search.seed},
-                       {"objective", a.planning.options.objective},
-                       {"cost_unit", route.cost_unit},
-                       {"mode", a.mode},
-                       {"map", a.planning.map},
-                       {"vehicle", context->vehicle().name},
-                       {"battery", context->battery().description},
-                       {"start_soc", context->battery().start_soc},
-                       {"unknown_space", io::unknownSpaceJson(context->environment())}};
-  if (route.standoff) extra["standoff"] = io::standoffJson(*route.standoff);
-  if (objective.name == "ageing")
-    extra["ageing"] = {{"model", objective.ageing.model},
-                       {"depth_of_discharge", objective.ageing.depth_of_discharge},
-                       {"loss_per_ah", objective.ageing.loss_per_ah},
-                       {"loss_per_s", objective.ageing.loss_per_s}};
-  io::writePlanDirectory(out.path(), route.plan, route.evaluation, extra, planningProvenance(a.planning, a.search.seed));
+  io::writeRoutePlan(out.path(), route, *context, a.planning.map, a.search.seed,
+                     planningProvenance(a.planning, a.search.seed));
   out.commit();
-  std::printf("%zu waypoints; cost %.6g %s (search %.6g) after %.2f s\n%s\n", route.plan.waypoints.size(),
-              route.plan.cost, route.cost_unit.c_str(), route.plan.search_cost, route.plan.total_time_s,
-              io::figuresLine(route.evaluation).c_str());
-  if (route.standoff) std::printf("%s\n", io::standoffLine(*route.standoff).c_str());
+  std::printf("%s", io::routePlanText(route).c_str());
   std::printf("wrote %s and %s\n", (out.finalPath() / "plan.json").c_str(), (out.finalPath() / "path.csv").c_str());
 }
 

@@ -5,7 +5,6 @@
 #include "output.hpp"
 #include "planning_flags.hpp"
 
-#include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/position_probe.hpp"
 #include "ceilplan/io/output_set.hpp"
@@ -14,8 +13,6 @@
 #include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/unknown_space_report.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <iostream>
 #include <memory>
@@ -36,25 +33,17 @@ void runProbe(const ProbeOptions& options) {
   using namespace environment;
   if (!options.json.empty()) io::checkWritableFile(options.json);
   const Eigen::Vector3d body = parsePoint(options.at, "--at");
-  const VehicleGeometry vehicle =
-      (options.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(options.vehicle)).geometry;
+  const VehicleGeometry vehicle = io::readVehicleOrDefault(options.vehicle).geometry;
   MapIndexOptions index_options;
   index_options.unknown = options.unknown.value();
   const OccupancyMap map = OccupancyMap::load(options.map);
   Progress progress("indexing " + options.map);
   const Environment environment(MapIndex::build(map, index_options, [&](double f) { progress.update(f); }), vehicle);
   progress.finish();
-  const UnknownSpaceSummary& unknown = environment.index()->unknownSummary();
 
   const PositionProbe probe = probePosition(environment, body);
-  std::cout << io::positionProbeText(body, probe, vehicle, io::unknownSpaceLine(index_options.unknown, unknown));
-  if (options.json.empty()) return;
-
-  nlohmann::json report = io::positionProbeJson(probe, vehicle);
-  report["map"] = options.map;
-  report["vehicle"] = options.vehicle.empty() ? std::string("built-in: ") + vehicle.name : options.vehicle;
-  report["unknown"] = io::unknownSpaceJson(index_options.unknown, unknown);
-  io::writeJsonFile(options.json, report);
+  std::cout << io::positionProbeText(body, probe, vehicle, io::unknownSpaceLine(environment));
+  if (!options.json.empty()) io::writeJsonFile(options.json, io::probeReportJson(probe, environment, options.map, options.vehicle));
 }
 
 const CommandRegistration registration(22, [](CLI::App& parent) {

@@ -63,13 +63,10 @@ void runTour(TourArguments a) {
   const ProgressCallback progress = terminalProgress();
   const mission::PlanningContext context(environment::OccupancyMap::load(mission.map_file), mission.vehicle,
                                          mission.battery, planning, progress);
-  std::vector<mission::FlightMode> modes{mission::FlightMode::Ceiling, mission::FlightMode::Free};
-  if (a.mode != "both") modes = {mission::flightModeFromName(a.mode)};
+  const std::vector<mission::FlightMode> modes = mission::tourFlightModes(a.mode);
   a.options.progress = progress;
 
-  io::Provenance provenance = io::Provenance::of(invocation());
-  provenance.input("mission", mission.file).input("map", mission.map_file).input("vehicle", mission.vehicle_file);
-  provenance.seed = a.options.seed;
+  const io::Provenance provenance = io::tourProvenance(invocation(), mission, a.options.seed);
 
   std::printf("%s", io::tourHeadline(mission, a.mode, a.options).c_str());
   std::printf("unknown space: %s\n", io::unknownSpaceLine(context.environment()).c_str());

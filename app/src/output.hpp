@@ -1,22 +1,12 @@
 #pragma once
-// Output files appear whole or not at all: each is written under a temporary name beside
-// its final one, then renamed into place.
+// What the commands show besides their results: progress on the terminal, and the command line
+// their outputs' provenance records.
 
 #include "ceilplan/core/progress.hpp"
-#include "ceilplan/io/atomic_file.hpp"
-#include "ceilplan/io/output_set.hpp"
 
-#include <filesystem>
-#include <functional>
-#include <memory>
-#include <ostream>
 #include <string>
 
 namespace ceilplan::app {
-
-using io::checkWritableFile;
-using io::writeAtomically;
-using io::writeTextAtomically;
 
 // Progress for long work: a single updating line on stderr when stderr is a terminal,
 // nothing otherwise. The line is cleared at 100 % and by finish() (or the destructor).

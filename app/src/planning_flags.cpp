@@ -2,15 +2,13 @@
 
 #include "cli_checks.hpp"
 #include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/io/point_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
-#include "ceilplan/core/printable_text.hpp"
-
-#include <sstream>
 
 namespace ceilplan::app {
 
@@ -85,18 +83,12 @@ std::string SearchArguments::describe() const {
   return "planner " + name + ", seed " + std::to_string(seed) + ", " + formatNumber(time_limit_s) + " s";
 }
 
-// As the mission file's coordinates (io/): farther than any map, so a slip of the exponent is refused.
-constexpr double kCoordinateLimit_m = 1e6;
-
 Eigen::Vector3d parsePoint(const std::string& text, const std::string& flag) {
-  std::istringstream in(text);
-  Eigen::Vector3d point;
-  char comma1 = 0, comma2 = 0;
-  if (!(in >> point.x() >> comma1 >> point.y() >> comma2 >> point.z()) || comma1 != ',' || comma2 != ',' ||
-      !(in >> std::ws).eof() || !point.allFinite() || point.cwiseAbs().maxCoeff() > kCoordinateLimit_m)
-    throw ceilplan::InputError(flag + " '" + printableText(text) +
-                               "': expected three finite numbers x,y,z in metres, each within +-1e6 m");
-  return point;
+  try {
+    return io::parsePoint(text);
+  } catch (const InputError&) {
+    rethrowWithContext(flag + " ");
+  }
 }
 
 io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std::uint64_t> seed) {
@@ -107,9 +99,8 @@ io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std:
 }
 
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags) {
-  const mission::Vehicle vehicle =
-      flags.vehicle.empty() ? mission::Vehicle::defaultQuad() : io::readVehicle(flags.vehicle);
-  const mission::BatterySpec battery = flags.battery.empty() ? mission::BatterySpec{} : io::readBattery(flags.battery);
+  const mission::Vehicle vehicle = io::readVehicleOrDefault(flags.vehicle);
+  const mission::BatterySpec battery = io::readBatteryOrDefault(flags.battery);
   mission::PlanningOptions options = flags.options;
   options.unknown = flags.unknown.value();
   return std::make_unique<mission::PlanningContext>(environment::OccupancyMap::load(flags.map), vehicle, battery,

@@ -1,21 +1,12 @@
 #include "yaml_config.hpp"
 
-#include "ceilplan/core/printable_text.hpp"
-#include "ceilplan/core/spelling.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/io/flag_file.hpp"
 
-#include <yaml-cpp/yaml.h>
-
-#include <algorithm>
-#include <sstream>
 #include <string>
 
 namespace ceilplan::app {
 namespace {
-
-std::string flagName(std::string key) {
-  std::replace(key.begin(), key.end(), '_', '-');
-  return key;
-}
 
 // The long flag names `command` takes (and the main app's, which subcommands fall through to).
 std::vector<std::string> flagNames(const CLI::App& command) {
@@ -27,72 +18,30 @@ std::vector<std::string> flagNames(const CLI::App& command) {
   return names;
 }
 
-// Keys must be flags of the chosen command: CLI11 would ignore the others, and a typo
-// (`planer: lattice`) would silently run the default.
-void requireFlag(const std::string& name, const YAML::Node& key, const std::vector<std::string>& known,
-                 const std::string& command) {
-  if (std::find(known.begin(), known.end(), name) != known.end()) return;
-  throw CLI::ConversionError("config file line " + std::to_string(key.Mark().line + 1) + ": unknown key '" +
-                             ceilplan::printableText(name, 40) + "'" + (command.empty() ? "" : " for '" + command + "'") +
-                             ceilplan::didYouMean(name, known));
-}
-
-void collect(const YAML::Node& map, const std::vector<std::string>& parents, const std::vector<std::string>& known,
-             const std::string& command, std::vector<CLI::ConfigItem>& items) {
-  for (const auto& entry : map) {
-    if (!entry.first.IsScalar())
-      throw CLI::ConversionError("config file line " + std::to_string(entry.first.Mark().line + 1) +
-                                 ": a key must be a flag name");
-    const std::string name = flagName(entry.first.Scalar());  // known (printable) once requireFlag passes
-    const YAML::Node& value = entry.second;
-    if (value.IsMap() && !command.empty() && name == command) {
-      collect(value, parents, known, command, items);  // a section named after the chosen command
-      continue;
-    }
-    requireFlag(name, entry.first, known, command);
-    if (value.IsMap()) throw CLI::ConversionError("config key '" + name + "' holds a map; give a value or a list");
-    CLI::ConfigItem item;
-    item.parents = parents;
-    item.name = name;
-    if (value.IsSequence()) {
-      for (const auto& element : value) {
-        if (!element.IsScalar())
-          throw CLI::ConversionError("config key '" + name + "' holds a nested list; use a flat list");
-        item.inputs.push_back(element.Scalar());
-      }
-    } else if (value.IsScalar()) {
-      item.inputs.push_back(value.Scalar());
-    } else {
-      throw CLI::ConversionError("config key '" + name + "' has no value");
-    }
-    items.push_back(std::move(item));
-  }
-}
-
 }  // namespace
 
 // ceilplan offers no flag that writes a config file (CLI11's config_to_str): nothing to format.
 std::string YamlConfig::to_config(const CLI::App*, bool, bool, std::string) const { return {}; }
 
 std::vector<CLI::ConfigItem> YamlConfig::from_config(std::istream& input) const {
+  std::vector<std::string> parents;
+  const CLI::App* command = root_;
+  for (const CLI::App* chosen : root_->get_subcommands()) {
+    parents.push_back(chosen->get_name());
+    command = chosen;
+  }
+  const std::string command_name = command == root_ ? "" : command->get_name();
   std::vector<CLI::ConfigItem> items;
   try {
-    const YAML::Node root = YAML::Load(input);
-    if (root.IsNull()) return items;
-    if (!root.IsMap())
-      throw CLI::ConversionError("config file must be a YAML map of flag names to values");
-    std::vector<std::string> parents;
-    const CLI::App* command = root_;
-    for (const CLI::App* chosen : root_->get_subcommands()) {
-      parents.push_back(chosen->get_name());
-      command = chosen;
+    for (io::FlagFileEntry& entry : io::readFlagFile(input, flagNames(*command), command_name)) {
+      CLI::ConfigItem item;
+      item.parents = parents;
+      item.name = std::move(entry.flag);
+      item.inputs = std::move(entry.values);
+      items.push_back(std::move(item));
     }
-    collect(root, parents, flagNames(*command), command == root_ ? "" : command->get_name(), items);
-  } catch (const YAML::Exception& e) {
-    std::ostringstream message;
-    message << "malformed YAML config at line " << e.mark.line + 1 << ", column "
-            << e.mark.column + 1 << ": " << e.msg;
-    throw CLI::ConversionError(message.str());
+  } catch (const InputError& e) {
+    throw CLI::ConversionError(e.what());  // a usage error, as CLI11's own
   }
   return items;
 }

@@ -5,6 +5,7 @@
 #include "ceilplan/io/csv_columns.hpp"
 
 #include <algorithm>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -64,6 +65,17 @@ nlohmann::json calibrationReportJson(const std::filesystem::path& data, std::siz
   return {{"data", data.string()},         {"samples", samples},
           {"rmse_a", result.rmse_a},       {"max_abs_error_a", result.max_abs_error_a},
           {"evaluations", result.evaluations}, {"fitted", fitted}};
+}
+
+std::string calibratedVehicleComment(const std::filesystem::path& data, std::size_t samples,
+                                     const energy::CalibrationResult& result) {
+  std::string fitted;
+  for (const energy::FittedParameter& f : result.fitted)
+    fitted += (fitted.empty() ? "" : ", ") + energy::parameterName(f.parameter);
+  std::ostringstream comment;
+  comment << "Calibrated by `ceilplan calibrate` from " << data.string() << " (" << samples << " samples; fitted "
+          << fitted << "; RMSE " << result.rmse_a << " A).";
+  return comment.str();
 }
 
 }  // namespace ceilplan::io

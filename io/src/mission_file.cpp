@@ -184,6 +184,10 @@ mission::Mission readMission(const std::filesystem::path& file) {
   return mission;
 }
 
+mission::BatterySpec readBatteryOrDefault(const std::filesystem::path& file) {
+  return file.empty() ? mission::BatterySpec{} : readBattery(file);
+}
+
 mission::BatterySpec readBattery(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Battery);
   const Section root(yaml, yaml.root(), "");

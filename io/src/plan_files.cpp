@@ -5,6 +5,7 @@
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/csv_columns.hpp"
 #include "ceilplan/io/map_views.hpp"
+#include "ceilplan/io/unknown_space_report.hpp"
 
 #include "ceilplan/core/format.hpp"
 #include "reduction.hpp"
@@ -68,6 +69,48 @@ void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanRes
   writePathCsv(dir / "path.csv", evaluation, provenance);
 }
 
+nlohmann::json routePlanJson(const mission::RoutePlan& route, const mission::PlanningContext& context,
+                             const std::string& map_file, std::uint64_t seed) {
+  nlohmann::json json{{"seed", seed},
+                      {"objective", route.objective.name},
+                      {"cost_unit", route.cost_unit},
+                      {"mode", mission::flightModeName(route.mode)},
+                      {"map", map_file},
+                      {"vehicle", context.vehicle().name},
+                      {"battery", context.battery().description},
+                      {"start_soc", context.battery().start_soc},
+                      {"unknown_space", unknownSpaceJson(context.environment())}};
+  if (route.standoff) json["standoff"] = standoffJson(*route.standoff);
+  if (route.objective.name == "ageing") {
+    const planner::AgeingRates& ageing = route.objective.ageing;
+    json["ageing"] = {{"model", ageing.model},
+                      {"depth_of_discharge", ageing.depth_of_discharge},
+                      {"loss_per_ah", ageing.loss_per_ah},
+                      {"loss_per_s", ageing.loss_per_s}};
+  }
+  return json;
+}
+
+void writeRoutePlan(const std::filesystem::path& dir, const mission::RoutePlan& route,
+                    const mission::PlanningContext& context, const std::string& map_file, std::uint64_t seed,
+                    const Provenance& provenance) {
+  writePlanDirectory(dir, route.plan, route.evaluation, routePlanJson(route, context, map_file, seed), provenance);
+}
+
+nlohmann::json routeCheckJson(const mission::RouteCheck& check, const std::vector<Eigen::Vector3d>& waypoints_m,
+                              const mission::PlanningContext& context, const Provenance& provenance) {
+  nlohmann::json json = figuresJson(check.evaluation);
+  json["valid"] = !check.violation;
+  json["violation"] = check.violation ? nlohmann::json(*check.violation) : nlohmann::json(nullptr);
+  json["objective"] = context.options().objective;
+  json["cost"] = check.cost;
+  json["cost_unit"] = check.cost_unit;
+  json["waypoints"] = waypointsJson(waypoints_m);
+  json["unknown_space"] = unknownSpaceJson(context.environment());
+  json["provenance"] = provenance.json();
+  return json;
+}
+
 std::vector<Eigen::Vector3d> readPathWaypoints(const std::filesystem::path& file) {
   const CsvColumns table = CsvColumns::read(file, {}, {"x", "y", "z", "x_m", "y_m", "z_m"});
   const std::string suffix = table.hasColumn("x") ? "" : "_m";
@@ -99,6 +142,34 @@ std::string figuresLine(const planner::PathEvaluation& e) {
   std::string text = line;
   if (e.assumed_free_m > 0.0) text += ", " + formatFixed(e.assumed_free_m, 2) + " m through space assumed free";
   return text;
+}
+
+std::string ageingObjectiveLine(const planner::AgeingRates& ageing) {
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "ageing objective: %s model at %.1f %% depth of discharge: %.4g per Ah, %.4g per s of capacity",
+                ageing.model.c_str(), 100 * ageing.depth_of_discharge, ageing.loss_per_ah, ageing.loss_per_s);
+  return line;
+}
+
+std::string routePlanText(const mission::RoutePlan& route) {
+  char line[320];
+  std::snprintf(line, sizeof line, "%zu waypoints; cost %.6g %s (search %.6g) after %.2f s\n",
+                route.plan.waypoints.size(), route.plan.cost, route.cost_unit.c_str(), route.plan.search_cost,
+                route.plan.total_time_s);
+  std::string text = line + figuresLine(route.evaluation) + '\n';
+  if (route.standoff) text += standoffLine(*route.standoff) + '\n';
+  return text;
+}
+
+std::string routeCheckText(const mission::RouteCheck& check, std::size_t points, const mission::PlanningContext& context) {
+  char lines[640];
+  std::snprintf(lines, sizeof lines, "%zu points: %s\n%s cost %.6g %s\nvalid: %s\n", points,
+                figuresLine(check.evaluation).c_str(), context.options().objective.c_str(), check.cost,
+                check.cost_unit.c_str(), check.violation ? "false" : "true");
+  std::string text = lines;
+  if (check.violation) text += "violation: " + *check.violation + '\n';
+  return text + "unknown space: " + unknownSpaceLine(context.environment()) + '\n';
 }
 
 nlohmann::json standoffJson(const planner::StandoffReport& report) {
@@ -186,8 +257,12 @@ nlohmann::json routeComparisonJson(const mission::RouteComparison& comparison, c
 }
 
 void writeRouteComparison(const std::filesystem::path& dir, const mission::RouteComparison& comparison,
-                          const mission::DutyOptions& duty, const nlohmann::json& extra,
-                          const environment::Environment& environment, const Provenance& provenance) {
+                          const mission::DutyOptions& duty, const mission::PlanningContext& context,
+                          const std::string& planner, std::uint64_t seed, const Provenance& provenance) {
+  const nlohmann::json extra{{"objective", context.options().objective},
+                             {"seed", seed},
+                             {"planner", planner},
+                             {"unknown_space", unknownSpaceJson(context.environment())}};
   for (const mission::RoutePlan* route : {&comparison.ceiling, &comparison.free}) {
     const std::string mode = mission::flightModeName(route->mode);
     nlohmann::json plan_extra = extra;
@@ -202,7 +277,7 @@ void writeRouteComparison(const std::filesystem::path& dir, const mission::Route
   });
   std::vector<Eigen::Vector3d> routes = comparison.ceiling.plan.waypoints;
   routes.insert(routes.end(), comparison.free.plan.waypoints.begin(), comparison.free.plan.waypoints.end());
-  writeMapViews(dir, environment, routes, provenance);
+  writeMapViews(dir, context.environment(), routes, provenance);
 }
 
 }  // namespace ceilplan::io

@@ -61,8 +61,18 @@ nlohmann::json positionProbeJson(const environment::PositionProbe& probe, const 
           {"rotors", rotors}};
 }
 
-nlohmann::json mapStatisticsJson(const environment::MapStatistics& statistics) {
-  return {{"resolution_m", statistics.resolution_m},
+nlohmann::json probeReportJson(const environment::PositionProbe& probe, const environment::Environment& environment,
+                               const std::string& map_file, const std::string& vehicle_file) {
+  nlohmann::json report = positionProbeJson(probe, environment.vehicle());
+  report["map"] = map_file;
+  report["vehicle"] = vehicle_file.empty() ? "built-in: " + environment.vehicle().name : vehicle_file;
+  report["unknown"] = unknownSpaceJson(environment);
+  return report;
+}
+
+nlohmann::json mapStatisticsJson(const std::string& map, const environment::MapStatistics& statistics) {
+  return {{"map", map},
+          {"resolution_m", statistics.resolution_m},
           {"extent_m", {{"min", pointJson(statistics.extent_m.min())}, {"max", pointJson(statistics.extent_m.max())}}},
           {"leaves", {{"occupied", statistics.occupied_leaves}, {"free", statistics.free_leaves}}},
           {"volume_m3",

@@ -100,6 +100,30 @@ std::string currentSweepText(double rotor_radius_m, double free_air_current_a, c
   return text;
 }
 
+std::string calibrationText(const std::string& vehicle, const std::filesystem::path& data, std::size_t samples,
+                            const energy::CalibrationResult& result) {
+  std::string out = printed("vehicle     %s\n", vehicle.c_str());
+  out += printed("data        %s (%zu samples)\n", data.c_str(), samples);
+  out += printed("rmse_a      %.5f   (largest error %.5f A, %d model evaluations)\n", result.rmse_a,
+                 result.max_abs_error_a, result.evaluations);
+  out += printed("%-20s %14s %14s %14s %14s\n", "parameter", "fitted", "allowed_min", "allowed_max", "start");
+  for (const energy::FittedParameter& f : result.fitted)
+    out += printed("%-20s %14.6g %14.6g %14.6g %14.6g%s\n", energy::parameterName(f.parameter).c_str(), f.value, f.lower,
+                   f.upper, f.start, f.atBound() ? "  (at its bound)" : "");
+  return out;
+}
+
+std::string plannerBenchmarkHeadline(const std::string& mode, const std::string& objective, const std::string& unit,
+                                     const planner::PlannerBenchmarkOptions& options, std::uint32_t seed) {
+  return printed("bench-planners: %s mode, objective %s (%s), %u runs of %.1f s per planner, seed %u\n", mode.c_str(),
+                 objective.c_str(), unit.c_str(), options.runs, options.time_limit_s, seed);
+}
+
+std::string latticeReferenceLine(const planner::PlanResult& reference, double lattice_spacing_m) {
+  return printed("lattice reference (spacing %s m): %.6g raw, %.6g post-processed, %.1f s\n",
+                 formatNumber(lattice_spacing_m).c_str(), reference.search_cost, reference.cost, reference.total_time_s);
+}
+
 std::string plannerBenchmarkTable(const std::vector<planner::PlannerBenchmarkRow>& rows, double time_limit_s) {
   std::string text = printed("\n%-16s %7s %11s %12s %12s %12s %13s\n", "planner", "solved", "first [s]", "raw / ref",
                              "final / ref", "best final", "to 5 % [s]");
@@ -113,6 +137,19 @@ std::string plannerBenchmarkTable(const std::vector<planner::PlannerBenchmarkRow
           "the raw lattice optimum ('never': not within " +
           formatNumber(time_limit_s) + " s)\n";
   return text;
+}
+
+std::string generatedSceneLine(const std::string& scene, const environment::SceneOptions& options,
+                               const environment::VoxelGrid& grid, std::size_t octree_nodes,
+                               const std::filesystem::path& map_file) {
+  const bool other_bridge = environment::sceneFromName(scene) == environment::Scene::Bridge &&
+                            options.bridge_length_m != environment::kShippedBridgeLength_m;
+  const std::string length = other_bridge ? ", length " + formatNumber(options.bridge_length_m) + " m" : "";
+  const auto& size = grid.frame().size();
+  return printed("scene %s%s, resolution %g m, seed %llu: %d x %d x %d voxels, %zu octree nodes -> %s (%ju bytes)\n",
+                 scene.c_str(), length.c_str(), options.resolution_m, static_cast<unsigned long long>(options.seed),
+                 size[0], size[1], size[2], octree_nodes, map_file.string().c_str(),
+                 static_cast<std::uintmax_t>(std::filesystem::file_size(map_file)));
 }
 
 std::string mapImportText(const MapImport& imported, const MapImportOptions& options, const std::filesystem::path& map_file) {

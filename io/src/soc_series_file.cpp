@@ -5,6 +5,9 @@
 #include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/io/csv_columns.hpp"
 
+#include <iomanip>
+#include <sstream>
+
 namespace ceilplan::io {
 namespace {
 
@@ -43,6 +46,24 @@ nlohmann::ordered_json rainflowJson(const std::vector<battery::RainflowCycle>& c
   nlohmann::ordered_json out;
   out["cycles"] = std::move(list);
   return out;
+}
+
+std::string rainflowText(const std::string& column, const std::filesystem::path& file, std::size_t samples,
+                         const std::vector<battery::RainflowCycle>& cycles) {
+  std::ostringstream out;
+  out << "Rainflow cycles (ASTM E1049-85, residue as half cycles) of column '" << printableText(column) << "' in "
+      << printableText(file.string(), 256) << ", " << samples << " samples\n\n";
+  out << std::right << std::setw(10) << "range" << std::setw(10) << "mean" << std::setw(7) << "count" << std::setw(12)
+      << "start" << std::setw(12) << "end" << '\n';
+  for (const battery::RainflowCycle& c : cycles)
+    out << std::setw(10) << formatFixed(c.range, 4) << std::setw(10) << formatFixed(c.mean, 4) << std::setw(7)
+        << formatFixed(c.count, 1) << std::setw(12) << c.start << std::setw(12) << c.end << '\n';
+  const battery::RainflowTotals totals = battery::rainflowTotals(cycles);
+  out << '\n'
+      << cycles.size() << " rows: " << formatNumber(totals.full_cycles) << " full and " << formatNumber(totals.half_cycles)
+      << " half cycles, " << formatNumber(totals.cycles) << " cycles in all; sum of count x range "
+      << formatNumber(totals.count_weighted_range) << '\n';
+  return out.str();
 }
 
 }  // namespace ceilplan::io

@@ -78,6 +78,13 @@ std::vector<Eigen::Vector3d> flownRoute(const mission::TourResult& tour) {
 
 }  // namespace
 
+Provenance tourProvenance(const std::string& command_line, const mission::Mission& mission, std::uint64_t seed) {
+  Provenance provenance = Provenance::of(command_line);
+  provenance.input("mission", mission.file).input("map", mission.map_file).input("vehicle", mission.vehicle_file);
+  provenance.seed = seed;
+  return provenance;
+}
+
 std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission) {
   if (!mission.origin) return "no geodetic origin";
   for (const mission::SortieRoute& route : tour.routes) {

@@ -189,6 +189,10 @@ YAML::Node defaultVehicleDocument() {
 
 }  // namespace
 
+mission::Vehicle readVehicleOrDefault(const std::filesystem::path& file) {
+  return file.empty() ? mission::Vehicle::defaultQuad() : readVehicle(file);
+}
+
 mission::Vehicle readVehicle(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Vehicle);
   const Section root(yaml, yaml.root(), "");

@@ -12,6 +12,11 @@ FlightMode flightModeFromName(const std::string& name) {
   throw InputError("unknown flight mode '" + name + "': choose ceiling or free");
 }
 
+std::vector<FlightMode> tourFlightModes(const std::string& name) {
+  if (name == "both") return {FlightMode::Ceiling, FlightMode::Free};
+  return {flightModeFromName(name)};
+}
+
 const std::vector<std::string>& flightModeNames() {
   static const std::vector<std::string> names{"ceiling", "free"};
   return names;

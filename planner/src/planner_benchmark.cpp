@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <sstream>
 
 namespace ceilplan::planner {
 namespace {
@@ -93,6 +94,29 @@ std::vector<std::string> samplingPlannerNames() {
   for (const PlannerInfo& info : plannerCatalogue())
     if (info.kind == PlannerKind::Sampling) names.push_back(info.name);
   return names;
+}
+
+std::vector<std::string> plannerNamesOfList(const std::string& list) {
+  std::vector<std::string> names;
+  std::stringstream in(list);
+  for (std::string name; std::getline(in, name, ',');)
+    if (!name.empty()) names.push_back(name);
+  return names;
+}
+
+std::string plannerList(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ",") + name;
+  return list;
+}
+
+PlanResult planLatticeReference(const FlightPlanner& planner, PlanRequest request) {
+  request.planner = referencePlannerName();
+  try {
+    return planner.plan(request);
+  } catch (const NoPathError&) {
+    rethrowWithContext("lattice reference: ");
+  }
 }
 
 void PlannerBenchmarkOptions::validate() const {

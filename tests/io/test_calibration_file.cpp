@@ -1,6 +1,7 @@
-// The measurements `ceilplan calibrate` reads and the fit report it writes.
+// The measurements `ceilplan calibrate` reads and the fit report it writes and prints.
 
 #include "ceilplan/io/calibration_file.hpp"
+#include "ceilplan/io/report_text.hpp"
 
 #include "ceilplan/core/error.hpp"
 
@@ -53,12 +54,18 @@ TEST(CalibrationFile, RefusesWhatItCannotReadInOneLine) {
   EXPECT_THROW(readCalibrationSamples(testing::scratchDirectory("calibration_file") / "missing.csv", 0.65), InputError);
 }
 
-TEST(CalibrationFile, ReportNamesEachFittedParameterAndWhetherItHitItsBound) {
+// A fit of k1 (inside its range) and k2_m (at its upper bound) to 17 samples.
+energy::CalibrationResult twoParameterFit() {
   energy::CalibrationResult result;
   result.rmse_a = 0.05;
   result.max_abs_error_a = 0.1;
   result.evaluations = 42;
   result.fitted = {{energy::FreeParameter::kK1, 2.0, 1.0, 4.0, 1.5}, {energy::FreeParameter::kK2M, 0.5, 0.1, 0.5, 0.2}};
+  return result;
+}
+
+TEST(CalibrationFile, ReportNamesEachFittedParameterAndWhetherItHitItsBound) {
+  const energy::CalibrationResult result = twoParameterFit();
   const nlohmann::json report = calibrationReportJson("data.csv", 17, result);
   EXPECT_EQ(report["data"], "data.csv");
   EXPECT_EQ(report["samples"].get<int>(), 17);
@@ -69,6 +76,18 @@ TEST(CalibrationFile, ReportNamesEachFittedParameterAndWhetherItHitItsBound) {
   EXPECT_FALSE(report["fitted"][0]["at_bound"].get<bool>());
   EXPECT_EQ(report["fitted"][1]["parameter"], "k2_m");
   EXPECT_TRUE(report["fitted"][1]["at_bound"].get<bool>());
+  EXPECT_EQ(calibratedVehicleComment("data.csv", 17, result),
+            "Calibrated by `ceilplan calibrate` from data.csv (17 samples; fitted k1, k2_m; RMSE 0.05 A).");
+}
+
+TEST(CalibrationFile, TheTerminalTextListsEachParameterAndMarksThoseAtTheirBound) {
+  EXPECT_EQ(calibrationText("quad", "data.csv", 17, twoParameterFit()),
+            "vehicle     quad\n"
+            "data        data.csv (17 samples)\n"
+            "rmse_a      0.05000   (largest error 0.10000 A, 42 model evaluations)\n"
+            "parameter                    fitted    allowed_min    allowed_max          start\n"
+            "k1                                2              1              4            1.5\n"
+            "k2_m                            0.5            0.1            0.5            0.2  (at its bound)\n");
 }
 
 }  // namespace

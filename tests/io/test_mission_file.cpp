@@ -166,6 +166,14 @@ TEST(BatteryFile, AMissionFileServesAsABatteryFile) {
   EXPECT_DOUBLE_EQ(battery.reserve_soc, 0.25);
 }
 
+TEST(BatteryFile, NoFileMeansThePapersPack) {
+  const mission::BatterySpec paper = readBatteryOrDefault({});
+  EXPECT_EQ(paper.description, mission::BatterySpec{}.description);
+  EXPECT_DOUBLE_EQ(paper.start_soc, 0.95);
+  EXPECT_DOUBLE_EQ(readBatteryOrDefault(kMaps / "bridge.yaml").reserve_soc, 0.25);
+  EXPECT_THROW(readBatteryOrDefault(kMaps / "missing.yaml"), InputError);
+}
+
 TEST(BatteryFile, UnknownKeysAndOutOfRangeNumbersAreRefused) {
   const std::filesystem::path dir = testing::scratchDirectory("battery_files");
   const auto errorFor = [&](const std::string& name, const std::string& text) {

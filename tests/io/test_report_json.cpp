@@ -1,6 +1,10 @@
 // The JSON reports of probe, mapinfo and current (io/report_json.hpp).
 
+#include "analytic_maps.hpp"
+
+#include "ceilplan/environment/position_probe.hpp"
 #include "ceilplan/io/report_json.hpp"
+#include "ceilplan/mission/vehicle.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,6 +46,20 @@ TEST(ReportJson, AProbeWritesNoSurfaceAsNullAndEachRotorWithItsOffset) {
   EXPECT_EQ(invalid["violation"], probe.violation->describe());
 }
 
+TEST(ReportJson, AProbeReportNamesTheMapTheVehicleFileOrBuiltInAndTheUnknownSpace) {
+  const environment::OccupancyMap map = testing::room([](double, double) { return 2.4; });
+  const environment::Environment environment(map, mission::Vehicle::defaultQuad().geometry);
+  const environment::PositionProbe probe = environment::probePosition(environment, {0.0, 0.0, 1.0});
+  const nlohmann::json built_in = probeReportJson(probe, environment, "room.bt", "");
+  EXPECT_EQ(built_in["map"], "room.bt");
+  EXPECT_EQ(built_in["vehicle"], "built-in: " + environment.vehicle().name);
+  EXPECT_EQ(built_in["unknown"]["policy"], "occupied");
+  EXPECT_EQ(built_in["at"], nlohmann::json({0.0, 0.0, 1.0}));
+  EXPECT_EQ(built_in["rotors"].size(), environment.vehicle().rotor_positions_m.size());
+  EXPECT_EQ(probeReportJson(probe, environment, "room.bt", "maps/vehicles/quad.yaml")["vehicle"],
+            "maps/vehicles/quad.yaml");
+}
+
 TEST(ReportJson, MapStatisticsGroupExtentLeavesAndVolumes) {
   environment::MapStatistics stats;
   stats.resolution_m = 0.1;
@@ -54,7 +72,8 @@ TEST(ReportJson, MapStatisticsGroupExtentLeavesAndVolumes) {
   stats.unknown.policy = environment::UnknownPolicy::Free;
   stats.ceiling.min_headroom_m = 1.5;
   stats.ceiling_area_share = 0.25;
-  const nlohmann::json json = mapStatisticsJson(stats);
+  const nlohmann::json json = mapStatisticsJson("maps/room.bt", stats);
+  EXPECT_EQ(json["map"], "maps/room.bt");
   EXPECT_EQ(json["resolution_m"].get<double>(), 0.1);
   EXPECT_EQ(json["extent_m"]["min"], nlohmann::json({-1.0, -2.0, 0.0}));
   EXPECT_EQ(json["extent_m"]["max"], nlohmann::json({1.0, 2.0, 3.0}));

@@ -49,6 +49,17 @@ TEST(RainflowJson, ListsEachCycleWithItsKeysInOrder) {
   EXPECT_EQ(rainflowJson({}).dump(), "{\"cycles\":[]}");
 }
 
+TEST(RainflowText, TitlesTheColumnAndFileThenOneRowPerCycleAndTheTotals) {
+  const std::string text = rainflowText("soc", "run.csv", 10, {{0.6, 0.65, 1.0, 2, 5}, {0.2, 0.4, 0.5, 5, 9}});
+  EXPECT_EQ(text,
+            "Rainflow cycles (ASTM E1049-85, residue as half cycles) of column 'soc' in run.csv, 10 samples\n\n"
+            "     range      mean  count       start         end\n"
+            "    0.6000    0.6500    1.0           2           5\n"
+            "    0.2000    0.4000    0.5           5           9\n"
+            "\n2 rows: 1 full and 1 half cycles, 1.5 cycles in all; sum of count x range 0.7\n");
+  EXPECT_NE(rainflowText("s\x1b[2Jc", "a.csv", 2, {}).find("column 's\\x1B[2Jc'"), std::string::npos);
+}
+
 TEST(RainflowTotals, CountHalvesAsHalfAndWeighTheRanges) {
   const battery::RainflowTotals totals = battery::rainflowTotals({{0.6, 0.65, 1.0, 2, 5}, {0.2, 0.4, 0.5, 5, 9},
                                                                   {0.4, 0.5, 0.5, 9, 12}});

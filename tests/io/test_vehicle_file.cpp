@@ -16,6 +16,12 @@ namespace {
 
 const std::filesystem::path kQuad = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/vehicles/quad.yaml";
 
+TEST(VehicleFile, NoFileMeansTheBuiltInVehicle) {
+  EXPECT_EQ(readVehicleOrDefault({}).name, mission::Vehicle::defaultQuad().name);
+  EXPECT_EQ(readVehicleOrDefault(kQuad).name, readVehicle(kQuad).name);
+  EXPECT_THROW(readVehicleOrDefault(testing::scratchDirectory("vehicle_file") / "missing.yaml"), InputError);
+}
+
 TEST(VehicleFile, TheBuiltInVehicleIsTheShippedQuad) {
   const mission::Vehicle file = readVehicle(kQuad);
   const mission::Vehicle built_in = mission::Vehicle::defaultQuad();

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace ceilplan::planner {
 namespace {
@@ -37,6 +38,42 @@ TEST(PlannerBenchmark, DefaultsToTheSamplingPlannersAndRefusesUnknownNames) {
   options.runs = 1;
   options.time_limit_s = 0.0;
   EXPECT_NE(errorOf(options), "(no error)");
+}
+
+TEST(PlannerBenchmark, PlannerListsSplitOnCommasSkippingEmptyNamesAndJoinBack) {
+  EXPECT_EQ(plannerNamesOfList("BITstar,PRMstar"), (std::vector<std::string>{"BITstar", "PRMstar"}));
+  EXPECT_EQ(plannerNamesOfList(",lattice,,RRTstar,"), (std::vector<std::string>{"lattice", "RRTstar"}));
+  EXPECT_TRUE(plannerNamesOfList("").empty());
+  EXPECT_EQ(plannerList({"BITstar", "PRMstar"}), "BITstar,PRMstar");
+  EXPECT_EQ(plannerList({}), "");
+  EXPECT_EQ(plannerNamesOfList(plannerList(samplingPlannerNames())), samplingPlannerNames());
+}
+
+TEST(PlannerBenchmark, TheReferenceIsTheLatticeOptimumOrANamedNoPath) {
+  const testing::CeilingScene scene(testing::corridor(testing::flatCeiling));
+  PlanRequest request;
+  request.start_m = {0.5, 0.0, 3.4};
+  request.goal_m = {5.5, 0.0, 3.4};
+  request.planner = "BITstar";  // replaced: the reference is always the lattice's
+  const PlanResult reference = planLatticeReference(scene.planner, request);
+  EXPECT_EQ(reference.planner, referencePlannerName());
+  EXPECT_GE(reference.waypoints.size(), 2u);
+  EXPECT_LE(reference.cost, reference.search_cost * (1 + 1e-9));  // post-processed, never worse
+  // The same corridor cut in two by a wall at x in [3, 3.3): no path.
+  const testing::CeilingScene walled(
+      testing::analyticMap({-0.7, -2.7, 0}, {6.7, 2.7, 4.2}, 0.1, [](const Eigen::Vector3d& c) {
+        const bool wall = c.x() > 3.0 && c.x() < 3.3;
+        const bool outside = c.z() < 0.2 || c.z() > 3.5 || std::abs(c.y()) > 2.5 || c.x() < -0.5 || c.x() > 6.5;
+        return wall || outside ? testing::CellState::Occupied : testing::CellState::Free;
+      }));
+  try {
+    planLatticeReference(walled.planner, request);
+    ADD_FAILURE() << "no NoPathError";
+  } catch (const NoPathError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("lattice reference: ", 0), 0u) << e.what();
+  } catch (const InputError& e) {
+    ADD_FAILURE() << "an InputError, not a NoPathError: " << e.what();
+  }
 }
 
 TEST(PlannerBenchmark, ComparesEachRunWithTheLatticeReference) {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace ceilplan::io {
@@ -21,6 +22,11 @@ std::vector<energy::CalibrationSample> readCalibrationSamples(const std::filesys
 // {data, samples, rmse_a, max_abs_error_a, evaluations, fitted: [{parameter, value, allowed_min,
 // allowed_max, start, at_bound}]}.
 nlohmann::json calibrationReportJson(const std::filesystem::path& data, std::size_t samples,
+                                     const energy::CalibrationResult& result);
+
+// The comment heading the calibrated vehicle file (io::writeCalibratedVehicle): the data and its
+// samples, the parameters fitted and the RMSE.
+std::string calibratedVehicleComment(const std::filesystem::path& data, std::size_t samples,
                                      const energy::CalibrationResult& result);
 
 }  // namespace ceilplan::io

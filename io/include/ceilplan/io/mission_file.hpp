@@ -18,5 +18,8 @@ mission::Mission readMission(const std::filesystem::path& file);
 // start_soc, reserve_soc at its top level, each optional (the founding paper's pack at 95 %
 // otherwise); or a mission file, whose `battery:` section is read. Throws ceilplan::InputError.
 mission::BatterySpec readBattery(const std::filesystem::path& file);
+// readBattery, or for an empty path the founding paper's pack at 95 % (mission::BatterySpec{}):
+// what an optional --battery means.
+mission::BatterySpec readBatteryOrDefault(const std::filesystem::path& file);
 
 }  // namespace ceilplan::io

@@ -11,7 +11,9 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace ceilplan::io {
@@ -32,6 +34,22 @@ void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanRes
                         const planner::PathEvaluation& evaluation, const nlohmann::json& extra,
                         const Provenance& provenance);
 
+// The keys `ceilplan plan` adds to plan.json: seed, objective, cost_unit, mode, map, vehicle,
+// battery, start_soc and unknown_space, and where they apply the standoff report (free mode) and
+// the rates the ageing objective was linearised at (model, depth_of_discharge, loss_per_ah,
+// loss_per_s).
+nlohmann::json routePlanJson(const mission::RoutePlan& route, const mission::PlanningContext& context,
+                             const std::string& map_file, std::uint64_t seed);
+// DIR/plan.json (writePlanDirectory's keys and routePlanJson's) and DIR/path.csv.
+void writeRoutePlan(const std::filesystem::path& dir, const mission::RoutePlan& route,
+                    const mission::PlanningContext& context, const std::string& map_file, std::uint64_t seed,
+                    const Provenance& provenance);
+
+// What `ceilplan evaluate --json` writes: the figures, valid, violation (null: none), the
+// context's objective, cost, cost_unit, waypoints, unknown_space and provenance.
+nlohmann::json routeCheckJson(const mission::RouteCheck& check, const std::vector<Eigen::Vector3d>& waypoints_m,
+                              const mission::PlanningContext& context, const Provenance& provenance);
+
 // The points of a path CSV: columns x, y, z (path.csv of plan and tour) or x_m, y_m, z_m
 // (trajectory.csv), other columns ignored, whatever they hold; a point repeated on consecutive
 // rows (path.csv's segment joints, hovering) is kept once. Throws ceilplan::InputError naming
@@ -40,6 +58,16 @@ std::vector<Eigen::Vector3d> readPathWaypoints(const std::filesystem::path& file
 
 // One line of figures for a terminal.
 std::string figuresLine(const planner::PathEvaluation& evaluation);
+
+// The rates the ageing objective was linearised at, as one line: model, depth of discharge,
+// loss per Ah and per second.
+std::string ageingObjectiveLine(const planner::AgeingRates& ageing);
+// `ceilplan plan`'s lines on the route: waypoints, cost (and the search's) in its unit, planning
+// time, the figures and, in free mode, the standoff line.
+std::string routePlanText(const mission::RoutePlan& route);
+// `ceilplan evaluate`'s lines: the path's points and figures, its cost under the context's
+// objective, whether it is valid (and the violation) and what the map's unknown space counts as.
+std::string routeCheckText(const mission::RouteCheck& check, std::size_t points, const mission::PlanningContext& context);
 
 // Free mode's standoff report: standoff_m (asked for), length_m, narrowed_m, min_standoff_m and
 // `narrowed`, the spans with less ({from_m, to_m, min_standoff_m, at: [x, y, z]}, along the path).
@@ -55,9 +83,11 @@ std::string routeComparisonTable(const mission::RouteComparison& comparison, con
 // reductions in percent.
 nlohmann::json routeComparisonJson(const mission::RouteComparison& comparison, const mission::DutyOptions& duty,
                                    const nlohmann::json& extra);
-// DIR/compare.json, DIR/ceiling/ and DIR/free/ (plan directories) and the map views of both routes.
+// DIR/compare.json, DIR/ceiling/ and DIR/free/ (plan directories) and the map views of both
+// routes; each JSON file names the context's objective, the `planner`, the `seed` and the map's
+// unknown space.
 void writeRouteComparison(const std::filesystem::path& dir, const mission::RouteComparison& comparison,
-                          const mission::DutyOptions& duty, const nlohmann::json& extra,
-                          const environment::Environment& environment, const Provenance& provenance);
+                          const mission::DutyOptions& duty, const mission::PlanningContext& context,
+                          const std::string& planner, std::uint64_t seed, const Provenance& provenance);
 
 }  // namespace ceilplan::io

@@ -5,6 +5,7 @@
 
 #include "ceilplan/energy/ceiling_gap_sweep.hpp"
 #include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/map_statistics.hpp"
 #include "ceilplan/environment/position_probe.hpp"
 #include "ceilplan/environment/vehicle_geometry.hpp"
@@ -21,11 +22,15 @@ namespace ceilplan::io {
 // valid, violation (null when valid), assumed_free, point_assumed_free and rotors: [{offset_m,
 // ceiling, ground}] in `vehicle`'s rotor order, each gap {nearest_gap_m, coverage, mean_gap_m}.
 nlohmann::json positionProbeJson(const environment::PositionProbe& probe, const environment::VehicleGeometry& vehicle);
+// What `probe --json` writes: positionProbeJson in `environment`, with map (`map_file`), vehicle
+// (`vehicle_file`, or "built-in: NAME" when empty) and unknown (io::unknownSpaceJson).
+nlohmann::json probeReportJson(const environment::PositionProbe& probe, const environment::Environment& environment,
+                               const std::string& map_file, const std::string& vehicle_file);
 
-// resolution_m, extent_m {min, max}, leaves {occupied, free}, volume_m3 {occupied, free,
-// unknown}, unknown (io::unknownSpaceJson), ceiling {min_headroom_m, min_area_m2},
-// ceiling_area_share.
-nlohmann::json mapStatisticsJson(const environment::MapStatistics& statistics);
+// map (its file), resolution_m, extent_m {min, max}, leaves {occupied, free}, volume_m3
+// {occupied, free, unknown}, unknown (io::unknownSpaceJson), ceiling {min_headroom_m,
+// min_area_m2}, ceiling_area_share.
+nlohmann::json mapStatisticsJson(const std::string& map, const environment::MapStatistics& statistics);
 
 // `current` at one condition: vehicle, soc, coverage, ground_gap_m, speed_m_s, climb_m_s, gap_m
 // and the breakdown's terms: current_a, power_w, terminal_voltage_v, the powers (induced_w,

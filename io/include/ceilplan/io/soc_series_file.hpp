@@ -1,6 +1,6 @@
 #pragma once
-// SOC series read from CSV files and their rainflow cycles written as JSON: what `ceilplan
-// rainflow` reads and writes (docs/ageing.md).
+// SOC series read from CSV files and their rainflow cycles written as JSON and as a table: what
+// `ceilplan rainflow` reads, writes and prints (docs/ageing.md).
 
 #include "ceilplan/battery/rainflow.hpp"
 
@@ -20,5 +20,10 @@ std::vector<double> readSocSeries(const std::filesystem::path& file, const std::
 
 // {"cycles": [{"range", "mean", "count", "start", "end"}, ...]}, keys in that order.
 nlohmann::ordered_json rainflowJson(const std::vector<battery::RainflowCycle>& cycles);
+
+// A title naming the column, the file and its `samples`, one row per cycle (range, mean, count,
+// start, end) and the totals (battery::rainflowTotals). The names are echoed printable.
+std::string rainflowText(const std::string& column, const std::filesystem::path& file, std::size_t samples,
+                         const std::vector<battery::RainflowCycle>& cycles);
 
 }  // namespace ceilplan::io

@@ -9,12 +9,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace ceilplan::io {
+
+// A tour's provenance: `command_line`, the mission, map and vehicle files, the seed.
+Provenance tourProvenance(const std::string& command_line, const mission::Mission& mission, std::uint64_t seed);
 
 // Why the tour's DJI KMZ cannot be written with the default payload (a gimbal pitch beyond its
 // range, naming the sortie and waypoint), or none.

@@ -15,6 +15,9 @@ namespace ceilplan::io {
 // malformed YAML, an unknown key (with the nearest valid one), a missing key, a number outside
 // its physical range, a file of another kind.
 mission::Vehicle readVehicle(const std::filesystem::path& file);
+// readVehicle, or for an empty path the built-in vehicle (mission::Vehicle::defaultQuad, as
+// maps/vehicles/quad.yaml): what every command's optional --vehicle means.
+mission::Vehicle readVehicleOrDefault(const std::filesystem::path& file);
 
 // Writes a vehicle file with the energy model's constants replaced by explicit values of
 // `parameters` (power.* and max_speed_m_s; hover power and K1, K2 rather than the anchors they

@@ -14,5 +14,8 @@ std::string flightModeName(FlightMode mode);
 // Throws ceilplan::InputError for any other name, listing both.
 FlightMode flightModeFromName(const std::string& name);
 const std::vector<std::string>& flightModeNames();
+// What a tour flies for "ceiling" or "free", or "both": ceiling mode, then free mode, to compare
+// them. Throws as flightModeFromName for any other name.
+std::vector<FlightMode> tourFlightModes(const std::string& name);
 
 }  // namespace ceilplan::mission

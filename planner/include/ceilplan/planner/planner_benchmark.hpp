@@ -18,6 +18,11 @@ namespace ceilplan::planner {
 // OMPL's sampling planners in the catalogue: the default list.
 std::vector<std::string> samplingPlannerNames();
 
+// A comma-separated list of planner names as a command line gives it ("BITstar,PRMstar"),
+// empty names skipped; plannerList joins names into one.
+std::vector<std::string> plannerNamesOfList(const std::string& list);
+std::string plannerList(const std::vector<std::string>& names);
+
 struct PlannerBenchmarkOptions {
   std::vector<std::string> planners = samplingPlannerNames();  // any of plannerNames()
   LatticeSettings lattice;            // for the lattice planners among them
@@ -47,6 +52,11 @@ struct PlannerBenchmarkRow {
   // cost; infinite for a run that never did.
   double median_time_to_5pct_s;
 };
+
+// The reference runs are compared with: the lattice optimum (referencePlannerName) of
+// `request`'s query at its lattice settings, post-processed as `request` asks like every run.
+// Throws ceilplan::NoPathError, its message prefixed "lattice reference: ", when there is none.
+PlanResult planLatticeReference(const FlightPlanner& planner, PlanRequest request);
 
 // Runs every planner `runs` times from `start_m` to `goal_m` under `planner`'s objective and
 // validity checker. Throws ceilplan::InputError for bad options.
