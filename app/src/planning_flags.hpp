@@ -38,10 +38,9 @@ io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std:
 // The map, vehicle and battery the flags name, indexed with progress on the terminal.
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags);
 
-// The search flags shared by plan, compare and bench-planners.
+// The search flags shared by plan, compare and bench-planners, with the library's defaults (as Python's).
 struct SearchArguments {
   std::string planner;  // empty: the default
-  // The library's defaults, as Python's keywords have them.
   double time_limit_s = planner::PlanRequest{}.time_limit_s;
   std::uint32_t seed = 1;
   double band_fraction = planner::PlanRequest{}.band_fraction;
