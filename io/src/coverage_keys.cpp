@@ -10,7 +10,6 @@ namespace ceilplan::io {
 namespace {
 
 constexpr double kAny = std::numeric_limits<double>::max();  // finite; the model's validate() checks the range
-constexpr double kMapLimit_m = 1e6;
 
 // Reruns a model's own checks, naming where in the file the entry sits.
 template <typename Check>
@@ -48,8 +47,8 @@ mission::RegionShape readShape(const YAML::Node& node, const std::string& path) 
   if (box) {
     const std::string box_path = keyPath(path, "box");
     requireKnownKeys(node["box"], {"min", "max"}, box_path);
-    return mission::RegionShape::makeBox(point3(requiredKey(node["box"], "min", box_path), box_path + ".min", kMapLimit_m),
-                                         point3(requiredKey(node["box"], "max", box_path), box_path + ".max", kMapLimit_m));
+    return mission::RegionShape::makeBox(point3(requiredKey(node["box"], "min", box_path), box_path + ".min", kMaxPointCoordinate_m),
+                                         point3(requiredKey(node["box"], "max", box_path), box_path + ".max", kMaxPointCoordinate_m));
   }
   const std::string prism_path = keyPath(path, "prism");
   requireKnownKeys(node["prism"], {"polygon", "z"}, prism_path);
@@ -59,11 +58,11 @@ mission::RegionShape readShape(const YAML::Node& node, const std::string& path) 
   std::vector<Eigen::Vector2d> vertices;
   for (std::size_t k = 0; k < polygon.size(); ++k) {
     const std::vector<double> xy =
-        numbers(polygon[k], polygon_path + "[" + std::to_string(k) + "]", 2, -kMapLimit_m, kMapLimit_m, "m");
+        numbers(polygon[k], polygon_path + "[" + std::to_string(k) + "]", 2, -kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
     vertices.emplace_back(xy[0], xy[1]);
   }
-  const std::vector<double> z = numbers(requiredKey(node["prism"], "z", prism_path), prism_path + ".z", 2, -kMapLimit_m,
-                                        kMapLimit_m, "m");
+  const std::vector<double> z = numbers(requiredKey(node["prism"], "z", prism_path), prism_path + ".z", 2, -kMaxPointCoordinate_m,
+                                        kMaxPointCoordinate_m, "m");
   return mission::RegionShape::makePrism(std::move(vertices), z[0], z[1]);
 }
 

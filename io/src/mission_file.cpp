@@ -4,6 +4,7 @@
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/io/coverage_keys.hpp"
+#include "ceilplan/io/point_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
 
@@ -23,7 +24,7 @@ const std::vector<std::string> kBatteryKeys{"capacity_ah", "charge_current_a", "
                                             "state_of_health", "start_soc",      "reserve_soc", "between_sorties",
                                             "swap_s"};
 // Any place in a map: a kilometre either way (the index refuses maps too large to hold anyway).
-const Range kCoordinateM = Range::closed(-1e6, 1e6, "m");
+const Range kCoordinateM = Range::closed(-kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
 
 // Reads a battery section; in a mission file the pack and SOC limits of a tour are required,
 // a battery file may leave any of them at the founding paper's values.

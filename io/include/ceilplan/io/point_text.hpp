@@ -7,7 +7,8 @@
 
 namespace ceilplan::io {
 
-// As a mission file's coordinates: farther than any map, so a slip of the exponent is refused.
+// The farthest coordinate any input may give (a point on the command line, a mission's home and
+// targets, a coverage region's corners): farther than any map, so a slip of the exponent is refused.
 inline constexpr double kMaxPointCoordinate_m = 1e6;
 
 // "1.5,-2,3e-1" -> (1.5, -2, 0.3). Throws ceilplan::InputError quoting the text (printable) for

@@ -3,6 +3,8 @@
 // its physical range, every error a ceilplan::InputError naming the key by its full path
 // (e.g. 'surfaces[0].overlap.front'). The file name is the caller's to add.
 
+#include "ceilplan/io/point_text.hpp"
+
 #include "ceilplan/core/error.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -37,7 +39,7 @@ long integerIn(const YAML::Node& node, const std::string& path, long lo, long hi
 // A non-empty string.
 std::string text(const YAML::Node& node, const std::string& path);
 // [x, y, z], each finite and within `limit` in absolute value.
-Eigen::Vector3d point3(const YAML::Node& node, const std::string& path, double limit = 1e6);
+Eigen::Vector3d point3(const YAML::Node& node, const std::string& path, double limit = kMaxPointCoordinate_m);
 // A list of exactly `count` numbers, each finite and in [lo, hi].
 std::vector<double> numbers(const YAML::Node& node, const std::string& path, std::size_t count, double lo, double hi,
                             const std::string& unit);
