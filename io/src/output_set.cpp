@@ -151,6 +151,13 @@ void checkOutputs(const std::vector<Output>& outputs, const std::vector<Input>& 
 }
 
 OutputSet::OutputSet(std::vector<Output> outputs, const std::vector<Input>& inputs) : outputs_(std::move(outputs)) {
+  for (Output& output : outputs_) {
+    if (output.path.empty()) continue;
+    const fs::path name = output.path.filename();
+    if (!output.directory && (name.empty() || name == "." || name == ".."))
+      throw InputError(named(output) + " names a directory: name a file for the output");
+    output.path = renameablePath(output.path);
+  }
   checkOutputs(outputs_, inputs);
   for (const Output& output : outputs_) {
     if (output.path.empty()) {

@@ -164,6 +164,15 @@ void installSignalCleanup() {
   });
 }
 
+fs::path renameablePath(const fs::path& path) {
+  const fs::path name = path.filename();
+  if (!name.empty() && name != "." && name != "..") return path;
+  std::error_code ec;
+  fs::path absolute = fs::absolute(path, ec).lexically_normal();
+  if (absolute.filename().empty() && absolute.has_relative_path()) absolute = absolute.parent_path();
+  return absolute;
+}
+
 fs::path finalPathOf(const fs::path& path) {
   const std::lock_guard<std::mutex> lock(registryMutex());
   fs::path mapped = path;
@@ -182,7 +191,7 @@ fs::path finalPathOf(const fs::path& path) {
   return mapped;
 }
 
-TemporaryOutput::TemporaryOutput(fs::path final_path, bool directory) : final_(std::move(final_path)) {
+TemporaryOutput::TemporaryOutput(fs::path final_path, bool directory) : final_(renameablePath(final_path)) {
   // Names for messages, before the lock (finalPathOf takes it).
   const std::string display = shown(final_), parent_display = shown(final_.parent_path());
   // Under the lock: once the signal cleanup has begun, nothing more is created on disk.

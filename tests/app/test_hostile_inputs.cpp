@@ -1017,6 +1017,8 @@ std::vector<OutputRule> outputRules() {
          ceilplanOutputDirectory(dir / "real");
          fs::create_symlink(dir / "real", dir / "elsewhere");
        }},
+      // A file output named as a directory.
+      {"file_named_as_a_directory", "duty --days 1 --json {dir}/d/", "--json {dir}/d/ names a directory"},
       // A directory ceilplan did not write (or wrote before the marker): refused, untouched.
       {"foreign_directory_plan", kPlan + " --out {dir}/mine", "--out {dir}/mine is a directory ceilplan did not write",
        [](const fs::path& dir) { writeFile(dir / "mine" / "notes.txt", "keep"); }},
@@ -1126,6 +1128,12 @@ TEST(OutputRulesReruns, AnEmptyDirectoryOrOneCeilplanWroteIsReplacedWhole) {
   EXPECT_TRUE(fs::is_regular_file(dir / "old" / "plan.json"));
   EXPECT_FALSE(fs::exists(dir / "old" / "stale.csv"));
   EXPECT_EQ(namesIn(dir), (std::set<std::string>{"empty", "old"}));
+  // "old/" is "old": staged beside it, not inside.
+  const CommandResult slash = runCeilplan(plan + " --out " + (dir / "old").string() + "/");
+  ASSERT_EQ(slash.exit_code, 0) << slash.err;
+  EXPECT_TRUE(fs::is_regular_file(dir / "old" / "plan.json"));
+  EXPECT_EQ(namesIn(dir), (std::set<std::string>{"empty", "old"}));
+  EXPECT_EQ(namesIn(dir / "old").count(".ceilplan-output"), 1u);
 }
 
 // A staging directory left by a killed run (here: by a process that no longer exists, and by

@@ -28,6 +28,10 @@ void installSignalCleanup();
 // be once committed; any other path as it is. For messages: the user named the final path.
 std::filesystem::path finalPathOf(const std::filesystem::path& path);
 
+// `path` named so that it can be renamed: without a trailing separator, and made absolute when it
+// ends in "." or ".." ("out/" is "out", "." the working directory's absolute path).
+std::filesystem::path renameablePath(const std::filesystem::path& path);
+
 // One output (a file, or a directory the caller fills) staged beside its final path. Missing
 // parent directories are created, and removed again if the output is never committed.
 class TemporaryOutput {
