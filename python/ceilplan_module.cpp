@@ -479,7 +479,6 @@ PYBIND11_MODULE(ceilplan, m) {
             std::optional<io::Autopilot> autopilot;
             if (export_autopilot) autopilot = io::Autopilot::PX4;
             const io::Provenance provenance = io::tourProvenance("python: ceilplan.plan_tour", *t.mission, t.tour.options.seed);
-            py::gil_scoped_release release;
             io::OutputSet out(dir);
             io::writeTourDirectory(out.path(), t.tour, *t.mission, t.context->environment(), autopilot, provenance);
             out.commit();
