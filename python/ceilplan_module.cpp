@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cerrno>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -19,6 +20,39 @@ namespace py = pybind11;
 using namespace ceilplan;
 
 namespace {
+
+// The Python classes of an input file that cannot be read (set at import, used by the translator).
+PyObject* input_file_error = nullptr;    // ceilplan.InputFileError: an InputError and an OSError
+PyObject* missing_file_error = nullptr;  // ceilplan.MissingFileError: also a FileNotFoundError
+
+// Raises an InputFileError as ceilplan.MissingFileError or ceilplan.InputFileError, its message
+// the library's and its errno the reason's.
+void translateInputFileError(std::exception_ptr failure) {
+  try {
+    if (failure) std::rethrow_exception(failure);
+  } catch (const InputFileError& e) {
+    PyObject* type = e.reason() == std::errc::no_such_file_or_directory ? missing_file_error : input_file_error;
+    py::object error = py::reinterpret_borrow<py::object>(type)(e.what());
+    error.attr("errno") = static_cast<int>(e.reason());
+    PyErr_SetObject(type, error.ptr());
+  }
+}
+
+// numpy at import, where a missing numpy can be named, and before any thread can race for it:
+// pybind11 looks numpy's API up once, in a function-local static that imports numpy. Looked up
+// for the first time by two threads, one holds the static's guard and waits for the GIL while
+// the other holds the GIL and waits for the guard.
+void loadNumpy() {
+  try {
+    py::module_::import("numpy");
+  } catch (py::error_already_set& e) {
+    if (!e.matches(PyExc_ImportError)) throw;
+    throw py::import_error(std::string("ceilplan needs numpy for this interpreter (") + PY_VERSION + ", " +
+                           py::str(py::module_::import("sys").attr("executable")).cast<std::string>() +
+                           "): install python3-numpy (Debian) or 'pip install numpy'; " + e.what());
+  }
+  py::detail::npy_api::get();
+}
 
 // A map indexed for a vehicle and a battery: what plans and evaluations run against.
 struct PyEnvironment {
@@ -229,13 +263,25 @@ py::dict dutyStudyDict(const battery::DutyStudyOptions& options, const battery::
 PYBIND11_MODULE(ceilplan, m) {
   m.doc() = "ceilplan: battery-wear-aware inspection planning for multirotors flying under ceilings";
   m.attr("__version__") = kVersion;
+  loadNumpy();
 
   // The library's error hierarchy; pybind11 tries translators newest first, so the base goes first.
   // InputError is also a ValueError, as Python code expects of bad arguments.
   const auto& error = py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
   const auto& infeasible = py::register_exception<InfeasibleError>(m, "InfeasibleError", error);
   py::register_exception<NoPathError>(m, "NoPathError", infeasible);
-  py::register_exception<InputError>(m, "InputError", py::make_tuple(error, py::handle(PyExc_ValueError)));
+  const auto& input =
+      py::register_exception<InputError>(m, "InputError", py::make_tuple(error, py::handle(PyExc_ValueError)));
+  // An input file that cannot be read is also an OSError (a missing one a FileNotFoundError), as
+  // Python's own open() raises. Registered last, so tried before InputError's translator.
+  const py::tuple file_bases = py::make_tuple(input, py::handle(PyExc_OSError));
+  input_file_error = PyErr_NewException("ceilplan.InputFileError", file_bases.ptr(), nullptr);
+  const py::tuple missing_bases = py::make_tuple(py::handle(input_file_error), py::handle(PyExc_FileNotFoundError));
+  missing_file_error = PyErr_NewException("ceilplan.MissingFileError", missing_bases.ptr(), nullptr);
+  if (!input_file_error || !missing_file_error) throw py::error_already_set();
+  m.attr("InputFileError") = py::handle(input_file_error);
+  m.attr("MissingFileError") = py::handle(missing_file_error);
+  py::register_exception_translator(translateInputFileError);
 
   py::class_<mission::Vehicle>(m, "Vehicle", "A multirotor: its shape and its energy model")
       .def_static("default", &mission::Vehicle::defaultQuad, "The built-in quadrotor (maps/vehicles/quad.yaml)")
@@ -265,6 +311,7 @@ PYBIND11_MODULE(ceilplan, m) {
              std::optional<double> unknown_fill_max_m) {
             mission::PlanningOptions options;
             options.unknown = unknownSpace(unknown, unknown_fill_max_m);
+            py::gil_scoped_release release;  // loading and indexing a map takes seconds
             return PyEnvironment{std::make_shared<mission::PlanningContext>(
                 environment::OccupancyMap::load(path), vehicle.value_or(mission::Vehicle::defaultQuad()),
                 battery ? io::readBattery(*battery) : mission::BatterySpec{}, options)};
@@ -329,7 +376,10 @@ PYBIND11_MODULE(ceilplan, m) {
       [](const PyEnvironment& env, const std::vector<std::vector<double>>& path) {
         std::vector<Eigen::Vector3d> waypoints;
         for (const auto& p : path) waypoints.push_back(point(p, "path point"));
-        const mission::RouteCheck check = mission::checkRoute(*env.context, waypoints);
+        const mission::RouteCheck check = [&] {
+          py::gil_scoped_release release;
+          return mission::checkRoute(*env.context, waypoints);
+        }();
         py::dict d = evaluationDict(check.evaluation);
         d["valid"] = !check.violation;
         d["violation"] = check.violation ? py::object(py::str(*check.violation)) : py::none();
@@ -448,6 +498,7 @@ PYBIND11_MODULE(ceilplan, m) {
         options.seed = seed.value_or(mission.mission.seed);
         options.planner = planner;
         options.ageing_model = ageing_model;
+        options.validate();  // before indexing the map
         const mission::FlightMode flight_mode = mission::flightModeFromName(mode);
         py::gil_scoped_release release;
         auto context = std::make_shared<const mission::PlanningContext>(*shared_mission);

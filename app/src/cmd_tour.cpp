@@ -57,6 +57,7 @@ void runTour(TourArguments a) {
   }
   if (a.mode.empty()) a.mode = mission.mode.empty() ? "ceiling" : mission.mode;
   a.options.seed = a.seed ? *a.seed : mission.seed;
+  a.options.validate();  // before indexing the map
   // OMPL's generators are seeded once per process from the tour seed; the queries draw from
   // them in scheduling order and stop at a wall-clock limit, so OMPL legs are not bit-reproducible.
   if (!planner::plannerInfo(a.options.planner).deterministic()) planner::seedOmpl(a.options.seed);
@@ -118,7 +119,7 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                       "pairwise planners: search time per leg")
       ->capture_default_str()->check(positiveFinite());
   command->add_option("--lattice-spacing-m", a->options.lattice_spacing_m, "roadmap and lattice: node spacing")
-      ->capture_default_str()->check(finiteRange(0.01, 2.0));
+      ->capture_default_str()->check(finiteRange(planner::kMinLatticeSpacing_m, planner::kMaxLatticeSpacing_m));
   command->add_option("--workers", a->options.workers, "threads planning legs")->capture_default_str()->check(CLI::Range(1, 64));
   command->add_option("--all-pairs-max-places", a->options.all_pairs_max_places,
                       "a leg between every pair of places (home and the stops) up to this many; beyond, legs between "

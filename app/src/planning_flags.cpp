@@ -58,7 +58,7 @@ void addSearchOptions(CLI::App* command, SearchArguments& a) {
       ->capture_default_str()->check(finiteRange(0.0, 1.0));
   command->add_flag("--no-refine", a.no_refine, "skip shortcutting and NLopt refinement");
   command->add_option("--lattice-spacing-m", a.lattice_spacing_m, "lattice and roadmap planners: node spacing")
-      ->capture_default_str()->check(finiteRange(0.01, 2.0));
+      ->capture_default_str()->check(finiteRange(planner::kMinLatticeSpacing_m, planner::kMaxLatticeSpacing_m));
 }
 
 planner::PlanRequest SearchArguments::request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const {

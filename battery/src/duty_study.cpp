@@ -119,8 +119,10 @@ double DutyStudyOptions::recordedRunSamples() const {
 void DutyStudyOptions::validate() const {
   pack.validate();
   if (flight_currents_a.empty()) throw InputError("a duty study needs at least one flight current");
-  if (!(std::isfinite(years) && years >= 0.0))
-    throw InputError("the study's years must be a finite number >= 0, got " + formatNumber(years));
+  // Bounded before studyDays() turns them into a whole number of days.
+  if (!(std::isfinite(years) && years >= 0.0 && years <= kMaxStudyDays / 365.0))
+    throw InputError("the study's years must be a finite number in [0, " + formatNumber(kMaxStudyDays / 365.0) +
+                     "], got " + formatNumber(years));
   if (studyDays() < 1 || studyDays() > kMaxStudyDays)
     throw InputError("a study of " + spanText() + " is outside 1 to " + std::to_string(kMaxStudyDays) + " days");
   if (!(step_s == 0.0 || (std::isfinite(step_s) && step_s > 0.0)))

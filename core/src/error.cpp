@@ -11,6 +11,8 @@ void rethrowWithContext(const std::string& context) {
     throw NoPathError(context + e.what());
   } catch (const InfeasibleError& e) {
     throw InfeasibleError(context + e.what());
+  } catch (const InputFileError& e) {
+    throw InputFileError(context + e.what(), e.reason());
   } catch (const InputError& e) {
     throw InputError(context + e.what());
   } catch (const std::exception& e) {

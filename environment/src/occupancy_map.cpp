@@ -231,10 +231,15 @@ OccupancyMap OccupancyMap::read(std::istream& in, const std::string& name) {
 OccupancyMap OccupancyMap::load(const std::filesystem::path& file) {
   const std::string name = file.string();
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) fail(name, "no such map file");
-  if (std::filesystem::is_directory(file, ec)) fail(name, "is a directory, not a map file");
+  if (!std::filesystem::exists(file, ec))
+    throw InputFileError(name + ": no such map file", std::errc::no_such_file_or_directory);
+  if (std::filesystem::is_directory(file, ec))
+    throw InputFileError(name + ": is a directory, not a map file", std::errc::is_a_directory);
+  // A device or a pipe would be read without end (/dev/zero) or block (a FIFO nobody writes).
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw InputFileError(name + ": is not a regular file, not a map file", std::errc::invalid_argument);
   std::ifstream in(file, std::ios::binary);
-  if (!in) fail(name, "cannot open the map file for reading");
+  if (!in) throw InputFileError(name + ": cannot open the map file for reading", std::errc::permission_denied);
   return read(in, name);
 }
 

@@ -78,11 +78,14 @@ CsvColumns CsvColumns::read(const std::filesystem::path& path, const std::vector
   const std::string shown = printableText(path.string(), 256);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    throw ceilplan::InputError(shown + " is a directory; give a CSV file");
+    throw ceilplan::InputFileError(shown + " is a directory; give a CSV file", std::errc::is_a_directory);
   std::ifstream input(path, std::ios::binary);
-  if (!input)
-    throw ceilplan::InputError("cannot open " + shown + ": " + std::strerror(errno) +
-                               "; check the path and permissions");
+  if (!input) {
+    const int error = errno;
+    throw ceilplan::InputFileError("cannot open " + shown + ": " + std::strerror(error) +
+                                       "; check the path and permissions",
+                                   error ? static_cast<std::errc>(error) : std::errc::io_error);
+  }
   return parse(input, shown, required, optional, none_is_infinite);
 }
 

@@ -123,13 +123,13 @@ std::vector<Eigen::Vector3d> readPathWaypoints(const std::filesystem::path& file
     if (!table.hasColumn(axis + suffix))
       throw InputError(file.string() + " has neither x, y, z (path.csv) nor x_m, y_m, z_m (trajectory.csv) columns");
   const std::vector<double>&x = table.column("x" + suffix), &y = table.column("y" + suffix), &z = table.column("z" + suffix);
-  std::vector<Eigen::Vector3d> waypoints;
-  for (std::size_t row = 0; row < table.rowCount(); ++row) {
-    const Eigen::Vector3d p(x[row], y[row], z[row]);
-    if (waypoints.empty() || (p - waypoints.back()).norm() > 1e-9) waypoints.push_back(p);
+  std::vector<Eigen::Vector3d> points;
+  for (std::size_t row = 0; row < table.rowCount(); ++row) points.emplace_back(x[row], y[row], z[row]);
+  try {
+    return mission::distinctWaypoints(points);
+  } catch (const InputError&) {
+    rethrowWithContext(file.string() + ": ");
   }
-  if (waypoints.size() < 2) throw InputError(file.string() + ": a path needs at least 2 distinct points");
-  return waypoints;
 }
 
 std::string figuresLine(const planner::PathEvaluation& e) {

@@ -60,11 +60,15 @@ std::string kindName(FileKind kind) {
 
 YamlFile::YamlFile(const std::filesystem::path& file, FileKind kind) : path_(file), kind_(kind) {
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) fail("no such " + kindName(kind));
-  if (std::filesystem::is_directory(file, ec)) fail("is a directory, not a " + kindName(kind));
-  if (!std::filesystem::is_regular_file(file, ec)) fail("is not a regular file");
+  const auto fileFail = [this](const std::string& problem, std::errc reason) {
+    throw InputFileError(path_.string() + ": " + problem, reason);
+  };
+  if (!std::filesystem::exists(file, ec)) fileFail("no such " + kindName(kind), std::errc::no_such_file_or_directory);
+  if (std::filesystem::is_directory(file, ec))
+    fileFail("is a directory, not a " + kindName(kind), std::errc::is_a_directory);
+  if (!std::filesystem::is_regular_file(file, ec)) fileFail("is not a regular file", std::errc::invalid_argument);
   std::ifstream in(file, std::ios::binary);
-  if (!in) fail("cannot be read");
+  if (!in) fileFail("cannot be read", std::errc::permission_denied);
   std::ostringstream bytes;
   bytes << in.rdbuf();  // an empty file leaves `text` empty: refused below, as not a map
   const std::string text = bytes.str();

@@ -49,8 +49,19 @@ RoutePlan planRoute(const PlanningContext& context, FlightMode mode, const plann
   return route;
 }
 
-RouteCheck checkRoute(const PlanningContext& context, const std::vector<Eigen::Vector3d>& waypoints_m) {
-  if (waypoints_m.size() < 2) throw InputError("a path needs at least 2 distinct points");
+std::vector<Eigen::Vector3d> distinctWaypoints(const std::vector<Eigen::Vector3d>& points_m) {
+  std::vector<Eigen::Vector3d> waypoints;
+  for (std::size_t k = 0; k < points_m.size(); ++k) {
+    const Eigen::Vector3d& p = points_m[k];
+    if (!p.allFinite()) throw InputError("point " + std::to_string(k + 1) + " has a non-finite coordinate");
+    if (waypoints.empty() || (p - waypoints.back()).norm() > 1e-9) waypoints.push_back(p);
+  }
+  if (waypoints.size() < 2) throw InputError("a path needs at least 2 distinct points");
+  return waypoints;
+}
+
+RouteCheck checkRoute(const PlanningContext& context, const std::vector<Eigen::Vector3d>& points_m) {
+  const std::vector<Eigen::Vector3d> waypoints_m = distinctWaypoints(points_m);
   for (std::size_t k = 0; k < waypoints_m.size(); ++k)
     if (!context.environment().contains(waypoints_m[k]))
       throw InputError("point " + std::to_string(k + 1) + " " + formatPoint(waypoints_m[k]) + " lies outside the map");

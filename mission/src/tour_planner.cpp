@@ -869,11 +869,20 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
 
 }  // namespace
 
-TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,
-                    const TourOptions& options) {
-  if (options.all_pairs_max_places < 2 || options.neighbours < 1 || options.split_points < 1 || options.order_kicks < 0)
+void TourOptions::validate() const {
+  if (all_pairs_max_places < 2 || neighbours < 1 || split_points < 1 || order_kicks < 0)
     throw InputError("tour options: all_pairs_max_places must be at least 2, neighbours and split_points at least 1, "
                      "order_kicks at least 0");
+  planner::checkSeed(seed);
+  latticeSettings(*this).validate();
+  // Unknown names, a temperature out of the models' range: refused by what will use them.
+  planner::plannerInfo(planner);
+  battery::makeAgeingModel(ageing_model, ageingModelOptions(temperature_c));
+}
+
+TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,
+                    const TourOptions& options) {
+  options.validate();
   // Home as the planner would check a start (the same rules in both modes).
   if (!context.baseRules().isStateValid(mission.home_m))
     throw ceilplan::InputError(mission.name() + ": home " + formatPoint(mission.home_m) +

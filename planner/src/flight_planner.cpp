@@ -29,8 +29,12 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-bool seedOmpl(std::uint32_t seed) {
+void checkSeed(std::uint32_t seed) {
   if (seed == 0) throw ceilplan::InputError("seed must be > 0 (OMPL refuses 0)");
+}
+
+bool seedOmpl(std::uint32_t seed) {
+  checkSeed(seed);
   static std::mutex mutex;
   static std::optional<std::uint32_t> used;
   std::lock_guard<std::mutex> lock(mutex);
@@ -99,6 +103,7 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
     throw ceilplan::InputError("time limit must be a positive number of seconds");
   if (!(request.band_fraction >= 0.0 && request.band_fraction <= 1.0))
     throw ceilplan::InputError("band fraction must be a share in [0, 1], got " + formatNumber(request.band_fraction));
+  request.lattice.validate();  // whichever planner: the same request is refused by every front end
   requireValidEndpoint(request.start_m, "start");
   requireValidEndpoint(request.goal_m, "goal");
   if ((request.goal_m - request.start_m).norm() < 1e-6) throw ceilplan::InputError("start and goal coincide: nothing to plan");
@@ -118,10 +123,12 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
   planner->setProblemDefinition(definition);
   planner->setup();
   // A deterministic search runs to completion, so its answer does not depend on the machine's speed
-  // or load; only the sampling planners are anytime and stop at the clock.
-  const ompl::base::PlannerStatus status = info.deterministic()
-                                               ? planner->solve(ompl::base::plannerNonTerminatingCondition())
-                                               : planner->solve(request.time_limit_s);
+  // or load; only the sampling planners are anytime and stop at the clock, read at each check
+  // (OMPL's solve(seconds) watches it from a thread of its own, which a limit on threads or
+  // memory can refuse).
+  const ompl::base::PlannerStatus status =
+      planner->solve(info.deterministic() ? ompl::base::plannerNonTerminatingCondition()
+                                          : ompl::base::timedPlannerTerminationCondition(request.time_limit_s));
   if (sampling) clearBandSampler();
   if (status != ompl::base::PlannerStatus::EXACT_SOLUTION || !definition->hasExactSolution()) {
     if (!info.deterministic())

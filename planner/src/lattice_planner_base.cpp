@@ -9,8 +9,9 @@
 namespace ceilplan::planner {
 
 void LatticeSettings::validate() const {
-  if (!(std::isfinite(spacing_m) && spacing_m > 0.0))
-    throw ceilplan::InputError("lattice spacing must be a positive number of metres");
+  if (!(spacing_m >= kMinLatticeSpacing_m && spacing_m <= kMaxLatticeSpacing_m))
+    throw ceilplan::InputError("lattice spacing must be a finite number in [" + formatNumber(kMinLatticeSpacing_m) +
+                               ", " + formatNumber(kMaxLatticeSpacing_m) + "] m, got " + formatNumber(spacing_m));
   if (workers < 1) throw ceilplan::InputError("the lattice planners need at least one worker thread");
 }
 

@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 namespace ceilplan {
 
@@ -20,6 +21,19 @@ class Error : public std::runtime_error {
 class InputError : public Error {
  public:
   using Error::Error;
+};
+
+// An input file that cannot be read as one: missing, a directory, a device, unreadable.
+// `reason` says which as the system would (std::errc::no_such_file_or_directory,
+// is_a_directory, permission_denied, ...), so a front end can tell it from other bad input
+// (Python raises FileNotFoundError or OSError, docs/python.md).
+class InputFileError : public InputError {
+ public:
+  InputFileError(const std::string& message, std::errc reason) : InputError(message), reason_(reason) {}
+  std::errc reason() const { return reason_; }
+
+ private:
+  std::errc reason_;
 };
 
 // The input is well formed but asks for something that cannot be done: the battery runs out,

@@ -42,9 +42,13 @@ struct RouteCheck {
   std::string cost_unit;
 };
 
-// The figures and the safety of any path (at least 2 distinct points). Throws
-// ceilplan::InputError naming a point outside the map.
-RouteCheck checkRoute(const PlanningContext& context, const std::vector<Eigen::Vector3d>& waypoints_m);
+// `points_m` without each point within 1e-9 m of the one before it. Throws ceilplan::InputError
+// for a non-finite coordinate, or when fewer than 2 distinct points remain.
+std::vector<Eigen::Vector3d> distinctWaypoints(const std::vector<Eigen::Vector3d>& points_m);
+
+// The figures and the safety of any path, repeated points dropped (distinctWaypoints). Throws
+// ceilplan::InputError for fewer than 2 distinct points, or naming a point outside the map.
+RouteCheck checkRoute(const PlanningContext& context, const std::vector<Eigen::Vector3d>& points_m);
 
 // The founding paper's month for a route: each mission flies it as often as the slower mode
 // fits in flight_min, idles, charges back.

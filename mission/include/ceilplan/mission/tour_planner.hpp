@@ -64,6 +64,10 @@ struct TourOptions {
   int split_points = 60;
   int order_kicks = 0;
   ProgressCallback progress;     // stages: coverage views, the roadmap, routing, refining
+
+  // Throws ceilplan::InputError for options no tour can use (seed 0, a lattice spacing out of its
+  // range, no worker, ...); planTour checks them first, a front end before it indexes the map.
+  void validate() const;
 };
 
 struct TourStop {

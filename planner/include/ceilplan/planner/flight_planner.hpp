@@ -90,7 +90,11 @@ class FlightPlanner {
 // Seeds OMPL's random generators. Call it once, before constructing any FlightPlanner (OMPL
 // makes generators as soon as a space is set up, and a seed set afterwards is ignored). Only
 // the first call in a process takes effect; returns false if an earlier call used another
-// seed. Throws ceilplan::InputError on seed 0.
+// seed. Throws ceilplan::InputError on seed 0 (checkSeed).
 bool seedOmpl(std::uint32_t seed);
+
+// Throws ceilplan::InputError for seed 0, which OMPL refuses; every seed ceilplan takes (--seed,
+// a mission's `seed`, Python's seed) is checked the same way.
+void checkSeed(std::uint32_t seed);
 
 }  // namespace ceilplan::planner

@@ -11,6 +11,10 @@ namespace ceilplan::planner {
 // query's lattice A* searches one route and affords a finer lattice (docs/planner.md).
 inline constexpr double kTourLatticeSpacing_m = 0.4;
 inline constexpr double kQueryLatticeSpacing_m = 0.2;
+// The spacings the lattice planners accept (--lattice-spacing-m, Python's lattice_spacing_m):
+// finer than a centimetre is finer than any map's voxels, coarser than 2 m misses doorways.
+inline constexpr double kMinLatticeSpacing_m = 0.01;
+inline constexpr double kMaxLatticeSpacing_m = 2.0;
 
 struct LatticeSettings {
   // Between lattice nodes; rounded to a whole number of voxels (at least one), so nodes sit on
@@ -20,7 +24,8 @@ struct LatticeSettings {
   std::size_t max_expansions = 50'000'000;  // the lattice A* gives up beyond
   std::function<void(double)> progress;     // share of the roadmap's build done, from the calling thread
 
-  // Throws ceilplan::InputError for a spacing that is not a positive number or fewer than one worker.
+  // Throws ceilplan::InputError for a spacing outside [kMinLatticeSpacing_m, kMaxLatticeSpacing_m]
+  // or fewer than one worker.
   void validate() const;
 };
 
