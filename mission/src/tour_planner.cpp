@@ -2,6 +2,7 @@
 
 #include "ceilplan/mission/contact_points.hpp"
 #include "ceilplan/mission/duty_projection.hpp"
+#include "ceilplan/mission/route_planning.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/core/parallel_for.hpp"
@@ -318,7 +319,9 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
   const int attempts =
       planner::plannerInfo(options.planner).deterministic() ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
   for (int attempt = 0; attempt < attempts; ++attempt) {
-    if (attempt > 0) request.time_limit_s = kRetryTimeFactors[attempt - 1] * options.time_limit_s;
+    if (attempt > 0)
+      request.time_limit_s =
+          std::min(kRetryTimeFactors[attempt - 1] * options.time_limit_s, planner::PlanRequest::kMaxTimeLimit_s);
     try {
       return leg.planner->plan(request).waypoints;
     } catch (const ceilplan::NoPathError& e) {
@@ -874,6 +877,13 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   if (options.all_pairs_max_places < 2 || options.neighbours < 1 || options.split_points < 1 || options.order_kicks < 0)
     throw InputError("tour options: all_pairs_max_places must be at least 2, neighbours and split_points at least 1, "
                      "order_kicks at least 0");
+  // The duty projection's times and counts, under the same rules as a route comparison's.
+  DutyOptions duty;
+  duty.idle_min = options.idle_min;
+  duty.charge_max_min = options.charge_max_min;
+  duty.missions_per_day = options.missions_per_day.value_or(kDefaultToursPerDay);
+  duty.days = options.days;
+  duty.validate();
   // Home as the planner would check a start (the same rules in both modes).
   if (!context.baseRules().isStateValid(mission.home_m))
     throw ceilplan::InputError(mission.name() + ": home " + formatPoint(mission.home_m) +
