@@ -143,7 +143,7 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
   command->add_option("--free-standoff-max-m", a->options.free_standoff_max_m,
                       "free mode: farthest viewpoint from a target (a conventional planner inspects from where its "
                       "standoff lets it, with a zoom lens)")
-      ->capture_default_str()->check(positiveFinite());
+      ->capture_default_str()->check(positiveFinite() & atMost(mission::InspectionTarget::kMaxStandoff_m));
   command->add_option("--autopilot", a->autopilot, "mission files for px4 or ardupilot")
       ->capture_default_str()->check(CLI::IsMember({"px4", "ardupilot"}));
   command->add_flag("--search-every-leg", [a](std::int64_t) { a->options.straight_when_clear = false; },

@@ -102,7 +102,7 @@ std::vector<mission::InspectionTarget> readTargets(const Section& root, bool req
     if (!names.insert(target.name).second) node.fail("duplicate target name '" + target.name + "' at '" + path + "'");
     target.point_m = node.vector3("point", kCoordinateM);
     target.dwell_s = node.number("dwell_s", Range::closed(0.0, 3600.0, "s"));
-    const std::vector<double> standoff = node.numbers("standoff_m", 2, Range::closed(0.0, 50.0, "m"));
+    const std::vector<double> standoff = node.numbers("standoff_m", 2, Range::closed(0.0, mission::InspectionTarget::kMaxStandoff_m, "m"));
     target.standoff_min_m = standoff[0];
     target.standoff_max_m = standoff[1];
     try {

@@ -877,6 +877,9 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   if (options.all_pairs_max_places < 2 || options.neighbours < 1 || options.split_points < 1 || options.order_kicks < 0)
     throw InputError("tour options: all_pairs_max_places must be at least 2, neighbours and split_points at least 1, "
                      "order_kicks at least 0");
+  if (!(options.free_standoff_max_m > 0.0 && options.free_standoff_max_m <= InspectionTarget::kMaxStandoff_m))
+    throw InputError("tour options: free_standoff_max_m must be in (0, " + formatNumber(InspectionTarget::kMaxStandoff_m) +
+                     "] m, got " + formatNumber(options.free_standoff_max_m));
   // The duty projection's times and counts, under the same rules as a route comparison's.
   DutyOptions duty;
   duty.idle_min = options.idle_min;

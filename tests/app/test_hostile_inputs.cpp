@@ -309,6 +309,8 @@ std::vector<Case> flagCases() {
       {"tour_idle_huge", kTour + " --idle-min 1e308", 2, "--idle-min: must be at most 1440", Out::Absent, {{"mission.yaml", kMission}}},
       {"tour_charge_huge", kTour + " --charge-max-min 1e308", 2, "--charge-max-min: must be at most 1440", Out::Absent,
        {{"mission.yaml", kMission}}},
+      {"tour_free_standoff_huge", kTour + " --free-standoff-max-m 1e308", 2, "--free-standoff-max-m: must be at most 50",
+       Out::Absent, {{"mission.yaml", kMission}}},
       {"tour_standoff_negative", kTour + " --standoff-m -1", 2, "--standoff-m", Out::Absent, {{"mission.yaml", kMission}}},
       {"tour_days_huge", kTour + " --days 1e9", 2, "--days", Out::Absent, {{"mission.yaml", kMission}}},
       {"current_gap_nan", "current --gap-m nan --json {out}", 2, "ceiling gap nan"},
