@@ -9,8 +9,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <functional>
+#include <limits>
 #include <string>
 
 namespace ceilplan::app {
@@ -60,12 +64,18 @@ inline CLI::Validator socFraction() {
   return numberWhere([](double v) { return v > 0.0 && v <= 1.0; }, "a state of charge in (0, 1]", "SOC in (0, 1]");
 }
 
-// Digits only: a whole number >= 0, for unsigned flags (their own range checks follow).
+// Digits only: a whole number >= 0 that fits a 64-bit unsigned flag (CLI11 would clamp 2^64 to
+// 2^64 - 1 without a word); the flag's own range checks follow.
 inline CLI::Validator wholeNumber() {
   return CLI::Validator(
       [](std::string& input) -> std::string {
         if (input.empty() || !std::all_of(input.begin(), input.end(), [](unsigned char c) { return std::isdigit(c); }))
           return "must be a whole number >= 0, got '" + input + "'";
+        errno = 0;
+        std::strtoull(input.c_str(), nullptr, 10);
+        if (errno == ERANGE)
+          return "must be a whole number in [0, " + std::to_string(std::numeric_limits<std::uint64_t>::max()) +
+                 "], got " + input;
         return {};
       },
       "WHOLE NUMBER");

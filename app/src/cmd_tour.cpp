@@ -13,6 +13,7 @@
 #include "ceilplan/io/provenance.hpp"
 #include "ceilplan/io/tour_files.hpp"
 #include "ceilplan/io/unknown_space_report.hpp"
+#include "ceilplan/mission/route_planning.hpp"
 #include "ceilplan/mission/tour_planner.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
@@ -116,8 +117,8 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
       ->capture_default_str()
       ->check(CLI::IsMember(planner::plannerNames()));
   command->add_option("--time-limit-s", a->options.time_limit_s,
-                      "pairwise planners: search time per leg")
-      ->capture_default_str()->check(positiveFinite());
+                      "pairwise planners: search time per leg, up to a day")
+      ->capture_default_str()->check(positiveFinite() & atMost(planner::PlanRequest::kMaxTimeLimit_s));
   command->add_option("--lattice-spacing-m", a->options.lattice_spacing_m, "roadmap and lattice: node spacing")
       ->capture_default_str()->check(finiteRange(planner::kMinLatticeSpacing_m, planner::kMaxLatticeSpacing_m));
   command->add_option("--workers", a->options.workers, "threads planning legs")->capture_default_str()->check(CLI::Range(1, 64));
@@ -146,7 +147,7 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
   command->add_option("--free-standoff-max-m", a->options.free_standoff_max_m,
                       "free mode: farthest viewpoint from a target (a conventional planner inspects from where its "
                       "standoff lets it, with a zoom lens)")
-      ->capture_default_str()->check(positiveFinite());
+      ->capture_default_str()->check(positiveFinite() & atMost(mission::InspectionTarget::kMaxStandoff_m));
   command->add_option("--autopilot", a->autopilot, "mission files for px4 or ardupilot")
       ->capture_default_str()->check(CLI::IsMember({"px4", "ardupilot"}));
   command->add_flag("--search-every-leg", [a](std::int64_t) { a->options.straight_when_clear = false; },
@@ -157,11 +158,11 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                       "duty projection: tours a day (default: as many as fit in a day, at most 15)")
       ->check(CLI::Range(1, 1000));
   command->add_option("--days", a->options.days, "duty projection: days")->capture_default_str()->check(CLI::Range(1, 3650));
-  command->add_option("--idle-min", a->options.idle_min, "duty projection: idle after each tour")
-      ->capture_default_str()->check(finiteAtLeast(0.0));
+  command->add_option("--idle-min", a->options.idle_min, "duty projection: idle after each tour, up to a day")
+      ->capture_default_str()->check(finiteAtLeast(0.0) & atMost(mission::DutyOptions::kMaxMinutes));
   command->add_option("--charge-max-min", a->options.charge_max_min,
-                      "duty projection: longest charge back to the start SOC after each sortie")
-      ->capture_default_str()->check(positiveFinite());
+                      "duty projection: longest charge back to the start SOC after each sortie, up to a day")
+      ->capture_default_str()->check(positiveFinite() & atMost(mission::DutyOptions::kMaxMinutes));
   command->callback([a] { runTour(*a); });
 });
 

@@ -31,16 +31,18 @@ void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objec
         ->capture_default_str()
         ->check(finiteAtLeast(0.0));
   }
+  const double min_speed_m_s = planner::FlightSpeeds::kMinSpeed_m_s;
   command->add_option("--cruise-speed-m-s", a.speeds.cruise_m_s, "horizontal speed in free air")
-      ->capture_default_str()->check(positiveFinite());
+      ->capture_default_str()->check(finiteAtLeast(min_speed_m_s));
   command->add_option("--near-ceiling-speed-m-s", a.speeds.near_ceiling_m_s,
                       "horizontal speed when a rotor is within --near-ceiling-radii R of a ceiling")
-      ->capture_default_str()->check(positiveFinite());
+      ->capture_default_str()->check(finiteAtLeast(min_speed_m_s));
   command->add_option("--near-ceiling-radii", a.speeds.near_ceiling_gap_radii, "gap, in rotor radii, of the slow zone")
       ->capture_default_str()->check(positiveFinite());
-  command->add_option("--climb-m-s", a.speeds.climb_m_s, "climb rate limit")->capture_default_str()->check(positiveFinite());
+  command->add_option("--climb-m-s", a.speeds.climb_m_s, "climb rate limit")
+      ->capture_default_str()->check(finiteAtLeast(min_speed_m_s));
   command->add_option("--descent-m-s", a.speeds.descent_m_s, "descent rate limit")
-      ->capture_default_str()->check(positiveFinite());
+      ->capture_default_str()->check(finiteAtLeast(min_speed_m_s));
   command->add_option("--min-ceiling-gap-m", a.min_ceiling_gap_m, "rotor plane to ceiling, never less")
       ->capture_default_str()->check(nonNegativeFinite());
   command->add_option("--standoff-m", a.standoff_m, "free mode: the conventional distance from every structure, kept where it fits")
@@ -52,7 +54,8 @@ void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objec
 void addSearchOptions(CLI::App* command, SearchArguments& a) {
   command->add_option("--planner", a.planner, "planner (default " + planner::defaultPlannerName() + ")")
       ->check(CLI::IsMember(planner::plannerNames()));
-  command->add_option("--time-limit-s", a.time_limit_s, "search time per plan")->capture_default_str()->check(positiveFinite());
+  command->add_option("--time-limit-s", a.time_limit_s, "search time per plan, up to a day")
+      ->capture_default_str()->check(positiveFinite() & atMost(planner::PlanRequest::kMaxTimeLimit_s));
   command->add_option("--seed", a.seed, "random seed (> 0)")->capture_default_str()->check(CLI::Range(1u, 4294967295u));
   command->add_option("--band-fraction", a.band_fraction, "share of samples aimed under ceilings")
       ->capture_default_str()->check(finiteRange(0.0, 1.0));

@@ -20,6 +20,19 @@ std::vector<std::string> flagNames(const CLI::App& command) {
 
 }  // namespace
 
+CLI::Validator configFileCheck() {
+  return CLI::Validator(
+      [](std::string& file) -> std::string {
+        try {
+          io::requireFlagFile(file);
+        } catch (const InputError& e) {
+          return e.what();
+        }
+        return {};
+      },
+      "FILE");
+}
+
 // ceilplan offers no flag that writes a config file (CLI11's config_to_str): nothing to format.
 std::string YamlConfig::to_config(const CLI::App*, bool, bool, std::string) const { return {}; }
 

@@ -15,6 +15,9 @@
 
 namespace ceilplan::app {
 
+// Checks the `--config` file (io::requireFlagFile) before CLI11 opens it: opening a FIFO blocks.
+CLI::Validator configFileCheck();
+
 class YamlConfig : public CLI::Config {
  public:
   explicit YamlConfig(const CLI::App& root) : root_(&root) {}

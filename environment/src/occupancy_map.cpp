@@ -3,6 +3,7 @@
 #include "generated_tree.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/input_file.hpp"
 
 #include <octomap/ColorOcTree.h>
 #include <octomap/OcTreeStamped.h>
@@ -10,7 +11,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -149,6 +149,15 @@ void checkNodeStream(const std::string& bytes, const Header& header, const std::
   if (nodes != header.size)
     fail(name, "corrupt OctoMap file: the header promises " + std::to_string(header.size) + " nodes, the data holds " +
                    std::to_string(nodes));
+  // OctoMap stops reading where the tree ends: whatever follows would be dropped unseen.
+  if (position != bytes.size()) {
+    const std::string rest = bytes.substr(position, 64);
+    if (rest.rfind(kBinaryHeader, 0) == 0 || rest.rfind(kFullHeader, 0) == 0)
+      fail(name, "holds a second OctoMap tree after the first; a map file holds one tree, so split the file");
+    const std::size_t extra = bytes.size() - position;
+    fail(name, "corrupt OctoMap file: " + std::to_string(extra) + (extra == 1 ? " byte follows" : " bytes follow") +
+                   " the end of the tree; is the file damaged, or two files joined?");
+  }
 }
 
 // Debian's OctoMap is built with its debug messages on ("Reading binary octree type
@@ -197,7 +206,10 @@ OccupancyMap OccupancyMap::read(std::istream& in, const std::string& name) {
   std::ostringstream buffer;
   buffer << in.rdbuf();
   if (in.bad()) fail(name, "cannot read the file");
-  const std::string bytes = buffer.str();
+  return parse(buffer.str(), name);
+}
+
+OccupancyMap OccupancyMap::parse(const std::string& bytes, const std::string& name) {
   if (bytes.empty()) fail(name, "not an OctoMap file (it is empty)");
   const Header header = parseHeader(bytes, name);
   checkNodeStream(bytes, header, name);
@@ -229,18 +241,7 @@ OccupancyMap OccupancyMap::read(std::istream& in, const std::string& name) {
 }
 
 OccupancyMap OccupancyMap::load(const std::filesystem::path& file) {
-  const std::string name = file.string();
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec))
-    throw InputFileError(name + ": no such map file", std::errc::no_such_file_or_directory);
-  if (std::filesystem::is_directory(file, ec))
-    throw InputFileError(name + ": is a directory, not a map file", std::errc::is_a_directory);
-  // A device or a pipe would be read without end (/dev/zero) or block (a FIFO nobody writes).
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw InputFileError(name + ": is not a regular file, not a map file", std::errc::invalid_argument);
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputFileError(name + ": cannot open the map file for reading", std::errc::permission_denied);
-  return read(in, name);
+  return parse(readInputFile(file, "map file", kMaxFileBytes), file.string());
 }
 
 }  // namespace ceilplan::environment

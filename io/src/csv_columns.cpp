@@ -3,12 +3,11 @@
 #include "ceilplan/core/printable_text.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/input_file.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <limits>
 
@@ -76,16 +75,8 @@ std::string columnList(const std::vector<std::string>& names) {
 CsvColumns CsvColumns::read(const std::filesystem::path& path, const std::vector<std::string>& required,
                             const std::vector<std::string>& optional, const std::vector<std::string>& none_is_infinite) {
   const std::string shown = printableText(path.string(), 256);
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw ceilplan::InputFileError(shown + " is a directory; give a CSV file", std::errc::is_a_directory);
+  requireInputFile(path, "CSV file");
   std::ifstream input(path, std::ios::binary);
-  if (!input) {
-    const int error = errno;
-    throw ceilplan::InputFileError("cannot open " + shown + ": " + std::strerror(error) +
-                                       "; check the path and permissions",
-                                   error ? static_cast<std::errc>(error) : std::errc::io_error);
-  }
   return parse(input, shown, required, optional, none_is_infinite);
 }
 

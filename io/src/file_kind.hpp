@@ -2,11 +2,11 @@
 // Telling file kinds apart by extension before a reader runs (private to the io module).
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/input_file.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 namespace ceilplan::io::detail {
@@ -30,7 +30,7 @@ std::string joined(const List& extensions) {
 }
 
 // Refuses (ceilplan::InputError naming the file) an extension of the other kind, one not in
-// `accepted`, or a file that is missing or unreadable; returns the lower-case extension.
+// `accepted`, or a file that ceilplan::requireInputFile refuses; returns the lower-case extension.
 // `kind` and `other_kind` name the kinds in messages ("mesh", "point-cloud").
 template <typename List, typename OtherList>
 std::string requireReadableFileOfKind(const std::filesystem::path& file, const List& accepted, const OtherList& other_kind_only,
@@ -41,8 +41,7 @@ std::string requireReadableFileOfKind(const std::filesystem::path& file, const L
     throw ceilplan::InputError(name + ": " + extension + " is a " + other_kind + " format, not a " + kind);
   if (!listed(accepted, extension))
     throw ceilplan::InputError(name + ": unknown " + kind + " format '" + extension + "' (read: " + joined(accepted) + ")");
-  if (!std::filesystem::is_regular_file(file) || !std::ifstream(file))
-    throw ceilplan::InputError(name + ": no such file, or it cannot be read");
+  requireInputFile(file, kind + " file");
   return extension;
 }
 

@@ -1,8 +1,11 @@
 #include "ceilplan/io/flag_file.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/input_file.hpp"
 #include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/core/spelling.hpp"
+
+#include "yaml_reader.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -25,19 +28,33 @@ void requireFlag(const std::string& name, const YAML::Node& key, const std::vect
                    didYouMean(name, known));
 }
 
+// A flag and the line of the key that gave it.
+struct Given {
+  std::string flag;
+  int line;
+};
+
 void collect(const YAML::Node& map, const std::vector<std::string>& known, const std::string& command,
-             std::vector<FlagFileEntry>& entries) {
+             std::vector<FlagFileEntry>& entries, std::vector<Given>& given) {
   for (const auto& entry : map) {
+    const int line = entry.first.Mark().line + 1;
     if (!entry.first.IsScalar())
-      throw InputError("config file line " + std::to_string(entry.first.Mark().line + 1) +
-                       ": a key must be a flag name");
+      throw InputError("config file line " + std::to_string(line) + ": a key must be a flag name");
     const std::string name = flagName(entry.first.Scalar());  // known (printable) once requireFlag passes
     const YAML::Node& value = entry.second;
     if (value.IsMap() && !command.empty() && name == command) {
-      collect(value, known, command, entries);  // a section named after the chosen command
+      collect(value, known, command, entries, given);  // a section named after the chosen command
       continue;
     }
     requireFlag(name, entry.first, known, command);
+    // yaml-cpp keeps both of a repeated key, and CLI11 would let the last one win; 'time-limit-s' and
+    // 'time_limit_s' are one flag. Either way one value would be dropped without a word.
+    const auto earlier = std::find_if(given.begin(), given.end(), [&](const Given& g) { return g.flag == name; });
+    if (earlier != given.end())
+      throw InputError("config file line " + std::to_string(line) + ": '" + printableText(entry.first.Scalar(), 40) +
+                       "' gives flag '" + name + "' again (first on line " + std::to_string(earlier->line) +
+                       "); give each flag once, a list for a repeated flag");
+    given.push_back({name, line});
     if (value.IsMap()) throw InputError("config key '" + name + "' holds a map; give a value or a list");
     FlagFileEntry flag{name, {}};
     if (value.IsSequence()) {
@@ -56,14 +73,24 @@ void collect(const YAML::Node& map, const std::vector<std::string>& known, const
 
 }  // namespace
 
+void requireFlagFile(const std::filesystem::path& file) {
+  requireInputFile(file, "config file", detail::kMaxYamlFileBytes);
+}
+
 std::vector<FlagFileEntry> readFlagFile(std::istream& input, const std::vector<std::string>& known_flags,
                                         const std::string& command) {
   std::vector<FlagFileEntry> entries;
   try {
-    const YAML::Node root = YAML::Load(input);
-    if (root.IsNull()) return entries;
+    const std::vector<YAML::Node> documents = YAML::LoadAll(input);
+    // yaml-cpp's Load reads the first document only: a second one would be ignored silently.
+    if (documents.size() > 1)
+      throw InputError("config file holds " + std::to_string(documents.size()) +
+                       " YAML documents (split by '---'); give one map of flag names to values");
+    if (documents.empty() || documents.front().IsNull()) return entries;
+    const YAML::Node& root = documents.front();
     if (!root.IsMap()) throw InputError("config file must be a YAML map of flag names to values");
-    collect(root, known_flags, command, entries);
+    std::vector<Given> given;
+    collect(root, known_flags, command, entries, given);
   } catch (const YAML::Exception& e) {
     std::ostringstream message;
     message << "malformed YAML config at line " << e.mark.line + 1 << ", column " << e.mark.column + 1 << ": " << e.msg;

@@ -2,10 +2,12 @@
 
 #include "file_kind.hpp"
 #include "open3d_log.hpp"
+#include "ply_counts.hpp"
 
 #include <open3d/geometry/TriangleMesh.h>
 #include <open3d/io/TriangleMeshIO.h>
 
+#include <algorithm>
 #include <array>
 
 namespace ceilplan::io {
@@ -21,6 +23,8 @@ std::string meshExtensions() { return detail::joined(kMeshExtensions); }
 environment::TriangleMesh readTriangleMesh(const std::filesystem::path& file) {
   const std::string name = file.string();
   detail::requireReadableFileOfKind(file, kMeshExtensions, kCloudOnlyExtensions, "mesh", "point-cloud");
+
+  if (detail::lowerExtension(file) == ".ply") detail::checkPlyCounts(file);
 
   open3d::geometry::TriangleMesh mesh;
   if (const auto failure = detail::failureOf([&] { return open3d::io::ReadTriangleMesh(name, mesh, open3d::io::ReadTriangleMeshOptions{}); }))
@@ -39,6 +43,18 @@ environment::TriangleMesh readTriangleMesh(const std::filesystem::path& file) {
     result.triangles.push_back({static_cast<std::size_t>(triangle[0]), static_cast<std::size_t>(triangle[1]),
                                 static_cast<std::size_t>(triangle[2])});
   }
+  // A mesh of zero-area faces (collinear or repeated corners) has no surface to voxelise: the
+  // map would come out empty or wrong, so say what the file holds.
+  const auto hasArea = [&](const std::array<std::size_t, 3>& t) {
+    const Eigen::Vector3d& a = result.vertices_m[t[0]];
+    const Eigen::Vector3d edge1 = result.vertices_m[t[1]] - a, edge2 = result.vertices_m[t[2]] - a;
+    const double scale = std::max(edge1.squaredNorm(), edge2.squaredNorm());
+    return edge1.cross(edge2).norm() > 1e-12 * scale;
+  };
+  if (std::none_of(result.triangles.begin(), result.triangles.end(), hasArea))
+    throw ceilplan::InputError(name + ": all " + std::to_string(result.triangles.size()) +
+                               " triangles of the mesh have zero area (collinear or repeated corners); export the "
+                               "mesh again with its faces");
   return result;
 }
 

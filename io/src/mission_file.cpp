@@ -2,6 +2,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/input_file.hpp"
 #include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/io/coverage_keys.hpp"
 #include "ceilplan/io/point_text.hpp"
@@ -69,8 +70,10 @@ mission::GeodeticOrigin readOrigin(const Section& node) {
 mission::MissionSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
   node.allowOnly({"cruise_m_s", "inspection_m_s", "climb_m_s", "descent_m_s"});
   mission::MissionSpeeds speeds;
-  const Range horizontal = Range::above(0.0, max_speed_m_s, "m/s (the vehicle's max_speed_m_s)");
-  const Range vertical = Range::above(0.0, std::min(planner::FlightSpeeds::kMaxVerticalSpeed_m_s, max_speed_m_s), "m/s");
+  const double min_m_s = planner::FlightSpeeds::kMinSpeed_m_s;
+  const Range horizontal = Range::closed(min_m_s, max_speed_m_s, "m/s (the vehicle's max_speed_m_s)");
+  const Range vertical =
+      Range::closed(min_m_s, std::min(planner::FlightSpeeds::kMaxVerticalSpeed_m_s, max_speed_m_s), "m/s");
   speeds.cruise_m_s = node.number("cruise_m_s", horizontal, speeds.cruise_m_s);
   speeds.inspection_m_s = node.number("inspection_m_s", horizontal, speeds.inspection_m_s);
   speeds.climb_m_s = node.number("climb_m_s", vertical, speeds.climb_m_s);
@@ -99,7 +102,7 @@ std::vector<mission::InspectionTarget> readTargets(const Section& root, bool req
     if (!names.insert(target.name).second) node.fail("duplicate target name '" + target.name + "' at '" + path + "'");
     target.point_m = node.vector3("point", kCoordinateM);
     target.dwell_s = node.number("dwell_s", Range::closed(0.0, 3600.0, "s"));
-    const std::vector<double> standoff = node.numbers("standoff_m", 2, Range::closed(0.0, 50.0, "m"));
+    const std::vector<double> standoff = node.numbers("standoff_m", 2, Range::closed(0.0, mission::InspectionTarget::kMaxStandoff_m, "m"));
     target.standoff_min_m = standoff[0];
     target.standoff_max_m = standoff[1];
     try {
@@ -117,8 +120,13 @@ std::filesystem::path existingFile(const Section& root, const std::string& key) 
   std::error_code ec;
   const std::string named = "'" + key + "' names " + printableText(path.string(), 256);
   if (std::filesystem::is_directory(path, ec)) root.fail(named + ", which is a directory, not a file");
-  if (!std::filesystem::is_regular_file(path, ec))
+  if (!std::filesystem::exists(path, ec))
     root.fail(named + ", which does not exist (paths are relative to the mission file)");
+  try {
+    requireInputFile(path, "file");  // a FIFO or a device, which its reader would wait on or read without end
+  } catch (const InputError& e) {
+    root.fail("'" + key + "' names " + e.what());
+  }
   return path;
 }
 

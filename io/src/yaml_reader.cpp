@@ -2,15 +2,13 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/input_file.hpp"
 #include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/core/spelling.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
-#include <system_error>
 
 namespace ceilplan::io::detail {
 namespace {
@@ -59,26 +57,21 @@ std::string kindName(FileKind kind) {
 }
 
 YamlFile::YamlFile(const std::filesystem::path& file, FileKind kind) : path_(file), kind_(kind) {
-  std::error_code ec;
-  const auto fileFail = [this](const std::string& problem, std::errc reason) {
-    throw InputFileError(path_.string() + ": " + problem, reason);
-  };
-  if (!std::filesystem::exists(file, ec)) fileFail("no such " + kindName(kind), std::errc::no_such_file_or_directory);
-  if (std::filesystem::is_directory(file, ec))
-    fileFail("is a directory, not a " + kindName(kind), std::errc::is_a_directory);
-  if (!std::filesystem::is_regular_file(file, ec)) fileFail("is not a regular file", std::errc::invalid_argument);
-  std::ifstream in(file, std::ios::binary);
-  if (!in) fileFail("cannot be read", std::errc::permission_denied);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();  // an empty file leaves `text` empty: refused below, as not a map
-  const std::string text = bytes.str();
+  // An empty file leaves `text` empty: refused below, as not a map.
+  const std::string text = readInputFile(file, kindName(kind), kMaxYamlFileBytes);
   // A map or a program given by mistake: say so, rather than quote the parser on its bytes.
   if (text.find('\0') != std::string::npos) fail("holds binary data, not YAML text; is it a " + kindName(kind) + "?");
+  std::vector<YAML::Node> documents;
   try {
-    root_ = YAML::Load(text);
+    documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
     fail("malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " + printableText(e.msg));
   }
+  // yaml-cpp's Load reads the first document only: a second one would be ignored silently.
+  if (documents.size() > 1)
+    fail("holds " + std::to_string(documents.size()) + " YAML documents (split by '---'); a " + kindName(kind) +
+         " is one document");
+  if (!documents.empty()) root_ = documents.front();
   if (!root_.IsMap()) fail("a " + kindName(kind) + " must be a YAML map of keys (docs/missions.md)");
 }
 

@@ -8,12 +8,16 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace ceilplan::io::detail {
+
+// The largest mission, vehicle, battery or --config file read: 64 MiB, far above any real one.
+inline constexpr std::uintmax_t kMaxYamlFileBytes = std::uintmax_t{64} << 20;
 
 // A closed, open or half-open interval of physical values, with the unit for messages.
 struct Range {

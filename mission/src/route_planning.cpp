@@ -76,8 +76,24 @@ RouteCheck checkRoute(const PlanningContext& context, const std::vector<Eigen::V
   return check;
 }
 
+void DutyOptions::validate() const {
+  const auto requireMinutes = [](double minutes, const char* name, bool zero_allowed) {
+    if (!(std::isfinite(minutes) && minutes <= kMaxMinutes && (zero_allowed ? minutes >= 0.0 : minutes > 0.0)))
+      throw InputError(std::string("duty: ") + name + " must be a finite number of minutes in " +
+                       (zero_allowed ? "[0, " : "(0, ") + formatNumber(kMaxMinutes) + "] (a day), got " +
+                       formatNumber(minutes));
+  };
+  requireMinutes(flight_min, "flight_min", true);
+  requireMinutes(idle_min, "idle_min", true);
+  requireMinutes(charge_max_min, "charge_max_min", false);
+  if (missions_per_day < 1 || missions_per_day > 1000)
+    throw InputError("duty: missions_per_day must be in [1, 1000], got " + std::to_string(missions_per_day));
+  if (days < 1 || days > 3650) throw InputError("duty: days must be in [1, 3650], got " + std::to_string(days));
+}
+
 RouteComparison compareRoutes(const PlanningContext& context, const planner::PlanRequest& request,
                               const DutyOptions& duty) {
+  duty.validate();
   RouteComparison comparison;
   const auto withMode = [](const std::exception& e, FlightMode mode) { return flightModeName(mode) + " mode: " + e.what(); };
   try {
@@ -94,7 +110,12 @@ RouteComparison compareRoutes(const PlanningContext& context, const planner::Pla
   }
   // Both missions do the same work: the route, as many times as the slower plan fits.
   const double slower_s = std::max(comparison.ceiling.evaluation.duration_s, comparison.free.evaluation.duration_s);
-  comparison.repeats = std::max(1, static_cast<int>(std::floor(60.0 * duty.flight_min / slower_s)));
+  const double repeats = std::floor(60.0 * duty.flight_min / slower_s);
+  if (repeats > DutyOptions::kMaxRepeats)
+    throw InputError("a flight time of " + formatNumber(duty.flight_min) + " min per mission would fly the " +
+                     formatNumber(slower_s, 3) + " s route " + formatNumber(repeats) + " times, more than " +
+                     std::to_string(DutyOptions::kMaxRepeats) + "; give a shorter flight time");
+  comparison.repeats = std::max(1, static_cast<int>(repeats));
   comparison.ceiling_duty = projectDuty(context, comparison.ceiling, comparison.repeats, duty);
   comparison.free_duty = projectDuty(context, comparison.free, comparison.repeats, duty);
   return comparison;

@@ -2,6 +2,7 @@
 
 #include "ceilplan/mission/contact_points.hpp"
 #include "ceilplan/mission/duty_projection.hpp"
+#include "ceilplan/mission/route_planning.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/core/parallel_for.hpp"
@@ -318,7 +319,9 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
   const int attempts =
       planner::plannerInfo(options.planner).deterministic() ? 1 : static_cast<int>(std::size(kRetryTimeFactors)) + 1;
   for (int attempt = 0; attempt < attempts; ++attempt) {
-    if (attempt > 0) request.time_limit_s = kRetryTimeFactors[attempt - 1] * options.time_limit_s;
+    if (attempt > 0)
+      request.time_limit_s =
+          std::min(kRetryTimeFactors[attempt - 1] * options.time_limit_s, planner::PlanRequest::kMaxTimeLimit_s);
     try {
       return leg.planner->plan(request).waypoints;
     } catch (const ceilplan::NoPathError& e) {
@@ -878,6 +881,16 @@ void TourOptions::validate() const {
   // Unknown names, a temperature out of the models' range: refused by what will use them.
   planner::plannerInfo(planner);
   battery::makeAgeingModel(ageing_model, ageingModelOptions(temperature_c));
+  if (!(free_standoff_max_m > 0.0 && free_standoff_max_m <= InspectionTarget::kMaxStandoff_m))
+    throw InputError("tour options: free_standoff_max_m must be in (0, " + formatNumber(InspectionTarget::kMaxStandoff_m) +
+                     "] m, got " + formatNumber(free_standoff_max_m));
+  // The duty projection's times and counts, under the same rules as a route comparison's.
+  DutyOptions duty;
+  duty.idle_min = idle_min;
+  duty.charge_max_min = charge_max_min;
+  duty.missions_per_day = missions_per_day.value_or(kDefaultToursPerDay);
+  duty.days = days;
+  duty.validate();
 }
 
 TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,

@@ -142,8 +142,9 @@ void InspectionTarget::validate() const {
   if (name.empty()) throw ceilplan::InputError("a target needs a name");
   if (!point_m.allFinite()) throw ceilplan::InputError(what + ": point must be finite, got " + formatPoint(point_m));
   if (!(std::isfinite(standoff_min_m) && std::isfinite(standoff_max_m) && standoff_min_m >= 0.0 &&
-        standoff_max_m > 0.0 && standoff_min_m <= standoff_max_m))
-    throw ceilplan::InputError(what + ": standoff range must be 0 <= min <= max, max > 0, got [" +
+        standoff_max_m > 0.0 && standoff_min_m <= standoff_max_m && standoff_max_m <= kMaxStandoff_m))
+    throw ceilplan::InputError(what + ": standoff range must be 0 <= min <= max, 0 < max <= " +
+                                formatNumber(kMaxStandoff_m) + ", got [" +
                                 formatNumber(standoff_min_m) + ", " + formatNumber(standoff_max_m) + "] m");
   if (!std::isfinite(dwell_s) || dwell_s < 0.0)
     throw ceilplan::InputError(what + ": dwell time must be finite and non-negative, got " + formatNumber(dwell_s) + " s");

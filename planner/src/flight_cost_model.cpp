@@ -16,20 +16,21 @@ namespace {
 // The default integration step is never finer than this.
 constexpr double kFinestDefaultStepM = 0.05;
 
-void requirePositive(double value, const char* name) {
-  if (!(std::isfinite(value) && value > 0.0))
-    throw ceilplan::InputError(std::string("speeds: ") + name + " must be a positive finite number, got " +
+void requireAtLeast(double value, double minimum, const char* name) {
+  if (!(std::isfinite(value) && value >= minimum && value > 0.0))
+    throw ceilplan::InputError(std::string("speeds: ") + name + " must be a finite number " +
+                                (minimum > 0.0 ? ">= " + formatNumber(minimum) : std::string("> 0")) + ", got " +
                                 formatNumber(value));
 }
 
 }  // namespace
 
 void FlightSpeeds::validate(double max_speed_m_s) const {
-  requirePositive(cruise_m_s, "cruise_m_s");
-  requirePositive(near_ceiling_m_s, "near_ceiling_m_s");
-  requirePositive(near_ceiling_gap_radii, "near_ceiling_gap_radii");
-  requirePositive(climb_m_s, "climb_m_s");
-  requirePositive(descent_m_s, "descent_m_s");
+  requireAtLeast(cruise_m_s, kMinSpeed_m_s, "cruise_m_s");
+  requireAtLeast(near_ceiling_m_s, kMinSpeed_m_s, "near_ceiling_m_s");
+  requireAtLeast(near_ceiling_gap_radii, 0.0, "near_ceiling_gap_radii");
+  requireAtLeast(climb_m_s, kMinSpeed_m_s, "climb_m_s");
+  requireAtLeast(descent_m_s, kMinSpeed_m_s, "descent_m_s");
   if (cruise_m_s > max_speed_m_s || near_ceiling_m_s > max_speed_m_s)
     throw ceilplan::InputError("speeds: horizontal speeds must not exceed the vehicle's max_speed_m_s (" +
                                 formatNumber(max_speed_m_s) + " m/s)");

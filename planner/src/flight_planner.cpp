@@ -99,8 +99,10 @@ std::vector<Eigen::Vector3d> FlightPlanner::postProcess(const std::vector<Eigen:
 
 PlanResult FlightPlanner::plan(const PlanRequest& request) const {
   const auto started = std::chrono::steady_clock::now();
-  if (!(std::isfinite(request.time_limit_s) && request.time_limit_s > 0.0))
-    throw ceilplan::InputError("time limit must be a positive number of seconds");
+  if (!(request.time_limit_s > 0.0 && request.time_limit_s <= PlanRequest::kMaxTimeLimit_s))
+    throw ceilplan::InputError("time limit must be a number of seconds in (0, " +
+                                formatNumber(PlanRequest::kMaxTimeLimit_s) + "], got " +
+                                formatNumber(request.time_limit_s));
   if (!(request.band_fraction >= 0.0 && request.band_fraction <= 1.0))
     throw ceilplan::InputError("band fraction must be a share in [0, 1], got " + formatNumber(request.band_fraction));
   request.lattice.validate();  // whichever planner: the same request is refused by every front end

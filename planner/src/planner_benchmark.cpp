@@ -123,8 +123,9 @@ void PlannerBenchmarkOptions::validate() const {
   if (planners.empty()) throw InputError("give at least one planner name");
   for (const std::string& name : planners) plannerInfo(name);
   if (runs < 1) throw InputError("a benchmark needs at least one run per planner");
-  if (!(std::isfinite(time_limit_s) && time_limit_s > 0.0))
-    throw InputError("a run's time limit must be a positive number of seconds, got " + formatNumber(time_limit_s));
+  if (!(time_limit_s > 0.0 && time_limit_s <= PlanRequest::kMaxTimeLimit_s))
+    throw InputError("a run's time limit must be a number of seconds in (0, " +
+                     formatNumber(PlanRequest::kMaxTimeLimit_s) + "], got " + formatNumber(time_limit_s));
 }
 
 std::vector<PlannerBenchmarkRow> benchmarkPlanners(const FlightPlanner& planner, const Eigen::Vector3d& start_m,

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -88,6 +89,8 @@ void writeFixtures(const fs::path& dir) {
   writeRoomMaps(dir / "room.bt", dir / "color.ot");
   const std::string room = readWholeFile(dir / "room.bt");
   writeFile(dir / "truncated.bt", room.substr(0, room.size() / 2));
+  writeFile(dir / "trailing.bt", room + "\n\n");
+  writeFile(dir / "two_trees.bt", room + room);
   writeFile(dir / "empty.bt", "");
   std::mt19937 rng(12);  // fixed: the same junk every run
   std::string junk(4096, '\0');
@@ -105,9 +108,9 @@ void writeFixtures(const fs::path& dir) {
 // Built under a private name and renamed into place: parallel test processes race safely.
 const fs::path& fixtures() {
   static const fs::path dir = [] {
-    const fs::path final_dir = fs::path(CEILPLAN_TEST_TMP) / "hostile_fixtures_v1";
+    const fs::path final_dir = fs::path(CEILPLAN_TEST_TMP) / "hostile_fixtures_v2";
     if (fs::exists(final_dir / "mission.yaml")) return final_dir;
-    const fs::path staging = fs::path(CEILPLAN_TEST_TMP) / ("hostile_fixtures_v1.build" + std::to_string(::getpid()));
+    const fs::path staging = fs::path(CEILPLAN_TEST_TMP) / ("hostile_fixtures_v2.build" + std::to_string(::getpid()));
     fs::remove_all(staging);
     fs::create_directories(staging);
     // The mission names its map by absolute path: write it for the final directory.
@@ -117,6 +120,21 @@ const fs::path& fixtures() {
     fs::rename(staging, final_dir, ec);  // fails if another process was first: use its copy
     fs::remove_all(staging, ec);
     return final_dir;
+  }();
+  return dir;
+}
+
+// Named pipes, one per kind of input, that no one ever writes to: a reader that opens one blocks
+// for ever. Kept apart from {fx} and {dir}, whose snapshots read every file.
+const fs::path& fifos() {
+  static const fs::path dir = [] {
+    const fs::path fifo_dir = fs::path(CEILPLAN_TEST_TMP) / "hostile_fifos_v1";
+    fs::create_directories(fifo_dir);
+    for (const char* name : {"map.bt", "mission.yaml", "vehicle.yaml", "battery.yaml", "config.yaml", "in.csv",
+                             "points.xyz", "points.pcd", "mesh.stl", "origins.csv"})
+      if (::mkfifo((fifo_dir / name).c_str(), 0600) != 0 && errno != EEXIST)
+        throw std::runtime_error("cannot make the FIFO " + (fifo_dir / name).string());
+    return fifo_dir;
   }();
   return dir;
 }
@@ -193,6 +211,10 @@ std::vector<Case> mapCases() {
       {"random_bytes", "{fx}/random.bt", "not an OctoMap file", ""},
       {"directory", "{fx}/adir", "is a directory, not a map file", "File is actually a directory"},
       {"wrong_kind", "{fx}/vehicle.yaml", "not an OctoMap file", ""},
+      {"trailing_bytes", "{fx}/trailing.bt", "2 bytes follow the end of the tree", ""},
+      {"two_trees", "{fx}/two_trees.bt", "holds a second OctoMap tree after the first", ""},
+      {"device", "/dev/zero", "/dev/zero: is a device, not a map file; give a regular file", ""},
+      {"fifo", "{fifo}/map.bt", "map.bt: is a FIFO (named pipe), not a map file; give a regular file", ""},
   };
   for (const Bad& b : bad) {
     const std::string cli = b.cli_says.empty() ? b.says : b.cli_says;
@@ -205,6 +227,8 @@ std::vector<Case> mapCases() {
     rows.push_back({"map_" + b.name + "_bench_planners", map(kBench) + " --json {out}", 2, cli});
     const std::string tour_says = b.name == "missing"     ? "which does not exist"
                                   : b.name == "directory" ? "which is a directory, not a file"
+                                  : b.name == "device"    ? "'map' names /dev/zero: is a device, not a file"
+                                  : b.name == "fifo"      ? "map.bt: is a FIFO (named pipe), not a file"
                                                           : b.says;
     rows.push_back({"map_" + b.name + "_tour", kTour, 2, tour_says, Out::Absent,
                     {{"mission.yaml", replaced(kMission, "{fx}/room.bt", b.file)}}});
@@ -262,6 +286,20 @@ std::vector<Case> flagCases() {
       // other commands' numbers
       {"evaluate_temperature_nan", kEvaluate + " --temperature-c nan --json {out}", 2, "--temperature-c"},
       {"compare_flight_min_nan", kCompare + " --flight-min nan --out {out}", 2, "--flight-min"},
+      {"compare_flight_min_huge", kCompare + " --flight-min 1e308 --out {out}", 2,
+       "--flight-min: must be at most 1440, got 1e308"},
+      {"compare_idle_min_huge", kCompare + " --idle-min 1e308 --out {out}", 2, "--idle-min: must be at most 1440"},
+      {"compare_charge_min_huge", kCompare + " --charge-max-min 1e308 --out {out}", 2,
+       "--charge-max-min: must be at most 1440"},
+      {"compare_flight_min_repeats_a_short_route", "compare --map {fx}/room.bt --start -2,0,1 --goal -1.5,0,1 "
+       "--planner lattice --flight-min 1440 --out {out}", 2, "times, more than 10000; give a shorter flight time"},
+      {"plan_time_limit_huge", kPlan + " --time-limit-s 1e308 --out {out}", 2, "--time-limit-s: must be at most 86400"},
+      {"bench_time_limit_huge", replaced(kBench, "--time-limit-s 0.2", "--time-limit-s 1e308") + " --json {out}", 2,
+       "--time-limit-s: must be at most 86400, got 1e308"},
+      {"tour_time_limit_huge", kTour + " --time-limit-s 1e308", 2, "--time-limit-s: must be at most 86400", Out::Absent,
+       {{"mission.yaml", kMission}}},
+      {"plan_cruise_tiny", kPlan + " --cruise-speed-m-s 1e-300 --out {out}", 2, "--cruise-speed-m-s: must be a finite number >= 0.01"},
+      {"plan_climb_tiny", kPlan + " --climb-m-s 1e-300 --out {out}", 2, "--climb-m-s: must be a finite number >= 0.01"},
       {"compare_days_zero", kCompare + " --days 0 --out {out}", 2, "--days"},
       {"compare_missions_negative", kCompare + " --missions-per-day -1 --out {out}", 2, "--missions-per-day"},
       {"tour_seed_negative", kTour + " --seed -1", 2, "--seed", Out::Absent, {{"mission.yaml", kMission}}},
@@ -269,6 +307,11 @@ std::vector<Case> flagCases() {
        Out::Absent, {{"mission.yaml", kMission}}},
       {"tour_workers_zero", kTour + " --workers 0", 2, "--workers", Out::Absent, {{"mission.yaml", kMission}}},
       {"tour_idle_nan", kTour + " --idle-min nan", 2, "--idle-min", Out::Absent, {{"mission.yaml", kMission}}},
+      {"tour_idle_huge", kTour + " --idle-min 1e308", 2, "--idle-min: must be at most 1440", Out::Absent, {{"mission.yaml", kMission}}},
+      {"tour_charge_huge", kTour + " --charge-max-min 1e308", 2, "--charge-max-min: must be at most 1440", Out::Absent,
+       {{"mission.yaml", kMission}}},
+      {"tour_free_standoff_huge", kTour + " --free-standoff-max-m 1e308", 2, "--free-standoff-max-m: must be at most 50",
+       Out::Absent, {{"mission.yaml", kMission}}},
       {"tour_standoff_negative", kTour + " --standoff-m -1", 2, "--standoff-m", Out::Absent, {{"mission.yaml", kMission}}},
       {"tour_days_huge", kTour + " --days 1e9", 2, "--days", Out::Absent, {{"mission.yaml", kMission}}},
       {"current_gap_nan", "current --gap-m nan --json {out}", 2, "ceiling gap nan"},
@@ -283,6 +326,8 @@ std::vector<Case> flagCases() {
       {"mapgen_resolution_tiny", "mapgen --scene open --resolution 1e-9 --out {out}", 2, "resolution", Out::Absent, {}, "out.bt"},
       {"mapgen_seed_negative", "mapgen --scene open --resolution 0.5 --seed -1 --out {out}", 2,
        "--seed: must be a whole number >= 0, got '-1'", Out::Absent, {}, "out.bt"},
+      {"mapgen_seed_2_to_the_64", "mapgen --scene open --resolution 0.5 --seed 18446744073709551616 --out {out}", 2,
+       "--seed: must be a whole number in [0, 18446744073709551615], got 18446744073709551616", Out::Absent, {}, "out.bt"},
       {"mapgen_scene_unknown", "mapgen --scene bridg --out {out}", 2, "unknown scene 'bridg'", Out::Absent, {}, "out.bt"},
       {"mapgen_bridge_length_inf", "mapgen --scene bridge --bridge-length-m inf --out {out}", 2, "bridge length",
        Out::Absent, {}, "out.bt"},
@@ -345,10 +390,23 @@ std::vector<Case> yamlCases() {
        mission("point: [1.5, 0.0, 4.0]", "point: [1.5, 4.0]")},
       {"mission_seed_negative", kTour, 2, "'seed' must be a whole number", Out::Absent, mission("seed: 1", "seed: -1")},
       {"mission_seed_fraction", kTour, 2, "'seed' must be a whole number", Out::Absent, mission("seed: 1", "seed: 1.5")},
-      {"mission_cruise_beyond_the_vehicle", kTour, 2, "'speeds.cruise_m_s' must be in (0, 15]", Out::Absent,
+      {"mission_cruise_beyond_the_vehicle", kTour, 2, "'speeds.cruise_m_s' must be in [0.01, 15]", Out::Absent,
        mission("cruise_m_s: 2.0", "cruise_m_s: 100")},
-      {"mission_climb_beyond_a_multirotor", kTour, 2, "'speeds.climb_m_s' must be in (0, 10]", Out::Absent,
+      {"mission_climb_beyond_a_multirotor", kTour, 2, "'speeds.climb_m_s' must be in [0.01, 10]", Out::Absent,
        mission("climb_m_s: 1.0", "climb_m_s: 100")},
+      {"mission_inspection_speed_tiny", kTour, 2, "'speeds.inspection_m_s' must be in [0.01, 15] m/s", Out::Absent,
+       mission("inspection_m_s: 0.5", "inspection_m_s: 1e-300")},
+      {"mission_second_document", kTour, 2, "mission.yaml: holds 2 YAML documents (split by '---'); a mission file is one document",
+       Out::Absent, mission("seed: 1\n", "seed: 1\n---\nseed: 2\n")},
+      {"mission_key_twice_in_a_section", kTour, 2, "key 'speeds.cruise_m_s' is given twice", Out::Absent,
+       mission("cruise_m_s: 2.0", "cruise_m_s: 2.0, cruise_m_s: 3.0")},
+      {"mission_map_is_a_fifo", kTour, 2, "'map' names {fifo}/map.bt: is a FIFO (named pipe), not a file", Out::Absent,
+       mission("map: {fx}/room.bt", "map: {fifo}/map.bt")},
+      {"mission_vehicle_is_a_fifo", kTour, 2, "'vehicle' names {fifo}/vehicle.yaml: is a FIFO", Out::Absent,
+       mission("vehicle: {fx}/vehicle.yaml", "vehicle: {fifo}/vehicle.yaml")},
+      {"mission_is_a_fifo", "tour --mission {fifo}/mission.yaml --out {out}", 2,
+       "mission.yaml: is a FIFO (named pipe), not a mission file; give a regular file"},
+      {"mission_is_a_device", "tour --mission /dev/zero --out {out}", 2, "/dev/zero: is a device, not a mission file"},
       {"mission_mode_misspelt", kTour, 2, "did you mean 'ceiling'?", Out::Absent, mission("seed: 1", "seed: 1\nmode: ceilling")},
       {"mission_tab", kTour, 2, "malformed YAML at line", Out::Absent, mission("seed: 1", "\tseed: 1")},
       {"mission_vehicle_is_a_map", kTour, 2, "holds binary data, not YAML text; is it a vehicle file?", Out::Absent,
@@ -385,12 +443,24 @@ std::vector<Case> yamlCases() {
       {"vehicle_is_a_directory", kPlan + " --vehicle {fx}/adir --out {out}", 2, "is a directory, not a vehicle file"},
       {"vehicle_missing", kPlan + " --vehicle {fx}/none.yaml --out {out}", 2, "no such vehicle file"},
       {"vehicle_empty", kPlan + " --vehicle {fx}/empty.bt --out {out}", 2, "must be a YAML map of keys"},
+      {"vehicle_key_twice", with_vehicle, 2, "v.yaml: key 'mass_kg' is given twice", Out::Absent,
+       vehicle("mass_kg: 1.4", "mass_kg: 1.4\nmass_kg: 2.0")},
+      {"vehicle_second_document", with_vehicle, 2, "v.yaml: holds 2 YAML documents (split by '---'); a vehicle file is one document",
+       Out::Absent, vehicle("mass_kg: 1.4", "mass_kg: 1.4\n---\nmass_kg: 2.0")},
+      {"vehicle_is_a_fifo", kPlan + " --vehicle {fifo}/vehicle.yaml --out {out}", 2,
+       "vehicle.yaml: is a FIFO (named pipe), not a vehicle file"},
       // battery files
       {"battery_key_misspelt", with_battery, 2, "unknown key 'capacity_a'; did you mean 'capacity_ah'?", Out::Absent,
        battery("capacity_a: 5.2\n")},
       {"battery_capacity_nan", with_battery, 2, "'capacity_ah' must be a finite number", Out::Absent, battery("capacity_ah: .nan\n")},
       {"battery_is_a_vehicle_file", kPlan + " --battery {fx}/vehicle.yaml --out {out}", 2, "this is a vehicle file, not a battery file"},
       {"battery_list", with_battery, 2, "must be a YAML map of keys", Out::Absent, battery("- 1\n- 2\n")},
+      {"battery_key_twice", with_battery, 2, "b.yaml: key 'capacity_ah' is given twice", Out::Absent,
+       battery("capacity_ah: 5.2\ncapacity_ah: 6.0\n")},
+      {"battery_second_document", with_battery, 2, "b.yaml: holds 2 YAML documents (split by '---'); a battery file is one document",
+       Out::Absent, battery("capacity_ah: 5.2\n---\ncapacity_ah: 6.0\n")},
+      {"battery_is_a_fifo", kPlan + " --battery {fifo}/battery.yaml --out {out}", 2,
+       "battery.yaml: is a FIFO (named pipe), not a battery file"},
       {"battery_reserve_above_start", with_battery, 2, "is not below", Out::Absent, battery("start_soc: 0.3\nreserve_soc: 0.5\n")},
       // --config files
       {"config_key_misspelt", "plan --config {dir}/c.yaml --out {out}", 2,
@@ -410,7 +480,22 @@ std::vector<Case> yamlCases() {
        config("map: {fx}/room.bt\n  start: [\n")},
       {"config_not_a_map", "plan --config {dir}/c.yaml --out {out}", 2, "config file must be a YAML map", Out::Absent,
        config("- map\n")},
-      {"config_missing_file", "plan --config {dir}/none.yaml --out {out}", 2, "none.yaml"},
+      {"config_missing_file", "plan --config {dir}/none.yaml --out {out}", 2, "none.yaml: no such config file"},
+      {"config_key_twice", "plan --config {dir}/c.yaml --out {out}", 2,
+       "config file line 5: 'planner' gives flag 'planner' again (first on line 4); give each flag once", Out::Absent,
+       config(base_config + "planner: roadmap\n")},
+      {"config_both_spellings", "plan --config {dir}/c.yaml --out {out}", 2,
+       "config file line 6: 'time_limit_s' gives flag 'time-limit-s' again (first on line 5)", Out::Absent,
+       config(base_config + "time-limit-s: 1\ntime_limit_s: 2\n")},
+      {"config_in_the_section_and_outside", "plan --config {dir}/c.yaml --out {out}", 2,
+       "config file line 6: 'planner' gives flag 'planner' again (first on line 4)", Out::Absent,
+       config(base_config + "plan:\n  planner: roadmap\n")},
+      {"config_second_document", "plan --config {dir}/c.yaml --out {out}", 2,
+       "config file holds 2 YAML documents (split by '---')", Out::Absent, config(base_config + "---\nplanner: roadmap\n")},
+      {"config_is_a_fifo", "plan --config {fifo}/config.yaml --out {out}", 2,
+       "config.yaml: is a FIFO (named pipe), not a config file; give a regular file"},
+      {"config_is_a_device", "plan --config /dev/zero --out {out}", 2, "/dev/zero: is a device, not a config file"},
+      {"config_is_a_directory", "plan --config {fx}/adir --out {out}", 2, "adir: is a directory, not a config file"},
       {"config_section_of_the_command", "plan --config {dir}/c.yaml --out {out}", 0, "waypoints", Out::Absent,
        config("plan:\n  map: {fx}/room.bt\n  start: -2,0,1\n  goal: 2,0,1\n  planner: lattice\n")},
   };
@@ -508,6 +593,15 @@ std::vector<Case> csvCases() {
     rows.push_back({"csv_missing_" + name, flag + " {fx}/none.csv" + tail, 2, "none.csv"});
   }
   rows.push_back({"csv_directory_evaluate", "evaluate --map {fx}/room.bt --path {fx}/adir --json {out}", 2, "directory"});
+  // A FIFO or a device would block the reader or never end.
+  for (const std::string& file : {std::string("{fifo}/in.csv"), std::string("/dev/zero")}) {
+    const std::string kind = file == "/dev/zero" ? "device" : "fifo";
+    const std::string says = file == "/dev/zero" ? "/dev/zero: is a device, not a CSV file"
+                                                 : "in.csv: is a FIFO (named pipe), not a CSV file; give a regular file";
+    rows.push_back({"csv_" + kind + "_rainflow", "rainflow --csv " + file + " --column soc --json {out}", 2, says});
+    rows.push_back({"csv_" + kind + "_calibrate", "calibrate --data " + file + " --out {out}", 2, says});
+    rows.push_back({"csv_" + kind + "_evaluate", "evaluate --map {fx}/room.bt --path " + file + " --json {out}", 2, says});
+  }
   rows.push_back({"csv_missing_columns_evaluate", "evaluate --map {fx}/room.bt --path {fx}/soc.csv --json {out}", 2,
                   "has neither x, y, z (path.csv) nor x_m, y_m, z_m"});
   // A fit that fails says why in words: NLopt alone says "nlopt failure". A runtime failure: 1.
@@ -515,6 +609,49 @@ std::vector<Case> csvCases() {
                   "the least-squares fit failed: NLopt's L-BFGS gave up", Out::Absent,
                   {{"in.csv", "gap_m,current_a\n0.05,1e200\n0.1,8\n0.2,8.5\nnone,9.5\n"}}});
   return rows;
+}
+
+std::vector<Case> importCases() {
+  const auto import = [](const std::string& flag, const std::string& file) {
+    return "import " + flag + " " + file + " --resolution 0.1 --out {out}";
+  };
+  const std::string pcd_header = "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
+  const std::string ply_header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                 "property float z\nend_header\n";
+  const std::string points = "0 0 0\n1 0 0\n0 1 0\n1 1 1\n";
+  const auto in = [](const std::string& name, const std::string& text) {
+    return std::vector<std::pair<std::string, std::string>>{{name, text}};
+  };
+  return {
+      {"import_pcd_width_height_not_points", import("--points", "{dir}/in.pcd"), 2,
+       "in.pcd: the PCD header's WIDTH x HEIGHT (2 x 1) is not its POINTS (4)", Out::Absent,
+       in("in.pcd", pcd_header + "WIDTH 2\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n" + points), "out.bt"},
+      {"import_pcd_fewer_rows_than_points", import("--points", "{dir}/in.pcd"), 2,
+       "in.pcd: the PCD header promises 5 points, the file holds 4 rows", Out::Absent,
+       in("in.pcd", pcd_header + "WIDTH 5\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 5\nDATA ascii\n" + points), "out.bt"},
+      {"import_ply_more_rows_than_vertices", import("--points", "{dir}/in.ply"), 2,
+       "in.ply: the PLY header promises 4 rows of data (its element counts), the file holds 5", Out::Absent,
+       in("in.ply", ply_header + points + "2 2 2\n"), "out.bt"},
+      {"import_ply_binary_short", import("--points", "{dir}/in.ply"), 2,
+       "in.ply: the PLY header promises 4 vertex rows, more than its 12 bytes of data hold", Out::Absent,
+       in("in.ply", replaced(ply_header, "ascii", "binary_little_endian") + std::string(12, '\0')), "out.bt"},
+      {"import_xyz_bad_line", import("--points", "{dir}/in.xyz"), 2,
+       "in.xyz line 3: '0 one 0' is not 3 numbers; fix or delete the line", Out::Absent,
+       in("in.xyz", "0 0 0\n1 0 0\n0 one 0\n1 1 1\n"), "out.bt"},
+      {"import_mesh_of_zero_area_faces", import("--mesh", "{dir}/in.obj"), 2,
+       "in.obj: all 2 triangles of the mesh have zero area", Out::Absent,
+       in("in.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 4 4 4\n"), "out.bt"},
+      {"import_points_fifo", import("--points", "{fifo}/points.xyz"), 2,
+       "points.xyz: is a FIFO (named pipe), not a point cloud file", Out::Absent, {}, "out.bt"},
+      {"import_pcd_fifo", import("--points", "{fifo}/points.pcd"), 2, "points.pcd: is a FIFO (named pipe)", Out::Absent, {},
+       "out.bt"},
+      {"import_mesh_fifo", import("--mesh", "{fifo}/mesh.stl"), 2, "mesh.stl: is a FIFO (named pipe), not a mesh file",
+       Out::Absent, {}, "out.bt"},
+      {"import_origins_fifo", import("--points", "{fx}/points.xyz") + " --origins {fifo}/origins.csv", 2,
+       "origins.csv: is a FIFO (named pipe), not a CSV file", Out::Absent, {}, "out.bt"},
+      {"import_points_directory", import("--points", "{dir}/scan.xyz"), 2, "scan.xyz: is a directory, not a point cloud file",
+       Out::Absent, in("scan.xyz/keep", "0 0 0\n"), "out.bt"},
+  };
 }
 
 std::vector<Case> successCases() {
@@ -537,7 +674,7 @@ std::vector<Case> successCases() {
 
 std::vector<Case> allCases() {
   std::vector<Case> rows;
-  for (auto part : {mapCases(), flagCases(), yamlCases(), outputCases(), csvCases(), successCases()})
+  for (auto part : {mapCases(), flagCases(), yamlCases(), outputCases(), csvCases(), importCases(), successCases()})
     rows.insert(rows.end(), part.begin(), part.end());
   return rows;
 }
@@ -588,7 +725,8 @@ TEST_P(HostileInput, GivesTheDocumentedExitAndLeavesNothingBehind) {
   const Case& c = GetParam();
   const fs::path dir = scratchDirectory("hostile_" + c.name);
   const fs::path& fx = fixtures();
-  const std::map<std::string, std::string> paths = {{"{fx}", fx.string()}, {"{src}", CEILPLAN_SOURCE_DIR}, {"{dir}", dir.string()}};
+  const std::map<std::string, std::string> paths = {
+      {"{fx}", fx.string()}, {"{src}", CEILPLAN_SOURCE_DIR}, {"{dir}", dir.string()}, {"{fifo}", fifos().string()}};
   for (const auto& [name, text] : c.files) writeFile(dir / name, substituted(text, paths));
 
   fs::path out = dir / c.out_name;
@@ -614,13 +752,21 @@ TEST_P(HostileInput, GivesTheDocumentedExitAndLeavesNothingBehind) {
   const auto before = snapshot(dir);
   const auto fixtures_before = snapshot(fx);
 
-  const CommandResult r = runCeilplan(substituted(c.args, all));
+  // A reader that opens a FIFO blocks, one that reads a device never ends: the timeout (exit 124)
+  // makes either a failure, not a hang.
+  const auto mentions = [&](const std::string& what) {
+    return c.args.find(what) != std::string::npos ||
+           std::any_of(c.files.begin(), c.files.end(), [&](const auto& file) { return file.second.find(what) != std::string::npos; });
+  };
+  const bool may_block = mentions("{fifo}") || mentions("/dev/");
+  const CommandResult r = runCeilplan(substituted(c.args, all), may_block ? "timeout 60" : "");
   std::error_code ignored;
   fs::permissions(dir / "ro", fs::perms::owner_all, fs::perm_options::add, ignored);  // for the next run's cleanup
 
   EXPECT_EQ(r.exit_code, c.exit_code) << "stderr: " << r.err << "\nstdout: " << r.out;
-  EXPECT_NE((c.exit_code == 0 ? r.out : r.err).find(c.says), std::string::npos)
-      << "expected '" << c.says << "' in:\n" << (c.exit_code == 0 ? r.out : r.err);
+  const std::string says = substituted(c.says, paths);
+  EXPECT_NE((c.exit_code == 0 ? r.out : r.err).find(says), std::string::npos)
+      << "expected '" << says << "' in:\n" << (c.exit_code == 0 ? r.out : r.err);
   EXPECT_TRUE(temporariesUnder(dir).empty()) << temporariesUnder(dir).front();
   EXPECT_EQ(snapshot(fx), fixtures_before) << "a run wrote into the fixtures";
   if (c.exit_code != 0) {

@@ -218,7 +218,7 @@ TEST(CliRainflow, MissingFileAndMissingFlags) {
   const auto dir = scratchDirectory("missing_file");
   const auto missing = runCeilplan("rainflow --csv " + (dir / "nope.csv").string() + " --column soc");
   EXPECT_NE(missing.exit_code, 0);  // 2 per docs/cli.md: MissingFileIsBadInput below
-  EXPECT_NE(missing.err.find("cannot open"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find((dir / "nope.csv").string() + ": no such CSV file"), std::string::npos) << missing.err;
   EXPECT_EQ(runCeilplan("rainflow --csv x.csv").exit_code, 2);
 }
 
@@ -235,7 +235,7 @@ TEST(CliRainflow, MissingFileOrDirectoryIsBadInput) {
   EXPECT_EQ(runCeilplan("rainflow --csv " + (dir / "nope.csv").string() + " --column soc").exit_code, 2);
   const auto r = runCeilplan("rainflow --csv " + dir.string() + " --column soc");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("is a directory; give a CSV file"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("is a directory, not a CSV file; give a regular file"), std::string::npos) << r.err;
   const auto csv = writeFile(dir, "soc.csv", kAstmSoc);
   const auto j = runCeilplan("rainflow --csv " + csv.string() + " --column soc --json " + dir.string());
   EXPECT_EQ(j.exit_code, 2);
@@ -246,5 +246,5 @@ TEST(CliRainflow, ADirectoryIsRefusedInOneLine) {
   const auto dir = scratchDirectory("directory");
   const auto r = runCeilplan("rainflow --csv " + dir.string() + " --column soc");
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_EQ(r.err, "ceilplan: error: " + dir.string() + " is a directory; give a CSV file\n");
+  EXPECT_EQ(r.err, "ceilplan: error: " + dir.string() + ": is a directory, not a CSV file; give a regular file\n");
 }

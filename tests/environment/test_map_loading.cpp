@@ -11,6 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -69,6 +72,50 @@ TEST(MapLoading, BadFilesGiveOneLineNamingTheFileAndTheProblem) {
   // A node stream deeper than OctoMap's 16 levels: OctoMap alone would recurse until the data ran out.
   writeBytes(dir / "deep.bt", "# Octomap OcTree binary file\nid OcTree\nsize 100\nres 0.1\ndata\n" + std::string(200, '\xff'));
   expectOneLineNaming(loadError(dir / "deep.bt"), dir / "deep.bt", "corrupt");
+}
+
+// OctoMap stops where its tree ends: bytes after it, or a second tree, would be dropped unseen.
+// A FIFO, a device or a directory is refused before it is opened (a FIFO would block, /dev/zero
+// would be read for ever), and so is a file larger than ceilplan could index.
+TEST(MapLoading, ATreeMustBeTheWholeFileAndTheFileARegularOne) {
+  const auto dir = testing::scratchDirectory("whole_maps");
+  const std::string bt = testing::readWholeFile(CEILPLAN_SOURCE_DIR "/maps/open.bt");
+  std::ostringstream full;
+  OccupancyMap::load(CEILPLAN_SOURCE_DIR "/maps/open.bt").tree().write(full);
+  const std::string ot = full.str();
+  writeBytes(dir / "trailing.bt", bt + "junk");
+  writeBytes(dir / "newline.bt", bt + "\n");
+  writeBytes(dir / "two.bt", bt + bt);
+  writeBytes(dir / "trailing.ot", ot + "junk");
+  writeBytes(dir / "two.ot", ot + ot);
+  writeBytes(dir / "binary_then_full.bt", bt + ot);
+  ASSERT_EQ(::mkfifo((dir / "pipe.bt").c_str(), 0600), 0);
+  std::filesystem::create_directories(dir / "folder.bt");
+  const struct {
+    std::string file, says;
+  } rows[] = {
+      {"trailing.bt", "corrupt OctoMap file: 4 bytes follow the end of the tree; is the file damaged, or two files joined?"},
+      {"newline.bt", "corrupt OctoMap file: 1 byte follows the end of the tree"},
+      {"two.bt", "holds a second OctoMap tree after the first; a map file holds one tree, so split the file"},
+      {"trailing.ot", "corrupt OctoMap file: 4 bytes follow the end of the tree"},
+      {"two.ot", "holds a second OctoMap tree after the first"},
+      {"binary_then_full.bt", "holds a second OctoMap tree after the first"},
+      {"pipe.bt", "is a FIFO (named pipe), not a map file; give a regular file"},
+      {"folder.bt", "is a directory, not a map file; give a regular file"},
+  };
+  ::alarm(60);  // a reader blocked on the FIFO kills the test rather than hanging it
+  for (const auto& row : rows) expectOneLineNaming(loadError(dir / row.file), dir / row.file, row.says);
+  expectOneLineNaming(loadError("/dev/zero"), "/dev/zero", "/dev/zero: is a device, not a map file");
+  ::alarm(0);
+  // The bound is stated before the read: a sparse file of that size costs nothing to make.
+  {
+    std::ofstream huge(dir / "huge.bt", std::ios::binary);
+    huge << "# Octomap OcTree binary file\n";
+    huge.seekp(static_cast<std::streamoff>(OccupancyMap::kMaxFileBytes));
+    huge << 'x';
+  }
+  expectOneLineNaming(loadError(dir / "huge.bt"), dir / "huge.bt",
+                      "holds " + std::to_string(OccupancyMap::kMaxFileBytes + 1) + " bytes, more than ceilplan reads for a map file");
 }
 
 TEST(MapLoading, FullFormatAndBinaryFormatLoadTheSameTree) {

@@ -6,10 +6,19 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <fstream>
+#include <string>
 
 namespace ceilplan {
 namespace {
+
+// `text` with `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  return text.replace(text.find(from), from.size(), to);
+}
 
 // docs/cli.md: bad input exits with 1 today (2 once bad input and usage share a code); usage
 // errors (flags) with 2. Change here when the codes change.
@@ -32,7 +41,7 @@ class ImportBadInput : public ::testing::Test {
   void expectRefused(const std::string& arguments, const std::string& message, int exit_code = kBadInputExit) {
     std::string command = "import " + arguments + " --out " + out_.string();
     if (arguments.find("--resolution") == std::string::npos) command += " --resolution 0.1";
-    const auto result = testing::runCeilplan(command);
+    const auto result = testing::runCeilplan(command, "timeout 60");  // a reader blocked on a FIFO fails, not hangs
     EXPECT_EQ(result.exit_code, exit_code) << command << "\n" << result.err;
     EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
     EXPECT_EQ(result.err.rfind("ceilplan: error: ", 0), 0u) << result.err;
@@ -48,9 +57,9 @@ class ImportBadInput : public ::testing::Test {
 };
 
 TEST_F(ImportBadInput, MissingFiles) {
-  expectRefused("--points " + path("nothing.pcd"), "nothing.pcd: no such file");
-  expectRefused("--mesh " + path("nothing.stl"), "nothing.stl: no such file");
-  expectRefused("--points " + path("good.pcd") + " --origins " + path("nothing.csv"), "nothing.csv");
+  expectRefused("--points " + path("nothing.pcd"), "nothing.pcd: no such point cloud file");
+  expectRefused("--mesh " + path("nothing.stl"), "nothing.stl: no such mesh file");
+  expectRefused("--points " + path("good.pcd") + " --origins " + path("nothing.csv"), "nothing.csv: no such CSV file");
 }
 
 TEST_F(ImportBadInput, CorruptFiles) {
@@ -61,7 +70,8 @@ TEST_F(ImportBadInput, CorruptFiles) {
   expectRefused("--points " + path("truncated.pcd"), "truncated.pcd: not a readable point cloud");
   std::ofstream(dir_ / "truncated.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                                            "property float z\nend_header\n0 0 0\n1 0 0\n";
-  expectRefused("--points " + path("truncated.ply"), "truncated.ply: not a readable point cloud");  // RPly's own lines captured
+  expectRefused("--points " + path("truncated.ply"),
+                "truncated.ply: the PLY header promises 3 rows of data (its element counts), the file holds 2");
   std::ofstream(dir_ / "truncated.stl", std::ios::binary) << std::string(80, ' ') << std::string("\x64\0\0\0", 4) << "short";
   expectRefused("--mesh " + path("truncated.stl"), "truncated.stl: not a readable mesh");
   std::ofstream(dir_ / "bad_index.obj") << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
@@ -69,6 +79,63 @@ TEST_F(ImportBadInput, CorruptFiles) {
   // Open3D would read these coordinates as zeros.
   testing::writePcd(dir_ / "doubles.pcd", {{500000.5, 5400000.5, 480.0}, {500001.5, 5400000.5, 480.0}}, true, true);
   expectRefused("--points " + path("doubles.pcd"), "doubles.pcd: binary PCD with 8-byte coordinates");
+}
+
+// What Open3D would import wrong without a word: a PCD whose WIDTH x HEIGHT or rows disagree
+// with its POINTS, a PLY whose rows or bytes disagree with its element counts, an .xyz line it
+// cannot read (it skips it), and a mesh whose faces all have zero area.
+TEST_F(ImportBadInput, HeaderCountsThatDisagreeWithTheDataAndLinesThatAreNotPoints) {
+  const std::string pcd = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  const struct {
+    std::string flag, file, text, says;
+  } rows[] = {
+      {"--points", "grid.pcd", pcd + "WIDTH 2\nHEIGHT 2\nPOINTS 3\nDATA ascii\n1 2 3\n2 3 4\n3 4 5\n",
+       "grid.pcd: the PCD header's WIDTH x HEIGHT (2 x 2) is not its POINTS (3); is the file damaged?"},
+      {"--points", "rows.pcd", pcd + "WIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA ascii\n1 2 3\n2 3 4\n3 4 5\n",
+       "rows.pcd: the PCD header promises 2 points, the file holds 3 rows"},
+      {"--points", "nopoints.pcd", pcd + "WIDTH 2\nHEIGHT 1\nDATA ascii\n1 2 3\n2 3 4\n",
+       "nopoints.pcd: the PCD header needs WIDTH, HEIGHT and POINTS"},
+      {"--points", "more.ply", ply + "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n",
+       "more.ply: the PLY header promises 3 rows of data (its element counts), the file holds 4; is the file damaged?"},
+      {"--points", "short.ply", replaced(ply, "ascii", "binary_little_endian") + "end_header\n" + std::string(24, '\0'),
+       "short.ply: the PLY header promises 3 vertex rows, more than its 24 bytes of data hold"},
+      {"--points", "long.ply", replaced(ply, "ascii", "binary_little_endian") + "end_header\n" + std::string(48, '\0'),
+       "long.ply: the PLY header's element counts promise 36 bytes of data, the file holds 48"},
+      {"--points", "huge.ply", replaced(replaced(ply, "ascii", "binary_little_endian"), "vertex 3", "vertex 99999999999999") +
+       "end_header\n" + std::string(24, '\0'), "huge.ply: the PLY header promises 99999999999999 vertex rows, more than its 24 bytes"},
+      {"--mesh", "faces.ply", ply + "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+       "faces.ply: the PLY header promises 5 rows of data (its element counts), the file holds 4"},
+      {"--points", "words.xyz", "0 0 0\n1 0 0\n\n0 0 one\n", "words.xyz line 4: '0 0 one' is not 3 numbers; fix or delete the line"},
+      {"--points", "two.xyz", "0 0 0\n1 0\n", "two.xyz line 2: '1 0' is not 3 numbers"},
+      {"--points", "letters.xyz", "0 0 0\n1 0 x 0\n", "letters.xyz line 2: '1 0 x 0' is not 3 numbers"},
+      {"--points", "normals.xyzn", "0 0 0 0 0 1\n1 0 0 0 0\n", "normals.xyzn line 2: '1 0 0 0 0' is not 6 numbers"},
+      {"--mesh", "flat.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 0 1 0\nf 1 2 3\nf 4 4 4\n",
+       "flat.obj: all 2 triangles of the mesh have zero area (collinear or repeated corners); export the mesh again with its faces"},
+  };
+  for (const auto& row : rows) {
+    std::ofstream(dir_ / row.file, std::ios::binary) << row.text;
+    expectRefused(row.flag + " " + path(row.file), row.says);
+  }
+}
+
+// A FIFO would block the reader that opens it, a device never end: each is refused before it is
+// opened (the timeout makes a reader that blocks fail the test rather than hang it).
+TEST_F(ImportBadInput, FifosDevicesAndDirectoriesAreNotInputFiles) {
+  for (const char* name : {"pipe.xyz", "pipe.pcd", "pipe.stl", "pipe.csv"})
+    ASSERT_EQ(::mkfifo((dir_ / name).c_str(), 0600), 0) << name;
+  std::filesystem::create_directories(dir_ / "folder.ply");
+  const struct {
+    std::string arguments, says;
+  } rows[] = {
+      {"--points " + path("pipe.xyz"), "pipe.xyz: is a FIFO (named pipe), not a point cloud file; give a regular file"},
+      {"--points " + path("pipe.pcd"), "pipe.pcd: is a FIFO (named pipe), not a point cloud file"},
+      {"--mesh " + path("pipe.stl"), "pipe.stl: is a FIFO (named pipe), not a mesh file"},
+      {"--points " + path("good.pcd") + " --origins " + path("pipe.csv"), "pipe.csv: is a FIFO (named pipe), not a CSV file"},
+      {"--points " + path("folder.ply"), "folder.ply: is a directory, not a point cloud file"},
+      {"--mesh " + path("folder.ply"), "folder.ply: is a directory, not a mesh file"},
+  };
+  for (const auto& row : rows) expectRefused(row.arguments, row.says);
 }
 
 TEST_F(ImportBadInput, WrongKindOfFile) {

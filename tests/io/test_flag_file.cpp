@@ -4,6 +4,7 @@
 #include "ceilplan/io/flag_file.hpp"
 
 #include "input_error.hpp"
+#include "run_command.hpp"
 
 #include <gtest/gtest.h>
 
@@ -53,6 +54,36 @@ TEST(FlagFile, RefusesWhatIsNotAFlatMapOfValues) {
   EXPECT_EQ(errorOf("flight-current-a: [[1, 2]]\n"), "config key 'flight-current-a' holds a nested list; use a flat list");
   EXPECT_EQ(errorOf("days:\n"), "config key 'days' has no value");
   EXPECT_EQ(errorOf("days: [1\n").rfind("malformed YAML config at line ", 0), 0u);
+}
+
+// yaml-cpp keeps both entries of a repeated key and CLI11 would let the last win: one value
+// would be dropped without a word. Both spellings of a name are one flag, in or out of the
+// command's section; a second YAML document would be ignored.
+TEST(FlagFile, RefusesAFlagGivenTwiceAndASecondDocument) {
+  const struct {
+    std::string yaml, says;
+  } rows[] = {
+      {"days: 3\ndays: 4\n", "config file line 2: 'days' gives flag 'days' again (first on line 1); give each flag once, a list for a repeated flag"},
+      {"capacity-ah: 5\ncapacity_ah: 6\n", "config file line 2: 'capacity_ah' gives flag 'capacity-ah' again (first on line 1)"},
+      {"days: 3\nduty:\n  days: 4\n", "config file line 3: 'days' gives flag 'days' again (first on line 1)"},
+      {"duty:\n  days: 4\ndays: 3\n", "config file line 3: 'days' gives flag 'days' again (first on line 2)"},
+      {"days: 3\n---\ndays: 4\n", "config file holds 2 YAML documents (split by '---'); give one map of flag names to values"},
+      {"days: 3\n---\n", "config file holds 2 YAML documents"},
+  };
+  for (const auto& row : rows) EXPECT_EQ(errorOf(row.yaml).rfind(row.says, 0), 0u) << row.yaml << "\n" << errorOf(row.yaml);
+  // One document, even with its start marked, and a list for a repeated flag, pass.
+  EXPECT_EQ(read("---\ndays: 3\n").size(), 1u);
+  EXPECT_EQ(read("flight-current-a: [9.5, 8]\n").size(), 1u);
+}
+
+TEST(FlagFile, AFileThatIsNotARegularFileIsRefusedBeforeItIsOpened) {
+  const auto dir = testing::scratchDirectory("flag_file_kinds");
+  EXPECT_EQ(testing::inputErrorOf([&] { requireFlagFile(dir); }),
+            dir.string() + ": is a directory, not a config file; give a regular file");
+  EXPECT_EQ(testing::inputErrorOf([&] { requireFlagFile(dir / "none.yaml"); }),
+            (dir / "none.yaml").string() + ": no such config file");
+  EXPECT_EQ(testing::inputErrorOf([] { requireFlagFile("/dev/zero"); }),
+            "/dev/zero: is a device, not a config file; give a regular file");
 }
 
 }  // namespace

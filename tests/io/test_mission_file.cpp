@@ -114,13 +114,27 @@ TEST(MissionFile, BadVariantsNameTheKey) {
   expectError("inverted_standoff", "standoff_m: [0.3, 1.5]", "standoff_m: [1.5, 0.3]", "standoff range");
   expectError("home_missing", "home: [-4.0, 0.0, 0.5]", "", "missing key 'home'");
   expectError("bad_latitude", "lat: 52.218", "lat: 152.218", "'origin.lat' must be in [-90, 90] deg, got 152.218");
-  expectError("negative_speed", "cruise_m_s: 2.0", "cruise_m_s: -2.0", "'speeds.cruise_m_s' must be in (0, 15] m/s");
-  expectError("climb_beyond_physics", "climb_m_s: 1.0", "climb_m_s: 100", "'speeds.climb_m_s' must be in (0, 10] m/s");
+  expectError("negative_speed", "cruise_m_s: 2.0", "cruise_m_s: -2.0", "'speeds.cruise_m_s' must be in [0.01, 15] m/s");
+  expectError("climb_beyond_physics", "climb_m_s: 1.0", "climb_m_s: 100", "'speeds.climb_m_s' must be in [0.01, 10] m/s");
   expectError("negative_seed", "seed: 1", "seed: -1", "'seed' must be a whole number in [1, 4294967295], got '-1'");
   expectError("bad_mode", "mode: ceiling", "mode: min-wear", "'mode' must be one of ceiling, free, both, got 'min-wear'");
   expectError("no_targets", "targets:", "targets: []\nignored_targets:", "unknown key 'ignored_targets'");
   expectError("bad_yaml", "home: [-4.0, 0.0, 0.5]", "home: [-4.0, 0.0", "malformed YAML");
   EXPECT_NE(errorOf(kMaps / "nowhere.yaml").find("no such mission file"), std::string::npos);
+}
+
+// What yaml-cpp would let through: a second document (Load reads the first only), a repeated key
+// (it answers with one of the values), and a speed so small that a route's time overflows.
+TEST(MissionFile, NothingIsIgnoredOrAcceptedSilently) {
+  expectError("second_document", "seed: 1", "seed: 1\n---\nseed: 2",
+              "holds 2 YAML documents (split by '---'); a mission file is one document");
+  expectError("key_twice", "seed: 1", "seed: 1\nseed: 2", "key 'seed' is given twice");
+  expectError("key_twice_in_a_section", "cruise_m_s: 2.0", "cruise_m_s: 2.0, cruise_m_s: 3.0",
+              "key 'speeds.cruise_m_s' is given twice");
+  expectError("tiny_inspection_speed", "inspection_m_s: 0.5", "inspection_m_s: 1e-300",
+              "'speeds.inspection_m_s' must be in [0.01, 15] m/s (the vehicle's max_speed_m_s), got 1e-300");
+  expectError("map_is_a_device", "map: " + (kMaps / "bridge.bt").string(), "map: /dev/zero",
+              "'map' names /dev/zero: is a device, not a file; give a regular file");
 }
 
 TEST(MissionFile, AnUnknownKeyIsAnErrorNamingTheNearestValidKey) {
@@ -194,6 +208,11 @@ TEST(BatteryFile, UnknownKeysAndOutOfRangeNumbersAreRefused) {
   EXPECT_EQ(errorFor("fine.yaml", "capacity_ah: 3.0\nstart_soc: 0.9\n"), "no error");
   std::filesystem::create_directories(dir / "folder.yaml");
   EXPECT_NE(errorFor("folder.yaml", "").find("is a directory, not a battery file"), std::string::npos);
+  EXPECT_NE(errorFor("twice.yaml", "capacity_ah: 3.0\ncapacity_ah: 4.0\n").find("key 'capacity_ah' is given twice"),
+            std::string::npos);
+  EXPECT_NE(errorFor("two.yaml", "capacity_ah: 3.0\n---\ncapacity_ah: 4.0\n")
+                .find("two.yaml: holds 2 YAML documents (split by '---'); a battery file is one document"),
+            std::string::npos);
 }
 
 TEST(MissionFile, MissingOriginIsAnErrorOnlyWhenExporting) {

@@ -107,6 +107,18 @@ TEST(VehicleFile, AnUnknownKeyNamesTheNearestValidKey) {
             std::string::npos);
 }
 
+// yaml-cpp reads the first document only and answers a repeated key with one of its values.
+TEST(VehicleFile, ARepeatedKeyOrASecondDocumentIsRefused) {
+  EXPECT_NE(errorOfVariant("twice", "mass_kg: 1.4", "mass_kg: 1.4\nmass_kg: 2.0").find("key 'mass_kg' is given twice"),
+            std::string::npos);
+  EXPECT_NE(errorOfVariant("twice_in_a_section", "margin_m: 0.10", "margin_m: 0.10\n  margin_m: 0.20")
+                .find("key 'clearance.margin_m' is given twice"),
+            std::string::npos);
+  EXPECT_NE(errorOfVariant("second_document", "mass_kg: 1.4", "mass_kg: 1.4\n---\nmass_kg: 2.0")
+                .find("holds 2 YAML documents (split by '---'); a vehicle file is one document"),
+            std::string::npos);
+}
+
 TEST(VehicleFile, CalibratedVehicleOfTheBuiltInOneReadsBack) {
   const std::filesystem::path out = testing::scratchDirectory("vehicle_calibrated") / "calibrated.yaml";
   energy::EnergyParameters parameters = mission::Vehicle::defaultQuad().energy;

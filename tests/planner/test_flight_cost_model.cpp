@@ -105,6 +105,10 @@ TEST(FlightCostModel, RefusesSpeedsTheEnergyModelCannotFly) {
   options.speeds.cruise_m_s = 2.0;
   options.speeds.climb_m_s = 0.0;
   EXPECT_THROW(FlightCostModel(scene.environment, scene.energy, options), ceilplan::InputError);
+  options.speeds.climb_m_s = 1e-300;  // times and charges of a route would overflow
+  EXPECT_THROW(FlightCostModel(scene.environment, scene.energy, options), ceilplan::InputError);
+  options.speeds.climb_m_s = planner::FlightSpeeds::kMinSpeed_m_s;
+  EXPECT_NO_THROW(FlightCostModel(scene.environment, scene.energy, options));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <octomap/OcTree.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <istream>
 #include <memory>
@@ -20,7 +21,13 @@ class OccupancyMap {
   // to their occupancy: the same nodes and log-odds, without colours or stamps. Throws
   // ceilplan::InputError naming the file and the problem: missing, unreadable, not an OctoMap,
   // truncated or corrupt, a .ot of a tree type ceilplan cannot read, or a map with no known voxel.
+  // A directory, FIFO or device is refused before it is opened, and a file larger than
+  // kMaxFileBytes before it is read.
   static OccupancyMap load(const std::filesystem::path& file);
+
+  // The largest map file read: ceilplan indexes at most VoxelGrid::kMaxVoxels voxels at about
+  // 5 bytes each (2 GB), and a larger file is not a map it could index.
+  static constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{2} << 30;
 
   // Same, from bytes already in memory; `name` appears in error messages.
   static OccupancyMap read(std::istream& in, const std::string& name);
@@ -33,6 +40,8 @@ class OccupancyMap {
   const std::string& name() const { return name_; }
 
  private:
+  static OccupancyMap parse(const std::string& bytes, const std::string& name);
+
   std::shared_ptr<const octomap::OcTree> tree_;
   std::string name_;
 };

@@ -53,11 +53,18 @@ RouteCheck checkRoute(const PlanningContext& context, const std::vector<Eigen::V
 // The founding paper's month for a route: each mission flies it as often as the slower mode
 // fits in flight_min, idles, charges back.
 struct DutyOptions {
+  static constexpr double kMaxMinutes = 1440.0;  // each time below, up to a day
+  static constexpr int kMaxRepeats = 10000;      // flights of the route per mission
+
   double flight_min = 20.0;  // the paper's mission
   double idle_min = 5.0;
   double charge_max_min = 20.0;
   int missions_per_day = 15;
   int days = 30;
+
+  // Throws ceilplan::InputError naming the field: a time outside [0, kMaxMinutes] (charge_max_min
+  // above 0), or missions_per_day outside [1, 1000] or days outside [1, 3650].
+  void validate() const;
 };
 
 struct RouteComparison {
@@ -69,7 +76,9 @@ struct RouteComparison {
 };
 
 // Free mode first; ceiling mode is shown the free route, so it is never worse under the full
-// model. Throws as planRoute, and ceilplan::InfeasibleError when the duty depletes the pack.
+// model. Throws as planRoute, ceilplan::InputError for `duty` that DutyOptions::validate refuses
+// (before planning) or a route so short that flight_min would fly it more than kMaxRepeats
+// times, and ceilplan::InfeasibleError when the duty depletes the pack.
 RouteComparison compareRoutes(const PlanningContext& context, const planner::PlanRequest& request,
                               const DutyOptions& duty);
 

@@ -20,6 +20,9 @@
 namespace ceilplan::mission {
 
 struct InspectionTarget {
+  // The farthest standoff: beyond, a viewpoint search spans more than any inspected structure.
+  static constexpr double kMaxStandoff_m = 50.0;
+
   std::string name;
   Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  // on the structure's surface
   double standoff_min_m = 0.3;  // body centre to point

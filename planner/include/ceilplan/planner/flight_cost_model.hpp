@@ -18,6 +18,8 @@ namespace ceilplan::planner {
 // The speed rules (mission files' `speeds:` block, docs/missions.md).
 struct FlightSpeeds {
   static constexpr double kMaxVerticalSpeed_m_s = 10.0;
+  // Slower is hovering, not flying: times and charges of a route at 1e-300 m/s overflow.
+  static constexpr double kMinSpeed_m_s = 0.01;
   static constexpr double kMaxNearCeilingGapRadii = 10.0;
 
   double cruise_m_s = 2.0;            // horizontal, in free air
@@ -26,7 +28,8 @@ struct FlightSpeeds {
   double climb_m_s = 1.0;             // vertical rate limits
   double descent_m_s = 0.8;
 
-  // Throws ceilplan::InputError naming the bad field (non-positive, non-finite, a horizontal
+  // Throws ceilplan::InputError naming the bad field (a speed under kMinSpeed_m_s, a non-positive
+  // slow zone, non-finite, a horizontal
   // speed beyond `max_speed_m_s`, the energy model's limit, a vertical rate beyond
   // kMaxVerticalSpeed_m_s or `max_speed_m_s`, or a slow zone beyond kMaxNearCeilingGapRadii).
   void validate(double max_speed_m_s) const;

@@ -31,6 +31,8 @@ struct PlanRequest {
   // For a sampling search; the deterministic ones run to completion, and so does the
   // post-processing (RefinementOptions::max_evaluations bounds it, not a clock).
   double time_limit_s = 5.0;
+  // The longest search: a day. OMPL's clock overflows on far larger limits and stops at once.
+  static constexpr double kMaxTimeLimit_s = 86400.0;
   double band_fraction = 0.0;     // share of samples aimed at the ceiling band (0, the default: uniform; docs/planner.md)
   bool refine = true;             // shortcuts + NLopt refinement
   RefinementOptions refinement;
