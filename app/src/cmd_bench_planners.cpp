@@ -17,8 +17,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <cstdio>
-#include <iostream>
 #include <string>
 #include <vector>
 
@@ -46,6 +44,8 @@ void runBench(const BenchArguments& a) {
   options.refine = !a.search.no_refine;
   options.experiment = "ceilplan " + a.planning.map;
   options.log_file = a.log;
+  const io::Provenance provenance = planningProvenance(a.planning, a.search.seed);
+  for (const auto& [name, value] : provenance.fields()) options.log_properties.emplace_back("provenance_" + name, value);
   try {
     options.validate();  // the other fields are range-checked as flags
   } catch (const InputError&) {
@@ -55,19 +55,20 @@ void runBench(const BenchArguments& a) {
   const auto context = makePlanningContext(a.planning);
   const mission::PlanningContext::Mode planning = context->mode(mission::flightModeFromName(a.mode));
   const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, context->objective(start, goal));
-  std::printf("%s", io::plannerBenchmarkHeadline(a.mode, a.planning.options.objective, flight_planner.objective().unit(),
-                                                 options, a.search.seed).c_str());
+  print(io::plannerBenchmarkHeadline(a.mode, a.planning.options.objective, flight_planner.objective().unit(), options,
+                                     a.search.seed));
 
   const planner::PlanRequest request = a.search.request(start, goal);
   const planner::PlanResult reference = planner::planLatticeReference(flight_planner, request);
-  std::printf("%s", io::latticeReferenceLine(reference, request.lattice.spacing_m).c_str());
-  std::fflush(stdout);
+  print(io::latticeReferenceLine(reference, request.lattice.spacing_m));
 
   options.lattice = request.lattice;
   const std::vector<planner::PlannerBenchmarkRow> rows =
       planner::benchmarkPlanners(flight_planner, start, goal, reference, options);
-  std::cout << io::plannerBenchmarkTable(rows, a.search.time_limit_s);
-  if (!a.json.empty()) io::writeJsonFile(a.json, io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows));
+  print(io::plannerBenchmarkTable(rows, a.search.time_limit_s));
+  if (!a.json.empty())
+    io::writeJsonFile(a.json,
+                      io::withProvenance(io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows), provenance));
 }
 
 const CommandRegistration registration(43, [](CLI::App& parent) {

@@ -1,6 +1,7 @@
 // `ceilplan calibrate`: fit the energy model's free constants to measured currents.
 
 #include "command_registry.hpp"
+#include "output.hpp"
 
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/energy/calibration.hpp"
@@ -9,8 +10,6 @@
 #include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
-#include <cstdio>
-#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,15 +33,18 @@ void runCalibrate(const CalibrateOptions& options) {
   std::vector<energy::FreeParameter> free;
   for (const std::string& name : options.fit) free.push_back(energy::parseFreeParameter(name));
   if (free.empty()) free = energy::identifiableParameters(vehicle.energy, samples);
+  const io::Provenance provenance =
+      commandProvenance().input("data", options.data_path).input("vehicle", options.vehicle_path);
   const energy::CalibrationResult result = energy::calibrate(vehicle.energy, samples, free);
 
-  std::cout << io::calibrationText(vehicle.name, options.data_path, samples.size(), result);
+  print(io::calibrationText(vehicle.name, options.data_path, samples.size(), result));
   io::writeCalibratedVehicle(options.out_path, options.vehicle_path, result.parameters,
-                             io::calibratedVehicleComment(options.data_path, samples.size(), result));
-  std::printf("wrote %s\n", options.out_path.c_str());
+                             io::calibratedVehicleComment(options.data_path, samples.size(), result, provenance));
+  print("wrote " + options.out_path + "\n");
   if (!options.json_path.empty()) {
-    io::writeJsonFile(options.json_path, io::calibrationReportJson(options.data_path, samples.size(), result));
-    std::printf("wrote %s\n", options.json_path.c_str());
+    io::writeJsonFile(options.json_path,
+                      io::withProvenance(io::calibrationReportJson(options.data_path, samples.size(), result), provenance));
+    print("wrote " + options.json_path + "\n");
   }
 }
 

@@ -13,7 +13,6 @@
 #include "ceilplan/io/report_text.hpp"
 
 #include <cmath>
-#include <iostream>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -43,13 +42,15 @@ void runImport(const ImportArguments& args) {
     throw ceilplan::InputError("--max-range " + formatNumber(options.max_range_m) +
                                ": a finite number of metres >= 0 (0: none)");
 
+  const io::Provenance provenance =
+      commandProvenance().input("points", args.points).input("origins", args.origins).input("mesh", args.mesh);
   io::MapImport imported = [&] {
     const ProgressCallback progress = terminalProgress();  // cleared when the import ends
     return io::importMap(options, progress);
   }();
-  io::writeImportedMap(out, imported, options);
+  io::writeImportedMap(out, imported, options, provenance);
 
-  std::cout << io::mapImportText(imported, options, out);
+  print(io::mapImportText(imported, options, out));
 }
 
 const CommandRegistration registration(19, [](CLI::App& parent) {

@@ -2,6 +2,7 @@
 
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
+#include "output.hpp"
 
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/core/error.hpp"
@@ -9,7 +10,6 @@
 #include "ceilplan/io/octomap_file.hpp"
 #include "ceilplan/io/report_text.hpp"
 
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -33,7 +33,7 @@ void runMapgen(const MapgenOptions& options) {
   const VoxelGrid grid = generateScene(scene, options.scene_options);
   const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
   io::writeOctoMapFile(out, *tree);
-  std::printf("%s", io::generatedSceneLine(options.scene, options.scene_options, grid, tree->size(), out).c_str());
+  print(io::generatedSceneLine(options.scene, options.scene_options, grid, tree->size(), out));
 }
 
 const CommandRegistration registration(20, [](CLI::App& parent) {

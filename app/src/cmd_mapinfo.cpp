@@ -15,7 +15,6 @@
 #include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
-#include <iostream>
 #include <memory>
 #include <string>
 
@@ -38,6 +37,7 @@ void runMapinfo(const MapinfoOptions& options) {
   if (!options.json.empty()) io::checkWritableFile(options.json);  // before the map is read and indexed
   if (!options.slice_csv.empty()) io::checkWritableFile(options.slice_csv);
   const OccupancyMap map = OccupancyMap::load(options.map);
+  const io::Provenance provenance = commandProvenance().input("map", options.map).input("vehicle", options.vehicle);
   if (!options.vehicle.empty() && options.slice_csv.empty())
     throw ceilplan::InputError("--vehicle applies only to --slice-csv; add --slice-csv FILE or drop it");
   Progress progress("indexing " + options.map);
@@ -47,10 +47,11 @@ void runMapinfo(const MapinfoOptions& options) {
   if (!options.slice_csv.empty()) {
     std::unique_ptr<Environment> environment;
     if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
-    io::writeMapSliceCsv(options.slice_csv, *index, options.slice_z_m, environment.get(), "--slice-z");
+    io::writeMapSliceCsv(options.slice_csv, *index, options.slice_z_m, environment.get(), "--slice-z", provenance);
   }
-  std::cout << io::mapStatisticsText(options.map, stats);
-  if (!options.json.empty()) io::writeJsonFile(options.json, io::mapStatisticsJson(options.map, stats));
+  print(io::mapStatisticsText(options.map, stats));
+  if (!options.json.empty())
+    io::writeJsonFile(options.json, io::withProvenance(io::mapStatisticsJson(options.map, stats), provenance));
 }
 
 const CommandRegistration registration(21, [](CLI::App& parent) {

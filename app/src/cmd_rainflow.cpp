@@ -1,18 +1,19 @@
 // `ceilplan rainflow`: the rainflow cycles (ASTM E1049-85) of an SOC column in a CSV file.
 
 #include "command_registry.hpp"
+#include "output.hpp"
 
 #include "ceilplan/battery/rainflow.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/provenance.hpp"
 #include "ceilplan/io/soc_series_file.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
-#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,9 +32,10 @@ void runRainflow(const RainflowArguments& args) {
     throw InputError("--json " + ceilplan::printableText(args.json_path, 256) + " is a directory; give a file name");
   if (!args.json_path.empty()) io::checkWritableFile(args.json_path);
   const std::vector<double> soc = io::readSocSeries(args.csv_path, args.column);
+  const io::Provenance provenance = commandProvenance().input("series", args.csv_path);
   const std::vector<battery::RainflowCycle> cycles = battery::countRainflowCycles(soc);
-  std::cout << io::rainflowText(args.column, args.csv_path, soc.size(), cycles);
-  if (!args.json_path.empty()) io::writeJsonFile(args.json_path, io::rainflowJson(cycles));
+  print(io::rainflowText(args.column, args.csv_path, soc.size(), cycles));
+  if (!args.json_path.empty()) io::writeJsonFile(args.json_path, io::withProvenance(io::rainflowJson(cycles), provenance));
 }
 
 void addRainflowCommand(CLI::App& parent) {
