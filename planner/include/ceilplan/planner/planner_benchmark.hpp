@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ceilplan::planner {
@@ -32,6 +33,9 @@ struct PlannerBenchmarkOptions {
   bool refine = true;                 // post-process with NLopt refinement, as plan() does
   std::string experiment = "ceilplan";
   std::string log_file;  // OMPL's benchmark log (ompl_benchmark_statistics format); empty: none
+  // Name and one-line text of each experiment property the log records besides OMPL's own
+  // (where the run came from: version, command line, inputs).
+  std::vector<std::pair<std::string, std::string>> log_properties;
 
   // Throws ceilplan::InputError for no planner, an unknown name (plannerInfo's message), no run
   // or a time limit that is not positive.
