@@ -151,7 +151,9 @@ py::dict photoArrays(const std::vector<mission::PhotoRow>& rows) {
 }
 
 // A JSON document as Python objects.
-py::object pythonJson(const nlohmann::json& json) { return py::module_::import("json").attr("loads")(io::jsonText(json)); }
+py::object pythonJson(const nlohmann::json& json) {
+  return py::module_::import("json").attr("loads")(io::jsonText(json));
+}
 
 py::object noneIfEmpty(const std::optional<double>& value) { return value ? py::object(py::float_(*value)) : py::none(); }
 
@@ -432,7 +434,8 @@ PYBIND11_MODULE(ceilplan, m) {
             if (export_autopilot) autopilot = io::Autopilot::PX4;
             const std::string call = "python: " + t.call + ".write('" + dir.string() +
                                      "', autopilot=" + (export_autopilot ? "True" : "False") + ")";
-            const io::Provenance provenance = io::tourProvenance(io::Provenance::of(call), *t.mission, t.tour.options.seed);
+            const io::Provenance provenance =
+                io::tourProvenance(io::Provenance::of(call), *t.mission, t.tour.options.seed);
             io::OutputSet out(dir);
             io::writeTourDirectory(out.path(), t.tour, *t.mission, t.context->environment(), autopilot, provenance);
             out.commit();
@@ -454,8 +457,9 @@ PYBIND11_MODULE(ceilplan, m) {
         py::gil_scoped_release release;
         auto context = std::make_shared<const mission::PlanningContext>(*shared_mission);
         mission::TourResult tour = mission::planTour(*shared_mission, *context, flight_mode, options);
-        const std::string call = "ceilplan.plan_tour(mission, mode='" + mode + "', seed=" + std::to_string(options.seed) +
-                                 ", planner='" + planner + "', ageing_model='" + ageing_model + "')";
+        const std::string call = "ceilplan.plan_tour(mission, mode='" + mode +
+                                 "', seed=" + std::to_string(options.seed) + ", planner='" + planner +
+                                 "', ageing_model='" + ageing_model + "')";
         return PyTour{std::move(tour), shared_mission, context, call};
       },
       "Plans the mission's tour in one mode, as `ceilplan tour` does: point targets, contact grids and surfaces to "

@@ -44,8 +44,6 @@ void runBench(const BenchArguments& a) {
   options.refine = !a.search.no_refine;
   options.experiment = "ceilplan " + a.planning.map;
   options.log_file = a.log;
-  const io::Provenance provenance = planningProvenance(a.planning, a.search.seed);
-  for (const auto& [name, value] : provenance.fields()) options.log_properties.emplace_back("provenance_" + name, value);
   try {
     options.validate();  // the other fields are range-checked as flags
   } catch (const InputError&) {
@@ -53,6 +51,9 @@ void runBench(const BenchArguments& a) {
   }
   planner::seedOmpl(a.search.seed);
   const auto context = makePlanningContext(a.planning);
+  const io::Provenance provenance = planningProvenance(a.planning, a.search.seed);  // the inputs read, named
+  for (const auto& [name, value] : provenance.fields())
+    options.log_properties.emplace_back("provenance_" + name, value);
   const mission::PlanningContext::Mode planning = context->mode(mission::flightModeFromName(a.mode));
   const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, context->objective(start, goal));
   print(io::plannerBenchmarkHeadline(a.mode, a.planning.options.objective, flight_planner.objective().unit(), options,
@@ -67,8 +68,8 @@ void runBench(const BenchArguments& a) {
       planner::benchmarkPlanners(flight_planner, start, goal, reference, options);
   print(io::plannerBenchmarkTable(rows, a.search.time_limit_s));
   if (!a.json.empty())
-    io::writeJsonFile(a.json,
-                      io::withProvenance(io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows), provenance));
+    io::writeJsonFile(
+        a.json, io::withProvenance(io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows), provenance));
 }
 
 const CommandRegistration registration(43, [](CLI::App& parent) {

@@ -42,8 +42,9 @@ void runCalibrate(const CalibrateOptions& options) {
                              io::calibratedVehicleComment(options.data_path, samples.size(), result, provenance));
   print("wrote " + options.out_path + "\n");
   if (!options.json_path.empty()) {
-    io::writeJsonFile(options.json_path,
-                      io::withProvenance(io::calibrationReportJson(options.data_path, samples.size(), result), provenance));
+    io::writeJsonFile(
+        options.json_path,
+        io::withProvenance(io::calibrationReportJson(options.data_path, samples.size(), result), provenance));
     print("wrote " + options.json_path + "\n");
   }
 }

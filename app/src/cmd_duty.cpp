@@ -83,7 +83,8 @@ void runDuty(const DutyArguments& args) {
   const battery::DutyStudyResult result = battery::runDutyStudy(study);
   study.progress = nullptr;  // clears the progress line before the table
   print(io::dutyStudyTable(study, result));
-  if (!args.json_path.empty()) io::writeJsonFile(args.json_path, io::withProvenance(io::dutyStudyJson(study, result), provenance));
+  if (!args.json_path.empty())
+    io::writeJsonFile(args.json_path, io::withProvenance(io::dutyStudyJson(study, result), provenance));
   if (!args.csv_dir.empty()) io::writeDutyStudyCsv(args.csv_dir, result, provenance);
 }
 
@@ -113,7 +114,8 @@ void addDutyCommand(CLI::App& parent) {
       "duty", "Duty-cycle study: SOC, FEC and charge over repeated fly/idle/charge missions "
               "(defaults: the founding paper's two cases)");
   duty->add_option("--capacity-ah", args->study.pack.capacity_ah, "Nominal pack capacity [Ah], 0.01 to 1000")
-      ->capture_default_str()->check(finiteRange(battery::Pack::kMinCapacity_ah, battery::Pack::kMaxCapacity_ah));
+      ->capture_default_str()
+      ->check(finiteRange(battery::Pack::kMinCapacity_ah, battery::Pack::kMaxCapacity_ah));
   duty->add_option("--charge-current-a", args->study.pack.charge_current_a, "Charger current [A], up to 1000")
       ->capture_default_str()->check(positiveFinite() & atMost(1000.0));
   duty->add_option("--flight-current-a", args->study.flight_currents_a,

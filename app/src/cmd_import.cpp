@@ -42,12 +42,13 @@ void runImport(const ImportArguments& args) {
     throw ceilplan::InputError("--max-range " + formatNumber(options.max_range_m) +
                                ": a finite number of metres >= 0 (0: none)");
 
-  const io::Provenance provenance =
-      commandProvenance().input("points", args.points).input("origins", args.origins).input("mesh", args.mesh);
   io::MapImport imported = [&] {
     const ProgressCallback progress = terminalProgress();  // cleared when the import ends
     return io::importMap(options, progress);
   }();
+  // After the readers, whose messages say what is wrong with a file better than "cannot be read".
+  const io::Provenance provenance =
+      commandProvenance().input("points", args.points).input("origins", args.origins).input("mesh", args.mesh);
   io::writeImportedMap(out, imported, options, provenance);
 
   print(io::mapImportText(imported, options, out));

@@ -37,16 +37,18 @@ void runMapinfo(const MapinfoOptions& options) {
   if (!options.json.empty()) io::checkWritableFile(options.json);  // before the map is read and indexed
   if (!options.slice_csv.empty()) io::checkWritableFile(options.slice_csv);
   const OccupancyMap map = OccupancyMap::load(options.map);
-  const io::Provenance provenance = commandProvenance().input("map", options.map).input("vehicle", options.vehicle);
   if (!options.vehicle.empty() && options.slice_csv.empty())
     throw ceilplan::InputError("--vehicle applies only to --slice-csv; add --slice-csv FILE or drop it");
   Progress progress("indexing " + options.map);
   const auto index = MapIndex::build(map, index_options, [&](double f) { progress.update(f); });
   progress.finish();
   const MapStatistics stats = computeStatistics(map, *index);
+  // Once the map (and below, the vehicle) was read: their readers name what is wrong with them.
+  io::Provenance provenance = commandProvenance().input("map", options.map);
   if (!options.slice_csv.empty()) {
     std::unique_ptr<Environment> environment;
     if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
+    provenance.input("vehicle", options.vehicle);
     io::writeMapSliceCsv(options.slice_csv, *index, options.slice_z_m, environment.get(), "--slice-z", provenance);
   }
   print(io::mapStatisticsText(options.map, stats));

@@ -44,8 +44,9 @@ void runProbe(const ProbeOptions& options) {
   const PositionProbe probe = probePosition(environment, body);
   print(io::positionProbeText(body, probe, vehicle, io::unknownSpaceLine(environment)));
   if (!options.json.empty())
-    io::writeJsonFile(options.json,
-                      io::withProvenance(io::probeReportJson(probe, environment, options.map, options.vehicle), provenance));
+    io::writeJsonFile(
+        options.json,
+        io::withProvenance(io::probeReportJson(probe, environment, options.map, options.vehicle), provenance));
 }
 
 const CommandRegistration registration(22, [](CLI::App& parent) {

@@ -35,7 +35,8 @@ void runRainflow(const RainflowArguments& args) {
   const io::Provenance provenance = commandProvenance().input("series", args.csv_path);
   const std::vector<battery::RainflowCycle> cycles = battery::countRainflowCycles(soc);
   print(io::rainflowText(args.column, args.csv_path, soc.size(), cycles));
-  if (!args.json_path.empty()) io::writeJsonFile(args.json_path, io::withProvenance(io::rainflowJson(cycles), provenance));
+  if (!args.json_path.empty())
+    io::writeJsonFile(args.json_path, io::withProvenance(io::rainflowJson(cycles), provenance));
 }
 
 void addRainflowCommand(CLI::App& parent) {

@@ -74,7 +74,8 @@ std::string calibratedVehicleComment(const std::filesystem::path& data, std::siz
     fitted += (fitted.empty() ? "" : ", ") + energy::parameterName(f.parameter);
   std::ostringstream comment;
   comment << "Calibrated by `ceilplan calibrate` from " << data.string() << " (" << samples << " samples; fitted "
-          << fitted << "; RMSE " << result.rmse_a << " A).\n" << provenance.line();
+          << fitted << "; RMSE " << result.rmse_a << " A).\n"
+          << provenance.line();
   return comment.str();
 }
 

@@ -138,8 +138,8 @@ nlohmann::json mapImportJson(const MapImport& imported, const MapImportOptions& 
   return summary;
 }
 
-void writeImportedMap(const std::filesystem::path& map_file, const MapImport& imported,
-                      const MapImportOptions& options, const Provenance& provenance) {
+void writeImportedMap(const std::filesystem::path& map_file, const MapImport& imported, const MapImportOptions& options,
+                      const Provenance& provenance) {
   if (map_file.extension() != ".bt")
     throw InputError(printableText(map_file.string(), 256) + ": an imported map is written as .bt");
   const nlohmann::json summary = withProvenance(mapImportJson(imported, options, map_file), provenance);

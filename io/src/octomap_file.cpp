@@ -13,7 +13,9 @@ void writeOctoMapBinary(const octomap::OcTree& tree, std::ostream& out, const st
       << "id " << tree.getTreeType() << "\nsize " << tree.size() << "\nres " << tree.getResolution() << "\ndata\n";
   tree.writeBinaryData(out);
   out.flush();
-  if (!out) throw ceilplan::Error("cannot write the OctoMap " + printableText(file.string(), 256) + ": the write failed (disk full?)");
+  if (!out)
+    throw ceilplan::Error("cannot write the OctoMap " + printableText(file.string(), 256) +
+                          ": the write failed (disk full?)");
 }
 
 bool isOctoMapFileName(const std::filesystem::path& file) {

@@ -104,8 +104,9 @@ void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajec
   writeTextAtomically(file, [&](std::ostream& out) { out << text; });
 }
 
-void writeTrajectoryJson(const std::filesystem::path& file, const mission::Trajectory& trajectory, TrajectoryFrame frame,
-                         const std::optional<mission::GeodeticOrigin>& origin, const Provenance& provenance) {
+void writeTrajectoryJson(const std::filesystem::path& file, const mission::Trajectory& trajectory,
+                         TrajectoryFrame frame, const std::optional<mission::GeodeticOrigin>& origin,
+                         const Provenance& provenance) {
   const std::string text = jsonText(withProvenance(trajectoryJson(trajectory, frame, origin), provenance)) + "\n";
   writeTextAtomically(file, [&](std::ostream& out) { out << text; });
 }

@@ -37,9 +37,10 @@ std::string openingText(double metres) { return std::isfinite(metres) ? formatFi
 
 std::string Blockage::describe() const {
   if (!enclosed_end.empty())
-    return "the " + enclosed_end + " at " + formatPoint(enclosed_at_m) + " is enclosed: the space the vehicle reaches " +
-           "from it, within " + formatPoint(enclosure_min_m) + " to " + formatPoint(enclosure_max_m) +
-           ", has no opening to the other side; move the " + enclosed_end + " or open the map there";
+    return "the " + enclosed_end + " at " + formatPoint(enclosed_at_m) +
+           " is enclosed: the space the vehicle reaches from it, within " + formatPoint(enclosure_min_m) + " to " +
+           formatPoint(enclosure_max_m) + ", has no opening to the other side; move the " + enclosed_end +
+           " or open the map there";
   std::string text = "blocked at " + formatPoint(position_m) + " by " + planner::describe(rule);
   if (rule == BlockingRule::Unknown) return text + " (the map has no data there, and unknown space counts as occupied)";
   if (rule != BlockingRule::Clearance || std::isnan(width_m)) return text;

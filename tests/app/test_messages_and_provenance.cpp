@@ -35,7 +35,8 @@ std::string missionText(const fs::path& map, const std::string& target_name) {
   return "map: '" + map.string() + "'\nvehicle: " + (kSource / "maps/vehicles/quad.yaml").string() +
          "\nbattery: {capacity_ah: 5.2, start_soc: 0.95, reserve_soc: 0.25, charge_current_a: 10.4}\n"
          "home: [-4.0, 0.0, 0.5]\norigin: {lat: 52.219, lon: 0.093, alt: 12.0}\nseed: 1\n"
-         "targets:\n  - {name: \"" + target_name + "\", point: [6.0, 0.0, 0.0], dwell_s: 5, standoff_m: [0.5, 2.0]}\n";
+         "targets:\n  - {name: \"" +
+         target_name + "\", point: [6.0, 0.0, 0.0], dwell_s: 5, standoff_m: [0.5, 2.0]}\n";
 }
 
 // Whether `text` is valid UTF-8 with no control byte but line breaks: what a terminal shows as is.
@@ -72,7 +73,7 @@ std::vector<fs::path> filesEndingIn(const fs::path& dir, const std::string& exte
 
 struct NameCase {
   std::string name;
-  std::string args;  // after `ceilplan`: {map} the hostile map path, {dir} the case's directory
+  std::string args;                     // after `ceilplan`: {map} the hostile map path, {dir} the case's directory
   bool shows_name;                      // the command's report names the file
   std::string mission_target = "mark";  // the target's name in {dir}/mission.yaml (on {map})
 };
@@ -102,15 +103,17 @@ TEST_P(HostileName, IsShownEscapedAndWrittenToJsonWithoutFailing) {
 
 INSTANTIATE_TEST_SUITE_P(
     Table, HostileName,
-    ::testing::Values(
-        NameCase{"map_path_mapinfo", "mapinfo --map {map} --json {dir}/out/info.json", true},
-        NameCase{"map_path_probe", "probe --map {map} --at 0,0,1 --json {dir}/out/probe.json", false},
-        NameCase{"map_path_plan", "plan --map {map} --start -4,0,1 --goal 4,0,1 --planner lattice --out {dir}/out", false},
-        NameCase{"map_path_tour", "tour --mission {dir}/mission.yaml --no-export --out {dir}/out", false},
-        NameCase{"target_name_tour", "tour --mission {dir}/mission.yaml --no-export --out {dir}/out", false, kHostileName},
-        NameCase{"csv_path_rainflow",
-                 "rainflow --csv {dir}/" + shellQuoted(kHostileName + ".csv") + " --column soc --json {dir}/out/cycles.json",
-                 true}),
+    ::testing::Values(NameCase{"map_path_mapinfo", "mapinfo --map {map} --json {dir}/out/info.json", true},
+                      NameCase{"map_path_probe", "probe --map {map} --at 0,0,1 --json {dir}/out/probe.json", false},
+                      NameCase{"map_path_plan",
+                               "plan --map {map} --start -4,0,1 --goal 4,0,1 --planner lattice --out {dir}/out", false},
+                      NameCase{"map_path_tour", "tour --mission {dir}/mission.yaml --no-export --out {dir}/out", false},
+                      NameCase{"target_name_tour", "tour --mission {dir}/mission.yaml --no-export --out {dir}/out",
+                               false, kHostileName},
+                      NameCase{"csv_path_rainflow",
+                               "rainflow --csv {dir}/" + shellQuoted(kHostileName + ".csv") +
+                                   " --column soc --json {dir}/out/cycles.json",
+                               true}),
     [](const auto& info) { return info.param.name; });
 
 // A message quoting a hostile name (a missing file, an unknown flag CLI11 reports) is one line,
@@ -118,9 +121,10 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(HostileNameMessages, AreOneEscapedLine) {
   const fs::path dir = scratchDirectory("hostile_name_messages");
   writeWholeFile(dir / "soc.csv", "t_s,soc\n0,0.9\n10,0.5\n");
-  for (const std::string& args : {"mapinfo --map " + shellQuoted(dir / (kHostileName + ".bt")),
-                                  "mapinfo --map " + shellQuoted(kSource / "maps/open.bt") + " " + shellQuoted("--" + kHostileName),
-                                  "rainflow --csv " + shellQuoted(dir / "soc.csv") + " --column " + shellQuoted(kHostileName)}) {
+  for (const std::string& args :
+       {"mapinfo --map " + shellQuoted(dir / (kHostileName + ".bt")),
+        "mapinfo --map " + shellQuoted(kSource / "maps/open.bt") + " " + shellQuoted("--" + kHostileName),
+        "rainflow --csv " + shellQuoted(dir / "soc.csv") + " --column " + shellQuoted(kHostileName)}) {
     const CommandResult r = runCeilplan(args);
     EXPECT_EQ(r.exit_code, 2) << args;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -199,15 +203,19 @@ const std::string kOpen = "{src}/maps/open.bt";
 INSTANTIATE_TEST_SUITE_P(
     Table, EveryOutput,
     ::testing::Values(
-        OutputCase{"plan", "plan --map " + kOpen + " --start -4,0,1 --goal 4,0,1 --planner lattice --out {out}",
+        OutputCase{
+            "plan", "plan --map " + kOpen + " --start -4,0,1 --goal 4,0,1 --planner lattice --out {out}", {kOpen}},
+        OutputCase{"compare",
+                   "compare --map " + kOpen + " --start -4,0,1 --goal 4,0,1 --planner lattice --out {out}",
                    {kOpen}},
-        OutputCase{"compare", "compare --map " + kOpen + " --start -4,0,1 --goal 4,0,1 --planner lattice --out {out}",
-                   {kOpen}},
-        OutputCase{"evaluate", "evaluate --map " + kOpen + " --path {dir}/path.csv --json {out}/check.json",
+        OutputCase{"evaluate",
+                   "evaluate --map " + kOpen + " --path {dir}/path.csv --json {out}/check.json",
                    {kOpen, "{dir}/path.csv"}},
-        OutputCase{"tour", "tour --mission {dir}/mission.yaml --out {out}",
+        OutputCase{"tour",
+                   "tour --mission {dir}/mission.yaml --out {out}",
                    {"{dir}/mission.yaml", kOpen, "{src}/maps/vehicles/quad.yaml"}},
-        OutputCase{"current", "current --gap-m 0.1 --vehicle {src}/maps/vehicles/quad.yaml --json {out}/current.json",
+        OutputCase{"current",
+                   "current --gap-m 0.1 --vehicle {src}/maps/vehicles/quad.yaml --json {out}/current.json",
                    {"{src}/maps/vehicles/quad.yaml"}},
         OutputCase{"mapinfo",
                    "mapinfo --map " + kOpen + " --json {out}/info.json --slice-z 1 --slice-csv {out}/slice.csv",
@@ -220,10 +228,11 @@ INSTANTIATE_TEST_SUITE_P(
                    "--json {out}/fit.json",
                    {"{src}/maps/calibration/published-ceiling-hover.csv"}},
         OutputCase{"import", "import --points {dir}/points.xyz --resolution 0.1 --out {out}.bt", {"{dir}/points.xyz"}},
-        OutputCase{"bench_planners",
-                   "bench-planners --map " + kOpen +
-                       " --start -4,0,1 --goal 4,0,1 --planners RRTstar --runs 1 --time-limit-s 0.2 --json {out}/bench.json",
-                   {kOpen}}),
+        OutputCase{
+            "bench_planners",
+            "bench-planners --map " + kOpen +
+                " --start -4,0,1 --goal 4,0,1 --planners RRTstar --runs 1 --time-limit-s 0.2 --json {out}/bench.json",
+            {kOpen}}),
     [](const auto& info) { return info.param.name; });
 
 // The calibrated vehicle file and OMPL's benchmark log have their own forms: a YAML comment and
@@ -237,8 +246,10 @@ TEST(EveryOutput, TheCalibratedVehicleAndTheBenchmarkLogRecordTheirProvenance) {
   EXPECT_NE(yaml.find(data + " sha256 " + ceilplan::io::sha256File(data)), std::string::npos) << yaml.substr(0, 400);
 
   const std::string map = (kSource / "maps/open.bt").string();
-  const CommandResult bench = runCeilplan("bench-planners --map " + map + " --start -4,0,1 --goal 4,0,1 --planners RRTstar "
-                                          "--runs 1 --time-limit-s 0.2 --log " + (dir / "bench.log").string());
+  const CommandResult bench = runCeilplan("bench-planners --map " + map +
+                                          " --start -4,0,1 --goal 4,0,1 --planners RRTstar "
+                                          "--runs 1 --time-limit-s 0.2 --log " +
+                                          (dir / "bench.log").string());
   ASSERT_EQ(bench.exit_code, 0) << bench.err;
   const std::string log = readWholeFile(dir / "bench.log");
   EXPECT_NE(log.find("provenance_command VARCHAR = "), std::string::npos) << log.substr(0, 600);

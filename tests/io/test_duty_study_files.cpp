@@ -89,7 +89,8 @@ TEST(DutyStudyCsv, WritesTheSeriesOfEveryCase) {
   for (const char* name : {"case1_mission.csv", "case1_day.csv", "case1_run.csv", "case2_run.csv", "case1_soh.csv",
                            "case2_soh.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
-  EXPECT_EQ(testing::readWholeFile(dir / "cases.csv"), comment + "case,prefix,flight_current_a\n1,case1,9.5\n2,case2,8\n");
+  EXPECT_EQ(testing::readWholeFile(dir / "cases.csv"),
+            comment + "case,prefix,flight_current_a\n1,case1,9.5\n2,case2,8\n");
   const std::string mission = testing::readWholeFile(dir / "case1_mission.csv");
   EXPECT_EQ(mission.rfind(comment + "t_s,current_a,soc,fec,fec_continuous,mode\n0,", 0), 0u) << mission.substr(0, 80);
   EXPECT_NE(mission.find(",charge\n"), std::string::npos);

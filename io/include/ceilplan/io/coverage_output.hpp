@@ -55,7 +55,8 @@ void writeCoverageJson(const std::filesystem::path& file, const nlohmann::json& 
 // time), coverage.json (the plan with the re-check of the photos flown) and
 // coverage_elements.csv (each element as the re-check found it), each with `provenance`. Throws
 // ceilplan::InputError when the tour has no coverage plan.
-void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourResult& tour, const Provenance& provenance);
+void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourResult& tour,
+                        const Provenance& provenance);
 
 // tour.json's "coverage": photos, route_m, and per region name, area_m2, reachable_area_m2,
 // covered_area_m2, covered_pct, covered_reachable_pct, unreachable_area_m2, mean_gsd_mm_px.

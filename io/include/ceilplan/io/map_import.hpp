@@ -70,7 +70,7 @@ nlohmann::json mapImportJson(const MapImport& imported, const MapImportOptions& 
 // Writes `map_file` (.bt) and its summary `<map_file>.json` (mapImportJson with `provenance`)
 // together: on any failure neither is left behind. Throws ceilplan::InputError for a name not
 // ending in .bt.
-void writeImportedMap(const std::filesystem::path& map_file, const MapImport& imported,
-                      const MapImportOptions& options, const Provenance& provenance);
+void writeImportedMap(const std::filesystem::path& map_file, const MapImport& imported, const MapImportOptions& options,
+                      const Provenance& provenance);
 
 }  // namespace ceilplan::io

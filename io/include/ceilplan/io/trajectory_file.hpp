@@ -41,7 +41,8 @@ nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryF
 // comment, the JSON holds it as "provenance".
 void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajectory& trajectory, TrajectoryFrame frame,
                         const Provenance& provenance);
-void writeTrajectoryJson(const std::filesystem::path& file, const mission::Trajectory& trajectory, TrajectoryFrame frame,
-                         const std::optional<mission::GeodeticOrigin>& origin, const Provenance& provenance);
+void writeTrajectoryJson(const std::filesystem::path& file, const mission::Trajectory& trajectory,
+                         TrajectoryFrame frame, const std::optional<mission::GeodeticOrigin>& origin,
+                         const Provenance& provenance);
 
 }  // namespace ceilplan::io
