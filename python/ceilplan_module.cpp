@@ -2,6 +2,7 @@
 // for samples. docs/python.md walks through a session.
 
 #include "ceilplan/ceilplan.hpp"
+#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/output_set.hpp"
 
 #include <pybind11/numpy.h>
@@ -68,6 +69,7 @@ struct PyTour {
   mission::TourResult tour;
   std::shared_ptr<const mission::Mission> mission;
   std::shared_ptr<const mission::PlanningContext> context;
+  std::string call;  // how it was planned, for the provenance of what Tour.write writes
 };
 
 double noneAsInfinity(const std::optional<double>& value) { return value ? *value : energy::kNoSurface; }
@@ -183,7 +185,9 @@ py::dict photoArrays(const std::vector<mission::PhotoRow>& rows) {
 }
 
 // A JSON document as Python objects.
-py::object pythonJson(const nlohmann::json& json) { return py::module_::import("json").attr("loads")(json.dump()); }
+py::object pythonJson(const nlohmann::json& json) {
+  return py::module_::import("json").attr("loads")(io::jsonText(json));
+}
 
 py::object noneIfEmpty(const std::optional<double>& value) { return value ? py::object(py::float_(*value)) : py::none(); }
 
@@ -478,7 +482,10 @@ PYBIND11_MODULE(ceilplan, m) {
           [](const PyTour& t, const std::filesystem::path& dir, bool export_autopilot) {
             std::optional<io::Autopilot> autopilot;
             if (export_autopilot) autopilot = io::Autopilot::PX4;
-            const io::Provenance provenance = io::tourProvenance("python: ceilplan.plan_tour", *t.mission, t.tour.options.seed);
+            const std::string call = "python: " + t.call + ".write('" + dir.string() +
+                                     "', autopilot=" + (export_autopilot ? "True" : "False") + ")";
+            const io::Provenance provenance =
+                io::tourProvenance(io::Provenance::of(call), *t.mission, t.tour.options.seed);
             // The rules of `ceilplan tour --out`: replaced whole, only if ceilplan wrote it (or it is empty).
             io::OutputSet out({{"dir", dir, true}}, {{"the mission's map", t.mission->map_file},
                                                      {"the mission's vehicle", t.mission->vehicle_file}});
@@ -503,7 +510,10 @@ PYBIND11_MODULE(ceilplan, m) {
         py::gil_scoped_release release;
         auto context = std::make_shared<const mission::PlanningContext>(*shared_mission);
         mission::TourResult tour = mission::planTour(*shared_mission, *context, flight_mode, options);
-        return PyTour{std::move(tour), shared_mission, context};
+        const std::string call = "ceilplan.plan_tour(mission, mode='" + mode +
+                                 "', seed=" + std::to_string(options.seed) + ", planner='" + planner +
+                                 "', ageing_model='" + ageing_model + "')";
+        return PyTour{std::move(tour), shared_mission, context, call};
       },
       "Plans the mission's tour in one mode, as `ceilplan tour` does: point targets, contact grids and surfaces to "
       "photograph",

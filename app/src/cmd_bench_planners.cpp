@@ -18,8 +18,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <cstdio>
-#include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -56,22 +54,25 @@ void runBench(const BenchArguments& a) {
   }
   planner::seedOmpl(a.search.seed);
   const auto context = makePlanningContext(a.planning);
+  const io::Provenance provenance = planningProvenance(a.planning, a.search.seed);  // the inputs read, named
+  for (const auto& [name, value] : provenance.fields())
+    options.log_properties.emplace_back("provenance_" + name, value);
   const mission::PlanningContext::Mode planning = context->mode(mission::flightModeFromName(a.mode));
   const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, context->objective(start, goal));
-  std::printf("%s", io::plannerBenchmarkHeadline(a.mode, a.planning.options.objective, flight_planner.objective().unit(),
-                                                 options, a.search.seed).c_str());
+  print(io::plannerBenchmarkHeadline(a.mode, a.planning.options.objective, flight_planner.objective().unit(), options,
+                                     a.search.seed));
 
   const planner::PlanRequest request = a.search.request(start, goal);
   const planner::PlanResult reference = planner::planLatticeReference(flight_planner, request);
-  std::printf("%s", io::latticeReferenceLine(reference, request.lattice.spacing_m).c_str());
-  std::fflush(stdout);
+  print(io::latticeReferenceLine(reference, request.lattice.spacing_m));
 
   options.lattice = request.lattice;
   const std::vector<planner::PlannerBenchmarkRow> rows =
       planner::benchmarkPlanners(flight_planner, start, goal, reference, options);
-  std::cout << io::plannerBenchmarkTable(rows, a.search.time_limit_s);
+  print(io::plannerBenchmarkTable(rows, a.search.time_limit_s));
   if (!a.json.empty())
-    io::writeJsonFile(out.path("--json"), io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows));
+    io::writeJsonFile(out.path("--json"),
+                      io::withProvenance(io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows), provenance));
   if (!a.log.empty()) io::writeTextAtomically(out.path("--log"), [&](std::ostream& file) { file << log.str(); });
   out.commit();
 }

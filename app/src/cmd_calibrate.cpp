@@ -10,8 +10,6 @@
 #include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
-#include <cstdio>
-#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,16 +34,19 @@ void runCalibrate(const CalibrateOptions& options) {
   std::vector<energy::FreeParameter> free;
   for (const std::string& name : options.fit) free.push_back(energy::parseFreeParameter(name));
   if (free.empty()) free = energy::identifiableParameters(vehicle.energy, samples);
+  const io::Provenance provenance =
+      commandProvenance().input("data", options.data_path).input("vehicle", options.vehicle_path);
   const energy::CalibrationResult result = energy::calibrate(vehicle.energy, samples, free);
 
-  std::cout << io::calibrationText(vehicle.name, options.data_path, samples.size(), result);
+  print(io::calibrationText(vehicle.name, options.data_path, samples.size(), result));
   io::writeCalibratedVehicle(out.path("--out"), options.vehicle_path, result.parameters,
-                             io::calibratedVehicleComment(options.data_path, samples.size(), result));
+                             io::calibratedVehicleComment(options.data_path, samples.size(), result, provenance));
   if (!options.json_path.empty())
-    io::writeJsonFile(out.path("--json"), io::calibrationReportJson(options.data_path, samples.size(), result));
+    io::writeJsonFile(out.path("--json"), io::withProvenance(io::calibrationReportJson(options.data_path, samples.size(), result),
+                                                             provenance));
   out.commit();
-  std::printf("wrote %s\n", options.out_path.c_str());
-  if (!options.json_path.empty()) std::printf("wrote %s\n", options.json_path.c_str());
+  print("wrote " + options.out_path + "\n");
+  if (!options.json_path.empty()) print("wrote " + options.json_path + "\n");
 }
 
 const CommandRegistration registration(31, [](CLI::App& parent) {

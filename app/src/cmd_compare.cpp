@@ -12,7 +12,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <cstdio>
 #include <string>
 
 namespace ceilplan::app {
@@ -30,20 +29,18 @@ void runCompare(const CompareArguments& a) {
   io::OutputSet out(a.out, planningInputs(a.planning));  // checked and staged before any work
   planner::seedOmpl(a.search.seed);
   const auto context = makePlanningContext(a.planning);
-  std::printf("comparing ceiling and free modes: objective %s, %s\nunknown space: %s\n",
-              a.planning.options.objective.c_str(), a.search.describe().c_str(),
-              io::unknownSpaceLine(context->environment()).c_str());
-  std::fflush(stdout);
+  print("comparing ceiling and free modes: objective " + a.planning.options.objective + ", " + a.search.describe() +
+        "\nunknown space: " + io::unknownSpaceLine(context->environment()) + "\n");
   const mission::RouteComparison comparison = mission::compareRoutes(*context, a.search.request(start, goal), a.duty);
   if (comparison.ceiling.plan.from_candidate)
-    std::printf("ceiling mode found nothing better than the free-mode route: it flies that route, post-processed\n");
-  std::printf("\n%s", io::routeComparisonTable(comparison, a.duty, context->battery()).c_str());
-  if (comparison.free.standoff) std::printf("\nfree mode's %s\n", io::standoffLine(*comparison.free.standoff).c_str());
+    print("ceiling mode found nothing better than the free-mode route: it flies that route, post-processed\n");
+  print("\n" + io::routeComparisonTable(comparison, a.duty, context->battery()));
+  if (comparison.free.standoff) print("\nfree mode's " + io::standoffLine(*comparison.free.standoff) + "\n");
   io::writeRouteComparison(out.path(), comparison, a.duty, *context, a.search.plannerName(), a.search.seed,
                            planningProvenance(a.planning, a.search.seed));
   out.commit();
-  std::printf("\nwrote %s/{compare.json, ceiling/, free/, map_top.csv, map_side.csv}; figures: scripts/plot-compare %s\n",
-              a.out.c_str(), a.out.c_str());
+  print("\nwrote " + a.out +
+        "/{compare.json, ceiling/, free/, map_top.csv, map_side.csv}; figures: scripts/plot-compare " + a.out + "\n");
 }
 
 const CommandRegistration registration(42, [](CLI::App& parent) {

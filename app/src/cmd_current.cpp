@@ -15,8 +15,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
-#include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -40,6 +38,7 @@ struct CurrentOptions {
 void runCurrent(const CurrentOptions& options) {
   io::OutputSet out({{"--json", options.json_path}}, commandInputs({{"--vehicle", options.vehicle_path}}));
   const mission::Vehicle vehicle = io::readVehicleOrDefault(options.vehicle_path);
+  const io::Provenance provenance = commandProvenance().input("vehicle", options.vehicle_path);
   const energy::EnergyModel model(vehicle.energy);
   energy::FlightCondition flight;
   flight.ground_gap_m = options.ground_gap_m.value_or(energy::kNoSurface);
@@ -49,22 +48,22 @@ void runCurrent(const CurrentOptions& options) {
   const double gap_m = options.gap_m.value_or(energy::kNoSurface);
   const energy::CurrentBreakdown at_point = model.breakdown(gap_m, options.coverage, flight);  // validates input
 
-  std::cout << io::flightConditionText(vehicle.name, options.coverage, options.ground_gap_m, flight);
+  print(io::flightConditionText(vehicle.name, options.coverage, options.ground_gap_m, flight));
   nlohmann::json report;
   if (options.sweep) {
     const double radius_m = model.rotorRadiusM();
     const double free_air_a = model.currentA(energy::kNoSurface, options.coverage, flight);
     const std::vector<energy::GapPoint> sweep = energy::ceilingGapSweep(model, options.coverage, flight);
-    std::cout << io::currentSweepText(radius_m, free_air_a, sweep);
+    print(io::currentSweepText(radius_m, free_air_a, sweep));
     report = io::currentSweepReportJson(vehicle.name, options.coverage, flight, radius_m, free_air_a, sweep);
   } else {
-    std::cout << io::currentBreakdownText(options.gap_m, at_point);
+    print(io::currentBreakdownText(options.gap_m, at_point));
     report = io::currentReportJson(vehicle.name, gap_m, options.coverage, flight, at_point);
   }
   if (!options.json_path.empty()) {
-    io::writeJsonFile(out.path("--json"), report);
+    io::writeJsonFile(out.path("--json"), io::withProvenance(report, provenance));
     out.commit();
-    std::printf("wrote %s\n", options.json_path.c_str());
+    print("wrote " + options.json_path + "\n");
   }
 }
 

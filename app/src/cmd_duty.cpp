@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -79,12 +78,14 @@ void runDuty(const DutyArguments& args) {
   checkStudy(args, study);
   // Checked and staged before the work; the JSON and the CSV directory appear together.
   io::OutputSet out({{"--json", args.json_path}, {"--csv-dir", args.csv_dir, true}}, commandInputs({}));
+  const io::Provenance provenance = commandProvenance();
   study.progress = terminalProgress();
   const battery::DutyStudyResult result = battery::runDutyStudy(study);
   study.progress = nullptr;  // clears the progress line before the table
-  std::cout << io::dutyStudyTable(study, result);
-  if (!args.json_path.empty()) io::writeJsonFile(out.path("--json"), io::dutyStudyJson(study, result));
-  if (!args.csv_dir.empty()) io::writeDutyStudyCsv(out.path("--csv-dir"), result);
+  print(io::dutyStudyTable(study, result));
+  if (!args.json_path.empty())
+    io::writeJsonFile(out.path("--json"), io::withProvenance(io::dutyStudyJson(study, result), provenance));
+  if (!args.csv_dir.empty()) io::writeDutyStudyCsv(out.path("--csv-dir"), result, provenance);
   out.commit();
 }
 
@@ -113,8 +114,9 @@ void addDutyCommand(CLI::App& parent) {
   CLI::App* duty = parent.add_subcommand(
       "duty", "Duty-cycle study: SOC, FEC and charge over repeated fly/idle/charge missions "
               "(defaults: the founding paper's two cases)");
-  duty->add_option("--capacity-ah", args->study.pack.capacity_ah, "Nominal pack capacity [Ah], up to 1000")
-      ->capture_default_str()->check(positiveFinite() & atMost(1000.0));
+  duty->add_option("--capacity-ah", args->study.pack.capacity_ah, "Nominal pack capacity [Ah], 0.01 to 1000")
+      ->capture_default_str()
+      ->check(finiteRange(battery::Pack::kMinCapacity_ah, battery::Pack::kMaxCapacity_ah));
   duty->add_option("--charge-current-a", args->study.pack.charge_current_a, "Charger current [A], up to 1000")
       ->capture_default_str()->check(positiveFinite() & atMost(1000.0));
   duty->add_option("--flight-current-a", args->study.flight_currents_a,

@@ -12,7 +12,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <cstdio>
 #include <string>
 
 namespace ceilplan::app {
@@ -36,7 +35,7 @@ void runEvaluate(const EvaluateArguments& a) {
   } catch (...) {
     rethrowWithContext(a.path + ": ");
   }
-  std::printf("%s", io::routeCheckText(check, waypoints.size(), *context).c_str());
+  print(io::routeCheckText(check, waypoints.size(), *context));
   if (a.json.empty()) return;
   io::Provenance provenance = planningProvenance(a.planning, std::nullopt);
   provenance.input("path", a.path);

@@ -13,7 +13,6 @@
 #include "ceilplan/io/report_text.hpp"
 
 #include <cmath>
-#include <iostream>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -51,10 +50,13 @@ void runImport(const ImportArguments& args) {
     const ProgressCallback progress = terminalProgress();  // cleared when the import ends
     return io::importMap(options, progress);
   }();
-  io::writeImportedMap(outputs.path("--out"), imported, options, outputs.path("--out's summary"));
+  // After the readers, whose messages say what is wrong with a file better than "cannot be read".
+  const io::Provenance provenance =
+      commandProvenance().input("points", args.points).input("origins", args.origins).input("mesh", args.mesh);
+  io::writeImportedMap(outputs.path("--out"), imported, options, provenance, outputs.path("--out's summary"));
   outputs.commit();
 
-  std::cout << io::mapImportText(imported, options, out);
+  print(io::mapImportText(imported, options, out));
 }
 
 const CommandRegistration registration(19, [](CLI::App& parent) {

@@ -10,7 +10,6 @@
 #include "ceilplan/io/octomap_file.hpp"
 #include "ceilplan/io/report_text.hpp"
 
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -35,7 +34,7 @@ void runMapgen(const MapgenOptions& options) {
   const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
   io::writeOctoMapFile(outputs.path("--out"), *tree);
   outputs.commit();
-  std::printf("%s", io::generatedSceneLine(options.scene, options.scene_options, grid, tree->size(), out).c_str());
+  print(io::generatedSceneLine(options.scene, options.scene_options, grid, tree->size(), out));
 }
 
 const CommandRegistration registration(20, [](CLI::App& parent) {

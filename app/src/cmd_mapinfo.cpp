@@ -15,7 +15,6 @@
 #include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
-#include <iostream>
 #include <memory>
 #include <string>
 
@@ -45,13 +44,17 @@ void runMapinfo(const MapinfoOptions& options) {
   const auto index = MapIndex::build(map, index_options, [&](double f) { progress.update(f); });
   progress.finish();
   const MapStatistics stats = computeStatistics(map, *index);
+  // Once the map (and below, the vehicle) was read: their readers name what is wrong with them.
+  io::Provenance provenance = commandProvenance().input("map", options.map);
   if (!options.slice_csv.empty()) {
     std::unique_ptr<Environment> environment;
     if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
-    io::writeMapSliceCsv(out.path("--slice-csv"), *index, options.slice_z_m, environment.get(), "--slice-z");
+    provenance.input("vehicle", options.vehicle);
+    io::writeMapSliceCsv(out.path("--slice-csv"), *index, options.slice_z_m, environment.get(), "--slice-z", provenance);
   }
-  std::cout << io::mapStatisticsText(options.map, stats);
-  if (!options.json.empty()) io::writeJsonFile(out.path("--json"), io::mapStatisticsJson(options.map, stats));
+  print(io::mapStatisticsText(options.map, stats));
+  if (!options.json.empty())
+    io::writeJsonFile(out.path("--json"), io::withProvenance(io::mapStatisticsJson(options.map, stats), provenance));
   out.commit();
 }
 

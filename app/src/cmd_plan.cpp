@@ -10,7 +10,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <cstdio>
 #include <string>
 
 namespace ceilplan::app {
@@ -29,17 +28,15 @@ void runPlan(const PlanArguments& a) {
   planner::seedOmpl(a.search.seed);  // before anything makes an OMPL random generator
   const auto context = makePlanningContext(a.planning);
   const planner::ObjectiveChoice objective = context->objective(start, goal);
-  if (objective.name == "ageing") std::printf("%s\n", io::ageingObjectiveLine(objective.ageing).c_str());
-  std::printf("planning %s mode, objective %s, %s\nunknown space: %s\n", a.mode.c_str(),
-              a.planning.options.objective.c_str(), a.search.describe().c_str(),
-              io::unknownSpaceLine(context->environment()).c_str());
-  std::fflush(stdout);
+  if (objective.name == "ageing") print(io::ageingObjectiveLine(objective.ageing) + "\n");
+  print("planning " + a.mode + " mode, objective " + a.planning.options.objective + ", " + a.search.describe() +
+        "\nunknown space: " + io::unknownSpaceLine(context->environment()) + "\n");
   const mission::RoutePlan route = mission::planRoute(*context, mode, a.search.request(start, goal));
   io::writeRoutePlan(out.path(), route, *context, a.planning.map, a.search.seed,
                      planningProvenance(a.planning, a.search.seed));
   out.commit();
-  std::printf("%s", io::routePlanText(route).c_str());
-  std::printf("wrote %s and %s\n", (out.finalPath() / "plan.json").c_str(), (out.finalPath() / "path.csv").c_str());
+  print(io::routePlanText(route));
+  print("wrote " + (out.finalPath() / "plan.json").string() + " and " + (out.finalPath() / "path.csv").string() + "\n");
 }
 
 const CommandRegistration registration(40, [](CLI::App& parent) {

@@ -14,7 +14,6 @@
 #include "ceilplan/io/unknown_space_report.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
-#include <iostream>
 #include <memory>
 #include <string>
 
@@ -38,14 +37,17 @@ void runProbe(const ProbeOptions& options) {
   MapIndexOptions index_options;
   index_options.unknown = options.unknown.value();
   const OccupancyMap map = OccupancyMap::load(options.map);
+  const io::Provenance provenance = commandProvenance().input("map", options.map).input("vehicle", options.vehicle);
   Progress progress("indexing " + options.map);
   const Environment environment(MapIndex::build(map, index_options, [&](double f) { progress.update(f); }), vehicle);
   progress.finish();
 
   const PositionProbe probe = probePosition(environment, body);
-  std::cout << io::positionProbeText(body, probe, vehicle, io::unknownSpaceLine(environment));
+  print(io::positionProbeText(body, probe, vehicle, io::unknownSpaceLine(environment)));
   if (!options.json.empty())
-    io::writeJsonFile(out.path("--json"), io::probeReportJson(probe, environment, options.map, options.vehicle));
+    io::writeJsonFile(out.path("--json"), io::withProvenance(io::probeReportJson(probe, environment, options.map,
+                                                                                  options.vehicle),
+                                                             provenance));
   out.commit();
 }
 

@@ -8,12 +8,12 @@
 #include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/provenance.hpp"
 #include "ceilplan/io/soc_series_file.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
-#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,9 +32,11 @@ void runRainflow(const RainflowArguments& args) {
     throw InputError("--json " + ceilplan::printableText(args.json_path, 256) + " is a directory; give a file name");
   io::OutputSet out({{"--json", args.json_path}}, commandInputs({{"--csv", args.csv_path}}));
   const std::vector<double> soc = io::readSocSeries(args.csv_path, args.column);
+  const io::Provenance provenance = commandProvenance().input("series", args.csv_path);
   const std::vector<battery::RainflowCycle> cycles = battery::countRainflowCycles(soc);
-  std::cout << io::rainflowText(args.column, args.csv_path, soc.size(), cycles);
-  if (!args.json_path.empty()) io::writeJsonFile(out.path("--json"), io::rainflowJson(cycles));
+  print(io::rainflowText(args.column, args.csv_path, soc.size(), cycles));
+  if (!args.json_path.empty())
+    io::writeJsonFile(out.path("--json"), io::withProvenance(io::rainflowJson(cycles), provenance));
   out.commit();
 }
 

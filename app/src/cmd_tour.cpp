@@ -25,7 +25,6 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -71,31 +70,29 @@ void runTour(TourArguments a) {
   const std::vector<mission::FlightMode> modes = mission::tourFlightModes(a.mode);
   a.options.progress = progress;
 
-  const io::Provenance provenance = io::tourProvenance(invocation(), mission, a.options.seed);
+  const io::Provenance provenance = io::tourProvenance(commandProvenance(), mission, a.options.seed);
 
-  std::printf("%s", io::tourHeadline(mission, a.mode, a.options).c_str());
-  std::printf("unknown space: %s\n", io::unknownSpaceLine(context.environment()).c_str());
-  std::fflush(stdout);
+  print(io::tourHeadline(mission, a.mode, a.options) + "unknown space: " + io::unknownSpaceLine(context.environment()) +
+        "\n");
   std::vector<mission::TourResult> tours;
   bool kmz_written = autopilot.has_value();
   for (mission::FlightMode mode : modes) {
     tours.push_back(mission::planTour(mission, context, mode, a.options));
     const std::filesystem::path dir = modes.size() > 1 ? out.path() / mission::flightModeName(mode) : out.path();
     io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot, provenance);
-    std::printf("%s", io::tourSummary(tours.back()).c_str());
+    print(io::tourSummary(tours.back()));
     if (autopilot)
       if (const std::optional<std::string> dji = io::djiExportProblem(tours.back(), mission)) {
-        std::printf("  DJI KMZ not written: %s\n", dji->c_str());
+        print("  DJI KMZ not written: " + *dji + "\n");
         kmz_written = false;
       }
-    std::fflush(stdout);
   }
   if (tours.size() == 2) {
-    std::printf("\n%s", io::comparisonTable(tours[0], tours[1]).c_str());
+    print("\n" + io::comparisonTable(tours[0], tours[1]));
     io::writeTourComparison(out.path(), tours[0], tours[1], mission, context.environment(), provenance);
   }
   out.commit();
-  std::printf("\n%s", io::tourFilesLine(a.out, mission, autopilot, kmz_written).c_str());
+  print("\n" + io::tourFilesLine(a.out, mission, autopilot, kmz_written));
 }
 
 const CommandRegistration registration(50, [](CLI::App& parent) {

@@ -58,27 +58,30 @@ int main(int argc, char** argv) {
       return kExitBadInput;
     }
   }
+  // Messages quote flags, file names and file contents: one line, escaped, whatever they hold.
+  const auto fail = [](const char* kind, const std::string& message, int code) {
+    std::cerr << "ceilplan: " << kind << ": " << ceilplan::printableText(message, std::string::npos) << '\n';
+    return code;
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
-    std::cerr << "ceilplan: error: " << e.what() << " (see 'ceilplan --help')\n";
-    return kExitBadInput;
+    return fail("error", std::string(e.what()) + " (see 'ceilplan --help')", kExitBadInput);
   } catch (const ceilplan::NoPathError& e) {
-    std::cerr << "ceilplan: no path: " << e.what() << '\n';
-    return kExitNoPath;
+    return fail("no path", e.what(), kExitNoPath);
   } catch (const ceilplan::InfeasibleError& e) {
-    std::cerr << "ceilplan: error: " << e.what() << '\n';
-    return kExitNoPath;
+    return fail("error", e.what(), kExitNoPath);
   } catch (const ceilplan::InputError& e) {
-    std::cerr << "ceilplan: error: " << e.what() << '\n';
-    return kExitBadInput;
+    return fail("error", e.what(), kExitBadInput);
   } catch (const std::bad_alloc&) {
-    std::cerr << "ceilplan: error: out of memory; use a coarser map resolution, a smaller map or fewer targets\n";
-    return kExitFailure;
+    return fail("error", "out of memory; use a coarser map resolution, a smaller map or fewer targets", kExitFailure);
+  } catch (const ceilplan::Error& e) {
+    return fail("error", e.what(), kExitFailure);
   } catch (const std::exception& e) {
-    std::cerr << "ceilplan: error: " << e.what() << '\n';
-    return kExitFailure;
+    // Not ceilplan's own words: a library's text, which names neither file nor remedy.
+    return fail("error", std::string("internal failure (") + e.what() + "); please report it with the command line",
+                kExitFailure);
   }
   return kExitOk;
 }

@@ -1,5 +1,6 @@
 #include "output.hpp"
 
+#include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/io/provenance.hpp"
 
 #include <CLI/CLI.hpp>
@@ -15,7 +16,7 @@
 
 namespace ceilplan::app {
 
-Progress::Progress(std::string label, bool enabled) : label_(std::move(label)), enabled_(enabled) {}
+Progress::Progress(std::string label, bool enabled) : label_(printableText(label, 96)), enabled_(enabled) {}
 
 Progress::Progress(std::string label) : Progress(std::move(label), ::isatty(STDERR_FILENO) == 1) {}
 
@@ -38,16 +39,32 @@ void Progress::finish() {
   enabled_ = false;
 }
 
+void print(const std::string& text) { std::cout << printableLines(text) << std::flush; }
+
 namespace {
 std::string& invocationText() {
   static std::string text = "ceilplan";
   return text;
 }
+
+// The --config file of the command line, an input like any other: its flags are not on the line.
+std::string& configFile() {
+  static std::string file;
+  return file;
+}
 }  // namespace
 
-void recordInvocation(int argc, const char* const* argv) { invocationText() = io::commandLine(argc, argv); }
+void recordInvocation(int argc, const char* const* argv) {
+  invocationText() = io::commandLine(argc, argv);
+  const std::string flag = "--config";
+  for (int k = 1; k < argc; ++k) {
+    const std::string argument = argv[k];
+    if (argument == flag && k + 1 < argc) configFile() = argv[k + 1];
+    if (argument.rfind(flag + "=", 0) == 0) configFile() = argument.substr(flag.size() + 1);
+  }
+}
 
-const std::string& invocation() { return invocationText(); }
+io::Provenance commandProvenance() { return io::Provenance::of(invocationText()).input("config", configFile()); }
 
 namespace {
 const CLI::Option*& configOption() {

@@ -4,6 +4,7 @@
 
 #include "ceilplan/core/progress.hpp"
 #include "ceilplan/io/output_set.hpp"
+#include "ceilplan/io/provenance.hpp"
 
 #include <string>
 #include <vector>
@@ -30,9 +31,15 @@ class Progress {
   int last_percent_ = -1;
 };
 
+// Writes a command's report to stdout, every line through printableLines: file names, target
+// and vehicle names come from the user and must not reach the terminal as raw bytes.
+void print(const std::string& text);
+
 // The command line as typed (main records it), for the outputs' provenance.
 void recordInvocation(int argc, const char* const* argv);
-const std::string& invocation();
+// The provenance every output of this run records: the version, the command line and its
+// --config file; the command adds its other input files (and seed).
+io::Provenance commandProvenance();
 
 // The --config option (main records it): the file it names is an input of every command, which
 // no output may replace.

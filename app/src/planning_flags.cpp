@@ -95,7 +95,7 @@ Eigen::Vector3d parsePoint(const std::string& text, const std::string& flag) {
 }
 
 io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std::uint64_t> seed) {
-  io::Provenance provenance = io::Provenance::of(invocation());
+  io::Provenance provenance = commandProvenance();
   provenance.input("map", flags.map).input("vehicle", flags.vehicle).input("battery", flags.battery);
   provenance.seed = seed;
   return provenance;

@@ -10,8 +10,9 @@
 namespace ceilplan::battery {
 
 void Pack::validate() const {
-  if (!(std::isfinite(capacity_ah) && capacity_ah > 0.0))
-    throw ceilplan::InputError("pack capacity must be a positive number of Ah, got " + formatNumber(capacity_ah));
+  if (!(capacity_ah >= kMinCapacity_ah && capacity_ah <= kMaxCapacity_ah))
+    throw ceilplan::InputError("pack capacity must be " + formatNumber(kMinCapacity_ah) + " to " +
+                               formatNumber(kMaxCapacity_ah) + " Ah, got " + formatNumber(capacity_ah));
   if (cell_count < 1)
     throw ceilplan::InputError("pack cell count must be at least 1, got " + std::to_string(cell_count));
   if (!(std::isfinite(charge_current_a) && charge_current_a >= 0.0))

@@ -1,5 +1,6 @@
 #include "ceilplan/core/printable_text.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace ceilplan {
@@ -54,6 +55,17 @@ std::string printableText(std::string_view text, std::size_t max_chars) {
     std::snprintf(escaped, sizeof escaped, "\\x%02X", c);
     out += escaped;
     ++i;
+  }
+  return out;
+}
+
+std::string printableLines(std::string_view text) {
+  std::string out;
+  for (std::size_t begin = 0; begin < text.size();) {
+    const std::size_t end = std::min(text.find('\n', begin), text.size());
+    out += printableText(text.substr(begin, end - begin), std::string_view::npos);
+    if (end < text.size()) out += '\n';
+    begin = end + 1;
   }
   return out;
 }

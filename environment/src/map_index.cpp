@@ -12,12 +12,21 @@ UnknownSpace validated(const UnknownSpace& unknown) {
   return unknown;
 }
 
+// The map's voxels as a grid; a map too large to index is refused naming its file.
+VoxelGrid gridOf(const OccupancyMap& map, const std::function<void(double)>& progress, int workers) {
+  try {
+    return VoxelGrid::fromTree(map.tree(), progress, workers);
+  } catch (const ceilplan::InputError&) {
+    rethrowWithContext(map.name() + ": ");
+  }
+}
+
 }  // namespace
 
 MapIndex::MapIndex(const OccupancyMap& map, const MapIndexOptions& options, const std::function<void(double)>& progress)
     : map_name_(map.name()),
       unknown_(validated(options.unknown)),
-      grid_(VoxelGrid::fromTree(map.tree(), [&](double f) { if (progress) progress(0.15 * f); }, options.workers)) {
+      grid_(gridOf(map, [&](double f) { if (progress) progress(0.15 * f); }, options.workers)) {
   // Stages by their share of the time on the shipped scenes.
   if (progress) progress(0.15);
   const ColumnIndex raw(grid_, options.workers);

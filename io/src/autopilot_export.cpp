@@ -2,6 +2,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 
 #include <GeographicLib/LocalCartesian.hpp>
@@ -172,7 +173,7 @@ std::string qgcWpl(const AutopilotMission& mission) {
 }
 
 void writeQgcPlan(const std::filesystem::path& file, const AutopilotMission& mission) {
-  const std::string text = qgcPlan(mission).dump(2) + "\n";
+  const std::string text = jsonText(qgcPlan(mission), 2) + "\n";
   writeTextAtomically(file, [&](std::ostream& out) { out << text; });
 }
 

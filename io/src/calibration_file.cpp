@@ -68,13 +68,14 @@ nlohmann::json calibrationReportJson(const std::filesystem::path& data, std::siz
 }
 
 std::string calibratedVehicleComment(const std::filesystem::path& data, std::size_t samples,
-                                     const energy::CalibrationResult& result) {
+                                     const energy::CalibrationResult& result, const Provenance& provenance) {
   std::string fitted;
   for (const energy::FittedParameter& f : result.fitted)
     fitted += (fitted.empty() ? "" : ", ") + energy::parameterName(f.parameter);
   std::ostringstream comment;
   comment << "Calibrated by `ceilplan calibrate` from " << data.string() << " (" << samples << " samples; fitted "
-          << fitted << "; RMSE " << result.rmse_a << " A).";
+          << fitted << "; RMSE " << result.rmse_a << " A).\n"
+          << provenance.line();
   return comment.str();
 }
 

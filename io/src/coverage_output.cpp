@@ -2,6 +2,7 @@
 
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/io/json_values.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -125,21 +126,26 @@ nlohmann::json coverageJson(const mission::CoveragePlan& plan, const mission::Co
             {"method", "every photo against every surface element; lines of sight through the OctoMap tree"}}}};
 }
 
-void writePhotosCsv(const std::filesystem::path& file, const std::vector<PhotoRow>& rows) {
-  writeTextAtomically(file, [&](std::ostream& out) { out << photosCsv(rows); });
+void writePhotosCsv(const std::filesystem::path& file, const std::vector<PhotoRow>& rows,
+                    const Provenance& provenance) {
+  writeTextAtomically(file, [&](std::ostream& out) { out << provenance.csvComment() << '\n' << photosCsv(rows); });
 }
 
-void writeCoverageJson(const std::filesystem::path& file, const nlohmann::json& coverage) {
-  writeTextAtomically(file, [&](std::ostream& out) { out << coverage.dump(2) << '\n'; });
+void writeCoverageJson(const std::filesystem::path& file, const nlohmann::json& coverage,
+                       const Provenance& provenance) {
+  writeJsonFile(file, withProvenance(coverage, provenance));
 }
 
-void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourResult& tour) {
+void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourResult& tour,
+                        const Provenance& provenance) {
   if (!tour.coverage || !tour.coverage_check)
     throw ceilplan::InputError("the tour has no coverage plan: photos.csv and coverage.json belong to coverage tours");
-  writePhotosCsv(dir / "photos.csv", tour.photos);
-  writeCoverageJson(dir / "coverage.json", coverageJson(*tour.coverage, *tour.coverage_check));
+  writePhotosCsv(dir / "photos.csv", tour.photos, provenance);
+  writeCoverageJson(dir / "coverage.json", coverageJson(*tour.coverage, *tour.coverage_check), provenance);
   const std::string elements = coverageElementsCsv(*tour.coverage, *tour.coverage_check);
-  writeTextAtomically(dir / "coverage_elements.csv", [&](std::ostream& out) { out << elements; });
+  writeTextAtomically(dir / "coverage_elements.csv", [&](std::ostream& out) {
+    out << provenance.csvComment() << '\n' << elements;
+  });
 }
 
 double routeLength_m(const mission::TourResult& tour) {

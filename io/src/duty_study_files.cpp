@@ -166,34 +166,36 @@ nlohmann::json dutyStudyJson(const battery::DutyStudyOptions& options, const bat
   return out;
 }
 
-void writeDutySeriesCsv(const std::filesystem::path& file, const std::vector<battery::Sample>& samples) {
+void writeDutySeriesCsv(const std::filesystem::path& file, const std::vector<battery::Sample>& samples,
+                        const Provenance& provenance) {
   writeTextAtomically(file, [&](std::ostream& out) {
-    out << "t_s,current_a,soc,fec,fec_continuous,mode\n" << std::setprecision(10);
+    out << provenance.csvComment() << '\n' << "t_s,current_a,soc,fec,fec_continuous,mode\n" << std::setprecision(10);
     for (const battery::Sample& s : samples)
       out << s.t_s << ',' << s.current_a << ',' << s.soc << ',' << s.fec << ',' << s.fec_continuous << ','
           << battery::toString(s.mode) << '\n';
   });
 }
 
-void writeDutyStudyCsv(const std::filesystem::path& dir, const battery::DutyStudyResult& result) {
+void writeDutyStudyCsv(const std::filesystem::path& dir, const battery::DutyStudyResult& result,
+                       const Provenance& provenance) {
   const auto& cases = result.cases;
   for (size_t i = 0; i < cases.size(); ++i) {
     const std::string prefix = "case" + std::to_string(i + 1);
-    writeDutySeriesCsv(dir / (prefix + "_mission.csv"), cases[i].run.first_mission);
-    writeDutySeriesCsv(dir / (prefix + "_day.csv"), cases[i].run.first_day);
-    writeDutySeriesCsv(dir / (prefix + "_run.csv"), cases[i].run.run);
+    writeDutySeriesCsv(dir / (prefix + "_mission.csv"), cases[i].run.first_mission, provenance);
+    writeDutySeriesCsv(dir / (prefix + "_day.csv"), cases[i].run.first_day, provenance);
+    writeDutySeriesCsv(dir / (prefix + "_run.csv"), cases[i].run.run, provenance);
   }
   for (size_t i = 0; i < cases.size(); ++i) {
     if (cases[i].ageing.empty()) continue;
     writeTextAtomically(dir / ("case" + std::to_string(i + 1) + "_soh.csv"), [&](std::ostream& out) {
-      out << "model,day,soh\n" << std::setprecision(10);
+      out << provenance.csvComment() << '\n' << "model,day,soh\n" << std::setprecision(10);
       for (const DutyStudyAgeing& a : cases[i].ageing)
         for (size_t day = 0; day < a.projection.soh_by_day.size(); ++day)
           out << a.projection.model << ',' << day + 1 << ',' << a.projection.soh_by_day[day] << '\n';
     });
   }
   writeTextAtomically(dir / "cases.csv", [&](std::ostream& out) {
-    out << "case,prefix,flight_current_a\n";
+    out << provenance.csvComment() << '\n' << "case,prefix,flight_current_a\n";
     for (size_t i = 0; i < cases.size(); ++i)
       out << i + 1 << ",case" << i + 1 << ',' << cases[i].flight_current_a << '\n';
   });

@@ -2,6 +2,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/autopilot_export.hpp"
 
@@ -119,7 +120,7 @@ std::string routesKml(const std::vector<mission::SortieRoute>& routes, const mis
       for (const auto& [key, value] : data.items()) {
         xml.OpenElement("Data");
         xml.PushAttribute("name", key.c_str());
-        text("value", value.is_string() ? value.get<std::string>() : value.dump());
+        text("value", value.is_string() ? value.get<std::string>() : jsonText(value));
         xml.CloseElement();
       }
       xml.CloseElement();
@@ -161,7 +162,7 @@ std::string routesKml(const std::vector<mission::SortieRoute>& routes, const mis
 
 void writeRoutesGeoJson(const std::filesystem::path& file, const std::vector<mission::SortieRoute>& routes,
                         const mission::GeodeticOrigin& origin) {
-  const std::string text = routesGeoJson(routes, origin).dump(1) + "\n";
+  const std::string text = jsonText(routesGeoJson(routes, origin), 1) + "\n";
   writeTextAtomically(file, [&](std::ostream& out) { out << text; });
 }
 

@@ -139,14 +139,14 @@ nlohmann::json mapImportJson(const MapImport& imported, const MapImportOptions& 
 }
 
 void writeImportedMap(const std::filesystem::path& map_file, const MapImport& imported, const MapImportOptions& options,
-                      std::filesystem::path summary_file) {
+                      const Provenance& provenance, std::filesystem::path summary_file) {
   if (map_file.extension() != ".bt")
     throw InputError(printableText(map_file.string(), 256) + ": an imported map is written as .bt");
-  const nlohmann::json summary = mapImportJson(imported, options, map_file);
+  const nlohmann::json summary = withProvenance(mapImportJson(imported, options, map_file), provenance);
   if (summary_file.empty()) (summary_file = map_file) += ".json";
   writeAtomically(map_file, [&](const std::filesystem::path& temporary) {
     std::ofstream file(temporary, std::ios::binary);
-    writeOctoMapBinary(*imported.built.tree, file);
+    writeOctoMapBinary(*imported.built.tree, file, map_file);
     // The summary goes in while the map is still temporary: neither is left behind alone on failure.
     writeJsonFile(summary_file, summary);
   });

@@ -24,7 +24,8 @@ const char* stateName(environment::CellState state, bool assumed_free) {
 }  // namespace
 
 void writeMapSliceCsv(const std::filesystem::path& file, const environment::MapIndex& index, double z_m,
-                      const environment::Environment* environment, const std::string& height_name) {
+                      const environment::Environment* environment, const std::string& height_name,
+                      const Provenance& provenance) {
   const environment::GridFrame& frame = index.grid().frame();
   const int k = frame.indexOf(2, z_m);
   if (k < 0 || k >= frame.size()[2])
@@ -32,14 +33,16 @@ void writeMapSliceCsv(const std::filesystem::path& file, const environment::MapI
                      formatNumber(frame.faceOf(2, 0)) + " to " + formatNumber(frame.faceOf(2, frame.size()[2])) + " m");
   const std::vector<std::uint8_t> ceiling = environment::ceilingColumns(index);
   writeTextAtomically(file, [&](std::ostream& out) {
-    out << "x_m,y_m,state,under_ceiling" << (environment ? ",valid,assumes_free" : "") << '\n';
+    out << provenance.csvComment() << '\n'
+        << "x_m,y_m,state,under_ceiling" << (environment ? ",valid,assumes_free" : "") << '\n';
     for (int j = 0; j < frame.size()[1]; ++j)
       for (int i = 0; i < frame.size()[0]; ++i) {
         const Eigen::Vector3d centre(frame.centreOf(0, i), frame.centreOf(1, j), z_m);
         out << formatNumber(centre.x()) << ',' << formatNumber(centre.y()) << ','
             << stateName(index.grid().at(i, j, k), index.isAssumedFree(centre)) << ','
             << int(ceiling[static_cast<std::size_t>(j) * frame.size()[0] + i] == 2);
-        if (environment) out << ',' << int(environment->isStateValid(centre)) << ',' << int(environment->assumesFree(centre));
+        if (environment)
+          out << ',' << int(environment->isStateValid(centre)) << ',' << int(environment->assumesFree(centre));
         out << '\n';
       }
   });

@@ -36,7 +36,9 @@ mission::BatterySpec readBatterySection(const Section& section, bool all_require
   const auto number = [&](const char* key, const Range& range, double fallback, bool required) {
     return required ? section.number(key, range) : section.number(key, range, fallback);
   };
-  pack.capacity_ah = number("capacity_ah", Range::above(0.0, 1000.0, "Ah"), pack.capacity_ah, all_required);
+  pack.capacity_ah =
+      number("capacity_ah", Range::closed(battery::Pack::kMinCapacity_ah, battery::Pack::kMaxCapacity_ah, "Ah"),
+             pack.capacity_ah, all_required);
   pack.charge_current_a = number("charge_current_a", Range::above(0.0, 1000.0, "A"), pack.charge_current_a, all_required);
   pack.cell_count = static_cast<int>(section.integer("cell_count", 1, 24, pack.cell_count));
   pack.soc_min = section.number("soc_min", Range::below(0.0, 1.0), pack.soc_min);

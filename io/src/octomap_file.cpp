@@ -8,12 +8,14 @@
 
 namespace ceilplan::io {
 
-void writeOctoMapBinary(const octomap::OcTree& tree, std::ostream& out) {
+void writeOctoMapBinary(const octomap::OcTree& tree, std::ostream& out, const std::filesystem::path& file) {
   out << "# Octomap OcTree binary file\n# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
       << "id " << tree.getTreeType() << "\nsize " << tree.size() << "\nres " << tree.getResolution() << "\ndata\n";
   tree.writeBinaryData(out);
   out.flush();
-  if (!out) throw ceilplan::Error("writing the OctoMap failed");
+  if (!out)
+    throw ceilplan::Error("cannot write the OctoMap " + printableText(file.string(), 256) +
+                          ": the write failed (disk full?)");
 }
 
 bool isOctoMapFileName(const std::filesystem::path& file) {
@@ -29,7 +31,7 @@ void writeOctoMapFile(const std::filesystem::path& file, const octomap::OcTree& 
       tree.write(out);
       out.flush();
     } else {
-      writeOctoMapBinary(tree, out);
+      writeOctoMapBinary(tree, out, file);
     }
     if (!out) throw ceilplan::Error("cannot write " + printableText(file.string(), 256));
   });

@@ -65,7 +65,7 @@ void writePlanDirectory(const std::filesystem::path& dir, const planner::PlanRes
   json["total_time_s"] = plan.total_time_s;
   json.update(extra);
   json["provenance"] = provenance.json();
-  writeTextAtomically(dir / "plan.json", [&](std::ostream& stream) { stream << std::setw(2) << json << '\n'; });
+  writeJsonFile(dir / "plan.json", json);
   writePathCsv(dir / "path.csv", evaluation, provenance);
 }
 
@@ -270,11 +270,7 @@ void writeRouteComparison(const std::filesystem::path& dir, const mission::Route
     if (route->standoff) plan_extra["standoff"] = standoffJson(*route->standoff);
     writePlanDirectory(dir / mode, route->plan, route->evaluation, plan_extra, provenance);
   }
-  writeTextAtomically(dir / "compare.json", [&](std::ostream& stream) {
-    nlohmann::json json = routeComparisonJson(comparison, duty, extra);
-    json["provenance"] = provenance.json();
-    stream << std::setw(2) << json << '\n';
-  });
+  writeJsonFile(dir / "compare.json", withProvenance(routeComparisonJson(comparison, duty, extra), provenance));
   std::vector<Eigen::Vector3d> routes = comparison.ceiling.plan.waypoints;
   routes.insert(routes.end(), comparison.free.plan.waypoints.begin(), comparison.free.plan.waypoints.end());
   writeMapViews(dir, context.environment(), routes, provenance);

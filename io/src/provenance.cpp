@@ -11,6 +11,16 @@
 #include <memory>
 
 namespace ceilplan::io {
+namespace {
+
+// A command line or file name may hold line breaks; a provenance field is one line.
+std::string oneLine(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
+}  // namespace
 
 Provenance Provenance::of(std::string command_line) {
   Provenance provenance;
@@ -32,13 +42,34 @@ nlohmann::json Provenance::json() const {
   return out;
 }
 
-std::string Provenance::csvComment() const {
-  std::string line = "# ceilplan " + version + " | " + command_line;
+std::vector<std::pair<std::string, std::string>> Provenance::fields() const {
+  std::vector<std::pair<std::string, std::string>> out{{"ceilplan", version}, {"command", command_line}};
+  if (seed) out.emplace_back("seed", std::to_string(*seed));
+  for (const InputFile& file : inputs) {
+    out.emplace_back(file.role, file.path.string());
+    out.emplace_back(file.role + "_sha256", file.sha256);
+  }
+  for (auto& field : out) field.second = oneLine(field.second);
+  return out;
+}
+
+std::string Provenance::csvComment() const { return "# " + line(); }
+
+std::string Provenance::line() const {
+  std::string line = "ceilplan " + version + " | " + command_line;
   if (seed) line += " | seed " + std::to_string(*seed);
   for (const InputFile& file : inputs) line += " | " + file.role + " " + file.path.string() + " sha256 " + file.sha256;
-  for (char& c : line)
-    if (c == '\n' || c == '\r') c = ' ';
-  return line;
+  return oneLine(line);
+}
+
+nlohmann::json withProvenance(nlohmann::json json, const Provenance& provenance) {
+  json["provenance"] = provenance.json();
+  return json;
+}
+
+nlohmann::ordered_json withProvenance(nlohmann::ordered_json json, const Provenance& provenance) {
+  json["provenance"] = nlohmann::ordered_json(provenance.json());
+  return json;
 }
 
 std::string commandLine(int argc, const char* const* argv) {

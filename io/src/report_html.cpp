@@ -2,6 +2,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 
 #include <nlohmann/json.hpp>
@@ -241,7 +242,7 @@ std::string reportHtml(const ReportModel& model) {
   std::string page(report_assets::PageTemplate);
   // Largest last, so each search runs over the template, not over three.js.
   replaceOnce(page, "/*CEILPLAN:APP*/", report_assets::ViewerScript);
-  replaceOnce(page, "/*CEILPLAN:DATA*/", scriptSafe(data.dump()));
+  replaceOnce(page, "/*CEILPLAN:DATA*/", scriptSafe(jsonText(data)));
   replaceOnce(page, "/*CEILPLAN:ORBIT*/", report_assets::OrbitControls);
   replaceOnce(page, "/*CEILPLAN:THREE*/", report_assets::Three);
   return page;

@@ -78,8 +78,7 @@ std::vector<Eigen::Vector3d> flownRoute(const mission::TourResult& tour) {
 
 }  // namespace
 
-Provenance tourProvenance(const std::string& command_line, const mission::Mission& mission, std::uint64_t seed) {
-  Provenance provenance = Provenance::of(command_line);
+Provenance tourProvenance(Provenance provenance, const mission::Mission& mission, std::uint64_t seed) {
   provenance.input("mission", mission.file).input("map", mission.map_file).input("vehicle", mission.vehicle_file);
   provenance.seed = seed;
   return provenance;
@@ -218,17 +217,16 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
 void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour, const mission::Mission& mission,
                         const environment::Environment& environment, std::optional<Autopilot> autopilot,
                         const Provenance& provenance) {
-  writeTextAtomically(dir / "tour.json",
-                      [&](std::ostream& out) { out << std::setw(2) << tourJson(tour, mission, provenance) << '\n'; });
+  writeJsonFile(dir / "tour.json", tourJson(tour, mission, provenance));
   writeTourPathCsv(dir / "path.csv", tour, provenance);
   writeMapViews(dir, environment, flownRoute(tour), provenance);
-  if (tour.coverage) writeCoverageFiles(dir, tour);  // photos.csv, coverage.json
+  if (tour.coverage) writeCoverageFiles(dir, tour, provenance);  // photos.csv, coverage.json, coverage_elements.csv
   const int count = static_cast<int>(tour.trajectories.size());
   const TrajectoryFrame frame = mission.trajectory_ned ? TrajectoryFrame::Ned : TrajectoryFrame::Enu;
   for (int k = 0; k < count; ++k) {
-    writeTrajectoryCsv(sortieFileName(dir / "trajectory.csv", k + 1, count), tour.trajectories[k], frame);
+    writeTrajectoryCsv(sortieFileName(dir / "trajectory.csv", k + 1, count), tour.trajectories[k], frame, provenance);
     writeTrajectoryJson(sortieFileName(dir / "trajectory.json", k + 1, count), tour.trajectories[k], frame,
-                        mission.origin);
+                        mission.origin, provenance);
   }
   writeReportHtml(dir / "report.html",
                   tourReport({&tour}, mission, environment,
@@ -329,9 +327,7 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
   writeMapViews(dir, environment, routes, provenance);
   writeTextAtomically(dir / "comparison.txt", [&](std::ostream& stream) { stream << comparisonTable(ceiling, free); });
   writeReportHtml(dir / "report.html", tourReport({&ceiling, &free}, mission, environment, mission.name() + ": both modes"));
-  writeTextAtomically(dir / "comparison.json", [&](std::ostream& stream) {
-    stream << std::setw(2) << comparisonJson(ceiling, free, mission, provenance) << '\n';
-  });
+  writeJsonFile(dir / "comparison.json", comparisonJson(ceiling, free, mission, provenance));
 }
 
 std::string standoffLine(const mission::TourResult& tour) {

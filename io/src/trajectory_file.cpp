@@ -1,6 +1,7 @@
 #include "ceilplan/io/trajectory_file.hpp"
 
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 
 #include <cmath>
@@ -97,15 +98,16 @@ nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryF
           {"setpoints", setpoints}};
 }
 
-void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajectory& trajectory,
-                        TrajectoryFrame frame) {
-  const std::string text = trajectoryCsv(trajectory, frame);
+void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajectory& trajectory, TrajectoryFrame frame,
+                        const Provenance& provenance) {
+  const std::string text = provenance.csvComment() + "\n" + trajectoryCsv(trajectory, frame);
   writeTextAtomically(file, [&](std::ostream& out) { out << text; });
 }
 
 void writeTrajectoryJson(const std::filesystem::path& file, const mission::Trajectory& trajectory,
-                         TrajectoryFrame frame, const std::optional<mission::GeodeticOrigin>& origin) {
-  const std::string text = trajectoryJson(trajectory, frame, origin).dump() + "\n";
+                         TrajectoryFrame frame, const std::optional<mission::GeodeticOrigin>& origin,
+                         const Provenance& provenance) {
+  const std::string text = jsonText(withProvenance(trajectoryJson(trajectory, frame, origin), provenance)) + "\n";
   writeTextAtomically(file, [&](std::ostream& out) { out << text; });
 }
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <queue>
 
@@ -35,6 +36,11 @@ std::string openingText(double metres) { return std::isfinite(metres) ? formatFi
 }  // namespace
 
 std::string Blockage::describe() const {
+  if (!enclosed_end.empty())
+    return "the " + enclosed_end + " at " + formatPoint(enclosed_at_m) +
+           " is enclosed: the space the vehicle reaches from it, within " + formatPoint(enclosure_min_m) + " to " +
+           formatPoint(enclosure_max_m) + ", has no opening to the other side; move the " + enclosed_end +
+           " or open the map there";
   std::string text = "blocked at " + formatPoint(position_m) + " by " + planner::describe(rule);
   if (rule == BlockingRule::Unknown) return text + " (the map has no data there, and unknown space counts as occupied)";
   if (rule != BlockingRule::Clearance || std::isnan(width_m)) return text;
@@ -429,6 +435,60 @@ Blockage diagnoseBlockage(const SafetyRules& rules, const Eigen::Vector3d& from_
     }
   }
   return blockage;
+}
+
+void nameEnclosedEnd(Blockage& blockage, const environment::VoxelGrid& grid, const Eigen::Vector3d& start_m,
+                     const Eigen::Vector3d& goal_m) {
+  const environment::GridFrame& frame = grid.frame();
+  struct Flood {
+    std::vector<bool> seen;
+    std::deque<std::size_t> queue;
+    environment::Index3 lo, hi;
+  };
+  std::array<Flood, 2> floods;  // from the start, from the goal
+  const std::array<const Eigen::Vector3d*, 2> ends{&start_m, &goal_m};
+  for (int side = 0; side < 2; ++side) {
+    const environment::Index3 cell{frame.indexOf(0, ends[side]->x()), frame.indexOf(1, ends[side]->y()),
+                                   frame.indexOf(2, ends[side]->z())};
+    if (!frame.inside(cell[0], cell[1], cell[2])) return;
+    floods[side].seen.assign(frame.voxelCount(), false);
+    floods[side].seen[frame.linear(cell[0], cell[1], cell[2])] = true;
+    floods[side].queue.push_back(frame.linear(cell[0], cell[1], cell[2]));
+    floods[side].lo = floods[side].hi = cell;
+  }
+  constexpr int kFaces[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (;;) {
+    for (int side = 0; side < 2; ++side) {
+      Flood& flood = floods[side];
+      if (flood.queue.empty()) {
+        const bool goal = side == 1;
+        blockage.enclosed_end = goal ? "goal" : "start";
+        blockage.enclosed_at_m = *ends[side];
+        for (int axis = 0; axis < 3; ++axis) {
+          blockage.enclosure_min_m[axis] = frame.faceOf(axis, flood.lo[axis]);
+          blockage.enclosure_max_m[axis] = frame.faceOf(axis, flood.hi[axis] + 1);
+        }
+        return;
+      }
+      const std::size_t voxel = flood.queue.front();
+      flood.queue.pop_front();
+      if (floods[1 - side].seen[voxel]) return;  // the floods met: a way exists, however narrow
+      const environment::Index3 at = frame.unlinear(voxel);
+      for (const auto& face : kFaces) {
+        const int i = at[0] + face[0], j = at[1] + face[1], k = at[2] + face[2];
+        if (!frame.inside(i, j, k)) continue;
+        const std::size_t next = frame.linear(i, j, k);
+        if (flood.seen[next] || grid.atLinear(next) == environment::CellState::Occupied) continue;
+        flood.seen[next] = true;
+        flood.queue.push_back(next);
+        for (int axis = 0; axis < 3; ++axis) {
+          const int index = axis == 0 ? i : axis == 1 ? j : k;
+          flood.lo[axis] = std::min(flood.lo[axis], index);
+          flood.hi[axis] = std::max(flood.hi[axis], index);
+        }
+      }
+    }
+  }
 }
 
 BridgeOutcome findBridge(const SafetyRules& rules, const std::vector<Eigen::Vector3d>& side_a,

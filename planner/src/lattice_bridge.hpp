@@ -5,6 +5,7 @@
 // faces lies) inside a box around the pairs of points closest to each other. When no pair is
 // joined, the most open gap tried says where and why the way is blocked.
 
+#include "ceilplan/environment/voxel_grid.hpp"
 #include "ceilplan/planner/blockage.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
 
@@ -36,6 +37,13 @@ BridgeOutcome findBridge(const SafetyRules& rules, const std::vector<Eigen::Vect
 // Why the straight way from `from_m` (valid) to `to_m` is blocked: its most open invalid state,
 // the rule it breaks and the opening across the way there.
 Blockage diagnoseBlockage(const SafetyRules& rules, const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m);
+
+// When no voxel that is not occupied joins the start to the goal, whatever the vehicle's size
+// (one of them is walled in on every side, unknown voxels counted open): names that end in
+// `blockage`, with the box of its pocket, since no gap between the two sides exists to name.
+// Two floods, one from each end, step in turn: the first to run dry is the enclosed one.
+void nameEnclosedEnd(Blockage& blockage, const environment::VoxelGrid& grid, const Eigen::Vector3d& start_m,
+                     const Eigen::Vector3d& goal_m);
 
 // Drops repeated points and the inner points of straight runs.
 std::vector<Eigen::Vector3d> turningPoints(const std::vector<Eigen::Vector3d>& points);

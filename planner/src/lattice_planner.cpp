@@ -262,6 +262,7 @@ ompl::base::PlannerStatus LatticePlanner::solve(const ompl::base::PlannerTermina
     if (found.waypoints.empty()) {
       if (!found.blockage) return ompl::base::PlannerStatus::TIMEOUT;
       blockage_ = found.blockage;
+      detail::nameEnclosedEnd(*blockage_, rules.environment().grid(), query->start_m, query->goal_m);
       return ompl::base::PlannerStatus::ABORT;
     }
     Bridge bridge{search.idOf(start_side[found.from]), search.idOf(goal_side[found.to]), found.waypoints,

@@ -140,6 +140,7 @@ std::vector<PlannerBenchmarkRow> benchmarkPlanners(const FlightPlanner& planner,
   simple.setOptimizationObjective(planner.objectivePtr());
   const BandSampling band_sampling(planner, options.band_fraction);
   ompl::tools::Benchmark benchmark(simple, options.experiment);
+  for (const auto& [name, value] : options.log_properties) benchmark.addExperimentParameter(name, "VARCHAR", value);
   for (const std::string& name : options.planners)
     benchmark.addPlanner(makePlanner(name, simple.getSpaceInformation(), options.lattice));
   // OMPL's logs have no column for our objective: add the raw and post-processed costs.

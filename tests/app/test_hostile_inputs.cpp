@@ -39,6 +39,7 @@ using ceilplan::testing::CommandResult;
 using ceilplan::testing::readWholeFile;
 using ceilplan::testing::runCeilplan;
 using ceilplan::testing::scratchDirectory;
+using ceilplan::testing::substituted;
 
 namespace {
 
@@ -168,13 +169,6 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   const auto at = text.find(from);
   if (at == std::string::npos) throw std::logic_error("row edits '" + from + "', which is not in its base text");
   return text.replace(at, from.size(), to);
-}
-
-std::string substituted(std::string text, const std::map<std::string, std::string>& values) {
-  for (const auto& [key, value] : values)
-    for (auto at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
-      text.replace(at, key.size(), value);
-  return text;
 }
 
 // The base files of the rows, with {fx} for the fixtures directory.
@@ -336,6 +330,9 @@ std::vector<Case> flagCases() {
       {"duty_step_tiny", "duty --dt-s 1e-9 --json {out}", 2, "--dt-s"},
       {"duty_days_negative", "duty --days -1 --json {out}", 2, "--days"},
       {"duty_soc_range", "duty --soc-start 1.5 --json {out}", 2, "--soc-start"},
+      // A capacity so small that SOC figures would be meaningless (-6e297 %) is refused up front.
+      {"duty_capacity_tiny", "duty --capacity-ah 1e-300 --json {out}", 2,
+       "--capacity-ah: must be a finite number in [0.01, 1000], got 1e-300"},
       {"mapinfo_fill_nan", kMapinfo + " --unknown fill --unknown-fill-max-m nan --json {out}", 2, "--unknown-fill-max-m"},
       {"mapinfo_slice_outside", kMapinfo + " --slice-z 100 --slice-csv {out}", 2, "--slice-z 100 lies outside the map"},
       {"probe_at_nan", "probe --map {fx}/room.bt --at nan,0,1 --json {out}", 2, "--at 'nan,0,1'"},
@@ -368,11 +365,13 @@ std::vector<Case> yamlCases() {
   const std::string base_config = "map: {fx}/room.bt\nstart: -2,0,1\ngoal: 2,0,1\nplanner: lattice\n";
   return {
       // mission files
-      {"mission_capacity_nan", kTour, 2, "'battery.capacity_ah' must be a finite number in (0, 1000] Ah, got nan",
+      {"mission_capacity_nan", kTour, 2, "'battery.capacity_ah' must be a finite number in [0.01, 1000] Ah, got nan",
        Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: .nan")},
       {"mission_capacity_inf", kTour, 2, "got inf", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: .inf")},
       {"mission_capacity_negative", kTour, 2, "got -5", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: -5")},
       {"mission_capacity_huge", kTour, 2, "got 1e+300", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: 1e300")},
+      {"mission_capacity_tiny", kTour, 2, "'battery.capacity_ah' must be in [0.01, 1000] Ah, got 1e-300",
+       Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: 1e-300")},
       {"mission_capacity_text", kTour, 2, "got 'lots'", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: lots")},
       {"mission_capacity_list", kTour, 2, "got a list", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: [1, 2]")},
       {"mission_key_misspelt", kTour, 2, "unknown key 'battery.capacity_a'; did you mean 'capacity_ah'?", Out::Absent,
@@ -453,6 +452,8 @@ std::vector<Case> yamlCases() {
       {"battery_key_misspelt", with_battery, 2, "unknown key 'capacity_a'; did you mean 'capacity_ah'?", Out::Absent,
        battery("capacity_a: 5.2\n")},
       {"battery_capacity_nan", with_battery, 2, "'capacity_ah' must be a finite number", Out::Absent, battery("capacity_ah: .nan\n")},
+      {"battery_capacity_tiny", with_battery, 2, "'capacity_ah' must be in [0.01, 1000] Ah, got 1e-300",
+       Out::Absent, battery("capacity_ah: 1e-300\n")},
       {"battery_is_a_vehicle_file", kPlan + " --battery {fx}/vehicle.yaml --out {out}", 2, "this is a vehicle file, not a battery file"},
       {"battery_list", with_battery, 2, "must be a YAML map of keys", Out::Absent, battery("- 1\n- 2\n")},
       {"battery_key_twice", with_battery, 2, "b.yaml: key 'capacity_ah' is given twice", Out::Absent,

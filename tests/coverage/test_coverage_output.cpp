@@ -80,14 +80,15 @@ TEST(CoverageJson, EveryFieldFromThePlanAndItsCheck) {
 
   const std::filesystem::path dir = std::filesystem::path(CEILPLAN_TEST_TMP) / "coverage_output";
   std::filesystem::remove_all(dir);
-  writeCoverageJson(dir / "coverage.json", json);
-  writePhotosCsv(dir / "photos.csv", rows);
+  const Provenance provenance = Provenance::of("test_coverage_output");
+  writeCoverageJson(dir / "coverage.json", json, provenance);
+  writePhotosCsv(dir / "photos.csv", rows, provenance);
   std::ifstream in(dir / "coverage.json");
-  EXPECT_EQ(nlohmann::json::parse(in), json);
+  EXPECT_EQ(nlohmann::json::parse(in), withProvenance(json, provenance));
   std::ifstream csv(dir / "photos.csv");
   std::stringstream text;
   text << csv.rdbuf();
-  EXPECT_EQ(text.str(), photosCsv(rows));
+  EXPECT_EQ(text.str(), provenance.csvComment() + "\n" + photosCsv(rows));
 
   mission::CoverageCheck other = check;
   other.regions[0].name = "roof";

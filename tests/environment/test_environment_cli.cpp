@@ -113,8 +113,9 @@ TEST(MapinfoCommand, ReportsThePolicyAndWritesASlice) {
   EXPECT_EQ(json["unknown"]["policy"], "free");
   EXPECT_NEAR(json["unknown"]["assumed_free_volume_m3"].get<double>(), json["volume_m3"]["unknown"].get<double>(), 1e-6);
   const std::string slice = testing::readWholeFile(dir / "slice.csv");
-  EXPECT_EQ(slice.rfind("x_m,y_m,state,under_ceiling,valid,assumes_free\n", 0), 0u);
-  EXPECT_EQ(std::count(slice.begin(), slice.end(), '\n'), 1 + 600 * 200);
+  EXPECT_EQ(slice.rfind("# ceilplan ", 0), 0u) << "the provenance comment first: " << slice.substr(0, 80);
+  EXPECT_NE(slice.find("\nx_m,y_m,state,under_ceiling,valid,assumes_free\n"), std::string::npos);
+  EXPECT_EQ(std::count(slice.begin(), slice.end(), '\n'), 2 + 600 * 200);
   EXPECT_NE(slice.find(",assumed_free,"), std::string::npos);  // above the deck
   EXPECT_NE(slice.find(",free,"), std::string::npos);          // beside the deck
   const auto outside = testing::runCeilplan("mapinfo --map " + kBridge + " --slice-z 9 --slice-csv " + (dir / "x.csv").string());

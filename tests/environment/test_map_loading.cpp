@@ -118,6 +118,24 @@ TEST(MapLoading, ATreeMustBeTheWholeFileAndTheFileARegularOne) {
                       "holds " + std::to_string(OccupancyMap::kMaxFileBytes + 1) + " bytes, more than ceilplan reads for a map file");
 }
 
+// Two voxels 1.5 km apart at 5 cm: the map loads, but its box holds more voxels than ceilplan
+// indexes; the refusal names the map's file.
+TEST(MapLoading, AMapTooLargeToIndexIsRefusedNamingItsFile) {
+  const auto dir = testing::scratchDirectory("far_map");
+  octomap::OcTree far(0.05);
+  far.updateNode(octomap::point3d(0.0f, 0.0f, 0.0f), true);
+  far.updateNode(octomap::point3d(1500.0f, 1500.0f, 100.0f), true);
+  far.writeBinary((dir / "far.bt").string());
+  const OccupancyMap map = OccupancyMap::load(dir / "far.bt");
+  std::string message = "(indexed)";
+  try {
+    MapIndex::build(map);
+  } catch (const ceilplan::InputError& e) {
+    message = e.what();
+  }
+  expectOneLineNaming(message, dir / "far.bt", "more than ceilplan indexes");
+}
+
 TEST(MapLoading, FullFormatAndBinaryFormatLoadTheSameTree) {
   const auto dir = testing::scratchDirectory("formats");
   const OccupancyMap binary = OccupancyMap::load(CEILPLAN_SOURCE_DIR "/maps/open.bt");

@@ -118,14 +118,17 @@ TEST(MapImport, WritesTheMapAndItsSummaryTogether) {
   EXPECT_EQ(summary["figures"].size(), imported.built.figures.size());
   EXPECT_NEAR(summary["extent_m"]["min"][0].get<double>(), -1.0, 0.2 + 1e-9);  // the default 1 m margin
 
-  writeImportedMap(dir / "out" / "box.bt", imported, options);
+  const Provenance provenance = Provenance::of("ceilplan import --mesh box.stl");
+  writeImportedMap(dir / "out" / "box.bt", imported, options, provenance);
   octomap::OcTree read_back(0.2);
   ASSERT_TRUE(read_back.readBinary((dir / "out" / "box.bt").string()));
   EXPECT_EQ(read_back.getNumLeafNodes(), imported.built.tree->getNumLeafNodes());
-  EXPECT_EQ(nlohmann::json::parse(testing::readWholeFile(dir / "out" / "box.bt.json")), summary);
+  EXPECT_EQ(nlohmann::json::parse(testing::readWholeFile(dir / "out" / "box.bt.json")),
+            withProvenance(summary, provenance));
 
-  EXPECT_THROW(writeImportedMap(dir / "box.ot", imported, options), InputError);
-  EXPECT_THROW(writeImportedMap(dir / "out" / "box.bt" / "below_a_file.bt", imported, options), Error);
+  EXPECT_THROW(writeImportedMap(dir / "box.ot", imported, options, Provenance::of("test")), InputError);
+  EXPECT_THROW(writeImportedMap(dir / "out" / "box.bt" / "below_a_file.bt", imported, options, Provenance::of("test")),
+               Error);
   EXPECT_FALSE(std::filesystem::exists(dir / "box.ot"));
 }
 

@@ -63,9 +63,10 @@ int main(int argc, char** argv) {
         const auto start = std::chrono::steady_clock::now();
         const mission::Trajectory t = mission::timeScale(route, testing::trajectoryLimits(facts), options);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        io::writeTrajectoryCsv(named("trajectory.csv"), t);
-        io::writeTrajectoryJson(named("trajectory.json"), t, io::TrajectoryFrame::Enu, facts.origin);
-        io::writeTrajectoryCsv(named("trajectory_ned.csv"), t, io::TrajectoryFrame::Ned);
+        const io::Provenance provenance = io::Provenance::of("export_demo");
+        io::writeTrajectoryCsv(named("trajectory.csv"), t, io::TrajectoryFrame::Enu, provenance);
+        io::writeTrajectoryJson(named("trajectory.json"), t, io::TrajectoryFrame::Enu, facts.origin, provenance);
+        io::writeTrajectoryCsv(named("trajectory_ned.csv"), t, io::TrajectoryFrame::Ned, provenance);
         const io::AutopilotMission autopilot = io::autopilotMission(route, facts.origin);
         io::writeQgcPlan(named("mission.plan"), autopilot);
         io::writeQgcWpl(named("mission.waypoints"), autopilot);

@@ -76,8 +76,10 @@ TEST(CalibrationFile, ReportNamesEachFittedParameterAndWhetherItHitItsBound) {
   EXPECT_FALSE(report["fitted"][0]["at_bound"].get<bool>());
   EXPECT_EQ(report["fitted"][1]["parameter"], "k2_m");
   EXPECT_TRUE(report["fitted"][1]["at_bound"].get<bool>());
-  EXPECT_EQ(calibratedVehicleComment("data.csv", 17, result),
-            "Calibrated by `ceilplan calibrate` from data.csv (17 samples; fitted k1, k2_m; RMSE 0.05 A).");
+  const Provenance provenance = Provenance::of("ceilplan calibrate --data data.csv");
+  EXPECT_EQ(calibratedVehicleComment("data.csv", 17, result, provenance),
+            "Calibrated by `ceilplan calibrate` from data.csv (17 samples; fitted k1, k2_m; RMSE 0.05 A).\n" +
+                provenance.line());
 }
 
 TEST(CalibrationFile, TheTerminalTextListsEachParameterAndMarksThoseAtTheirBound) {

@@ -49,6 +49,8 @@ std::vector<PhotoCsvRow> readPhotosCsv(const std::filesystem::path& file) {
   std::stringstream text(readWholeFile(file));
   std::string line;
   std::getline(text, line);
+  EXPECT_EQ(line.rfind("# ceilplan ", 0), 0u) << "the provenance comment: " << line;
+  std::getline(text, line);
   EXPECT_EQ(line, "index,sortie,t_s,x,y,z,yaw_deg,gimbal_pitch_deg,distance_m,gsd_mm_px,region");
   std::vector<PhotoCsvRow> rows;
   while (std::getline(text, line)) {
@@ -134,6 +136,8 @@ TEST(CoverageTourFiles, PhotosCoverageAndTheCameraInTheAutopilotFiles) {
     // coverage_elements.csv: the covered elements' areas add up to coverage.json's covered area.
     std::stringstream elements(readWholeFile(dir / "coverage_elements.csv"));
     std::string line;
+    std::getline(elements, line);
+    EXPECT_EQ(line.rfind("# ceilplan ", 0), 0u) << "the provenance comment: " << line;
     std::getline(elements, line);
     EXPECT_EQ(line, "region,x,y,z,nx,ny,nz,area_m2,reachable,covered,best_gsd_mm_px,views");
     double covered_m2 = 0.0;

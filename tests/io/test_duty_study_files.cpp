@@ -83,18 +83,21 @@ TEST(DutyStudyCsv, WritesTheSeriesOfEveryCase) {
   options.record_run = true;
   const auto dir = testing::scratchDirectory("duty_study_csv");
   const battery::DutyStudyResult result = battery::runDutyStudy(options);
-  writeDutyStudyCsv(dir, result);
+  const Provenance provenance = Provenance::of("ceilplan duty --csv-dir out");
+  writeDutyStudyCsv(dir, result, provenance);
+  const std::string comment = provenance.csvComment() + "\n";  // every file's first line
   for (const char* name : {"case1_mission.csv", "case1_day.csv", "case1_run.csv", "case2_run.csv", "case1_soh.csv",
                            "case2_soh.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
-  EXPECT_EQ(testing::readWholeFile(dir / "cases.csv"), "case,prefix,flight_current_a\n1,case1,9.5\n2,case2,8\n");
+  EXPECT_EQ(testing::readWholeFile(dir / "cases.csv"),
+            comment + "case,prefix,flight_current_a\n1,case1,9.5\n2,case2,8\n");
   const std::string mission = testing::readWholeFile(dir / "case1_mission.csv");
-  EXPECT_EQ(mission.rfind("t_s,current_a,soc,fec,fec_continuous,mode\n0,", 0), 0u) << mission.substr(0, 80);
+  EXPECT_EQ(mission.rfind(comment + "t_s,current_a,soc,fec,fec_continuous,mode\n0,", 0), 0u) << mission.substr(0, 80);
   EXPECT_NE(mission.find(",charge\n"), std::string::npos);
   const std::string soh = testing::readWholeFile(dir / "case2_soh.csv");
-  EXPECT_EQ(soh.rfind("model,day,soh\nfec,1,", 0), 0u) << soh;
+  EXPECT_EQ(soh.rfind(comment + "model,day,soh\nfec,1,", 0), 0u) << soh;
   // One row a day of the projection, which goes on past the study to the pack's end of life.
-  EXPECT_EQ(lineCount(soh), 1 + result.cases[1].ageing[0].projection.soh_by_day.size());
+  EXPECT_EQ(lineCount(soh), 2 + result.cases[1].ageing[0].projection.soh_by_day.size());
   EXPECT_GT(lineCount(soh), 3u);
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();  // nothing left half-written

@@ -97,8 +97,9 @@ TEST_F(BridgeExports, TrajectoryCsvReadsBackWithinLimitsAndAsAPath) {
   mission::TrajectoryOptions options;
   options.path_is_safe = [&](const std::vector<Eigen::Vector3d>& p) { return map.safe(p); };
   const mission::Trajectory t = mission::timeScale(route_, trajectoryLimits(facts_), options);
-  io::writeTrajectoryCsv(dir_ / "trajectory.csv", t);
-  io::writeTrajectoryJson(dir_ / "trajectory.json", t, io::TrajectoryFrame::Enu, facts_.origin);
+  const io::Provenance provenance = io::Provenance::of("test_flying_tours");
+  io::writeTrajectoryCsv(dir_ / "trajectory.csv", t, io::TrajectoryFrame::Enu, provenance);
+  io::writeTrajectoryJson(dir_ / "trajectory.json", t, io::TrajectoryFrame::Enu, facts_.origin, provenance);
   // Read back as numbers written to micrometres: the limits still hold by finite differences
   // (rounding adds at most 8 x 0.5 um / dt^3 = 0.03 m/s^3 to the jerk).
   const io::CsvColumns table = io::CsvColumns::read(dir_ / "trajectory.csv", {"t_s", "x_m", "y_m", "z_m", "yaw_rad"});

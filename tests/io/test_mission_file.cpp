@@ -101,8 +101,9 @@ TEST(MissionFile, BadVariantsNameTheKey) {
               "'battery.reserve_soc' 0.97 is not below 'battery.start_soc' 0.95");
   expectError("nan_capacity", "capacity_ah: 5.2", "capacity_ah: .nan", "'battery.capacity_ah' must be a finite number");
   expectError("negative_capacity", "capacity_ah: 5.2", "capacity_ah: -5.2",
-              "'battery.capacity_ah' must be in (0, 1000] Ah, got -5.2");
-  expectError("huge_capacity", "capacity_ah: 5.2", "capacity_ah: 5e9", "'battery.capacity_ah' must be in (0, 1000] Ah");
+              "'battery.capacity_ah' must be in [0.01, 1000] Ah, got -5.2");
+  expectError("huge_capacity", "capacity_ah: 5.2", "capacity_ah: 5e9",
+              "'battery.capacity_ah' must be in [0.01, 1000] Ah");
   expectError("text_capacity", "capacity_ah: 5.2", "capacity_ah: lots", "'battery.capacity_ah' must be a number");
   expectError("soc_over_one", "start_soc: 0.95", "start_soc: 1.5", "'battery.start_soc' must be in (0, 1], got 1.5");
   expectError("missing_charge", "charge_current_a: 10.4", "", "missing key 'battery.charge_current_a'");

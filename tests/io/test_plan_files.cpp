@@ -156,7 +156,7 @@ TEST(TourFiles, ATourRecordsTheMissionMapAndVehicleFilesAndTheSeed) {
   mission::Mission mission;
   mission.file = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.yaml";
   mission.map_file = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.bt";
-  const Provenance provenance = tourProvenance("ceilplan tour", mission, 5);
+  const Provenance provenance = tourProvenance(Provenance::of("ceilplan tour"), mission, 5);
   EXPECT_EQ(provenance.command_line, "ceilplan tour");
   EXPECT_EQ(provenance.seed, std::optional<std::uint64_t>(5));
   const nlohmann::json json = provenance.json();

@@ -35,7 +35,7 @@ std::filesystem::path writeText(const std::filesystem::path& file, const std::st
 TEST(TrajectoryFile, CsvHasTheDocumentedColumnsAndEverySetpoint) {
   const mission::Trajectory t = sampleTrajectory();
   const std::filesystem::path dir = testing::scratchDirectory("trajectory_csv");
-  writeTrajectoryCsv(dir / "trajectory.csv", t);
+  writeTrajectoryCsv(dir / "trajectory.csv", t, TrajectoryFrame::Enu, Provenance::of("test"));
   const std::vector<std::string> expected{"t_s",     "x_m",     "y_m",     "z_m",     "vx_m_s",         "vy_m_s",
                                           "vz_m_s",  "ax_m_s2", "ay_m_s2", "az_m_s2", "yaw_rad",        "yaw_rate_rad_s",
                                           "gimbal_pitch_deg", "trigger"};
@@ -90,7 +90,7 @@ TEST(TrajectoryFile, JsonCarriesTheSetpointsTheFrameAndTheLimits) {
   const mission::Trajectory t = sampleTrajectory();
   const std::filesystem::path dir = testing::scratchDirectory("trajectory_json");
   const mission::GeodeticOrigin origin{52.218, 0.0923, 12.0};
-  writeTrajectoryJson(dir / "trajectory.json", t, TrajectoryFrame::Ned, origin);
+  writeTrajectoryJson(dir / "trajectory.json", t, TrajectoryFrame::Ned, origin, Provenance::of("test"));
   const nlohmann::json json = nlohmann::json::parse(testing::readWholeFile(dir / "trajectory.json"));
   EXPECT_EQ(json.at("format"), "ceilplan-trajectory");
   EXPECT_EQ(json.at("version"), 1);
@@ -125,7 +125,7 @@ TEST(PathCsv, ReadsPathCsvAndTrajectoryCsvColumnsByName) {
   ASSERT_EQ(from_tour.size(), 3u);
   EXPECT_EQ(from_tour[2], Eigen::Vector3d(-3, 0, 1.5));
   const mission::Trajectory t = sampleTrajectory();
-  writeTrajectoryCsv(dir / "trajectory.csv", t);
+  writeTrajectoryCsv(dir / "trajectory.csv", t, TrajectoryFrame::Enu, Provenance::of("test"));
   const std::vector<Eigen::Vector3d> from_trajectory = readPathWaypoints(dir / "trajectory.csv");
   EXPECT_LT(from_trajectory.size(), t.setpoints.size());  // hovering setpoints once
   EXPECT_LT((from_trajectory.front() - t.setpoints.front().position_m).norm(), 1e-6);
@@ -146,7 +146,7 @@ TEST(PathCsv, RefusesWhatIsNotAMapFramePath) {
     }
   };
   const mission::Trajectory t = sampleTrajectory();
-  writeTrajectoryCsv(dir / "ned.csv", t, TrajectoryFrame::Ned);
+  writeTrajectoryCsv(dir / "ned.csv", t, TrajectoryFrame::Ned, Provenance::of("test"));
   refuses("ned.csv", testing::readWholeFile(dir / "ned.csv"), "is in the NED frame");
   refuses("none.csv", "a,b,c\n1,2,3\n4,5,6\n", "neither x, y, z");
   refuses("one.csv", "x,y,z\n1,2,3\n1,2,3\n", "at least 2 distinct points");

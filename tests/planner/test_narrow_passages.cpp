@@ -299,5 +299,38 @@ TEST(NoPath, TheErrorNamesTheMapsEdgeWhenTheWayWouldLeaveTheMap) {
   EXPECT_GT(blockage.position_m.y(), 1.4) << blockage.describe();
 }
 
+// The goal inside a vault walled on every side, away from the start: there is no gap to name,
+// so the error says that the goal is enclosed and where, never a place the search made up.
+TEST(NoPath, TheErrorSaysTheGoalIsEnclosedInASealedVault) {
+  const CeilingScene scene(analyticMap({-2.0, -2.0, 0.0}, {2.2, 2.0, 2.8}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || c.z() > 2.4) return CellState::Occupied;
+    const bool vault = c.x() > 0.2 && c.x() < 2.0 && c.y() > -0.2 && c.y() < 1.8;
+    const bool inside = c.x() > 0.4 && c.x() < 1.8 && c.y() > 0.0 && c.y() < 1.6;
+    return vault && !inside ? CellState::Occupied : CellState::Free;
+  }));
+  const Eigen::Vector3d goal(1.1, 0.8, 1.2);
+  planner::LatticePlanner lattice(scene.planner.spaceInformation());
+  EXPECT_EQ(solveOnce(lattice, scene.planner, kStart, goal).status, ompl::base::PlannerStatus::ABORT);
+  const std::optional<planner::Blockage> blockage = lattice.lastBlockage();
+  ASSERT_TRUE(blockage);
+  const std::string text = blockage->describe();
+  EXPECT_NE(text.find("the goal at (1.10, 0.80, 1.20) is enclosed"), std::string::npos) << text;
+  EXPECT_EQ(text.find("(0.00, 0.00, 0.00)"), std::string::npos) << text;
+
+  planner::PlanRequest request = acrossTheWall(planner::referencePlannerName());
+  request.goal_m = goal;
+  try {
+    scene.planner.plan(request);
+    ADD_FAILURE() << "a path into the sealed vault";
+  } catch (const ceilplan::NoPathError& e) {
+    EXPECT_NE(std::string(e.what()).find("is enclosed"), std::string::npos) << e.what();
+  }
+  // From inside the vault out, the start is the one enclosed.
+  EXPECT_EQ(solveOnce(lattice, scene.planner, goal, kStart).status, ompl::base::PlannerStatus::ABORT);
+  ASSERT_TRUE(lattice.lastBlockage());
+  EXPECT_NE(lattice.lastBlockage()->describe().find("the start at (1.10, 0.80, 1.20) is enclosed"), std::string::npos)
+      << lattice.lastBlockage()->describe();
+}
+
 }  // namespace
 }  // namespace ceilplan::testing

@@ -94,6 +94,9 @@ def test_tour_matches_the_command_line(tmp_path):
     tour.write(tmp_path / "py")
     written = json.loads((tmp_path / "py" / "tour.json").read_text())
     assert written["charge_ah"] == cli["charge_ah"]
+    # Where the files came from: the call that planned them and the one that wrote them.
+    command = written["provenance"]["command"]
+    assert "ceilplan.plan_tour(mission, mode='ceiling', seed=" in command and ".write(" in command
     assert tour.photos is None and tour.coverage is None  # point targets only
     assert tour.stops_rechosen is False and cli["stops_rechosen"] is False
 
@@ -118,7 +121,7 @@ def test_coverage_tour_exposes_its_photos_and_coverage(tmp_path):
     assert region["covered_reachable_pct"] >= 99.0
     # The same photos and coverage as the files `ceilplan tour` writes.
     tour.write(tmp_path / "strip")
-    rows = (tmp_path / "strip" / "photos.csv").read_text().splitlines()
+    rows = [line for line in (tmp_path / "strip" / "photos.csv").read_text().splitlines() if not line.startswith("#")]
     assert rows[0] == "index,sortie,t_s,x,y,z,yaw_deg,gimbal_pitch_deg,distance_m,gsd_mm_px,region"
     assert len(rows) == n + 1
     for k, row in enumerate(rows[1:]):

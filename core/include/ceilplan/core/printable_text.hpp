@@ -14,4 +14,8 @@ namespace ceilplan {
 // and so does a backslash. Longer than `max_chars` characters, the rest becomes "...".
 std::string printableText(std::string_view text, std::size_t max_chars = 64);
 
+// A report of several lines made safe to print: each line as printableText shows it, whole (no
+// "..."), the line breaks kept. Idempotent, so text already escaped can pass again.
+std::string printableLines(std::string_view text);
+
 }  // namespace ceilplan

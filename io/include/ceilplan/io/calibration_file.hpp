@@ -3,6 +3,7 @@
 // (docs/energy.md).
 
 #include "ceilplan/energy/calibration.hpp"
+#include "ceilplan/io/provenance.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -25,8 +26,8 @@ nlohmann::json calibrationReportJson(const std::filesystem::path& data, std::siz
                                      const energy::CalibrationResult& result);
 
 // The comment heading the calibrated vehicle file (io::writeCalibratedVehicle): the data and its
-// samples, the parameters fitted and the RMSE.
+// samples, the parameters fitted and the RMSE; on a second line the provenance.
 std::string calibratedVehicleComment(const std::filesystem::path& data, std::size_t samples,
-                                     const energy::CalibrationResult& result);
+                                     const energy::CalibrationResult& result, const Provenance& provenance);
 
 }  // namespace ceilplan::io

@@ -4,6 +4,7 @@
 // centres of uncovered and unreachable elements), built from a coverage plan and its
 // independent re-check. Formats: docs/coverage.md, "Outputs".
 
+#include "ceilplan/io/provenance.hpp"
 #include "ceilplan/mission/coverage_check.hpp"
 #include "ceilplan/mission/coverage_plan.hpp"
 #include "ceilplan/mission/tour_planner.hpp"
@@ -45,15 +46,17 @@ nlohmann::json coverageJson(const mission::CoveragePlan& plan, const mission::Co
 // at or below the required GSD and incidence. Throws ceilplan::InputError as coverageJson does.
 std::string coverageElementsCsv(const mission::CoveragePlan& plan, const mission::CoverageCheck& check);
 
-// Both written atomically (whole or not at all).
-void writePhotosCsv(const std::filesystem::path& file, const std::vector<PhotoRow>& rows);
-void writeCoverageJson(const std::filesystem::path& file, const nlohmann::json& coverage);
+// Both written atomically (whole or not at all), with `provenance`: the CSV's first line is its
+// comment, the JSON holds it as "provenance".
+void writePhotosCsv(const std::filesystem::path& file, const std::vector<PhotoRow>& rows, const Provenance& provenance);
+void writeCoverageJson(const std::filesystem::path& file, const nlohmann::json& coverage, const Provenance& provenance);
 
 // A coverage tour's files in its directory: photos.csv (the photos as flown, with sortie and
 // time), coverage.json (the plan with the re-check of the photos flown) and
-// coverage_elements.csv (each element as the re-check found it). Throws
+// coverage_elements.csv (each element as the re-check found it), each with `provenance`. Throws
 // ceilplan::InputError when the tour has no coverage plan.
-void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourResult& tour);
+void writeCoverageFiles(const std::filesystem::path& dir, const mission::TourResult& tour,
+                        const Provenance& provenance);
 
 // tour.json's "coverage": photos, route_m, and per region name, area_m2, reachable_area_m2,
 // covered_area_m2, covered_pct, covered_reachable_pct, unreachable_area_m2, mean_gsd_mm_px.

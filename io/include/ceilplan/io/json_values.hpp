@@ -6,12 +6,19 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 namespace ceilplan::io {
 
 inline nlohmann::json finiteOrNull(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
+
+// The one way ceilplan turns JSON into text (indent -1: one line). Strings from the user (file
+// names, target names) may hold bytes that are not UTF-8, which nlohmann::json refuses to dump:
+// each such byte becomes U+FFFD, so an output is never lost to a name after the work is done.
+std::string jsonText(const nlohmann::json& json, int indent = -1);
+std::string jsonText(const nlohmann::ordered_json& json, int indent = -1);
 
 // Writes `json` indented by 2, with a final newline, atomically (writeTextAtomically).
 void writeJsonFile(const std::filesystem::path& file, const nlohmann::json& json);

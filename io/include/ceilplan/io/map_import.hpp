@@ -7,8 +7,10 @@
 #include "ceilplan/core/progress.hpp"
 #include "ceilplan/environment/map_builder.hpp"
 #include "ceilplan/io/projected_frame.hpp"
+#include "ceilplan/io/provenance.hpp"
 
 #include <Eigen/Geometry>
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -65,10 +67,10 @@ MapImport importMap(const MapImportOptions& options, const ProgressCallback& pro
 nlohmann::json mapImportJson(const MapImport& imported, const MapImportOptions& options,
                              const std::filesystem::path& map_file);
 
-// Writes `map_file` (.bt) and its summary (mapImportJson) to `summary_file`, by default
-// `<map_file>.json`, together: on any failure neither is left behind. Throws
+// Writes `map_file` (.bt) and its summary (mapImportJson with `provenance`) to `summary_file`,
+// by default `<map_file>.json`, together: on any failure neither is left behind. Throws
 // ceilplan::InputError for a name not ending in .bt.
 void writeImportedMap(const std::filesystem::path& map_file, const MapImport& imported, const MapImportOptions& options,
-                      std::filesystem::path summary_file = {});
+                      const Provenance& provenance, std::filesystem::path summary_file = {});
 
 }  // namespace ceilplan::io

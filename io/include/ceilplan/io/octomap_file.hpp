@@ -10,8 +10,9 @@ namespace ceilplan::io {
 
 // Writes `tree` as a .bt file (maximum-likelihood free/occupied) to `out`. OctoMap's own
 // header is written here because its writeBinary prints debug chatter on stderr in Debian's
-// build. Throws ceilplan::Error if the stream fails.
-void writeOctoMapBinary(const octomap::OcTree& tree, std::ostream& out);
+// build. Throws ceilplan::Error naming `file` (the final name of what `out` writes) if the
+// stream fails.
+void writeOctoMapBinary(const octomap::OcTree& tree, std::ostream& out, const std::filesystem::path& file);
 
 // True for a file name ending in .bt or .ot, the two formats writeOctoMapFile writes.
 bool isOctoMapFileName(const std::filesystem::path& file);

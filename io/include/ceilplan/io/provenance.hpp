@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ceilplan::io {
@@ -31,9 +32,18 @@ struct Provenance {
   Provenance& input(const std::string& role, const std::filesystem::path& path);
 
   nlohmann::json json() const;
-  // One line: "# ceilplan 0.1.0 (git ...) | ceilplan tour ... | seed 1 | map bridge.bt sha256 ..."
+  // The same as named one-line fields, for formats that hold such (OMPL's benchmark log):
+  // "ceilplan", "command", "seed" when there is one, and per input ROLE and ROLE_sha256.
+  std::vector<std::pair<std::string, std::string>> fields() const;
+  // One line: "ceilplan 0.1.0 (git ...) | ceilplan tour ... | seed 1 | map bridge.bt sha256 ..."
+  std::string line() const;
+  // The same as a comment, "# " + line(): the first line of every CSV output.
   std::string csvComment() const;
 };
+
+// `json`, an object, with `provenance` under "provenance": what every JSON output records.
+nlohmann::json withProvenance(nlohmann::json json, const Provenance& provenance);
+nlohmann::ordered_json withProvenance(nlohmann::ordered_json json, const Provenance& provenance);
 
 // The command line as one string, each argument quoted where the shell would need it.
 std::string commandLine(int argc, const char* const* argv);

@@ -17,8 +17,9 @@
 
 namespace ceilplan::io {
 
-// A tour's provenance: `command_line`, the mission, map and vehicle files, the seed.
-Provenance tourProvenance(const std::string& command_line, const mission::Mission& mission, std::uint64_t seed);
+// A tour's provenance: `provenance` (the command line, and any input it has already) with the
+// mission, map and vehicle files and the seed.
+Provenance tourProvenance(Provenance provenance, const mission::Mission& mission, std::uint64_t seed);
 
 // Why the tour's DJI KMZ cannot be written with the default payload (a gimbal pitch beyond its
 // range, naming the sortie and waypoint), or none.

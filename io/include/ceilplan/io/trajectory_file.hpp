@@ -10,6 +10,7 @@
 
 #include "ceilplan/mission/geodetic_origin.hpp"
 #include "ceilplan/mission/trajectory.hpp"
+#include "ceilplan/io/provenance.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -36,11 +37,12 @@ std::string trajectoryCsv(const mission::Trajectory& trajectory, TrajectoryFrame
 nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryFrame frame = TrajectoryFrame::Enu,
                               const std::optional<mission::GeodeticOrigin>& origin = std::nullopt);
 
-// Both written atomically (whole or not at all).
-void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajectory& trajectory,
-                        TrajectoryFrame frame = TrajectoryFrame::Enu);
+// Both written atomically (whole or not at all), with `provenance`: the CSV's first line is its
+// comment, the JSON holds it as "provenance".
+void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajectory& trajectory, TrajectoryFrame frame,
+                        const Provenance& provenance);
 void writeTrajectoryJson(const std::filesystem::path& file, const mission::Trajectory& trajectory,
-                         TrajectoryFrame frame = TrajectoryFrame::Enu,
-                         const std::optional<mission::GeodeticOrigin>& origin = std::nullopt);
+                         TrajectoryFrame frame, const std::optional<mission::GeodeticOrigin>& origin,
+                         const Provenance& provenance);
 
 }  // namespace ceilplan::io

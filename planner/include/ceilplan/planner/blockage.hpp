@@ -32,9 +32,17 @@ struct Blockage {
   // the inflated cylinder's diameter and height).
   double needed_width_m = 0.0;
   double needed_height_m = 0.0;
+  // Set when no opening at all joins the two sides: the end ("start" or "goal") walled in on
+  // every side, where it is, and the box of the space the vehicle reaches from it. Then
+  // position_m and the opening say nothing.
+  std::string enclosed_end;
+  Eigen::Vector3d enclosed_at_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d enclosure_min_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d enclosure_max_m = Eigen::Vector3d::Zero();
 
   // One line, e.g. "blocked at (4.05, 1.20, 1.00) by the vehicle's clearance: the opening there
-  // is 0.88 m wide and 2.00 m high, the vehicle needs 0.92 x 0.30 m with its margins".
+  // is 0.88 m wide and 2.00 m high, the vehicle needs 0.92 x 0.30 m with its margins", or "the
+  // goal at (1.10, 0.80, 1.20) is enclosed: ..." .
   std::string describe() const;
 };
 

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ceilplan::planner {
@@ -35,6 +36,9 @@ struct PlannerBenchmarkOptions {
   // OMPL's benchmark log (ompl_benchmark_statistics format) is written here; null: none. A stream,
   // not a file name: the caller writes it with its other outputs, all or nothing.
   std::ostream* log = nullptr;
+  // Name and one-line text of each experiment property the log records besides OMPL's own
+  // (where the run came from: version, command line, inputs).
+  std::vector<std::pair<std::string, std::string>> log_properties;
 
   // Throws ceilplan::InputError for no planner, an unknown name (plannerInfo's message), no run
   // or a time limit that is not positive.
