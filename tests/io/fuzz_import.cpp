@@ -1,0 +1,67 @@
+// libFuzzer target for one import format, CEILPLAN_FUZZ_EXTENSION (".pcd", ".ply", ".xyz", ".stl" or
+// ".obj"; the build makes one target per format): any bytes in such a file give points or a mesh, or a
+// ceilplan::Error; never a crash, a hang, a leak or another exception. A .ply goes through both
+// readers, as `ceilplan import` takes it as a cloud or a mesh. What a reader accepts, the map
+// builder must take or refuse in words; it runs on small results only (a coarse map of at most
+// 8 m a side), so each input stays quick. Build and run: scripts/fuzz-import-pcd and the like.
+
+#include "fuzz_support.hpp"
+
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/environment/map_builder.hpp"
+#include "ceilplan/io/mesh_file.hpp"
+#include "ceilplan/io/point_cloud_file.hpp"
+
+#include <Eigen/Geometry>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace env = ceilplan::environment;
+
+// Larger results are read only: building their maps would take most of the run.
+constexpr double kMaxBuildExtent_m = 8.0;
+constexpr std::size_t kMaxBuildTriangles = 4096;
+constexpr double kBuildResolution_m = 0.5;
+
+bool smallEnough(const std::vector<Eigen::Vector3d>& points_m) {
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& p : points_m) box.extend(p);
+  return box.sizes().maxCoeff() <= kMaxBuildExtent_m;
+}
+
+void readCloud(const std::filesystem::path& file) {
+  try {
+    std::vector<Eigen::Vector3d> points = ceilplan::io::readPointCloud(file);
+    env::dropNonFinitePoints(points, nullptr);  // as `import --skip-non-finite`
+    if (!smallEnough(points)) return;
+    env::PointAssumptionOptions options;
+    options.resolution_m = kBuildResolution_m;
+    options.free_distance_m = 2.0 * kBuildResolution_m;  // import's default
+    env::mapFromPointsAlone(points, options);
+  } catch (const ceilplan::Error&) {
+  }
+}
+
+void readMesh(const std::filesystem::path& file) {
+  try {
+    const env::TriangleMesh mesh = ceilplan::io::readTriangleMesh(file);
+    if (mesh.triangles.size() > kMaxBuildTriangles || !smallEnough(mesh.vertices_m)) return;
+    env::MeshVoxelisingOptions options;
+    options.resolution_m = kBuildResolution_m;
+    env::mapFromMesh(mesh, options);
+  } catch (const ceilplan::Error&) {
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string extension = CEILPLAN_FUZZ_EXTENSION;
+  const std::filesystem::path file = ceilplan::fuzzing::inputFile(data, size, ("input" + extension).c_str());
+  if (extension != ".stl" && extension != ".obj") readCloud(file);
+  if (extension != ".pcd" && extension != ".xyz") readMesh(file);
+  return 0;
+}
