@@ -1,6 +1,7 @@
 #include "ceilplan/io/mesh_file.hpp"
 
 #include "file_kind.hpp"
+#include "open3d_input_checks.hpp"
 #include "open3d_log.hpp"
 
 #include <open3d/geometry/TriangleMesh.h>
@@ -20,7 +21,9 @@ std::string meshExtensions() { return detail::joined(kMeshExtensions); }
 
 environment::TriangleMesh readTriangleMesh(const std::filesystem::path& file) {
   const std::string name = file.string();
-  detail::requireReadableFileOfKind(file, kMeshExtensions, kCloudOnlyExtensions, "mesh", "point-cloud");
+  const std::string extension =
+      detail::requireReadableFileOfKind(file, kMeshExtensions, kCloudOnlyExtensions, "mesh", "point-cloud");
+  if (extension == ".ply") detail::checkPlyFile(file);
 
   open3d::geometry::TriangleMesh mesh;
   if (const auto failure = detail::failureOf([&] { return open3d::io::ReadTriangleMesh(name, mesh, open3d::io::ReadTriangleMeshOptions{}); }))
