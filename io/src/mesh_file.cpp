@@ -23,7 +23,7 @@ environment::TriangleMesh readTriangleMesh(const std::filesystem::path& file) {
   const std::string name = file.string();
   const std::string extension =
       detail::requireReadableFileOfKind(file, kMeshExtensions, kCloudOnlyExtensions, "mesh", "point-cloud");
-  if (extension == ".ply") detail::checkPlyFile(file);
+  if (extension == ".ply") detail::checkPlyFile(file, "mesh");
 
   open3d::geometry::TriangleMesh mesh;
   if (const auto failure = detail::failureOf([&] { return open3d::io::ReadTriangleMesh(name, mesh, open3d::io::ReadTriangleMeshOptions{}); }))

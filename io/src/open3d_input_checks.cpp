@@ -56,7 +56,10 @@ bool headerText(const std::string& line) {
 
 struct Refusal {
   const std::filesystem::path& file;
-  [[noreturn]] void operator()(const std::string& problem) const { throw InputError(file.string() + ": " + problem); }
+  std::string kind;
+  [[noreturn]] void operator()(const std::string& problem) const {
+    throw InputError(file.string() + ": not a readable " + kind + " (" + problem + ")");
+  }
 };
 
 std::uint64_t bytesAfter(std::ifstream& in, const std::filesystem::path& file) {
@@ -83,7 +86,7 @@ bool decodable(const PcdField& field) {
 }  // namespace
 
 void checkPcdFile(const std::filesystem::path& file) {
-  const Refusal refuse{file};
+  const Refusal refuse{file, "point cloud"};
   std::ifstream in(file, std::ios::binary);
   std::vector<PcdField> fields;
   std::vector<std::string> seen;
@@ -158,9 +161,11 @@ void checkPcdFile(const std::filesystem::path& file) {
   for (const PcdField& field : fields) {
     values_per_point += field.count;
     bytes_per_point += field.size * field.count;
+    // A file Open3D reads, wrongly: said as such.
     if (storage != "ascii" && (field.name == "x" || field.name == "y" || field.name == "z") && !decodable(field))
-      refuse(storage + " PCD with " + std::to_string(field.size) + "-byte coordinates of type " + field.type +
-             ", which the PCD reader (Open3D 0.16) reads as zeros; save it as ascii PCD or as PLY");
+      throw InputError(file.string() + ": " + storage + " PCD with " + std::to_string(field.size) +
+                       "-byte coordinates of type " + field.type +
+                       ", which the PCD reader (Open3D 0.16) reads as zeros; save it as ascii PCD or as PLY");
   }
   const std::uint64_t data_bytes = points * bytes_per_point;
   const std::uint64_t available = bytesAfter(in, file);
@@ -293,8 +298,8 @@ class PlyBody {
 
 }  // namespace
 
-void checkPlyFile(const std::filesystem::path& file) {
-  const Refusal refuse{file};
+void checkPlyFile(const std::filesystem::path& file, const std::string& kind) {
+  const Refusal refuse{file, kind};
   std::ifstream in(file, std::ios::binary);
   std::string line;
   if (!std::getline(in, line) || (line != "ply" && line != "ply\r")) refuse("not a PLY file (no 'ply' first line)");

@@ -29,7 +29,7 @@ std::vector<Eigen::Vector3d> readPointCloud(const std::filesystem::path& file) {
       detail::requireReadableFileOfKind(file, kCloudExtensions, kMeshOnlyExtensions, "point cloud", "mesh");
 
   if (extension == ".pcd") detail::checkPcdFile(file);
-  if (extension == ".ply") detail::checkPlyFile(file);
+  if (extension == ".ply") detail::checkPlyFile(file, "point cloud");
 
   open3d::geometry::PointCloud cloud;
   open3d::io::ReadPointCloudOption option;

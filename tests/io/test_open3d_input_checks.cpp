@@ -59,14 +59,16 @@ TEST(Open3dInputChecks, RefusesPcdHeadersOpen3dWouldMisread) {
   const std::string fields = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n";
   // A count of 0 made Open3D index past a row's values (the fuzzer's crash).
   const auto zero_count = writeFile("zero_count.pcd", "FIELDS x y z\nCOUNT 1 0 0\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1\n");
-  EXPECT_EQ(cloudRefusal(zero_count), zero_count.string() + ": PCD header line 2: a field count of '0' (1 or more)");
+  EXPECT_EQ(cloudRefusal(zero_count),
+            zero_count.string() + ": not a readable point cloud (PCD header line 2: a field count of '0' (1 or more))");
   // Fewer rows than points: Open3D returned the rest uninitialised.
   const auto short_rows = writeFile("short.pcd", fields + "WIDTH 3\nHEIGHT 1\nPOINTS 3\nDATA ascii\n1 2 3\n4 5\n");
-  EXPECT_EQ(cloudRefusal(short_rows), short_rows.string() + ": the ascii PCD announces 3 points but holds 1 rows of 3 values");
+  EXPECT_EQ(cloudRefusal(short_rows), short_rows.string() + ": not a readable point cloud (the ascii PCD announces 3 "
+                                                            "points but holds 1 rows of 3 values)");
   // Two billion points announced in a file of a few bytes: Open3D allocated them first.
   const auto huge = writeFile("huge.pcd", fields + "WIDTH 100000000\nHEIGHT 20\nPOINTS 2000000000\nDATA binary\n");
-  EXPECT_EQ(cloudRefusal(huge),
-            huge.string() + ": the binary PCD announces 2000000000 points of 12 bytes but holds 0 bytes of data");
+  EXPECT_EQ(cloudRefusal(huge), huge.string() + ": not a readable point cloud (the binary PCD announces 2000000000 "
+                                                "points of 12 bytes but holds 0 bytes of data)");
   const auto sizes = writeFile("sizes.pcd", fields + "WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA binary_compressed\n" +
                                                 std::string("\x08\x00\x00\x00\x0c\x00\x00\x01", 8));
   EXPECT_NE(cloudRefusal(sizes).find("the compressed PCD's data sizes (8 compressed, 16777228 uncompressed)"),
@@ -85,7 +87,8 @@ TEST(Open3dInputChecks, RefusesPcdHeadersOpen3dWouldMisread) {
            {fields + "WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA binaryx\n", "PCD header line 7: DATA 'binaryx'"},
            {fields + "WIDTH 1\n", "the PCD header ends before its DATA line"}}) {
     const auto file = writeFile("header.pcd", header);
-    EXPECT_NE(cloudRefusal(file).find(file.string() + ": " + message), std::string::npos) << cloudRefusal(file);
+    EXPECT_NE(cloudRefusal(file).find(file.string() + ": not a readable point cloud (" + message), std::string::npos)
+        << cloudRefusal(file);
   }
 }
 
@@ -99,17 +102,19 @@ TEST(Open3dInputChecks, RefusesPlyFacesAndCountsOpen3dWouldMisread) {
            {"3 0 1 -1\n", "the PLY's face element, record 0: a face names vertex -1 of 3"},
            {"3 0 1\n", "the PLY's face element, record 0: the file ends, or a value is no number"}}) {
     const auto file = writeFile("face.ply", kPlyTriangleHeader + face);
-    EXPECT_EQ(meshRefusal(file), file.string() + ": " + message);
-    EXPECT_EQ(cloudRefusal(file), file.string() + ": " + message);
+    EXPECT_EQ(meshRefusal(file), file.string() + ": not a readable mesh (" + message + ")");
+    EXPECT_EQ(cloudRefusal(file), file.string() + ": not a readable point cloud (" + message + ")");
   }
   const auto huge = writeFile("huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\n"
                                           "property float x\nproperty float y\nproperty float z\nend_header\n");
-  EXPECT_EQ(cloudRefusal(huge), huge.string() + ": the PLY's vertex element announces 2000000000 records the file does not hold");
+  EXPECT_EQ(cloudRefusal(huge), huge.string() + ": not a readable point cloud (the PLY's vertex element announces "
+                                                "2000000000 records the file does not hold)");
   const auto scalar = writeFile("scalar.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
                                               "property float z\nelement face 1\nproperty int vertex_indices\nend_header\n0 0 0\n0\n");
-  EXPECT_EQ(meshRefusal(scalar), scalar.string() + ": the PLY's face element, record 0: vertex_indices must be a list");
+  EXPECT_EQ(meshRefusal(scalar),
+            scalar.string() + ": not a readable mesh (the PLY's face element, record 0: vertex_indices must be a list)");
   const auto crlf = writeFile("crlf.ply", "ply\r\nformat binary_little_endian 1.0\r\nelement vertex 0\r\nend_header\r\n");
-  EXPECT_EQ(meshRefusal(crlf), crlf.string() + ": PLY header line 4: give 'end_header' alone");
+  EXPECT_EQ(meshRefusal(crlf), crlf.string() + ": not a readable mesh (PLY header line 4: give 'end_header' alone)");
   const auto list_type = writeFile("list.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\nend_header\n");
   EXPECT_NE(meshRefusal(list_type).find("PLY header line 4: give 'property TYPE NAME'"), std::string::npos);
 }
