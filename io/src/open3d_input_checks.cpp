@@ -238,15 +238,14 @@ class PlyBody {
   // The next value as a number; nullopt at the end of the file or for a word that is no number.
   std::optional<double> value(const PlyType& type) {
     if (ascii_) {
+      // Coordinates are rply's to parse: only their presence matters here.
+      if (type.kind == 'f') return skipWord() ? std::optional<double>(0.0) : std::nullopt;
       const std::optional<std::string> word = nextWord();
       if (!word) return std::nullopt;
-      if (type.kind != 'f') {
-        const bool negative = (*word)[0] == '-';
-        const auto magnitude = wholeNumber(negative ? word->substr(1) : *word, kMaxCount + 1);
-        if (!magnitude) return std::nullopt;
-        return negative ? -static_cast<double>(*magnitude) : static_cast<double>(*magnitude);
-      }
-      return 0.0;  // coordinates are rply's to parse: only their presence matters here
+      const bool negative = (*word)[0] == '-';
+      const auto magnitude = wholeNumber(negative ? word->substr(1) : *word, kMaxCount + 1);
+      if (!magnitude) return std::nullopt;
+      return negative ? -static_cast<double>(*magnitude) : static_cast<double>(*magnitude);
     }
     unsigned char bytes[8];
     if (!in_.read(reinterpret_cast<char*>(bytes), type.bytes)) return std::nullopt;
@@ -261,14 +260,25 @@ class PlyBody {
   }
 
  private:
+  static bool separator(int c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
+
+  bool skipWord() {
+    std::streambuf& text = *in_.rdbuf();
+    int c = text.sbumpc();
+    while (c != std::char_traits<char>::eof() && separator(c)) c = text.sbumpc();
+    if (c == std::char_traits<char>::eof()) return false;
+    while (c != std::char_traits<char>::eof() && !separator(c)) c = text.sbumpc();
+    return true;
+  }
+
   std::optional<std::string> nextWord() {
     std::string word;
-    char c;
-    while (in_.get(c)) {
-      if (c == ' ' || c == '\n' || c == '\r' || c == '\t') {
+    std::streambuf& text = *in_.rdbuf();
+    for (int c = text.sbumpc(); c != std::char_traits<char>::eof(); c = text.sbumpc()) {
+      if (separator(c)) {
         if (!word.empty()) return word;
       } else {
-        word += c;
+        word += static_cast<char>(c);
       }
     }
     if (word.empty()) return std::nullopt;
