@@ -46,6 +46,18 @@ std::optional<std::uint64_t> wholeNumber(const std::string& word, std::uint64_t 
   return value;
 }
 
+// The next line without its '\n'; false at the end of the file. A line longer than kMaxLineBytes
+// is cut there (and refused), so a file without line breaks is not read whole.
+bool readLine(std::istream& in, std::string& line) {
+  line.clear();
+  std::streambuf& text = *in.rdbuf();
+  int c = text.sbumpc();
+  if (c == std::char_traits<char>::eof()) return false;
+  for (; c != std::char_traits<char>::eof() && c != '\n' && line.size() <= kMaxLineBytes; c = text.sbumpc())
+    line += static_cast<char>(c);
+  return true;
+}
+
 // A header line: at most kMaxLineBytes, no control byte but tab and CR.
 bool headerText(const std::string& line) {
   return line.size() <= kMaxLineBytes && std::none_of(line.begin(), line.end(), [](char c) {
@@ -64,9 +76,8 @@ struct Refusal {
 
 std::uint64_t bytesAfter(std::ifstream& in, const std::filesystem::path& file) {
   const std::uint64_t size = std::filesystem::file_size(file);
-  if (in.eof()) return 0;
-  const auto position = static_cast<std::uint64_t>(in.tellg());
-  return position <= size ? size - position : 0;
+  const std::streamoff position = in.tellg();
+  return position >= 0 && static_cast<std::uint64_t>(position) <= size ? size - static_cast<std::uint64_t>(position) : 0;
 }
 
 // ---- PCD
@@ -94,7 +105,7 @@ void checkPcdFile(const std::filesystem::path& file) {
   std::string storage, line;
   for (int number = 1; storage.empty(); ++number) {
     const std::string at = "PCD header line " + std::to_string(number) + ": ";
-    if (!std::getline(in, line)) refuse("the PCD header ends before its DATA line");
+    if (!readLine(in, line)) refuse("the PCD header ends before its DATA line");
     if (!headerText(line)) refuse(at + "longer than 1000 bytes, or a control byte");
     const std::vector<std::string> words = wordsOf(line, " \t\r");
     if (words.empty() || words[0][0] == '#') continue;
@@ -185,7 +196,7 @@ void checkPcdFile(const std::filesystem::path& file) {
     // Open3D skips rows with fewer values than a point has, and leaves the points it finds no row
     // for uninitialised.
     std::uint64_t rows = 0;
-    for (std::uint64_t number = 1; rows < points && std::getline(in, line); ++number) {
+    for (std::uint64_t number = 1; rows < points && readLine(in, line); ++number) {
       if (line.size() > kMaxLineBytes) refuse("data line " + std::to_string(number) + " is longer than 1000 bytes");
       line.resize(std::min(line.find('\0'), line.size()));  // Open3D's line ends at a NUL
       if (wordsOf(line, " \t\r").size() >= values_per_point) ++rows;
@@ -312,12 +323,12 @@ void checkPlyFile(const std::filesystem::path& file, const std::string& kind) {
   const Refusal refuse{file, kind};
   std::ifstream in(file, std::ios::binary);
   std::string line;
-  if (!std::getline(in, line) || (line != "ply" && line != "ply\r")) refuse("not a PLY file (no 'ply' first line)");
+  if (!readLine(in, line) || (line != "ply" && line != "ply\r")) refuse("not a PLY file (no 'ply' first line)");
   std::string format;
   std::vector<PlyElement> elements;
   for (int number = 2;; ++number) {
     const std::string at = "PLY header line " + std::to_string(number) + ": ";
-    if (!std::getline(in, line)) refuse("the PLY header ends before end_header");
+    if (!readLine(in, line)) refuse("the PLY header ends before end_header");
     if (!headerText(line)) refuse(at + "longer than 1000 bytes, or a control byte");
     const std::vector<std::string> words = wordsOf(line, " \t\r");
     if (words.empty()) refuse(at + "empty");

@@ -85,7 +85,9 @@ TEST(Open3dInputChecks, RefusesPcdHeadersOpen3dWouldMisread) {
            {fields + "WIDTH -1\n", "PCD header line 4: WIDTH '-1' is not a whole number from 1 to 2147483647"},
            {fields + "WIDTHS 1\n", "PCD header line 4: 'WIDTHS' is no PCD v0.7 entry"},
            {fields + "WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA binaryx\n", "PCD header line 7: DATA 'binaryx'"},
-           {fields + "WIDTH 1\n", "the PCD header ends before its DATA line"}}) {
+           {fields + "WIDTH 1\n", "the PCD header ends before its DATA line"},
+           {"FIELDS " + std::string(5000, 'x'), "PCD header line 1: longer than 1000 bytes, or a control byte"},
+           {"FIELDS x y\x1bz\n", "PCD header line 1: longer than 1000 bytes, or a control byte"}}) {
     const auto file = writeFile("header.pcd", header);
     EXPECT_NE(cloudRefusal(file).find(file.string() + ": not a readable point cloud (" + message), std::string::npos)
         << cloudRefusal(file);
