@@ -1,6 +1,7 @@
 #include "ceilplan/io/mesh_file.hpp"
 
 #include "file_kind.hpp"
+#include "open3d_input_checks.hpp"
 #include "open3d_log.hpp"
 #include "ply_counts.hpp"
 
@@ -22,7 +23,9 @@ std::string meshExtensions() { return detail::joined(kMeshExtensions); }
 
 environment::TriangleMesh readTriangleMesh(const std::filesystem::path& file) {
   const std::string name = file.string();
-  detail::requireReadableFileOfKind(file, kMeshExtensions, kCloudOnlyExtensions, "mesh", "point-cloud");
+  const std::string extension =
+      detail::requireReadableFileOfKind(file, kMeshExtensions, kCloudOnlyExtensions, "mesh", "point-cloud");
+  if (extension == ".ply") detail::checkPlyFile(file, "mesh");
 
   if (detail::lowerExtension(file) == ".ply") detail::checkPlyCounts(file);
 

@@ -5,6 +5,7 @@
 #include "ceilplan/io/csv_columns.hpp"
 
 #include "file_kind.hpp"
+#include "open3d_input_checks.hpp"
 #include "open3d_log.hpp"
 #include "ply_counts.hpp"
 
@@ -12,6 +13,7 @@
 #include <open3d/io/PointCloudIO.h>
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -116,6 +118,8 @@ std::vector<Eigen::Vector3d> readPointCloud(const std::filesystem::path& file) {
   if (extension == ".xyz") checkXyzLines(file, 3);
   if (extension == ".xyzn" || extension == ".xyzrgb") checkXyzLines(file, 6);
   if (extension == ".ply") detail::checkPlyCounts(file);
+  if (extension == ".pcd") detail::checkPcdFile(file);
+  if (extension == ".ply") detail::checkPlyFile(file, "point cloud");
 
   open3d::geometry::PointCloud cloud;
   open3d::io::ReadPointCloudOption option;
