@@ -72,17 +72,12 @@ void runTour(TourArguments a) {
   std::printf("unknown space: %s\n", io::unknownSpaceLine(context.environment()).c_str());
   std::fflush(stdout);
   std::vector<mission::TourResult> tours;
-  bool kmz_written = autopilot.has_value();
   for (mission::FlightMode mode : modes) {
     tours.push_back(mission::planTour(mission, context, mode, a.options));
     const std::filesystem::path dir = modes.size() > 1 ? out.path() / mission::flightModeName(mode) : out.path();
     io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot, provenance);
     std::printf("%s", io::tourSummary(tours.back()).c_str());
-    if (autopilot)
-      if (const std::optional<std::string> dji = io::djiExportProblem(tours.back(), mission)) {
-        std::printf("  DJI KMZ not written: %s\n", dji->c_str());
-        kmz_written = false;
-      }
+    if (autopilot) std::printf("%s", io::exportNotes(tours.back(), mission).c_str());
     std::fflush(stdout);
   }
   if (tours.size() == 2) {
@@ -90,7 +85,7 @@ void runTour(TourArguments a) {
     io::writeTourComparison(out.path(), tours[0], tours[1], mission, context.environment(), provenance);
   }
   out.commit();
-  std::printf("\n%s", io::tourFilesLine(a.out, mission, autopilot, kmz_written).c_str());
+  std::printf("\n%s", io::tourFilesLine(a.out, mission, tours, autopilot).c_str());
 }
 
 const CommandRegistration registration(50, [](CLI::App& parent) {
