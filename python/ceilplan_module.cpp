@@ -429,7 +429,9 @@ PYBIND11_MODULE(ceilplan, m) {
             std::optional<io::Autopilot> autopilot;
             if (export_autopilot) autopilot = io::Autopilot::PX4;
             const io::Provenance provenance = io::tourProvenance("python: ceilplan.plan_tour", *t.mission, t.tour.options.seed);
-            io::OutputSet out(dir);
+            // The rules of `ceilplan tour --out`: replaced whole, only if ceilplan wrote it (or it is empty).
+            io::OutputSet out({{"dir", dir, true}}, {{"the mission's map", t.mission->map_file},
+                                                     {"the mission's vehicle", t.mission->vehicle_file}});
             io::writeTourDirectory(out.path(), t.tour, *t.mission, t.context->environment(), autopilot, provenance);
             out.commit();
           },

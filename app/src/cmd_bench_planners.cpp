@@ -8,6 +8,7 @@
 #include "planning_flags.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/report_json.hpp"
@@ -19,6 +20,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -36,8 +38,8 @@ struct BenchArguments {
 
 void runBench(const BenchArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
-  if (!a.json.empty()) io::checkWritableFile(a.json);  // before the runs
-  if (!a.log.empty()) io::checkWritableFile(a.log);
+  // Checked and staged before the runs; the table and the log appear together or not at all.
+  io::OutputSet out({{"--json", a.json}, {"--log", a.log}}, planningInputs(a.planning));
   planner::PlannerBenchmarkOptions options;
   options.planners = planner::plannerNamesOfList(a.planners);
   options.runs = a.runs;
@@ -45,7 +47,8 @@ void runBench(const BenchArguments& a) {
   options.band_fraction = a.search.band_fraction;
   options.refine = !a.search.no_refine;
   options.experiment = "ceilplan " + a.planning.map;
-  options.log_file = a.log;
+  std::ostringstream log;
+  if (!a.log.empty()) options.log = &log;
   try {
     options.validate();  // the other fields are range-checked as flags
   } catch (const InputError&) {
@@ -67,7 +70,10 @@ void runBench(const BenchArguments& a) {
   const std::vector<planner::PlannerBenchmarkRow> rows =
       planner::benchmarkPlanners(flight_planner, start, goal, reference, options);
   std::cout << io::plannerBenchmarkTable(rows, a.search.time_limit_s);
-  if (!a.json.empty()) io::writeJsonFile(a.json, io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows));
+  if (!a.json.empty())
+    io::writeJsonFile(out.path("--json"), io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows));
+  if (!a.log.empty()) io::writeTextAtomically(out.path("--log"), [&](std::ostream& file) { file << log.str(); });
+  out.commit();
 }
 
 const CommandRegistration registration(43, [](CLI::App& parent) {

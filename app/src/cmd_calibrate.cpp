@@ -1,6 +1,7 @@
 // `ceilplan calibrate`: fit the energy model's free constants to measured currents.
 
 #include "command_registry.hpp"
+#include "output.hpp"
 
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/energy/calibration.hpp"
@@ -27,8 +28,9 @@ struct CalibrateOptions {
 };
 
 void runCalibrate(const CalibrateOptions& options) {
-  io::checkWritableFile(options.out_path);  // before the fit
-  if (!options.json_path.empty()) io::checkWritableFile(options.json_path);
+  // Checked and staged before the fit; the vehicle and the report appear together.
+  io::OutputSet out({{"--out", options.out_path}, {"--json", options.json_path}},
+                    commandInputs({{"--data", options.data_path}, {"--vehicle", options.vehicle_path}}));
   const mission::Vehicle vehicle = io::readVehicleOrDefault(options.vehicle_path);
   const auto samples = io::readCalibrationSamples(options.data_path, vehicle.energy.reference_soc);
   std::vector<energy::FreeParameter> free;
@@ -37,13 +39,13 @@ void runCalibrate(const CalibrateOptions& options) {
   const energy::CalibrationResult result = energy::calibrate(vehicle.energy, samples, free);
 
   std::cout << io::calibrationText(vehicle.name, options.data_path, samples.size(), result);
-  io::writeCalibratedVehicle(options.out_path, options.vehicle_path, result.parameters,
+  io::writeCalibratedVehicle(out.path("--out"), options.vehicle_path, result.parameters,
                              io::calibratedVehicleComment(options.data_path, samples.size(), result));
+  if (!options.json_path.empty())
+    io::writeJsonFile(out.path("--json"), io::calibrationReportJson(options.data_path, samples.size(), result));
+  out.commit();
   std::printf("wrote %s\n", options.out_path.c_str());
-  if (!options.json_path.empty()) {
-    io::writeJsonFile(options.json_path, io::calibrationReportJson(options.data_path, samples.size(), result));
-    std::printf("wrote %s\n", options.json_path.c_str());
-  }
+  if (!options.json_path.empty()) std::printf("wrote %s\n", options.json_path.c_str());
 }
 
 const CommandRegistration registration(31, [](CLI::App& parent) {

@@ -27,7 +27,7 @@ struct CompareArguments {
 
 void runCompare(const CompareArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
-  io::OutputSet out(a.out);  // checked and staged before any work
+  io::OutputSet out(a.out, planningInputs(a.planning));  // checked and staged before any work
   planner::seedOmpl(a.search.seed);
   const auto context = makePlanningContext(a.planning);
   std::printf("comparing ceiling and free modes: objective %s, %s\nunknown space: %s\n",

@@ -38,7 +38,7 @@ struct CurrentOptions {
 };
 
 void runCurrent(const CurrentOptions& options) {
-  if (!options.json_path.empty()) io::checkWritableFile(options.json_path);
+  io::OutputSet out({{"--json", options.json_path}}, commandInputs({{"--vehicle", options.vehicle_path}}));
   const mission::Vehicle vehicle = io::readVehicleOrDefault(options.vehicle_path);
   const energy::EnergyModel model(vehicle.energy);
   energy::FlightCondition flight;
@@ -62,7 +62,8 @@ void runCurrent(const CurrentOptions& options) {
     report = io::currentReportJson(vehicle.name, gap_m, options.coverage, flight, at_point);
   }
   if (!options.json_path.empty()) {
-    io::writeJsonFile(options.json_path, report);
+    io::writeJsonFile(out.path("--json"), report);
+    out.commit();
     std::printf("wrote %s\n", options.json_path.c_str());
   }
 }

@@ -75,16 +75,17 @@ void checkStudy(const DutyArguments& args, const battery::DutyStudyOptions& stud
 }
 
 void runDuty(const DutyArguments& args) {
-  if (!args.json_path.empty()) io::checkWritableFile(args.json_path);  // before the work
-  if (!args.csv_dir.empty()) io::OutputSet::checkWritable(args.csv_dir);
   battery::DutyStudyOptions study = studyOptions(args);
   checkStudy(args, study);
+  // Checked and staged before the work; the JSON and the CSV directory appear together.
+  io::OutputSet out({{"--json", args.json_path}, {"--csv-dir", args.csv_dir, true}}, commandInputs({}));
   study.progress = terminalProgress();
   const battery::DutyStudyResult result = battery::runDutyStudy(study);
   study.progress = nullptr;  // clears the progress line before the table
   std::cout << io::dutyStudyTable(study, result);
-  if (!args.json_path.empty()) io::writeJsonFile(args.json_path, io::dutyStudyJson(study, result));
-  if (!args.csv_dir.empty()) io::writeDutyStudyCsv(args.csv_dir, result);
+  if (!args.json_path.empty()) io::writeJsonFile(out.path("--json"), io::dutyStudyJson(study, result));
+  if (!args.csv_dir.empty()) io::writeDutyStudyCsv(out.path("--csv-dir"), result);
+  out.commit();
 }
 
 // 0 (the exact scheme), or a step of 1 ms to an hour.

@@ -25,7 +25,9 @@ struct EvaluateArguments {
 };
 
 void runEvaluate(const EvaluateArguments& a) {
-  if (!a.json.empty()) io::checkWritableFile(a.json);
+  std::vector<io::Input> inputs = planningInputs(a.planning);
+  inputs.push_back({"--path", a.path});
+  io::OutputSet out({{"--json", a.json}}, inputs);
   const std::vector<Eigen::Vector3d> waypoints = io::readPathWaypoints(a.path);
   const auto context = makePlanningContext(a.planning);
   mission::RouteCheck check;
@@ -38,7 +40,8 @@ void runEvaluate(const EvaluateArguments& a) {
   if (a.json.empty()) return;
   io::Provenance provenance = planningProvenance(a.planning, std::nullopt);
   provenance.input("path", a.path);
-  io::writeJsonFile(a.json, io::routeCheckJson(check, waypoints, *context, provenance));
+  io::writeJsonFile(out.path("--json"), io::routeCheckJson(check, waypoints, *context, provenance));
+  out.commit();
 }
 
 const CommandRegistration registration(41, [](CLI::App& parent) {

@@ -33,7 +33,11 @@ void runImport(const ImportArguments& args) {
   options.mesh = args.mesh;
   const std::filesystem::path out(args.out);
   if (out.extension() != ".bt") throw ceilplan::InputError("--out " + args.out + ": the map file must end in .bt");
-  io::checkWritableFile(out);  // before the cloud is read
+  std::filesystem::path summary = out;
+  summary += ".json";
+  // Checked and staged before the cloud is read; the map and its summary appear together.
+  io::OutputSet outputs({{"--out", out}, {"--out's summary", summary}},
+                        commandInputs({{"--points", args.points}, {"--origins", args.origins}, {"--mesh", args.mesh}}));
   if (!(options.resolution_m >= environment::kMinImportResolution_m &&
         options.resolution_m <= environment::kMaxImportResolution_m))
     throw ceilplan::InputError("--resolution " + formatNumber(options.resolution_m) + ": use " +
@@ -47,7 +51,8 @@ void runImport(const ImportArguments& args) {
     const ProgressCallback progress = terminalProgress();  // cleared when the import ends
     return io::importMap(options, progress);
   }();
-  io::writeImportedMap(out, imported, options);
+  io::writeImportedMap(outputs.path("--out"), imported, options, outputs.path("--out's summary"));
+  outputs.commit();
 
   std::cout << io::mapImportText(imported, options, out);
 }

@@ -2,6 +2,7 @@
 
 #include "cli_checks.hpp"
 #include "command_registry.hpp"
+#include "output.hpp"
 
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/core/error.hpp"
@@ -29,10 +30,11 @@ void runMapgen(const MapgenOptions& options) {
   const std::filesystem::path out(options.out);
   if (!io::isOctoMapFileName(out))
     throw ceilplan::InputError("--out " + options.out + ": the map file must end in .bt (or .ot)");
-  io::checkWritableFile(out);
+  io::OutputSet outputs({{"--out", out}}, commandInputs({}));
   const VoxelGrid grid = generateScene(scene, options.scene_options);
   const std::unique_ptr<octomap::OcTree> tree = toOcTree(grid);
-  io::writeOctoMapFile(out, *tree);
+  io::writeOctoMapFile(outputs.path("--out"), *tree);
+  outputs.commit();
   std::printf("%s", io::generatedSceneLine(options.scene, options.scene_options, grid, tree->size(), out).c_str());
 }
 

@@ -35,8 +35,9 @@ void runMapinfo(const MapinfoOptions& options) {
   using namespace environment;
   MapIndexOptions index_options;
   index_options.unknown = options.unknown.value();
-  if (!options.json.empty()) io::checkWritableFile(options.json);  // before the map is read and indexed
-  if (!options.slice_csv.empty()) io::checkWritableFile(options.slice_csv);
+  // Checked and staged before the map is read and indexed; both outputs appear together.
+  io::OutputSet out({{"--json", options.json}, {"--slice-csv", options.slice_csv}},
+                    commandInputs({{"--map", options.map}, {"--vehicle", options.vehicle}}));
   const OccupancyMap map = OccupancyMap::load(options.map);
   if (!options.vehicle.empty() && options.slice_csv.empty())
     throw ceilplan::InputError("--vehicle applies only to --slice-csv; add --slice-csv FILE or drop it");
@@ -47,10 +48,11 @@ void runMapinfo(const MapinfoOptions& options) {
   if (!options.slice_csv.empty()) {
     std::unique_ptr<Environment> environment;
     if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
-    io::writeMapSliceCsv(options.slice_csv, *index, options.slice_z_m, environment.get(), "--slice-z");
+    io::writeMapSliceCsv(out.path("--slice-csv"), *index, options.slice_z_m, environment.get(), "--slice-z");
   }
   std::cout << io::mapStatisticsText(options.map, stats);
-  if (!options.json.empty()) io::writeJsonFile(options.json, io::mapStatisticsJson(options.map, stats));
+  if (!options.json.empty()) io::writeJsonFile(out.path("--json"), io::mapStatisticsJson(options.map, stats));
+  out.commit();
 }
 
 const CommandRegistration registration(21, [](CLI::App& parent) {

@@ -25,7 +25,7 @@ struct PlanArguments {
 void runPlan(const PlanArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
   const mission::FlightMode mode = mission::flightModeFromName(a.mode);
-  io::OutputSet out(a.out);  // checked and staged before any work
+  io::OutputSet out(a.out, planningInputs(a.planning));  // checked and staged before any work
   planner::seedOmpl(a.search.seed);  // before anything makes an OMPL random generator
   const auto context = makePlanningContext(a.planning);
   const planner::ObjectiveChoice objective = context->objective(start, goal);

@@ -31,7 +31,8 @@ struct ProbeOptions {
 
 void runProbe(const ProbeOptions& options) {
   using namespace environment;
-  if (!options.json.empty()) io::checkWritableFile(options.json);
+  io::OutputSet out({{"--json", options.json}},
+                    commandInputs({{"--map", options.map}, {"--vehicle", options.vehicle}}));
   const Eigen::Vector3d body = parsePoint(options.at, "--at");
   const VehicleGeometry vehicle = io::readVehicleOrDefault(options.vehicle).geometry;
   MapIndexOptions index_options;
@@ -43,7 +44,9 @@ void runProbe(const ProbeOptions& options) {
 
   const PositionProbe probe = probePosition(environment, body);
   std::cout << io::positionProbeText(body, probe, vehicle, io::unknownSpaceLine(environment));
-  if (!options.json.empty()) io::writeJsonFile(options.json, io::probeReportJson(probe, environment, options.map, options.vehicle));
+  if (!options.json.empty())
+    io::writeJsonFile(out.path("--json"), io::probeReportJson(probe, environment, options.map, options.vehicle));
+  out.commit();
 }
 
 const CommandRegistration registration(22, [](CLI::App& parent) {

@@ -1,6 +1,7 @@
 // `ceilplan rainflow`: the rainflow cycles (ASTM E1049-85) of an SOC column in a CSV file.
 
 #include "command_registry.hpp"
+#include "output.hpp"
 
 #include "ceilplan/battery/rainflow.hpp"
 #include "ceilplan/core/error.hpp"
@@ -29,11 +30,12 @@ struct RainflowArguments {
 void runRainflow(const RainflowArguments& args) {
   if (!args.json_path.empty() && std::filesystem::is_directory(args.json_path))
     throw InputError("--json " + ceilplan::printableText(args.json_path, 256) + " is a directory; give a file name");
-  if (!args.json_path.empty()) io::checkWritableFile(args.json_path);
+  io::OutputSet out({{"--json", args.json_path}}, commandInputs({{"--csv", args.csv_path}}));
   const std::vector<double> soc = io::readSocSeries(args.csv_path, args.column);
   const std::vector<battery::RainflowCycle> cycles = battery::countRainflowCycles(soc);
   std::cout << io::rainflowText(args.column, args.csv_path, soc.size(), cycles);
-  if (!args.json_path.empty()) io::writeJsonFile(args.json_path, io::rainflowJson(cycles));
+  if (!args.json_path.empty()) io::writeJsonFile(out.path("--json"), io::rainflowJson(cycles));
+  out.commit();
 }
 
 void addRainflowCommand(CLI::App& parent) {

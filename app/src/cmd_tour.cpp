@@ -42,7 +42,10 @@ struct TourArguments {
 
 void runTour(TourArguments a) {
   const mission::Mission mission = io::readMission(a.mission);
-  io::OutputSet out(a.out);  // checked and staged before any work; in place only when complete
+  // Checked and staged before any work; in place only when complete.
+  io::OutputSet out(a.out, commandInputs({{"--mission", a.mission},
+                                          {"the mission's map", mission.map_file},
+                                          {"the mission's vehicle", mission.vehicle_file}}));
   std::optional<io::Autopilot> autopilot;
   if (!a.no_export) {
     try {

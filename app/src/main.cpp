@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   CLI::App app{"ceilplan: battery-wear-aware inspection planning for multirotors flying under ceilings"};
   app.require_subcommand(1);
   app.config_formatter(std::make_shared<YamlConfig>(app));
-  app.set_config("--config", "", "YAML file whose keys are the chosen command's long flag names");
+  recordConfigOption(app.set_config("--config", "", "YAML file whose keys are the chosen command's long flag names"));
   app.set_version_flag("--version", ceilplan::buildInformation());
   app.add_subcommand("version", "Print the version, the git revision and the libraries' versions")->callback([] {
     std::cout << ceilplan::buildInformation();

@@ -2,6 +2,8 @@
 
 #include "ceilplan/io/provenance.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -46,6 +48,21 @@ std::string& invocationText() {
 void recordInvocation(int argc, const char* const* argv) { invocationText() = io::commandLine(argc, argv); }
 
 const std::string& invocation() { return invocationText(); }
+
+namespace {
+const CLI::Option*& configOption() {
+  static const CLI::Option* option = nullptr;
+  return option;
+}
+}  // namespace
+
+void recordConfigOption(const CLI::Option* option) { configOption() = option; }
+
+std::vector<io::Input> commandInputs(std::vector<io::Input> inputs) {
+  const CLI::Option* config = configOption();
+  if (config != nullptr && config->count() > 0) inputs.push_back({"--config", config->as<std::string>()});
+  return inputs;
+}
 
 ProgressCallback terminalProgress() {
   struct Lines {

@@ -3,8 +3,14 @@
 // their outputs' provenance records.
 
 #include "ceilplan/core/progress.hpp"
+#include "ceilplan/io/output_set.hpp"
 
 #include <string>
+#include <vector>
+
+namespace CLI {
+class Option;
+}
 
 namespace ceilplan::app {
 
@@ -27,6 +33,12 @@ class Progress {
 // The command line as typed (main records it), for the outputs' provenance.
 void recordInvocation(int argc, const char* const* argv);
 const std::string& invocation();
+
+// The --config option (main records it): the file it names is an input of every command, which
+// no output may replace.
+void recordConfigOption(const CLI::Option* option);
+// The command's inputs for io::OutputSet: `inputs`, and the --config file if one was given.
+std::vector<io::Input> commandInputs(std::vector<io::Input> inputs);
 
 // A library progress callback drawn as Progress lines, one per stage, when stderr is a
 // terminal; the last line is cleared when the callback and its copies are gone.

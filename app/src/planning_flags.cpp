@@ -98,6 +98,10 @@ io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std:
   return provenance;
 }
 
+std::vector<io::Input> planningInputs(const PlanningFlags& flags) {
+  return commandInputs({{"--map", flags.map}, {"--vehicle", flags.vehicle}, {"--battery", flags.battery}});
+}
+
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags) {
   const mission::Vehicle vehicle = io::readVehicleOrDefault(flags.vehicle);
   const mission::BatterySpec battery = io::readBatteryOrDefault(flags.battery);

@@ -35,6 +35,9 @@ void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objec
 // The outputs' provenance: the command line, the map, vehicle and battery files, the seed.
 io::Provenance planningProvenance(const PlanningFlags& flags, std::optional<std::uint64_t> seed);
 
+// The files the flags name (and --config), for io::OutputSet: no output may replace them.
+std::vector<io::Input> planningInputs(const PlanningFlags& flags);
+
 // The map, vehicle and battery the flags name, indexed with progress on the terminal.
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags);
 

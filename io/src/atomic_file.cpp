@@ -27,7 +27,7 @@ namespace {
 
 void writeAtomically(const std::filesystem::path& path,
                      const std::function<void(const std::filesystem::path& temporary)>& write) {
-  checkWritableFile(path);
+  checkOutputs({{"", path}}, {});
   TemporaryOutput output(path);
   write(output.path());
   output.commit();

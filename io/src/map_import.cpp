@@ -138,13 +138,12 @@ nlohmann::json mapImportJson(const MapImport& imported, const MapImportOptions& 
   return summary;
 }
 
-void writeImportedMap(const std::filesystem::path& map_file, const MapImport& imported,
-                      const MapImportOptions& options) {
+void writeImportedMap(const std::filesystem::path& map_file, const MapImport& imported, const MapImportOptions& options,
+                      std::filesystem::path summary_file) {
   if (map_file.extension() != ".bt")
     throw InputError(printableText(map_file.string(), 256) + ": an imported map is written as .bt");
   const nlohmann::json summary = mapImportJson(imported, options, map_file);
-  std::filesystem::path summary_file = map_file;
-  summary_file += ".json";
+  if (summary_file.empty()) (summary_file = map_file) += ".json";
   writeAtomically(map_file, [&](const std::filesystem::path& temporary) {
     std::ofstream file(temporary, std::ios::binary);
     writeOctoMapBinary(*imported.built.tree, file);

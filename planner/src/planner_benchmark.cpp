@@ -156,7 +156,7 @@ std::vector<PlannerBenchmarkRow> benchmarkPlanners(const FlightPlanner& planner,
   });
   const ompl::tools::Benchmark::Request request(options.time_limit_s, 4096.0, options.runs, 0.05, false, false, false);
   benchmark.benchmark(request);
-  if (!options.log_file.empty()) benchmark.saveResultsToFile(options.log_file.c_str());
+  if (options.log != nullptr) benchmark.saveResultsToStream(*options.log);
 
   std::vector<PlannerBenchmarkRow> rows;
   for (const auto& experiment : benchmark.getRecordedExperimentData().planners)

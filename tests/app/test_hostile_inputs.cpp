@@ -13,6 +13,7 @@
 #include <pty.h>
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -810,13 +811,14 @@ struct Interruption {
   std::string started;                 // interrupt once stdout holds this ...
   std::string staged;                  // ... and, if not empty, the staging directory holds this entry
   std::string exists = "";             // ... and, if not empty, this path under {dir} exists
+  int signal = SIGINT;
 };
 
 void PrintTo(const Interruption& c, std::ostream* os) { *os << c.name; }
 
 class InterruptedRun : public ::testing::TestWithParam<Interruption> {};
 
-// Part-way through the work, SIGINT: the process ends by the signal (as a shell expects) and
+// Part-way through the work, SIGINT (SIGHUP, SIGTERM): the process ends by the signal (as a shell expects) and
 // the output location holds nothing: no partial set, no temporary, no parent it created.
 TEST_P(InterruptedRun, LeavesNothingBehind) {
   const Interruption& c = GetParam();
@@ -848,9 +850,11 @@ TEST_P(InterruptedRun, LeavesNothingBehind) {
     if (!c.exists.empty() && !fs::exists(dir / c.exists)) return false;
     if (c.staged.empty()) return true;
     std::error_code ec;
+    // A staging directory holds the output under its final name: {dir}/out.tmp-ceilplan-XXXXXX/out/...
     for (const auto& entry : fs::directory_iterator(dir, ec))
-      if (entry.path().filename().string().find(".tmp") != std::string::npos && fs::exists(entry.path() / c.staged))
-        return true;
+      if (entry.path().filename().string().find(".tmp") != std::string::npos)
+        for (const auto& staged_output : fs::directory_iterator(entry.path(), ec))
+          if (fs::exists(staged_output.path() / c.staged)) return true;
     return false;
   };
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(300);
@@ -862,9 +866,9 @@ TEST_P(InterruptedRun, LeavesNothingBehind) {
     if (!ready) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   ASSERT_TRUE(ready) << "never reached the point to interrupt";
-  ::kill(pid, SIGINT);
+  ::kill(pid, c.signal);
   ::waitpid(pid, &status, 0);
-  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << "status " << status;
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == c.signal) << "status " << status;
   EXPECT_EQ(snapshot(dir), before) << "an interrupted run left something";
 }
 
@@ -877,18 +881,324 @@ INSTANTIATE_TEST_SUITE_P(
         Interruption{"tour",
                      {"tour", "--mission", std::string(CEILPLAN_SOURCE_DIR) + "/maps/bridge.yaml", "--mode", "both",
                       "--no-export", "--out", "{dir}/out"},
-                     "unknown space", "ceiling/tour.json"},
+                     "unknown space",
+                     "ceiling/tour.json"},
+        // the terminal closes during a tour: the same
+        Interruption{"tour_sighup",
+                     {"tour", "--mission", std::string(CEILPLAN_SOURCE_DIR) + "/maps/bridge.yaml", "--mode", "both",
+                      "--no-export", "--out", "{dir}/out"},
+                     "unknown space",
+                     "ceiling/tour.json",
+                     "",
+                     SIGHUP},
+        // duty's JSON and CSV directory are one set: SIGTERM while it is staged leaves neither
+        Interruption{"duty_sigterm",
+                     {"duty", "--days", "2000", "--json", "{dir}/d.json", "--csv-dir", "{dir}/csv"},
+                     "",
+                     ".ceilplan-output",
+                     "",
+                     SIGTERM},
         Interruption{"compare",
                      {"compare", "--map", kBridge, "--start", "-4,0,0.5", "--goal", "46,0,5.5", "--time-limit-s", "30",
                       "--out", "{dir}/out"},
-                     "unknown space", ""},
+                     "unknown space",
+                     ""},
         Interruption{"plan",
                      {"plan", "--map", kBridge, "--start", "-4,0,0.5", "--goal", "46,0,5.5", "--time-limit-s", "30",
                       "--out", "{dir}/out"},
-                     "unknown space", ""},
+                     "unknown space",
+                     ""},
         // rainflow prints its table, then writes the JSON under a parent it creates
-        Interruption{"rainflow", {"rainflow", "--csv", "{dir}/big.csv", "--column", "soc", "--json", "{dir}/out/c.json"},
-                     "Rainflow cycles", "", "out"}),
+        Interruption{"rainflow",
+                     {"rainflow", "--csv", "{dir}/big.csv", "--column", "soc", "--json", "{dir}/out/c.json"},
+                     "Rainflow cycles",
+                     "",
+                     "out"}),
     [](const auto& info) { return info.param.name; });
+
+// ---- Outputs that would destroy, merge or half-write -----------------------------------------
+
+// What a directory holds, seen without following links and without reading a FIFO or a device:
+// a regular file's size and hash, a link's target, a special file's kind.
+std::map<std::string, std::string> lstatSnapshot(const fs::path& dir) {
+  std::map<std::string, std::string> entries;
+  for (auto it = fs::recursive_directory_iterator(dir); it != fs::recursive_directory_iterator(); ++it) {
+    const std::string name = it->path().lexically_relative(dir).string();  // fs::relative would follow links
+    const fs::file_status status = it->symlink_status();
+    if (fs::is_symlink(status)) {
+      entries[name] = "link to " + fs::read_symlink(it->path()).string();
+    } else if (fs::is_regular_file(status)) {
+      const std::string bytes = readWholeFile(it->path());
+      entries[name] = std::to_string(bytes.size()) + " bytes, hash " + std::to_string(std::hash<std::string>{}(bytes));
+    } else {
+      entries[name] = fs::is_directory(status) ? "<dir>" : fs::is_fifo(status) ? "<fifo>" : "<special>";
+    }
+  }
+  return entries;
+}
+
+struct OutputRule {
+  std::string name;
+  std::string args;  // {fx} the fixtures, {src} the source tree, {dir} the row's directory
+  std::string says;  // in stderr; every row is refused with exit 2
+  std::function<void(const fs::path& dir)> prepare = [](const fs::path&) {};
+};
+
+void PrintTo(const OutputRule& c, std::ostream* os) { *os << c.name; }
+
+// A directory a previous run of ceilplan wrote (it carries the marker).
+void ceilplanOutputDirectory(const fs::path& dir) { writeFile(dir / ".ceilplan-output", "Written by ceilplan\n"); }
+
+std::vector<OutputRule> outputRules() {
+  const auto copy = [](const std::string& from, const std::string& name) {
+    return [from, name](const fs::path& dir) {
+      fs::copy_file(substituted(from, {{"{fx}", fixtures().string()}}), dir / name);
+    };
+  };
+  const std::string calibration = std::string(CEILPLAN_SOURCE_DIR) + "/maps/calibration/published-ceiling-hover.csv";
+  return {
+      // An output that is one of the command's inputs: by name, through a symbolic or a hard link.
+      {"input_mapinfo_map", "mapinfo --map {dir}/m.bt --json {dir}/m.bt", "--json {dir}/m.bt is the input --map",
+       copy("{fx}/room.bt", "m.bt")},
+      {"input_evaluate_path", "evaluate --map {fx}/room.bt --path {dir}/p.csv --json {dir}/p.csv",
+       "--json {dir}/p.csv is the input --path", copy("{fx}/path.csv", "p.csv")},
+      {"input_calibrate_data", "calibrate --data {dir}/c.csv --out {dir}/c.csv",
+       "--out {dir}/c.csv is the input --data", copy(calibration, "c.csv")},
+      {"input_rainflow_csv", "rainflow --csv {dir}/s.csv --column soc --json {dir}/s.csv",
+       "--json {dir}/s.csv is the input --csv", copy("{fx}/soc.csv", "s.csv")},
+      {"input_through_a_symlink", "mapinfo --map {dir}/m.bt --json {dir}/link.json",
+       "--json {dir}/link.json is the input --map",
+       [](const fs::path& dir) {
+         fs::copy_file(fixtures() / "room.bt", dir / "m.bt");
+         fs::create_symlink(dir / "m.bt", dir / "link.json");
+       }},
+      {"input_through_a_hard_link", "probe --map {dir}/m.bt --at 0,0,1 --json {dir}/hard.json",
+       "--json {dir}/hard.json is the input --map",
+       [](const fs::path& dir) {
+         fs::copy_file(fixtures() / "room.bt", dir / "m.bt");
+         fs::create_hard_link(dir / "m.bt", dir / "hard.json");
+       }},
+      {"input_config_file", "duty --config {dir}/c.yaml --json {dir}/c.yaml",
+       "--json {dir}/c.yaml is the input --config",
+       [](const fs::path& dir) { writeFile(dir / "c.yaml", "days: 1\n"); }},
+      {"input_the_missions_map", "tour --mission {dir}/mission.yaml --out {dir}/m.bt --no-export",
+       "--out {dir}/m.bt is the input the mission's map",
+       [](const fs::path& dir) {
+         fs::copy_file(fixtures() / "room.bt", dir / "m.bt");
+         writeFile(dir / "mission.yaml", substituted(replaced(kMission, "{fx}/room.bt", (dir / "m.bt").string()),
+                                                     {{"{fx}", fixtures().string()}}));
+       }},
+      {"input_inside_the_out_directory", "tour --mission {dir}/out/mission.yaml --out {dir}/out --no-export",
+       "--out {dir}/out holds the input --mission {dir}/out/mission.yaml",
+       [](const fs::path& dir) {
+         ceilplanOutputDirectory(dir / "out");
+         writeFile(dir / "out" / "mission.yaml", substituted(kMission, {{"{fx}", fixtures().string()}}));
+       }},
+      // Two outputs on one path, or one inside another that is written whole.
+      {"shared_calibrate", "calibrate --data " + calibration + " --out {dir}/v.yaml --json {dir}/v.yaml",
+       "--out and --json are the same path"},
+      {"shared_bench_planners", kBench + " --json {dir}/b --log {dir}/b", "--json and --log are the same path"},
+      {"shared_duty", "duty --days 1 --json {dir}/o --csv-dir {dir}/o", "--json and --csv-dir are the same path"},
+      {"shared_duty_inside", "duty --days 1 --json {dir}/o/d.json --csv-dir {dir}/o",
+       "--json {dir}/o/d.json lies inside --csv-dir {dir}/o"},
+      {"shared_mapinfo", kMapinfo + " --json {dir}/s --slice-z 1 --slice-csv {dir}/s",
+       "--json and --slice-csv are the same path"},
+      // Special files: replaced by a regular file they would be gone.
+      {"special_fifo_json", kMapinfo + " --json {dir}/fifo",
+       "--json {dir}/fifo is a FIFO (named pipe), not a regular file",
+       [](const fs::path& dir) { ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0644), 0); }},
+      {"special_fifo_out", kPlan + " --out {dir}/fifo",
+       "--out {dir}/fifo is a FIFO (named pipe), not a regular directory",
+       [](const fs::path& dir) { ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0644), 0); }},
+      {"special_link_to_stdout", "duty --days 1 --json {dir}/stdout", "--json {dir}/stdout is a symbolic link",
+       [](const fs::path& dir) { fs::create_symlink("/dev/stdout", dir / "stdout"); }},
+      {"special_link_to_a_directory", kPlan + " --out {dir}/elsewhere", "--out {dir}/elsewhere is a symbolic link",
+       [](const fs::path& dir) {
+         ceilplanOutputDirectory(dir / "real");
+         fs::create_symlink(dir / "real", dir / "elsewhere");
+       }},
+      // A file output named as a directory.
+      {"file_named_as_a_directory", "duty --days 1 --json {dir}/d/", "--json {dir}/d/ names a directory"},
+      // A directory ceilplan did not write (or wrote before the marker): refused, untouched.
+      {"foreign_directory_plan", kPlan + " --out {dir}/mine", "--out {dir}/mine is a directory ceilplan did not write",
+       [](const fs::path& dir) { writeFile(dir / "mine" / "notes.txt", "keep"); }},
+      {"foreign_directory_duty", "duty --days 1 --csv-dir {dir}/mine", "remove it or choose another --csv-dir",
+       [](const fs::path& dir) { writeFile(dir / "mine" / "sub" / "notes.txt", "keep"); }},
+      {"foreign_directory_tour", "tour --mission {fx}/mission.yaml --no-export --out {dir}/mine",
+       "remove it or choose another --out", [](const fs::path& dir) { writeFile(dir / "mine" / "tour.json", "{}"); }},
+  };
+}
+
+class OutputRules : public ::testing::TestWithParam<OutputRule> {};
+
+// Refused before any work with exit 2 and one line naming the flag, the path and the problem;
+// the directory, inputs and special files included, exactly as it was.
+TEST_P(OutputRules, AreRefusedBeforeAnyWorkAndLeaveEverythingAsItWas) {
+  const OutputRule& c = GetParam();
+  const fs::path dir = scratchDirectory("output_rule_" + c.name);
+  c.prepare(dir);
+  const auto before = lstatSnapshot(dir);
+  const std::map<std::string, std::string> paths = {
+      {"{fx}", fixtures().string()}, {"{src}", CEILPLAN_SOURCE_DIR}, {"{dir}", dir.string()}};
+  const CommandResult r = runCeilplan(substituted(c.args, paths));
+  EXPECT_EQ(r.exit_code, 2) << "stderr: " << r.err << "\nstdout: " << r.out;
+  const std::string says = substituted(c.says, paths);
+  EXPECT_NE(r.err.find(says), std::string::npos) << "expected '" << says << "' in:\n" << r.err;
+  expectOneCleanLine(r.err);
+  EXPECT_EQ(lstatSnapshot(dir), before);
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, OutputRules, ::testing::ValuesIn(outputRules()),
+                         [](const auto& info) { return info.param.name; });
+
+// A character device (a copy of /dev/null, made with mknod where allowed) is never replaced.
+TEST(OutputRulesDevices, ACharacterDeviceIsRefused) {
+  const fs::path dir = scratchDirectory("output_rule_device");
+  if (::mknod((dir / "null").c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0)
+    GTEST_SKIP() << "mknod needs root (CAP_MKNOD)";
+  for (const std::string& args : {"current --gap-m 0.1 --json " + (dir / "null").string(),
+                                  "duty --days 1 --csv-dir " + (dir / "null").string()}) {
+    const CommandResult r = runCeilplan(args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find((dir / "null").string() + " is a device"), std::string::npos) << r.err;
+    struct stat status {};
+    ASSERT_EQ(::lstat((dir / "null").c_str(), &status), 0);
+    EXPECT_TRUE(S_ISCHR(status.st_mode)) << "the device was replaced";
+  }
+}
+
+std::set<std::string> namesIn(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename().string());
+  return names;
+}
+
+// A second run into the same --out replaces the first's set: nothing of the first is merged in.
+TEST(OutputRulesReruns, ATourWithoutExportLeavesNoAutopilotFileOfTheLastOne) {
+  const fs::path dir = scratchDirectory("output_rerun_tour");
+  const std::string tour =
+      "tour --mission " + (fixtures() / "mission.yaml").string() + " --out " + (dir / "out").string();
+  const CommandResult exported = runCeilplan(tour);
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  const std::set<std::string> first = namesIn(dir / "out");
+  for (const char* name : {"mission.plan", "mission.waypoints", "routes.kml", "routes.geojson", ".ceilplan-output"})
+    ASSERT_EQ(first.count(name), 1u) << name << " not written by the first run: the check below checks nothing";
+  const CommandResult again = runCeilplan(tour + " --no-export");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  const std::set<std::string> second = namesIn(dir / "out");
+  EXPECT_EQ(second.count("tour.json"), 1u);
+  EXPECT_EQ(second.count(".ceilplan-output"), 1u);
+  for (const std::string& name : second)
+    EXPECT_TRUE(name.find("mission.") != 0 && name.find("routes.") != 0) << name << " left from the first run";
+  EXPECT_EQ(namesIn(dir), std::set<std::string>{"out"}) << "a staging directory or the old set left beside --out";
+}
+
+TEST(OutputRulesReruns, DutyWithFewerCasesLeavesNoCsvOfTheLastOnes) {
+  const fs::path dir = scratchDirectory("output_rerun_duty");
+  const std::string csv_dir = " --csv-dir " + (dir / "csv").string();
+  const CommandResult three =
+      runCeilplan("duty --days 1 --flight-current-a 9.5 --flight-current-a 8 --flight-current-a 7" + csv_dir);
+  ASSERT_EQ(three.exit_code, 0) << three.err;
+  const auto case3 = [&] {
+    const std::set<std::string> names = namesIn(dir / "csv");
+    return std::count_if(names.begin(), names.end(), [](const std::string& n) { return n.rfind("case3", 0) == 0; });
+  };
+  ASSERT_GT(case3(), 0) << "the first run wrote no case3 file: the check below checks nothing";
+  const CommandResult one = runCeilplan("duty --days 1 --flight-current-a 9.5" + csv_dir);
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_EQ(case3(), 0) << "case3's files were kept from the first run";
+  EXPECT_EQ(namesIn(dir), std::set<std::string>{"csv"});
+}
+
+// An empty directory is fine; one ceilplan wrote, with a subdirectory of its own, is replaced
+// whole (the merge used to stop half-way at a directory entry).
+TEST(OutputRulesReruns, AnEmptyDirectoryOrOneCeilplanWroteIsReplacedWhole) {
+  const fs::path dir = scratchDirectory("output_rerun_replace");
+  fs::create_directories(dir / "empty");
+  const std::string plan =
+      "plan --map " + (fixtures() / "room.bt").string() + " --start -2,0,1 --goal 2,0,1 --planner lattice";
+  const CommandResult into_empty = runCeilplan(plan + " --out " + (dir / "empty").string());
+  ASSERT_EQ(into_empty.exit_code, 0) << into_empty.err;
+  EXPECT_TRUE(fs::exists(dir / "empty" / "plan.json"));
+  ceilplanOutputDirectory(dir / "old");
+  writeFile(dir / "old" / "plan.json" / "stale.txt", "a directory where the new set has a file");
+  writeFile(dir / "old" / "stale.csv", "from an older run");
+  const CommandResult replaced_run = runCeilplan(plan + " --out " + (dir / "old").string());
+  ASSERT_EQ(replaced_run.exit_code, 0) << replaced_run.err;
+  EXPECT_TRUE(fs::is_regular_file(dir / "old" / "plan.json"));
+  EXPECT_FALSE(fs::exists(dir / "old" / "stale.csv"));
+  EXPECT_EQ(namesIn(dir), (std::set<std::string>{"empty", "old"}));
+  // "old/" is "old": staged beside it, not inside.
+  const CommandResult slash = runCeilplan(plan + " --out " + (dir / "old").string() + "/");
+  ASSERT_EQ(slash.exit_code, 0) << slash.err;
+  EXPECT_TRUE(fs::is_regular_file(dir / "old" / "plan.json"));
+  EXPECT_EQ(namesIn(dir), (std::set<std::string>{"empty", "old"}));
+  EXPECT_EQ(namesIn(dir / "old").count(".ceilplan-output"), 1u);
+}
+
+// A staging directory left by a killed run (here: by a process that no longer exists, and by
+// an earlier PID 1 of another container, with a start time that is not the present one's) is
+// never merged into the next run's output, and is removed by it; a live run's is left alone.
+TEST(OutputRulesReruns, StagingLeftByAKilledRunIsNeverMergedAndIsRemoved) {
+  const fs::path dir = scratchDirectory("output_stale_staging");
+  const std::string boot = [] {
+    std::ifstream in("/proc/sys/kernel/random/boot_id");
+    std::string id;
+    std::getline(in, id);
+    return id;
+  }();
+  const auto stale = [&](const std::string& suffix, const std::string& owner) {
+    const fs::path staging = dir / ("out.tmp-ceilplan-" + suffix);
+    writeFile(staging / "out" / "stale.csv", "from a killed run");
+    writeFile(staging / "out.owner", owner + "\n");
+    return staging;
+  };
+  const fs::path dead = stale("Dead01", "2147483646 12345 " + boot);
+  const fs::path pid1 = stale("Pid1ab", "1 1 " + boot);
+  // This test process is alive: its start time, as /proc gives it.
+  const std::string stat = readWholeFile("/proc/self/stat");
+  std::istringstream fields(stat.substr(stat.rfind(')') + 1));
+  std::string start;
+  for (int i = 3; i <= 22; ++i) fields >> start;
+  const fs::path live = stale("Live01", std::to_string(::getpid()) + " " + start + " " + boot);
+
+  const CommandResult r = runCeilplan("duty --days 1 --csv-dir " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "stale.csv")) << "a killed run's staging was merged";
+  EXPECT_FALSE(fs::exists(dead)) << "the staging of a process that is gone was kept";
+  EXPECT_FALSE(fs::exists(pid1)) << "the staging of another container's PID 1 was kept";
+  EXPECT_TRUE(fs::exists(live / "out" / "stale.csv")) << "a live run's staging was removed";
+}
+
+// A full disk (a small tmpfs, mounted where the test may) part-way through a set: none of its
+// outputs appears, and the message names the output and the reason.
+TEST(OutputRulesDiskFull, NoOutputOfTheSetAppears) {
+  const fs::path dir = scratchDirectory("output_disk_full");
+  const fs::path small = dir / "small";
+  fs::create_directories(small);
+  if (std::system(("mount -t tmpfs -o size=64k tmpfs " + small.string() + " 2>/dev/null").c_str()) != 0)
+    GTEST_SKIP() << "mounting a tmpfs needs root (CAP_SYS_ADMIN)";
+  struct Unmount {
+    fs::path at;
+    ~Unmount() { std::system(("umount " + at.string()).c_str()); }
+  } unmount{small};
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      // the JSON fits, the series of 30 days do not
+      {"duty", "duty --days 30 --json {small}/d.json --csv-dir {small}/csv"},
+      // the JSON and the log do not both fit beside the filler
+      {"bench_planners", replaced(kBench, "--runs 1", "--runs 10") + " --json {small}/b.json --log {small}/b.log"},
+  };
+  for (const auto& [name, args] : runs) {
+    if (name == "bench_planners") writeFile(small / "filler", std::string(48 * 1024, 'x'));
+    const auto before = lstatSnapshot(small);
+    const CommandResult r =
+        runCeilplan(substituted(args, {{"{fx}", fixtures().string()}, {"{small}", small.string()}}));
+    EXPECT_EQ(r.exit_code, 1) << name << ": " << r.err;
+    EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << name << ": " << r.err;
+    EXPECT_EQ(r.err.find(".tmp"), std::string::npos) << name << ": the staging path is named: " << r.err;
+    expectOneCleanLine(r.err);
+    EXPECT_EQ(lstatSnapshot(small), before) << name << ": part of the set was left";
+  }
+}
 
 }  // namespace

@@ -93,7 +93,9 @@ TEST(TemporaryOutput, AppearsOnlyWhenCommittedAndIsRemovedOtherwise) {
   const auto final_path = dir / "sub" / "cycles.json";
   {
     TemporaryOutput output(final_path);
-    EXPECT_EQ(output.path().parent_path(), final_path.parent_path());  // a sibling: rename stays on one disk
+    // In a staging directory beside the final path: the rename stays on one disk.
+    EXPECT_EQ(output.path().parent_path().parent_path(), final_path.parent_path());
+    EXPECT_EQ(output.path().filename(), final_path.filename());
     std::ofstream(output.path()) << "{}";
     EXPECT_FALSE(std::filesystem::exists(final_path));
     output.commit();

@@ -9,7 +9,7 @@
 namespace ceilplan::io {
 
 // Calls `write` with a temporary path in the same directory, then renames it to `path`.
-// Checks `path` first (checkWritableFile: ceilplan::InputError) and creates the parent
+// Checks `path` first (checkOutputs: ceilplan::InputError) and creates the parent
 // directory. On any other failure the temporary file is removed and the error (ceilplan::Error)
 // names `path` and the reason.
 void writeAtomically(const std::filesystem::path& path,

@@ -65,9 +65,10 @@ MapImport importMap(const MapImportOptions& options, const ProgressCallback& pro
 nlohmann::json mapImportJson(const MapImport& imported, const MapImportOptions& options,
                              const std::filesystem::path& map_file);
 
-// Writes `map_file` (.bt) and its summary `<map_file>.json` (mapImportJson) together: on any
-// failure neither is left behind. Throws ceilplan::InputError for a name not ending in .bt.
-void writeImportedMap(const std::filesystem::path& map_file, const MapImport& imported,
-                      const MapImportOptions& options);
+// Writes `map_file` (.bt) and its summary (mapImportJson) to `summary_file`, by default
+// `<map_file>.json`, together: on any failure neither is left behind. Throws
+// ceilplan::InputError for a name not ending in .bt.
+void writeImportedMap(const std::filesystem::path& map_file, const MapImport& imported, const MapImportOptions& options,
+                      std::filesystem::path summary_file = {});
 
 }  // namespace ceilplan::io

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,9 @@ struct PlannerBenchmarkOptions {
   double band_fraction = 0.0;         // share of samples from the ceiling band (0: uniform)
   bool refine = true;                 // post-process with NLopt refinement, as plan() does
   std::string experiment = "ceilplan";
-  std::string log_file;  // OMPL's benchmark log (ompl_benchmark_statistics format); empty: none
+  // OMPL's benchmark log (ompl_benchmark_statistics format) is written here; null: none. A stream,
+  // not a file name: the caller writes it with its other outputs, all or nothing.
+  std::ostream* log = nullptr;
 
   // Throws ceilplan::InputError for no planner, an unknown name (plannerInfo's message), no run
   // or a time limit that is not positive.
