@@ -75,24 +75,19 @@ void runTour(TourArguments a) {
   print(io::tourHeadline(mission, a.mode, a.options) + "unknown space: " + io::unknownSpaceLine(context.environment()) +
         "\n");
   std::vector<mission::TourResult> tours;
-  bool kmz_written = autopilot.has_value();
   for (mission::FlightMode mode : modes) {
     tours.push_back(mission::planTour(mission, context, mode, a.options));
     const std::filesystem::path dir = modes.size() > 1 ? out.path() / mission::flightModeName(mode) : out.path();
     io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot, provenance);
     print(io::tourSummary(tours.back()));
-    if (autopilot)
-      if (const std::optional<std::string> dji = io::djiExportProblem(tours.back(), mission)) {
-        print("  DJI KMZ not written: " + *dji + "\n");
-        kmz_written = false;
-      }
+    if (autopilot) print(io::exportNotes(tours.back(), mission));
   }
   if (tours.size() == 2) {
     print("\n" + io::comparisonTable(tours[0], tours[1]));
     io::writeTourComparison(out.path(), tours[0], tours[1], mission, context.environment(), provenance);
   }
   out.commit();
-  print("\n" + io::tourFilesLine(a.out, mission, autopilot, kmz_written));
+  print("\n" + io::tourFilesLine(a.out, mission, tours, autopilot));
 }
 
 const CommandRegistration registration(50, [](CLI::App& parent) {

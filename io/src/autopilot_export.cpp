@@ -58,15 +58,22 @@ GlobalMission toGlobal(const AutopilotMission& mission) {
   const std::vector<double> headings = mission::headingsInEffect_deg(mission);
   const std::vector<double> pitches = mission::gimbalPitchesInEffect_deg(mission);
   std::optional<double> pitch_set;
+  // From the ground: a vertical climb to the route's take-off height, heading as it stands.
+  global.items.push_back({mav::kNavTakeoff,
+                          mav::kFrameGlobalRelativeAlt,
+                          {0, 0, 0, nan, global.home.x(), global.home.y(), mission.takeoffHeight_m()}});
   // Speeds from the flight record differ by rounding where nothing changes (2.2356910794284737
   // against 2.235691079428473): a change counts from 1 cm/s against the speed last commanded.
+  // The first is always commanded: the vehicle's own default (PX4's MPC_XY_CRUISE, 5 m/s) is not
+  // the plan's, and the .plan's cruiseSpeed never reaches the vehicle.
   constexpr double kSpeedStep_m_s = 0.01;
-  double speed_set = mission.speedInto_m_s(0);
+  std::optional<double> speed_set;
   int photos = 0;
+  const bool lands = mission.endsAtHome();
   for (std::size_t k = 0; k < mission.waypoints.size(); ++k) {
     const ExportWaypoint& w = mission.waypoints[k];
     const double speed = mission.speedInto_m_s(k);
-    if (std::abs(speed - speed_set) >= kSpeedStep_m_s) {
+    if (!speed_set || std::abs(speed - *speed_set) >= kSpeedStep_m_s) {
       global.items.push_back({mav::kDoChangeSpeed, mav::kFrameMission, {mav::kSpeedTypeGroundSpeed, speed, -1, 0, 0, 0, 0}});
       speed_set = speed;
     }
@@ -76,19 +83,27 @@ GlobalMission toGlobal(const AutopilotMission& mission) {
                               {pitches[k], 0.0, nan, nan, mav::kGimbalFlagsHorizonFollow, 0, 0}});
       pitch_set = pitches[k];
     }
-    const Eigen::Vector3d position = toGeodetic(origin, w.position_m);
+    // The last waypoint of a route that ends at home: above home at the landing height, then down.
+    const bool last = k + 1 == mission.waypoints.size();
+    const Eigen::Vector3d flown_m =
+        last && lands ? Eigen::Vector3d(mission.home_m + mission.landingHeight_m() * Eigen::Vector3d::UnitZ()) : w.position_m;
+    const Eigen::Vector3d position = toGeodetic(origin, flown_m);
     global.items.push_back({mav::kNavWaypoint,
                             mav::kFrameGlobalRelativeAlt,
                             {w.hold_s, mission.acceptance_radius_m, mission.pass_radius_m, headings[k], position.x(),
                              position.y(), position.z() - global.home.z()}});
     if (w.take_photo)
-      global.items.push_back({mav::kImageStartCapture, mav::kFrameMission, {0, 0, 1, static_cast<double>(++photos), 0, 0, 0}});
+      global.items.push_back(
+          {mav::kImageStartCapture, mav::kFrameMission, {0, 0, 1, static_cast<double>(++photos), 0, 0, nan}});
     if (w.trigger_distance_m) {
       const double distance = *w.trigger_distance_m;
       global.items.push_back(
           {mav::kDoSetCamTriggDist, mav::kFrameMission, {distance, 0, distance > 0.0 ? 1.0 : 0.0, 0, 0, 0, 0}});
     }
   }
+  if (lands)
+    global.items.push_back(
+        {mav::kNavLand, mav::kFrameGlobalRelativeAlt, {0, 0, 0, nan, global.home.x(), global.home.y(), 0.0}});
   return global;
 }
 

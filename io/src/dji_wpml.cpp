@@ -8,6 +8,7 @@
 #include <minizip/zip.h>
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -34,15 +35,34 @@ std::string number(double value, int decimals = 6) {
   return text == "-0" ? "0" : text;
 }
 
+// DJI's ranges (WPML template.kml and common elements tables, docs/flying.md).
+constexpr double kMinSpeed_m_s = 1.0, kMaxSpeed_m_s = 15.0;  // waypointSpeed, autoFlightSpeed, globalTransitionalSpeed
+constexpr double kMinTakeOffSecurityHeight_m = 1.2;           // takeOffSecurityHeight with a remote controller
+
 // Everything both files are written from.
 struct Plan {
+  Plan(const mission::SortieRoute& r, const mission::GeodeticOrigin& o, const DjiWpmlOptions& opts)
+      : route(r), origin(o), options(opts), home_geodetic(toGeodetic(o, r.home_m)) {}
+
   const mission::SortieRoute& route;
   const mission::GeodeticOrigin& origin;
   const DjiWpmlOptions& options;
   Eigen::Vector3d home_geodetic;
-  std::vector<Eigen::Vector3d> geodetic;  // per waypoint
-  std::vector<double> headings_deg;       // in effect
-  std::vector<double> pitches_deg;        // in effect
+  std::vector<Eigen::Vector3d> positions_m;  // per waypoint as flown: the last at the landing height
+  std::vector<Eigen::Vector3d> geodetic;     // of positions_m
+  std::vector<double> headings_deg;          // in effect
+  std::vector<double> pitches_deg;           // in effect
+  std::vector<double> speeds_m_s;            // waypointSpeed as written
+  double cruise_speed_m_s = 0.0;             // autoFlightSpeed and globalTransitionalSpeed as written
+  double takeoff_security_height_m = 0.0;
+  std::vector<DjiClamp> clamps;
+
+  // `value` within [min, max]; a value outside is recorded as clamped.
+  double within(double value, double min, double max, std::size_t waypoint, const char* element) {
+    const double written = std::clamp(value, min, max);
+    if (written != value) clamps.push_back({route.sortie, waypoint, element, value, written});
+    return written;
+  }
 };
 
 class Writer {
@@ -58,7 +78,7 @@ class Writer {
     xml.PushAttribute("xmlns", kKmlNamespace);
     xml.PushAttribute("xmlns:wpml", kWpmlNamespace);
     xml.OpenElement("Document");
-    text("wpml:author", "ceilplan");
+    if (is_template) text("wpml:author", "ceilplan");  // creation information: template.kml only
     missionConfig();
     xml.OpenElement("Folder");
     if (is_template) {
@@ -87,9 +107,7 @@ class Writer {
   }
 
   bool relative() const { return plan_.options.height_mode == DjiHeightMode::RelativeToTakeoff; }
-  double heightAboveTakeoff(std::size_t k) const {
-    return plan_.route.waypoints[k].position_m.z() - plan_.route.home_m.z();
-  }
+  double heightAboveTakeoff(std::size_t k) const { return plan_.positions_m[k].z() - plan_.route.home_m.z(); }
   double seaLevelHeight(std::size_t k) const { return plan_.geodetic[k].z(); }
   double ellipsoidHeight(std::size_t k) const {
     return seaLevelHeight(k) + plan_.options.geoid_separation_m.value_or(0.0);
@@ -103,10 +121,11 @@ class Writer {
       text("wpml:finishAction", o.finish_action);
       text("wpml:exitOnRCLost", "executeLostAction");
       text("wpml:executeRCLostAction", o.rc_lost_action);
-      text("wpml:takeOffSecurityHeight", number(std::max(1.2, heightAboveTakeoff(0)), 3));
+      text("wpml:takeOffSecurityHeight", number(plan_.takeoff_security_height_m, 3));
       text("wpml:takeOffRefPoint", number(plan_.home_geodetic.x(), 9) + "," + number(plan_.home_geodetic.y(), 9) + "," +
                                        number(plan_.home_geodetic.z(), 3));
-      text("wpml:globalTransitionalSpeed", number(plan_.route.cruise_speed_m_s, 3));
+      text("wpml:globalTransitionalSpeed", number(plan_.cruise_speed_m_s, 3));
+      text("wpml:globalRTHHeight", number(o.rth_height_m, 3));
       element("wpml:droneInfo", [&] {
         text("wpml:droneEnumValue", std::to_string(o.drone_enum));
         text("wpml:droneSubEnumValue", std::to_string(o.drone_sub_enum));
@@ -118,10 +137,9 @@ class Writer {
     });
   }
 
-  void turnParam() {
-    text("wpml:waypointTurnMode", "toPointAndStopWithDiscontinuityCurvature");
-    text("wpml:waypointTurnDampingDist", "0");
-  }
+  // Straight to the point and stop there: no corner is cut (damping distance and straight-line
+  // flags apply only to the turning modes, and are left out).
+  static constexpr const char* kTurnMode = "toPointAndStopWithDiscontinuityCurvature";
 
   void templateFolderHeader() {
     text("wpml:templateType", "waypoint");
@@ -130,9 +148,8 @@ class Writer {
       text("wpml:coordinateMode", "WGS84");
       text("wpml:heightMode", relative() ? "relativeToStartPoint" : "EGM96");
     });
-    text("wpml:autoFlightSpeed", number(plan_.route.cruise_speed_m_s, 3));
+    text("wpml:autoFlightSpeed", number(plan_.cruise_speed_m_s, 3));
     text("wpml:globalHeight", number(relative() ? heightAboveTakeoff(0) : seaLevelHeight(0), 3));
-    text("wpml:caliFlightEnable", "0");
     text("wpml:gimbalPitchMode", "usePointSetting");
     element("wpml:globalWaypointHeadingParam", [&] {
       text("wpml:waypointHeadingMode", "smoothTransition");
@@ -140,25 +157,24 @@ class Writer {
       text("wpml:waypointPoiPoint", "0.000000,0.000000,0.000000");
       text("wpml:waypointHeadingPathMode", "followBadArc");
     });
-    element("wpml:globalWaypointTurnParam", [&] { turnParam(); });
-    text("wpml:globalUseStraightLine", "1");
+    text("wpml:globalWaypointTurnMode", kTurnMode);
   }
 
   void waylinesFolderHeader() {
     double distance = 0.0, duration = 0.0;
     Eigen::Vector3d previous = plan_.route.home_m;
     for (std::size_t k = 0; k < plan_.route.waypoints.size(); ++k) {
-      const double length = (plan_.route.waypoints[k].position_m - previous).norm();
+      const double length = (plan_.positions_m[k] - previous).norm();
       distance += length;
-      duration += length / plan_.route.speedInto_m_s(k) + plan_.route.waypoints[k].hold_s;
-      previous = plan_.route.waypoints[k].position_m;
+      duration += length / (k == 0 ? plan_.cruise_speed_m_s : plan_.speeds_m_s[k - 1]) + plan_.route.waypoints[k].hold_s;
+      previous = plan_.positions_m[k];
     }
     text("wpml:templateId", "0");
     text("wpml:executeHeightMode", relative() ? "relativeToStartPoint" : "WGS84");
     text("wpml:waylineId", "0");
     text("wpml:distance", number(distance, 3));
     text("wpml:duration", number(duration, 3));
-    text("wpml:autoFlightSpeed", number(plan_.route.cruise_speed_m_s, 3));
+    text("wpml:autoFlightSpeed", number(plan_.cruise_speed_m_s, 3));
   }
 
   void placemark(std::size_t k, bool is_template) {
@@ -176,18 +192,16 @@ class Writer {
       } else {
         text("wpml:executeHeight", number(relative() ? heightAboveTakeoff(k) : ellipsoidHeight(k), 4));
       }
-      text("wpml:waypointSpeed", number(plan_.route.speedInto_m_s(k + 1), 3));
+      text("wpml:waypointSpeed", number(plan_.speeds_m_s[k], 3));
       if (is_template) text("wpml:useGlobalHeadingParam", "0");
       element("wpml:waypointHeadingParam", [&] {
         text("wpml:waypointHeadingMode", "smoothTransition");
         text("wpml:waypointHeadingAngle", number(signedHeading(plan_.headings_deg[k]), 3));
         text("wpml:waypointPoiPoint", "0.000000,0.000000,0.000000");
-        text("wpml:waypointHeadingAngleEnable", "1");
         text("wpml:waypointHeadingPathMode", "followBadArc");
       });
       if (is_template) text("wpml:useGlobalTurnParam", "0");
-      element("wpml:waypointTurnParam", [&] { turnParam(); });
-      text("wpml:useStraightLine", "1");
+      element("wpml:waypointTurnParam", [&] { text("wpml:waypointTurnMode", kTurnMode); });
       if (is_template) text("wpml:gimbalPitchAngle", number(plan_.pitches_deg[k], 3));
       arrivalActions(k, w);
       distanceTrigger(k, w);
@@ -312,6 +326,8 @@ void DjiWpmlOptions::validate() const {
   };
   oneOf(finish_action, {"goHome", "autoLand", "noAction", "gotoFirstWaypoint"}, "finish_action");
   oneOf(rc_lost_action, {"goBack", "landing", "hover"}, "rc_lost_action");
+  if (!(rth_height_m >= 2.0 && rth_height_m <= 1500.0))
+    throw InputError("dji: rth_height_m must lie in DJI's [2, 1500] m, got " + formatNumber(rth_height_m));
   if (drone_enum < 0 || drone_sub_enum < 0 || payload_enum < 0 || payload_position < 0)
     throw InputError("dji: drone, payload and position enum values must be non-negative");
   if (!(gimbal_pitch_range_deg[0] < gimbal_pitch_range_deg[1]) || !std::isfinite(gimbal_pitch_range_deg[0]) ||
@@ -321,6 +337,85 @@ void DjiWpmlOptions::validate() const {
     throw InputError(
         "dji: heights above sea level need geoid_separation_m (ellipsoid above geoid at the site, m) for "
         "waylines.wpml's WGS84 heights");
+}
+
+namespace {
+
+// DJI Cloud API product support, "Enumeration values of aircraft, RC and dock" and "Enumeration
+// values of camera" (type-subtype-gimbalindex), https://developer.dji.com/doc/cloud-api-tutorial/en/overview/product-support.html
+struct DjiDrone {
+  const char* name;
+  int type;
+  int sub_type;
+  int builtin_camera;  // the drone's own camera's payload type; 0: carries H20/H30 payloads
+};
+constexpr DjiDrone kDrones[] = {
+    {"m300_rtk", 60, 0, 0}, {"m350_rtk", 89, 0, 0}, {"m30", 67, 0, 52},  {"m30t", 67, 1, 53}, {"m3e", 77, 0, 66},
+    {"m3t", 77, 1, 67},     {"m3d", 91, 0, 80},     {"m3td", 91, 1, 81}, {"m4e", 99, 0, 88},  {"m4t", 99, 1, 89},
+};
+struct DjiPayload {
+  const char* name;
+  int type;
+  bool h20_series;  // tilt -120 to +30 degrees underslung (DJI Zenmuse H20 series specifications)
+};
+constexpr DjiPayload kPayloads[] = {{"h20", 42, true}, {"h20t", 43, true}, {"h20n", 61, true},
+                                    {"h30", 82, false}, {"h30t", 83, false}, {"builtin", 0, false}};
+
+template <typename Entry, std::size_t N>
+std::vector<std::string> namesOf(const Entry (&entries)[N]) {
+  std::vector<std::string> names;
+  for (const Entry& e : entries) names.emplace_back(e.name);
+  return names;
+}
+
+}  // namespace
+
+const std::vector<std::string>& djiDroneNames() {
+  static const std::vector<std::string> names = namesOf(kDrones);
+  return names;
+}
+
+const std::vector<std::string>& djiPayloadNames() {
+  static const std::vector<std::string> names = namesOf(kPayloads);
+  return names;
+}
+
+DjiWpmlOptions djiWpmlOptions(const mission::DjiAircraft& aircraft) {
+  const auto drone = std::find_if(std::begin(kDrones), std::end(kDrones),
+                                  [&](const DjiDrone& d) { return aircraft.drone == d.name; });
+  const auto payload = std::find_if(std::begin(kPayloads), std::end(kPayloads),
+                                    [&](const DjiPayload& p) { return aircraft.payload == p.name; });
+  if (drone == std::end(kDrones)) throw InputError("dji: unknown drone '" + aircraft.drone + "'");
+  if (payload == std::end(kPayloads)) throw InputError("dji: unknown payload '" + aircraft.payload + "'");
+  DjiWpmlOptions options;
+  options.drone_enum = drone->type;
+  options.drone_sub_enum = drone->sub_type;
+  const bool carries_payloads = drone->builtin_camera == 0;
+  if (carries_payloads == (payload->type == 0))
+    throw InputError("dji: the " + aircraft.drone + (carries_payloads ? " carries a Zenmuse payload (h20, h20t, h20n, h30, h30t), not 'builtin'"
+                                                                       : " flies its own camera: payload: builtin"));
+  options.payload_enum = carries_payloads ? payload->type : drone->builtin_camera;
+  const std::vector<std::string> mounts{"main", "right", "upper"};
+  options.payload_position =
+      static_cast<int>(std::find(mounts.begin(), mounts.end(), aircraft.payload_position) - mounts.begin());
+  if (options.payload_position == 3) throw InputError("dji: payload_position must be main, right or upper");
+  if (options.payload_position > 0 && !carries_payloads)
+    throw InputError("dji: the " + aircraft.drone + " has one gimbal: payload_position: main");
+  if (aircraft.gimbal_pitch_range_deg) {
+    options.gimbal_pitch_range_deg = *aircraft.gimbal_pitch_range_deg;
+  } else if (payload->h20_series) {
+    // On the upper mount the gimbal hangs the other way up: its range mirrored about the horizon.
+    options.gimbal_pitch_range_deg = options.payload_position == 2 ? std::array<double, 2>{-30.0, 120.0}
+                                                                   : std::array<double, 2>{-120.0, 30.0};
+  } else {
+    throw InputError("dji: the gimbal pitch range of payload '" + aircraft.payload +
+                     "' is not built in: give gimbal_pitch_range_deg: [min, max] from its specifications");
+  }
+  options.rth_height_m = aircraft.rth_height_m;
+  options.finish_action = aircraft.finish_action;
+  options.rc_lost_action = aircraft.rc_lost_action;
+  options.validate();
+  return options;
 }
 
 DjiWpml djiWpml(const mission::SortieRoute& route, const mission::GeodeticOrigin& origin,
@@ -335,13 +430,24 @@ DjiWpml djiWpml(const mission::SortieRoute& route, const mission::GeodeticOrigin
                        " deg is outside the payload's range [" + formatNumber(options.gimbal_pitch_range_deg[0]) +
                        ", " + formatNumber(options.gimbal_pitch_range_deg[1]) + "]");
   }
-  Plan plan{route, origin, options, toGeodetic(origin, route.home_m), {}, mission::headingsInEffect_deg(route),
-            mission::gimbalPitchesInEffect_deg(route)};
-  for (const mission::RouteWaypoint& w : route.waypoints) plan.geodetic.push_back(toGeodetic(origin, w.position_m));
+  Plan plan(route, origin, options);
+  plan.headings_deg = mission::headingsInEffect_deg(route);
+  plan.pitches_deg = mission::gimbalPitchesInEffect_deg(route);
+  for (const mission::RouteWaypoint& w : route.waypoints) plan.positions_m.push_back(w.position_m);
+  // finishAction lands from the last waypoint: home at the landing height, not on the ground.
+  if (route.endsAtHome()) plan.positions_m.back().z() = route.home_m.z() + route.landingHeight_m();
+  for (const Eigen::Vector3d& p : plan.positions_m) plan.geodetic.push_back(toGeodetic(origin, p));
+  plan.cruise_speed_m_s = plan.within(route.cruise_speed_m_s, kMinSpeed_m_s, kMaxSpeed_m_s, 0, "wpml:autoFlightSpeed");
+  for (std::size_t k = 0; k < route.waypoints.size(); ++k)
+    plan.speeds_m_s.push_back(
+        plan.within(route.speedInto_m_s(k + 1), kMinSpeed_m_s, kMaxSpeed_m_s, k + 1, "wpml:waypointSpeed"));
+  plan.takeoff_security_height_m = plan.within(route.takeoffHeight_m(), kMinTakeOffSecurityHeight_m, 1500.0, 0,
+                                               "wpml:takeOffSecurityHeight");
   Writer writer(plan);
   DjiWpml files;
   files.template_kml = writer.document(true);
   files.waylines_wpml = writer.document(false);
+  files.clamps = std::move(plan.clamps);
   return files;
 }
 

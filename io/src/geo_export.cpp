@@ -46,6 +46,7 @@ nlohmann::json waypointProperties(const mission::SortieRoute& route, std::size_t
           {"speed_m_s", route.speedInto_m_s(k + 1)},
           {"gimbal_pitch_deg", optionalNumber(w.gimbal_pitch_deg)},
           {"take_photo", w.take_photo},
+          {"contact_reading", w.contact_reading},
           {"height_above_home_m", w.position_m.z() - route.home_m.z()},
           {"map_m", {w.position_m.x(), w.position_m.y(), w.position_m.z()}}};
 }
@@ -151,6 +152,7 @@ std::string routesKml(const std::vector<mission::SortieRoute>& routes, const mis
       std::string description = "hold " + formatNumber(w.hold_s) + " s, heading " + formatNumber(headings[k], 4) + " deg";
       if (w.gimbal_pitch_deg) description += ", gimbal " + formatNumber(*w.gimbal_pitch_deg, 4) + " deg";
       if (w.take_photo) description += ", photo";
+      if (w.contact_reading) description += ", contact reading";
       point(waypointLabel(route, k), description, w.position_m, waypointProperties(route, k, headings[k]));
     }
     xml.CloseElement();

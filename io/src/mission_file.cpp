@@ -5,6 +5,7 @@
 #include "ceilplan/core/input_file.hpp"
 #include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/io/coverage_keys.hpp"
+#include "ceilplan/io/dji_wpml.hpp"
 #include "ceilplan/io/point_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
@@ -144,13 +145,38 @@ environment::UnknownSpace readUnknownSpace(const Section& node) {
   return unknown;
 }
 
+mission::DjiAircraft readDjiAircraft(const Section& dji) {
+  dji.allowOnly({"drone", "payload", "payload_position", "gimbal_pitch_range_deg", "rth_height_m", "finish_action",
+                 "rc_lost_action"});
+  mission::DjiAircraft aircraft;
+  aircraft.drone = dji.choice("drone", djiDroneNames(), aircraft.drone);
+  aircraft.payload = dji.choice("payload", djiPayloadNames(), aircraft.payload);
+  aircraft.payload_position = dji.choice("payload_position", {"main", "right", "upper"}, aircraft.payload_position);
+  if (dji.has("gimbal_pitch_range_deg")) {
+    const std::vector<double> range = dji.numbers("gimbal_pitch_range_deg", 2, Range::closed(-180.0, 180.0, "deg"));
+    if (!(range[0] < range[1])) dji.fail("'" + dji.keyPath("gimbal_pitch_range_deg") + "' must be [min, max] with min < max");
+    aircraft.gimbal_pitch_range_deg = std::array<double, 2>{range[0], range[1]};
+  }
+  aircraft.rth_height_m = dji.number("rth_height_m", Range::closed(2.0, 1500.0, "m"), aircraft.rth_height_m);
+  aircraft.finish_action =
+      dji.choice("finish_action", {"goHome", "autoLand", "noAction", "gotoFirstWaypoint"}, aircraft.finish_action);
+  aircraft.rc_lost_action = dji.choice("rc_lost_action", {"goBack", "landing", "hover"}, aircraft.rc_lost_action);
+  try {
+    djiWpmlOptions(aircraft);  // the combination: a payload the drone carries, a mount it has
+  } catch (const InputError& e) {
+    dji.fail(e.what());
+  }
+  return aircraft;
+}
+
 }  // namespace
 
 mission::Mission readMission(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Mission);
   const Section root(yaml, yaml.root(), "");
   std::vector<std::string> keys{"map", "vehicle", "battery", "home",    "origin",
-                                "speeds", "mode",  "seed",     "unknown", "trajectory", "targets"};
+                                "speeds", "mode",  "seed",     "unknown", "trajectory", "dji",
+                                "targets"};
   keys.insert(keys.end(), coverageKeyNames().begin(), coverageKeyNames().end());
   root.allowOnly(keys);
   mission::Mission mission;
@@ -174,6 +200,7 @@ mission::Mission readMission(const std::filesystem::path& file) {
     t.stop_turn_deg = trajectory->number("stop_turn_deg", Range::closed(0.0, 90.0, "deg"), t.stop_turn_deg);
     mission.trajectory_ned = trajectory->choice("frame", {"enu", "ned"}, "enu") == "ned";
   }
+  if (const std::optional<Section> dji = root.optionalSection("dji")) mission.dji = readDjiAircraft(*dji);
   try {
     CoverageKeys coverage = readCoverageKeys(root.node());
     mission.camera = std::move(coverage.camera);

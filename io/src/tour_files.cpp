@@ -15,6 +15,8 @@
 #include "reduction.hpp"
 
 #include <cmath>
+#include <map>
+#include <tuple>
 #include <cstdio>
 #include <iomanip>
 #include <sstream>
@@ -86,15 +88,64 @@ Provenance tourProvenance(Provenance provenance, const mission::Mission& mission
 
 std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission) {
   if (!mission.origin) return "no geodetic origin";
+  const DjiWpmlOptions options = djiWpmlOptions(mission.dji);
   for (const mission::SortieRoute& route : tour.routes) {
     try {
-      djiWpml(route, *mission.origin);
+      djiWpml(route, *mission.origin, options);
     } catch (const InputError& e) {
-      return "sortie " + std::to_string(route.sortie) + ": " + e.what() +
-             " (the default payload, a Zenmuse H20 underslung; an upward-mounted payload is needed)";
+      return "sortie " + std::to_string(route.sortie) + ": " + e.what() + " (dji: " + mission.dji.payload + " on the " +
+             mission.dji.payload_position + " mount of the " + mission.dji.drone +
+             "; a payload on the upper mount of an M300 or M350 RTK looks up: dji: {payload_position: upper})";
     }
   }
   return std::nullopt;
+}
+
+std::vector<DjiClamp> djiClamps(const mission::TourResult& tour, const mission::Mission& mission) {
+  std::vector<DjiClamp> clamps;
+  if (djiExportProblem(tour, mission)) return clamps;
+  const DjiWpmlOptions options = djiWpmlOptions(mission.dji);
+  for (const mission::SortieRoute& route : tour.routes) {
+    const std::vector<DjiClamp> sortie = djiWpml(route, *mission.origin, options).clamps;
+    clamps.insert(clamps.end(), sortie.begin(), sortie.end());
+  }
+  return clamps;
+}
+
+std::string exportNotes(const mission::TourResult& tour, const mission::Mission& mission) {
+  if (const std::optional<std::string> dji = djiExportProblem(tour, mission)) return "  DJI KMZ not written: " + *dji + "\n";
+  const std::vector<DjiClamp> clamps = djiClamps(tour, mission);
+  if (clamps.empty()) return "";
+  std::map<std::string, std::vector<const DjiClamp*>> by_element;
+  for (const DjiClamp& c : clamps) by_element[c.element].push_back(&c);
+  std::string text = "  DJI KMZ: values outside DJI's ranges written as the nearest allowed (tour.json: dji_clamps):";
+  for (const auto& [element, list] : by_element) {
+    double lowest = list.front()->planned, written = list.front()->written;
+    for (const DjiClamp* c : list)
+      if (c->planned < lowest) std::tie(lowest, written) = std::make_tuple(c->planned, c->written);
+    text += " " + element + " " + std::to_string(list.size()) + "x (e.g. planned " + formatNumber(lowest) + ", written " +
+            formatNumber(written) + ");";
+  }
+  text.back() = '\n';
+  return text;
+}
+
+StopCounts stopCounts(const mission::TourResult& tour) {
+  StopCounts counts;
+  const auto count = [&](std::size_t stop, int& targets, int& contact, int& photos) {
+    if (tour.stops[stop].photo) {
+      ++photos;
+    } else if (tour.stops[stop].contact) {
+      ++contact;
+    } else {
+      ++targets;
+    }
+  };
+  for (std::size_t k = 0; k < tour.stops.size(); ++k) count(k, counts.targets, counts.contact_readings, counts.photos);
+  for (const mission::Sortie& sortie : tour.plan.sorties)
+    for (int place : sortie.targets)
+      count(static_cast<std::size_t>(place - 1), counts.targets_visited, counts.contact_readings_taken, counts.photos_taken);
+  return counts;
 }
 
 nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission, const Provenance& provenance) {
@@ -113,10 +164,21 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   json["stops_rechosen"] = tour.stops_rechosen;
   const std::optional<std::string> dji = djiExportProblem(tour, mission);
   json["dji_kmz"] = dji ? "not written: " + *dji : "written";
-  json["targets_total"] = tour.stops.size();
-  int visited = 0;
-  for (const mission::Sortie& sortie : tour.plan.sorties) visited += static_cast<int>(sortie.targets.size());
-  json["targets_visited"] = visited;
+  if (!dji) {
+    nlohmann::json clamps = nlohmann::json::array();
+    for (const DjiClamp& c : djiClamps(tour, mission))
+      clamps.push_back({{"sortie", c.sortie}, {"waypoint", c.waypoint}, {"element", c.element}, {"planned", c.planned},
+                        {"written", c.written}});
+    json["dji_clamps"] = clamps;
+  }
+  // Point targets, contact readings and photos are counted apart: a photo is no target.
+  const StopCounts counts = stopCounts(tour);
+  json["targets_total"] = counts.targets;
+  json["targets_visited"] = counts.targets_visited;
+  json["contact_readings_total"] = counts.contact_readings;
+  json["contact_readings_taken"] = counts.contact_readings_taken;
+  json["photos_total"] = counts.photos;
+  json["photos_taken"] = counts.photos_taken;
   nlohmann::json targets = nlohmann::json::array();
   for (const mission::TourStop& stop : tour.stops) {
     const mission::Viewpoint& v = stop.viewpoint;
@@ -146,8 +208,11 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
                       {"length_m", flown.evaluation.length_m},
                       {"waypoints", waypointsJson(flown.waypoints)}});
     }
+    const mission::SortieRoute& route = tour.routes[k];
     sorties.push_back({{"targets", names},
                        {"legs", legs},
+                       {"takeoff_height_m", route.takeoffHeight_m()},
+                       {"landing_height_m", route.endsAtHome() ? nlohmann::json(route.landingHeight_m()) : nlohmann::json()},
                        {"takeoff_s", tour.record.sorties[k].takeoff_s},
                        {"charge_ah", sortie.charge_ah},
                        {"duration_s", sortie.flight_s},
@@ -239,9 +304,11 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
   }
   // DJI's payloads look up only so far: a tour that looks straight up at a soffit cannot be
   // flown with the default one, and tour.json's dji_kmz says so instead of a wrong photo angle.
-  if (!djiExportProblem(tour, mission))
+  if (!djiExportProblem(tour, mission)) {
+    const DjiWpmlOptions options = djiWpmlOptions(mission.dji);
     for (int k = 0; k < count; ++k)
-      writeDjiKmz(sortieFileName(dir / "mission.kmz", k + 1, count), tour.routes[k], *mission.origin);
+      writeDjiKmz(sortieFileName(dir / "mission.kmz", k + 1, count), tour.routes[k], *mission.origin, options);
+  }
   writeRoutesKml(dir / "routes.kml", tour.routes, *mission.origin, mission.name());
   writeRoutesGeoJson(dir / "routes.geojson", tour.routes, *mission.origin);
 }
@@ -256,7 +323,10 @@ std::string comparisonTable(const mission::TourResult& ceiling, const mission::T
   };
   std::snprintf(line, sizeof line, "%-40s %14s %14s %12s\n", "", "ceiling", "free", "reduction %");
   out << line;
-  row("targets visited", static_cast<double>(ceiling.stops.size()), static_cast<double>(free.stops.size()), "%.0f", false);
+  const StopCounts c_counts = stopCounts(ceiling), f_counts = stopCounts(free);
+  row("targets visited", c_counts.targets_visited, f_counts.targets_visited, "%.0f", false);
+  if (c_counts.contact_readings + f_counts.contact_readings > 0)
+    row("contact readings taken", c_counts.contact_readings_taken, f_counts.contact_readings_taken, "%.0f", false);
   row("sorties", static_cast<double>(ceiling.plan.sorties.size()), static_cast<double>(free.plan.sorties.size()), "%.0f",
       false);
   row("charge [Ah]", ceiling.plan.charge_ah, free.plan.charge_ah, "%.4f", true);
@@ -296,7 +366,7 @@ nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission:
     const nlohmann::json full = tourJson(*tour, mission, provenance);
     nlohmann::json entry;
     for (const char* key :
-         {"targets_total", "targets_visited", "charge_ah", "flight_s", "duration_s", "fec", "min_soc", "wear", "duty"})
+         {"targets_total", "targets_visited", "contact_readings_taken", "photos_taken", "charge_ah", "flight_s", "duration_s", "fec", "min_soc", "wear", "duty"})
       entry[key] = full[key];
     entry["sorties"] = tour->plan.sorties.size();
     json[mission::flightModeName(tour->mode)] = entry;
@@ -356,14 +426,25 @@ std::string tourHeadline(const mission::Mission& mission, const std::string& mod
          std::to_string(options.seed) + ", split for least " + options.ageing_model + " wear\n";
 }
 
-std::string tourFilesLine(const std::string& dir, const mission::Mission& mission, std::optional<Autopilot> autopilot,
-                          bool kmz_written) {
-  std::string files = "tour.json, path.csv, trajectory, report.html";
-  if (!mission.surfaces.empty()) files += ", photos.csv, coverage.json, coverage_elements.csv";
-  if (autopilot)
-    files += kmz_written ? ", mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson"
-                         : ", mission.plan, mission.waypoints, routes.kml, routes.geojson";
-  return "wrote " + dir + " (" + files + "); figures: scripts/plot-tour " + dir + "\n";
+std::string tourFilesLine(const std::filesystem::path& dir, const mission::Mission& mission,
+                          const std::vector<mission::TourResult>& tours, std::optional<Autopilot> autopilot) {
+  std::string text;
+  for (const mission::TourResult& tour : tours) {
+    const std::filesystem::path at = tours.size() > 1 ? dir / mission::flightModeName(tour.mode) : dir;
+    std::string files = "tour.json, path.csv, trajectory.csv, trajectory.json, report.html, map_top.csv, map_side.csv";
+    if (!mission.surfaces.empty()) files += ", photos.csv, coverage.json, coverage_elements.csv";
+    if (autopilot) {
+      files += ", mission.plan, mission.waypoints";
+      if (!djiExportProblem(tour, mission)) files += ", mission.kmz";
+      files += ", routes.kml, routes.geojson";
+    }
+    if (tour.routes.size() > 1) files += " (one trajectory, .plan, .waypoints and .kmz per sortie: NAME_sortieN)";
+    text += "wrote " + at.string() + ": " + files + "\n";
+  }
+  if (tours.size() > 1)
+    text += "wrote " + dir.string() + ": comparison.txt, comparison.json, report.html, map_top.csv, map_side.csv\n";
+  if (!autopilot) text += "no autopilot files (--no-export)\n";
+  return text + "figures: scripts/plot-tour " + dir.string() + "\n";
 }
 
 std::string tourSummary(const mission::TourResult& tour) {
@@ -387,6 +468,12 @@ std::string tourSummary(const mission::TourResult& tour) {
                 100.0 * tour.plan.min_soc, 100.0 * tour.reserve_soc);
   out << line;
   if (tour.standoff) out << "  " << standoffLine(tour) << '\n';
+  for (const mission::SortieRoute& route : tour.routes) {
+    out << "  sortie " << route.sortie << " takes off straight up to " << formatFixed(route.takeoffHeight_m(), 2)
+        << " m above home";
+    if (route.endsAtHome()) out << " and lands straight down from " << formatFixed(route.landingHeight_m(), 2) << " m";
+    out << '\n';
+  }
   if (tour.stops_rechosen)
     out << "  stops chosen again among the places a route from home reaches (the first choice left one where none "
            "did)\n";

@@ -3,6 +3,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ceilplan::mission {
@@ -45,12 +46,33 @@ void SortieRoute::validate() const {
     if (w.trigger_distance_m && (!(*w.trigger_distance_m >= 0.0) || !std::isfinite(*w.trigger_distance_m)))
       throw InputError(what + ": trigger distance must be finite and non-negative, got " +
                        formatNumber(*w.trigger_distance_m) + " m");
+    if (w.take_photo && w.contact_reading)
+      throw InputError(what + ": a contact reading takes no photo: set take_photo or contact_reading, not both");
   }
+  if (takeoff_height_m && (!(*takeoff_height_m > 0.0) || !std::isfinite(*takeoff_height_m)))
+    throw InputError("route: take-off height must be positive, got " + formatNumber(*takeoff_height_m) + " m");
+  if (landing_height_m && (!(*landing_height_m >= 0.0) || !std::isfinite(*landing_height_m)))
+    throw InputError("route: landing height must be finite and non-negative, got " + formatNumber(*landing_height_m) +
+                     " m");
 }
 
 double SortieRoute::speedInto_m_s(std::size_t k) const {
   if (k == 0) return cruise_speed_m_s;
   return waypoints.at(k - 1).speed_m_s.value_or(cruise_speed_m_s);
+}
+
+bool SortieRoute::endsAtHome() const {
+  return !waypoints.empty() && (waypoints.back().position_m - home_m).norm() < 0.01;
+}
+
+double SortieRoute::takeoffHeight_m() const {
+  if (takeoff_height_m) return *takeoff_height_m;
+  return std::max(kMinTakeoffHeight_m, waypoints.at(0).position_m.z() - home_m.z());
+}
+
+double SortieRoute::landingHeight_m() const {
+  if (landing_height_m) return *landing_height_m;
+  return waypoints.size() < 2 ? 0.0 : std::max(0.0, waypoints[waypoints.size() - 2].position_m.z() - home_m.z());
 }
 
 double initialHeading_deg(const SortieRoute& route) {

@@ -163,6 +163,7 @@ std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext&
   // list contact points before them.
   std::vector<TourStop> viewpoints = viewpointStops(targets, mission.targets.size(), context, mode, options, reachable);
   std::rotate(viewpoints.begin(), viewpoints.begin() + static_cast<std::ptrdiff_t>(mission.targets.size()), viewpoints.end());
+  for (std::size_t k = 0; k + mission.targets.size() < viewpoints.size(); ++k) viewpoints[k].contact = true;
   stops.insert(stops.end(), viewpoints.begin(), viewpoints.end());
   if (stops.empty()) throw InputError(mission.name() + ": nothing to inspect: no targets, surfaces or contact grid points");
   return stops;
@@ -856,8 +857,10 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
   tour.record = recordFlight(tour, context);
   std::vector<RouteStop> route_stops;
   for (const TourStop& stop : tour.stops)
-    route_stops.push_back({stop.target.name, stop.target.point_m, stop.target.dwell_s, stop.yaw_deg, stop.gimbal_pitch_deg});
+    route_stops.push_back(
+        {stop.target.name, stop.target.point_m, stop.target.dwell_s, stop.yaw_deg, stop.gimbal_pitch_deg, stop.contact});
   tour.routes = sortieRoutes(tour.plan, tour.legs, route_stops, mission);
+  assignTakeoffAndLanding(tour.routes, context.baseRules());
   tour.trajectories = routeTrajectories(tour.routes, mission, context.baseRules());
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
     tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));

@@ -1,6 +1,9 @@
 #include "ceilplan/mission/tour_routes.hpp"
 
+#include "ceilplan/core/error.hpp"
+
 #include <algorithm>
+#include <functional>
 #include <limits>
 
 namespace ceilplan::mission {
@@ -51,20 +54,58 @@ std::vector<SortieRoute> sortieRoutes(const SortiePlan& plan, const LegTable& le
       const RouteStop& stop = stops.at(leg.to - 1);
       RouteWaypoint& at = route.waypoints.back();
       at.hold_s = stop.dwell_s;
-      if (stop.gimbal_pitch_deg) {
+      // At a contact point the probe reads: the camera is not aimed, no heading or pitch is commanded.
+      if (stop.gimbal_pitch_deg && !stop.contact_reading) {
         at.yaw_deg = stop.yaw_deg;
         at.gimbal_pitch_deg = stop.gimbal_pitch_deg;
-      } else {
+      } else if (!stop.contact_reading) {
         const CameraAim aim = aimAt(at.position_m, stop.point_m);
         at.yaw_deg = aim.yaw_deg;
         at.gimbal_pitch_deg = aim.gimbal_pitch_deg;
       }
-      at.take_photo = true;
+      at.take_photo = !stop.contact_reading;
+      at.contact_reading = stop.contact_reading;
       at.name = stop.name;
     }
     routes.push_back(std::move(route));
   }
   return routes;
+}
+
+namespace {
+
+// The highest of `preferred`, half of it, a quarter, ... (down to 5 cm) for which `path(height)`
+// passes the dense re-check; none if even the lowest fails.
+std::optional<double> highestSafeHeight(double preferred_m, const std::function<std::vector<Eigen::Vector3d>(double)>& path,
+                                        const planner::SafetyRules& rules) {
+  constexpr double kLowest_m = 0.05;
+  if (!rules.checkPathDensely(path(preferred_m))) return preferred_m;
+  for (double height = preferred_m / 2.0; height >= kLowest_m; height /= 2.0)
+    if (!rules.checkPathDensely(path(height))) return height;
+  return std::nullopt;
+}
+
+}  // namespace
+
+void assignTakeoffAndLanding(std::vector<SortieRoute>& routes, const planner::SafetyRules& rules) {
+  for (SortieRoute& route : routes) {
+    const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d first = route.waypoints.at(0).position_m;
+    const auto climb = [&](double h) { return std::vector<Eigen::Vector3d>{route.home_m, route.home_m + h * up, first}; };
+    route.takeoff_height_m.reset();
+    route.landing_height_m.reset();
+    route.takeoff_height_m = highestSafeHeight(route.takeoffHeight_m(), climb, rules);
+    if (!route.takeoff_height_m)
+      throw Error("sortie " + std::to_string(route.sortie) + ": no vertical take-off from home of 5 cm or more reaches " +
+                  "the first waypoint without failing the dense re-check");
+    if (!route.endsAtHome() || route.waypoints.size() < 2) continue;
+    const Eigen::Vector3d last = route.waypoints[route.waypoints.size() - 2].position_m;
+    const auto descent = [&](double h) { return std::vector<Eigen::Vector3d>{last, route.home_m + h * up, route.home_m}; };
+    route.landing_height_m = highestSafeHeight(route.landingHeight_m(), descent, rules);
+    if (!route.landing_height_m)
+      throw Error("sortie " + std::to_string(route.sortie) + ": no vertical landing at home of 5 cm or more is reached " +
+                  "from the last waypoint but one without failing the dense re-check");
+  }
 }
 
 std::vector<Trajectory> routeTrajectories(const std::vector<SortieRoute>& routes, const Mission& mission,

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <tuple>
 
 namespace ceilplan::io {
 namespace {
@@ -59,6 +60,7 @@ void checkMissionConfig(const tinyxml2::XMLElement* document, const DjiWpmlOptio
   EXPECT_EQ(childText(config, "wpml:executeRCLostAction"), options.rc_lost_action);
   EXPECT_NEAR(childNumber(config, "wpml:takeOffSecurityHeight"), 2.5, 1e-9);  // the first waypoint's height
   EXPECT_EQ(childNumber(config, "wpml:globalTransitionalSpeed"), 2.0);
+  EXPECT_EQ(childNumber(config, "wpml:globalRTHHeight"), options.rth_height_m);  // required, [2, 1500]
   const tinyxml2::XMLElement* drone = config->FirstChildElement("wpml:droneInfo");
   EXPECT_EQ(childNumber(drone, "wpml:droneEnumValue"), options.drone_enum);
   EXPECT_EQ(childNumber(drone, "wpml:droneSubEnumValue"), options.drone_sub_enum);
@@ -108,7 +110,11 @@ TEST(DjiWpml, KmzHoldsBothFilesWithEveryRequiredElement) {
       EXPECT_EQ(childText(system, "wpml:heightMode"), "relativeToStartPoint");
       EXPECT_EQ(childText(folder, "wpml:gimbalPitchMode"), "usePointSetting");
       EXPECT_NE(folder->FirstChildElement("wpml:globalWaypointHeadingParam"), nullptr);
-      EXPECT_NE(folder->FirstChildElement("wpml:globalWaypointTurnParam"), nullptr);
+      // DJI's required element; globalWaypointTurnParam is not one DJI defines.
+      EXPECT_EQ(childText(folder, "wpml:globalWaypointTurnMode"), "toPointAndStopWithDiscontinuityCurvature");
+      EXPECT_EQ(folder->FirstChildElement("wpml:globalWaypointTurnParam"), nullptr);
+      EXPECT_EQ(folder->FirstChildElement("wpml:globalUseStraightLine"), nullptr);  // for the turning modes only
+      EXPECT_EQ(folder->FirstChildElement("wpml:caliFlightEnable"), nullptr);       // a mapping template's
     } else {
       EXPECT_EQ(childText(folder, "wpml:executeHeightMode"), "relativeToStartPoint");
       EXPECT_EQ(childNumber(folder, "wpml:waylineId"), 0);
@@ -123,11 +129,14 @@ TEST(DjiWpml, KmzHoldsBothFilesWithEveryRequiredElement) {
       double lon = 0, lat = 0;
       ASSERT_EQ(std::sscanf(childText(p->FirstChildElement("Point"), "coordinates").c_str(), "%lf,%lf", &lon, &lat), 2);
       const double height = childNumber(p, is_template ? "wpml:height" : "wpml:executeHeight");
-      // Heights above the take-off point: back to the map frame within 1 cm.
+      // Heights above the take-off point: back to the map frame within 1 cm; the route ends at
+      // home, so its last waypoint is above home at the landing height (the last but one's, 4.7 m).
+      const Eigen::Vector3d flown = k + 1 < placemarks.size() ? route.waypoints[k].position_m
+                                                              : Eigen::Vector3d(route.home_m + Eigen::Vector3d(0, 0, 4.7));
       const Eigen::Vector3d back = toLocal(kOrigin, {lat, lon, home.z() + height});
-      EXPECT_LT((back - route.waypoints[k].position_m).norm(), 0.01) << "waypoint " << k;
+      EXPECT_LT((back - flown).norm(), 0.01) << "waypoint " << k;
       if (is_template) {
-        EXPECT_NEAR(childNumber(p, "wpml:ellipsoidHeight"), toGeodetic(kOrigin, route.waypoints[k].position_m).z(), 1e-3);
+        EXPECT_NEAR(childNumber(p, "wpml:ellipsoidHeight"), toGeodetic(kOrigin, flown).z(), 1e-3);
         EXPECT_EQ(childNumber(p, "wpml:useGlobalHeight"), 0);
         EXPECT_EQ(childNumber(p, "wpml:useGlobalSpeed"), 0);
         EXPECT_EQ(childNumber(p, "wpml:useGlobalHeadingParam"), 0);
@@ -140,10 +149,11 @@ TEST(DjiWpml, KmzHoldsBothFilesWithEveryRequiredElement) {
       EXPECT_GT(angle, -180.0);
       EXPECT_LE(angle, 180.0);
       EXPECT_NEAR(std::remainder(angle - headings[k], 360.0), 0.0, 1e-3);
-      EXPECT_EQ(childNumber(heading, "wpml:waypointHeadingAngleEnable"), 1);
+      EXPECT_EQ(heading->FirstChildElement("wpml:waypointHeadingAngleEnable"), nullptr);  // not DJI's
       EXPECT_EQ(childText(p->FirstChildElement("wpml:waypointTurnParam"), "wpml:waypointTurnMode"),
                 "toPointAndStopWithDiscontinuityCurvature");
-      EXPECT_EQ(childNumber(p, "wpml:useStraightLine"), 1);
+      EXPECT_EQ(p->FirstChildElement("wpml:waypointTurnParam")->FirstChildElement("wpml:waypointTurnDampingDist"), nullptr);
+      EXPECT_EQ(p->FirstChildElement("wpml:useStraightLine"), nullptr);
     }
     // Actions on arrival, in order, and the distance trigger as its own group.
     const auto groups1 = children(placemarks[1], "wpml:actionGroup");
@@ -206,7 +216,9 @@ TEST(DjiWpml, HeightsAboveSeaLevelNeedTheGeoidSeparation) {
   const auto template_marks = children(template_folder, "Placemark");
   const auto waylines_marks = children(waylines_folder, "Placemark");
   for (std::size_t k = 0; k < route.waypoints.size(); ++k) {
-    const double sea_level = kOrigin.altitude_m + route.waypoints[k].position_m.z();  // within mm over 50 m
+    // The last waypoint, home, is flown at the landing height (the last but one's, 4.7 m up).
+    const double z_m = k + 1 < route.waypoints.size() ? route.waypoints[k].position_m.z() : route.home_m.z() + 4.7;
+    const double sea_level = kOrigin.altitude_m + z_m;  // within mm over 50 m
     EXPECT_NEAR(childNumber(template_marks[k], "wpml:height"), sea_level, 0.01);
     EXPECT_NEAR(childNumber(waylines_marks[k], "wpml:executeHeight"), sea_level + 47.0, 0.01);
     EXPECT_NEAR(childNumber(template_marks[k], "wpml:ellipsoidHeight"), sea_level + 47.0, 0.01);
@@ -238,6 +250,89 @@ TEST(DjiWpml, ChoosesTheDroneAndRefusesAPitchThePayloadCannotReach) {
   options = {};
   options.finish_action = "fly away";
   EXPECT_THROW(djiWpml(soffitSortie(), kOrigin, options), InputError);
+  options = {};
+  options.rth_height_m = 1.0;  // below DJI's 2 m
+  EXPECT_THROW(djiWpml(soffitSortie(), kOrigin, options), InputError);
+}
+
+// Speeds below DJI's 1 m/s (the plan's 0.5 m/s inspection legs) and a take-off climb below its
+// 1.2 m are written as the nearest allowed value, and each is recorded.
+TEST(DjiWpml, ClampsToDjisRangesAndSaysWhere) {
+  mission::SortieRoute route = soffitSortie();
+  route.waypoints[2].speed_m_s = 0.5;
+  route.cruise_speed_m_s = 20.0;
+  route.takeoff_height_m = 0.6;
+  const DjiWpml wpml = djiWpml(route, kOrigin);
+  std::vector<std::tuple<std::size_t, std::string, double, double>> clamps;
+  for (const DjiClamp& c : wpml.clamps) clamps.emplace_back(c.waypoint, c.element, c.planned, c.written);
+  const std::vector<std::tuple<std::size_t, std::string, double, double>> expected{
+      {0, "wpml:autoFlightSpeed", 20.0, 15.0},
+      {1, "wpml:waypointSpeed", 20.0, 15.0},
+      {3, "wpml:waypointSpeed", 0.5, 1.0},
+      {4, "wpml:waypointSpeed", 20.0, 15.0},
+      {5, "wpml:waypointSpeed", 20.0, 15.0},
+      {0, "wpml:takeOffSecurityHeight", 0.6, 1.2}};
+  EXPECT_EQ(clamps, expected);
+  tinyxml2::XMLDocument waylines;
+  ASSERT_EQ(waylines.Parse(wpml.waylines_wpml.c_str()), tinyxml2::XML_SUCCESS);
+  const auto* document = waylines.RootElement()->FirstChildElement("Document");
+  const auto placemarks = children(document->FirstChildElement("Folder"), "Placemark");
+  EXPECT_EQ(childNumber(placemarks[2], "wpml:waypointSpeed"), 1.0);
+  EXPECT_EQ(childNumber(document->FirstChildElement("wpml:missionConfig"), "wpml:globalTransitionalSpeed"), 15.0);
+  EXPECT_EQ(childNumber(document->FirstChildElement("wpml:missionConfig"), "wpml:takeOffSecurityHeight"), 1.2);
+  EXPECT_TRUE(djiWpml(soffitSortie(), kOrigin).clamps.empty());
+}
+
+// A contact reading is a hover for the reading's time, never a photo.
+TEST(DjiWpml, AContactReadingHoversWithoutAPhoto) {
+  mission::SortieRoute route = soffitSortie();
+  route.waypoints[1].take_photo = false;
+  route.waypoints[1].contact_reading = true;
+  route.waypoints[1].trigger_distance_m.reset();
+  route.waypoints[2].trigger_distance_m.reset();
+  tinyxml2::XMLDocument waylines;
+  ASSERT_EQ(waylines.Parse(djiWpml(route, kOrigin).waylines_wpml.c_str()), tinyxml2::XML_SUCCESS);
+  const auto placemarks = children(waylines.RootElement()->FirstChildElement("Document")->FirstChildElement("Folder"), "Placemark");
+  const auto groups = children(placemarks[1], "wpml:actionGroup");
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_EQ(actionFunctions(groups[0]), (std::vector<std::string>{"rotateYaw", "gimbalRotate", "hover"}));
+  EXPECT_EQ(childNumber(children(groups[0], "wpml:action")[2]->FirstChildElement("wpml:actionActuatorFuncParam"),
+                        "wpml:hoverTime"),
+            12.0);
+}
+
+// The mission file's names become DJI's enumeration values; the upper mount looks up.
+TEST(DjiWpml, AircraftPayloadAndMountFromTheirNames) {
+  mission::DjiAircraft aircraft;
+  DjiWpmlOptions options = djiWpmlOptions(aircraft);
+  EXPECT_EQ(std::make_tuple(options.drone_enum, options.drone_sub_enum, options.payload_enum, options.payload_position),
+            std::make_tuple(89, 0, 42, 0));
+  EXPECT_EQ(options.gimbal_pitch_range_deg, (std::array<double, 2>{-120.0, 30.0}));
+  aircraft.payload_position = "upper";
+  options = djiWpmlOptions(aircraft);
+  EXPECT_EQ(options.payload_position, 2);
+  EXPECT_EQ(options.gimbal_pitch_range_deg, (std::array<double, 2>{-30.0, 120.0}));
+  mission::SortieRoute up = soffitSortie();
+  up.waypoints[1].gimbal_pitch_deg = 90.0;
+  EXPECT_NO_THROW(djiWpml(up, kOrigin, options));
+  EXPECT_THROW(djiWpml(up, kOrigin, djiWpmlOptions(mission::DjiAircraft{})), InputError);
+  aircraft = {};
+  aircraft.drone = "m30t";
+  EXPECT_THROW(djiWpmlOptions(aircraft), InputError);  // the M30T flies its own camera
+  aircraft.payload = "builtin";
+  aircraft.gimbal_pitch_range_deg = std::array<double, 2>{-90.0, 45.0};
+  options = djiWpmlOptions(aircraft);
+  EXPECT_EQ(std::make_tuple(options.drone_enum, options.drone_sub_enum, options.payload_enum), std::make_tuple(67, 1, 53));
+  aircraft.payload_position = "upper";
+  EXPECT_THROW(djiWpmlOptions(aircraft), InputError);  // one gimbal
+  aircraft = {};
+  aircraft.payload = "h30";  // range not built in, not given
+  try {
+    djiWpmlOptions(aircraft);
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("give gimbal_pitch_range_deg"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

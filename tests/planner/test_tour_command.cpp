@@ -192,6 +192,11 @@ void planFileIsCompleteAndReproducesTheRouteWithinACentimetre(const BothModesRun
     }
     if (leg["to"] != "home") holds.back() = dwell_of[leg["to"]];
   }
+  // Back home, the last waypoint is above it at the landing height, from where NAV_LAND descends.
+  ASSERT_TRUE(tour["sorties"][0]["landing_height_m"].is_number());
+  route.back().z() += tour["sorties"][0]["landing_height_m"].get<double>();
+  EXPECT_EQ(mission["items"].back()["command"], io::mav::kNavLand);
+  EXPECT_EQ(mission["items"].front()["command"], io::mav::kNavTakeoff);
   const mission::GeodeticOrigin origin{52.218, 0.0923, 12.0};  // the hall mission's and maps/bridge.yaml's
   const double home_amsl_m = mission["plannedHomePosition"][2].get<double>();
   // Every item is complete; the waypoints (NAV_WAYPOINT) are the route, and each target's

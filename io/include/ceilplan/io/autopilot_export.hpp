@@ -4,12 +4,15 @@
 // a QGroundControl .plan (JSON) and a QGC WPL 110 text file. Altitudes are relative to home, as
 // the vehicle arms there.
 //
-// Item sequence, per waypoint (docs/flying.md): MAV_CMD_DO_CHANGE_SPEED (178) where the speed
+// Item sequence (docs/flying.md): MAV_CMD_NAV_TAKEOFF (22) at home to the route's take-off
+// height; then per waypoint MAV_CMD_DO_CHANGE_SPEED (178) before the first and where the speed
 // into it differs from the speed last commanded by 1 cm/s or more; MAV_CMD_DO_GIMBAL_MANAGER_PITCHYAW (1000) where the
 // gimbal pitch changes, so the gimbal turns on the way; MAV_CMD_NAV_WAYPOINT (16) with the hold
-// time and the heading in effect as yaw; then MAV_CMD_IMAGE_START_CAPTURE (2000) for a photo
-// (after the hold, so the vehicle has settled) and MAV_CMD_DO_SET_CAM_TRIGG_DIST (206) where a
-// distance trigger starts or stops.
+// time (a contact reading's whole dwell) and the heading in effect as yaw; then
+// MAV_CMD_IMAGE_START_CAPTURE (2000) for a photo (after the hold, so the vehicle has settled)
+// and MAV_CMD_DO_SET_CAM_TRIGG_DIST (206) where a distance trigger starts or stops. A route that
+// ends at home flies its last waypoint above home at the landing height and ends with
+// MAV_CMD_NAV_LAND (21) there.
 //
 // Without GNSS, PX4 flies these global waypoints from its local position once the EKF origin is
 // set to the mission's geodetic origin; the .plan carries that origin under "ceilplan".
@@ -45,6 +48,8 @@ struct AutopilotMission : mission::SortieRoute {
 // MAVLink command and frame numbers (common.xml) the files use.
 namespace mav {
 constexpr int kNavWaypoint = 16;
+constexpr int kNavLand = 21;
+constexpr int kNavTakeoff = 22;
 constexpr int kDoChangeSpeed = 178;
 constexpr int kDoSetCamTriggDist = 206;
 constexpr int kDoGimbalManagerPitchYaw = 1000;

@@ -3,6 +3,7 @@
 // for both modes, the comparison table. docs/tours.md describes every file.
 
 #include "ceilplan/io/autopilot_export.hpp"
+#include "ceilplan/io/dji_wpml.hpp"
 #include "ceilplan/io/provenance.hpp"
 #include "ceilplan/mission/mission.hpp"
 #include "ceilplan/mission/tour_planner.hpp"
@@ -21,9 +22,23 @@ namespace ceilplan::io {
 // mission, map and vehicle files and the seed.
 Provenance tourProvenance(Provenance provenance, const mission::Mission& mission, std::uint64_t seed);
 
-// Why the tour's DJI KMZ cannot be written with the default payload (a gimbal pitch beyond its
-// range, naming the sortie and waypoint), or none.
+// Why the tour's DJI KMZ cannot be written for the mission's aircraft and payload (`dji:`; a
+// gimbal pitch beyond the payload's range, naming the sortie and waypoint), or none.
 std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission);
+// Every value the KMZ writes as the nearest one DJI's ranges allow (none when it is not written).
+std::vector<DjiClamp> djiClamps(const mission::TourResult& tour, const mission::Mission& mission);
+// What the autopilot files say about the tour, for the terminal: the KMZ not written and why, or
+// the values it clamped to DJI's ranges; empty when there is nothing to say.
+std::string exportNotes(const mission::TourResult& tour, const mission::Mission& mission);
+
+// The places a tour stops at, by kind: point targets, contact readings, photos; all of them and
+// those its sorties fly.
+struct StopCounts {
+  int targets = 0, targets_visited = 0;
+  int contact_readings = 0, contact_readings_taken = 0;
+  int photos = 0, photos_taken = 0;
+};
+StopCounts stopCounts(const mission::TourResult& tour);
 
 // Everything of the tour (docs/tours.md, "Outputs"), with the mission, map and vehicle named.
 nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission, const Provenance& provenance);
@@ -58,10 +73,10 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
 // `ceilplan tour`'s first line: what the mission inspects, the mode ("ceiling", "free" or
 // "both"), the leg planner, the seed and the model whose wear the sortie split minimises.
 std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options);
-// Its last line: DIR and the files written there (with `autopilot`, its missions; the DJI KMZ
-// only when `kmz_written`), then the command that draws the figures.
-std::string tourFilesLine(const std::string& dir, const mission::Mission& mission, std::optional<Autopilot> autopilot,
-                          bool kmz_written);
+// Its last lines: each directory written (DIR, or DIR/ceiling and DIR/free for both modes) with
+// the files in it (the DJI KMZ only where it was written), then the command that draws the figures.
+std::string tourFilesLine(const std::filesystem::path& dir, const mission::Mission& mission,
+                          const std::vector<mission::TourResult>& tours, std::optional<Autopilot> autopilot);
 
 // One paragraph for the terminal: targets, sorties with their reasons, totals, in free mode
 // standoffLine, where the time went and, for a coverage tour, what its photos cover (re-check).

@@ -7,6 +7,7 @@
 #include "ceilplan/mission/battery_spec.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
+#include "ceilplan/mission/dji_aircraft.hpp"
 #include "ceilplan/mission/geodetic_origin.hpp"
 #include "ceilplan/mission/trajectory.hpp"
 #include "ceilplan/mission/vehicle.hpp"
@@ -44,6 +45,7 @@ struct Mission {
   environment::UnknownSpace unknown;  // what the map's unknown voxels count as (docs/environment.md)
   TrajectoryOptions trajectory;       // time scaling of the flown routes (key `trajectory:`, docs/flying.md)
   bool trajectory_ned = false;        // trajectory files in NED instead of the map's ENU
+  DjiAircraft dji;                    // the KMZ's aircraft, payload and failsafes (key `dji:`)
   std::vector<InspectionTarget> targets;
   // Coverage (docs/coverage.md): surfaces photographed with the camera, contact grids probed.
   std::optional<Camera> camera;             // required by surfaces

@@ -30,6 +30,8 @@ struct RouteWaypoint {
   // straight down. None: keep the pitch in effect.
   std::optional<double> gimbal_pitch_deg;
   bool take_photo = false;  // one photo here, once the hold is over (hover to shoot) or in passing
+  // A contact reading here (a contact grid point): the hold is the reading, no photo is taken.
+  bool contact_reading = false;
   // From here on, a photo every this many metres flown (coverage passes); 0 stops the trigger.
   std::optional<double> trigger_distance_m;
   std::string name;  // what is inspected here, if anything (labels in KML, GeoJSON, reports)
@@ -40,6 +42,13 @@ struct SortieRoute {
   Eigen::Vector3d home_m = Eigen::Vector3d::Zero();  // take-off point; the flight starts here
   std::vector<RouteWaypoint> waypoints;              // flying order, home not repeated first (usually last)
   double cruise_speed_m_s = 2.0;                     // where a waypoint gives no speed
+  // Take-off: a vertical climb from home to this height above it, then straight to the first
+  // waypoint. None: the first waypoint's height above home (at least kMinTakeoffHeight_m).
+  // A tour sets it where that climb passes the dense re-check (mission::assignTakeoffAndLanding).
+  std::optional<double> takeoff_height_m;
+  // Landing, where the route ends at home: straight from the last waypoint but one to this
+  // height above home, then a vertical descent. None: that waypoint's height above home.
+  std::optional<double> landing_height_m;
 
   // Throws ceilplan::InputError naming the waypoint (1-based) and the field: no waypoints,
   // non-finite positions, negative holds, non-positive speeds, a pitch outside [-90, 90], a
@@ -48,7 +57,18 @@ struct SortieRoute {
 
   // The speed flown from waypoint k - 1 (home for k = 0) to waypoint k.
   double speedInto_m_s(std::size_t k) const;
+
+  // Whether the last waypoint is home (within 1 cm): the sortie lands where it took off.
+  bool endsAtHome() const;
+  // The take-off climb's and the landing descent's heights above home, as above.
+  double takeoffHeight_m() const;
+  double landingHeight_m() const;
 };
+
+// The lowest take-off climb an export asks for [open]: PX4 does not always leave the ground for
+// a take-off below about 0.5 m (PX4-Autopilot issue 12471), so a first waypoint lower than this
+// is reached from this height.
+constexpr double kMinTakeoffHeight_m = 1.0;
 
 // The heading in effect at each waypoint (degrees in [0, 360)): its own, else the last one
 // given before it, else the route's initial heading (below).

@@ -80,6 +80,7 @@ struct TourStop {
   std::optional<double> yaw_deg;         // heading at the stop (photos; none: aim at the target)
   std::optional<double> gimbal_pitch_deg;
   std::optional<double> max_speed_m_s;   // on the move: no faster than this from this photo to the next
+  bool contact = false;                  // a contact grid point: its dwell is a reading, not a photo
 };
 
 // Seconds spent per phase of planTour.
