@@ -25,9 +25,10 @@ environment::TriangleMesh readTriangleMesh(const std::filesystem::path& file) {
   const std::string name = file.string();
   const std::string extension =
       detail::requireReadableFileOfKind(file, kMeshExtensions, kCloudOnlyExtensions, "mesh", "point-cloud");
+  // The header counts first (their messages name the mismatch), then the whole file as Open3D
+  // would walk it (faces it would crash on).
+  if (extension == ".ply") detail::checkPlyCounts(file);
   if (extension == ".ply") detail::checkPlyFile(file, "mesh");
-
-  if (detail::lowerExtension(file) == ".ply") detail::checkPlyCounts(file);
 
   open3d::geometry::TriangleMesh mesh;
   if (const auto failure = detail::failureOf([&] { return open3d::io::ReadTriangleMesh(name, mesh, open3d::io::ReadTriangleMeshOptions{}); }))

@@ -127,6 +127,14 @@ TEST_F(BridgeExports, TrajectoryCsvReadsBackWithinLimitsAndAsAPath) {
   EXPECT_EQ(json["origin"]["lon_deg"], facts_.origin.longitude_deg);
 }
 
+// Where the autopilot files put waypoint k: the route's own, but a route that ends at home ends
+// above it at the landing height, from where the vehicle lands (docs/flying.md).
+Eigen::Vector3d flownPosition(const mission::SortieRoute& route, std::size_t k) {
+  if (k + 1 == route.waypoints.size() && route.endsAtHome())
+    return route.home_m + route.landingHeight_m() * Eigen::Vector3d::UnitZ();
+  return route.waypoints[k].position_m;
+}
+
 TEST_F(BridgeExports, QgcPlanAndWplCarryEveryWaypointWithinOneCentimetre) {
   const io::AutopilotMission mission = io::autopilotMission(route_, facts_.origin);
   io::writeQgcPlan(dir_ / "mission.plan", mission);
@@ -143,7 +151,7 @@ TEST_F(BridgeExports, QgcPlanAndWplCarryEveryWaypointWithinOneCentimetre) {
     const auto& p = item["params"];
     const Eigen::Vector3d back = io::toLocal(facts_.origin, {p[4].get<double>(), p[5].get<double>(), home_amsl + p[6].get<double>()});
     ASSERT_LT(waypoint, route_.waypoints.size());
-    EXPECT_LT((back - route_.waypoints[waypoint].position_m).norm(), 0.01) << waypoint;
+    EXPECT_LT((back - flownPosition(route_, waypoint)).norm(), 0.01) << waypoint;
     EXPECT_EQ(p[0].get<double>(), route_.waypoints[waypoint].hold_s);
     EXPECT_TRUE(p[3].is_number());
     ++waypoint;
@@ -188,7 +196,7 @@ TEST_F(BridgeExports, DjiKmzKmlAndGeoJsonReadBackWithinOneCentimetre) {
       double lon = 0, lat = 0;
       ASSERT_EQ(std::sscanf(childText(placemarks[k]->FirstChildElement("Point"), "coordinates").c_str(), "%lf,%lf", &lon, &lat), 2);
       const double height = childNumber(placemarks[k], std::string(name).find("template") != std::string::npos ? "wpml:height" : "wpml:executeHeight");
-      EXPECT_LT((io::toLocal(facts_.origin, {lat, lon, home.z() + height}) - route_.waypoints[k].position_m).norm(), 0.01);
+      EXPECT_LT((io::toLocal(facts_.origin, {lat, lon, home.z() + height}) - flownPosition(route_, k)).norm(), 0.01);
       EXPECT_NEAR(childNumber(placemarks[k], "wpml:waypointSpeed"), route_.speedInto_m_s(k + 1), 5e-4);  // mm/s
       for (const auto* group : children(placemarks[k], "wpml:actionGroup"))
         for (const auto* action : children(group, "wpml:action")) photos += childText(action, "wpml:actionActuatorFunc") == "takePhoto";

@@ -119,7 +119,7 @@ TEST(Kml, DocumentWithAFolderPerSortieConvertsBackWithinOneCentimetre) {
       EXPECT_EQ(childText(point, "altitudeMode"), "absolute");
       EXPECT_LT((parse(childText(point, "coordinates"))[0] - routes[s].waypoints[k].position_m).norm(), 0.01);
       EXPECT_FALSE(childText(placemarks[k + 1], "name").empty());
-      EXPECT_EQ(children(placemarks[k + 1]->FirstChildElement("ExtendedData"), "Data").size(), 11u);
+      EXPECT_EQ(children(placemarks[k + 1]->FirstChildElement("ExtendedData"), "Data").size(), 12u);  // contact_reading too
     }
   }
   EXPECT_EQ(childText(children(folders[0], "Placemark")[2], "name"), "crown <north> & wall");

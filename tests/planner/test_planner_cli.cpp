@@ -136,10 +136,11 @@ TEST(PlanCli, NoPathHasItsOwnExitCode) {
       });
   ASSERT_TRUE(walled.tree().writeBinaryConst((dir / "walled.bt").string()));
   const CommandResult result = runCeilplan("plan --map " + (dir / "walled.bt").string() + kVehicle +
-                                           " --start -0.6,0,1 --goal 0.6,0,1 --planner lattice --out " + dir.string());
+                                           " --start -0.6,0,1 --goal 0.6,0,1 --planner lattice --out " +
+                                           (dir / "out").string());
   EXPECT_EQ(result.exit_code, 3) << result.err;
   EXPECT_NE(result.err.find("no path"), std::string::npos) << result.err;
-  EXPECT_FALSE(std::filesystem::exists(dir / "plan.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
 TEST(CompareCli, CeilingModeBeatsFreeModeUnderAFlatCeilingAndProjectsTheDuty) {
