@@ -3,7 +3,6 @@
 #include "file_kind.hpp"
 #include "open3d_input_checks.hpp"
 #include "open3d_log.hpp"
-#include "ply_counts.hpp"
 
 #include <open3d/geometry/TriangleMesh.h>
 #include <open3d/io/TriangleMeshIO.h>
@@ -27,7 +26,6 @@ environment::TriangleMesh readTriangleMesh(const std::filesystem::path& file) {
       detail::requireReadableFileOfKind(file, kMeshExtensions, kCloudOnlyExtensions, "mesh", "point-cloud");
   // The header counts first (their messages name the mismatch), then the whole file as Open3D
   // would walk it (faces it would crash on).
-  if (extension == ".ply") detail::checkPlyCounts(file);
   if (extension == ".ply") detail::checkPlyFile(file, "mesh");
 
   open3d::geometry::TriangleMesh mesh;

@@ -71,7 +71,7 @@ TEST_F(ImportBadInput, CorruptFiles) {
   std::ofstream(dir_ / "truncated.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                                            "property float z\nend_header\n0 0 0\n1 0 0\n";
   expectRefused("--points " + path("truncated.ply"),
-                "truncated.ply: the PLY header promises 3 rows of data (its element counts), the file holds 2");
+                "truncated.ply: not a readable point cloud (the PLY's vertex element announces 3 records; the file ends in record 2)");
   std::ofstream(dir_ / "truncated.stl", std::ios::binary) << std::string(80, ' ') << std::string("\x64\0\0\0", 4) << "short";
   expectRefused("--mesh " + path("truncated.stl"), "truncated.stl: not a readable mesh");
   std::ofstream(dir_ / "bad_index.obj") << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
@@ -91,25 +91,25 @@ TEST_F(ImportBadInput, HeaderCountsThatDisagreeWithTheDataAndLinesThatAreNotPoin
     std::string flag, file, text, says;
   } rows[] = {
       {"--points", "grid.pcd", pcd + "WIDTH 2\nHEIGHT 2\nPOINTS 3\nDATA ascii\n1 2 3\n2 3 4\n3 4 5\n",
-       "grid.pcd: the PCD header's WIDTH x HEIGHT (2 x 2) is not its POINTS (3); is the file damaged?"},
+       "grid.pcd: not a readable point cloud (the PCD header's POINTS 3 is not WIDTH x HEIGHT (2 x 2))"},
       {"--points", "rows.pcd", pcd + "WIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA ascii\n1 2 3\n2 3 4\n3 4 5\n",
-       "rows.pcd: the PCD header promises 2 points, the file holds 3 rows"},
+       "rows.pcd: not a readable point cloud (the ascii PCD announces 2 points but holds more rows (line 12))"},
       {"--points", "nopoints.pcd", pcd + "WIDTH 2\nHEIGHT 1\nDATA ascii\n1 2 3\n2 3 4\n",
-       "nopoints.pcd: the PCD header needs WIDTH, HEIGHT and POINTS"},
+       "nopoints.pcd: not a readable point cloud (the PCD header lacks FIELDS, WIDTH, HEIGHT or POINTS)"},
       {"--points", "more.ply", ply + "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n",
-       "more.ply: the PLY header promises 3 rows of data (its element counts), the file holds 4; is the file damaged?"},
+       "more.ply: not a readable point cloud (data after the last element its header announces; do the header's element counts match the data?)"},
       {"--points", "short.ply", replaced(ply, "ascii", "binary_little_endian") + "end_header\n" + std::string(24, '\0'),
-       "short.ply: the PLY header promises 3 vertex rows, more than its 24 bytes of data hold"},
+       "short.ply: not a readable point cloud (the PLY's vertex element announces 3 records of 12 bytes, more than the file's remaining 24 bytes hold)"},
       {"--points", "long.ply", replaced(ply, "ascii", "binary_little_endian") + "end_header\n" + std::string(48, '\0'),
-       "long.ply: the PLY header's element counts promise 36 bytes of data, the file holds 48"},
+       "long.ply: not a readable point cloud (data after the last element its header announces"},
       {"--points", "huge.ply", replaced(replaced(ply, "ascii", "binary_little_endian"), "vertex 3", "vertex 99999999999999") +
-       "end_header\n" + std::string(24, '\0'), "huge.ply: the PLY header promises 99999999999999 vertex rows, more than its 24 bytes"},
+       "end_header\n" + std::string(24, '\0'), "huge.ply: not a readable point cloud (PLY header line 3: give 'element NAME COUNT', COUNT a whole number up to 2147483647)"},
       {"--mesh", "faces.ply", ply + "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-       "faces.ply: the PLY header promises 5 rows of data (its element counts), the file holds 4"},
-      {"--points", "words.xyz", "0 0 0\n1 0 0\n\n0 0 one\n", "words.xyz line 4: '0 0 one' is not 3 numbers; fix or delete the line"},
-      {"--points", "two.xyz", "0 0 0\n1 0\n", "two.xyz line 2: '1 0' is not 3 numbers"},
-      {"--points", "letters.xyz", "0 0 0\n1 0 x 0\n", "letters.xyz line 2: '1 0 x 0' is not 3 numbers"},
-      {"--points", "normals.xyzn", "0 0 0 0 0 1\n1 0 0 0 0\n", "normals.xyzn line 2: '1 0 0 0 0' is not 6 numbers"},
+       "faces.ply: not a readable mesh (the PLY's face element announces 2 records; the file ends in record 1)"},
+      {"--points", "words.xyz", "0 0 0\n1 0 0\n\n0 0 one\n", "words.xyz: not a readable point cloud (line 4: '0 0 one' is not 3 numbers; fix or delete the line)"},
+      {"--points", "two.xyz", "0 0 0\n1 0\n", "two.xyz: not a readable point cloud (line 2: '1 0' is not 3 numbers"},
+      {"--points", "letters.xyz", "0 0 0\n1 0 x 0\n", "letters.xyz: not a readable point cloud (line 2: '1 0 x 0' is not 3 numbers"},
+      {"--points", "normals.xyzn", "0 0 0 0 0 1\n1 0 0 0 0\n", "normals.xyzn: not a readable point cloud (line 2: '1 0 0 0 0' is not 6 numbers"},
       {"--mesh", "flat.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 0 1 0\nf 1 2 3\nf 4 4 4\n",
        "flat.obj: all 2 triangles of the mesh have zero area (collinear or repeated corners); export the mesh again with its faces"},
   };

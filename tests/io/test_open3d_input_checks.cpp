@@ -61,11 +61,13 @@ TEST(Open3dInputChecks, RefusesPcdHeadersOpen3dWouldMisread) {
   const auto zero_count = writeFile("zero_count.pcd", "FIELDS x y z\nCOUNT 1 0 0\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1\n");
   EXPECT_EQ(cloudRefusal(zero_count),
             zero_count.string() + ": not a readable point cloud (PCD header line 2: a field count of '0' (1 or more))");
-  // Fewer rows than points: Open3D returned the rest uninitialised. (The header-count check of
-  // io/src/point_cloud_file.cpp, which runs first, says so.)
-  const auto short_rows = writeFile("short.pcd", fields + "WIDTH 3\nHEIGHT 1\nPOINTS 3\nDATA ascii\n1 2 3\n4 5\n");
-  EXPECT_EQ(cloudRefusal(short_rows),
-            short_rows.string() + ": the PCD header promises 3 points, the file holds 2 rows; is the file damaged?");
+  // Fewer rows than points: Open3D returned the rest uninitialised. A short row it skipped.
+  const auto few_rows = writeFile("few.pcd", fields + "WIDTH 3\nHEIGHT 1\nPOINTS 3\nDATA ascii\n1 2 3\n\n4 5 6\n");
+  EXPECT_EQ(cloudRefusal(few_rows),
+            few_rows.string() + ": not a readable point cloud (the ascii PCD announces 3 points but holds 2 rows)");
+  const auto short_row = writeFile("short.pcd", fields + "WIDTH 3\nHEIGHT 1\nPOINTS 3\nDATA ascii\n1 2 3\n4 5\n7 8 9\n");
+  EXPECT_EQ(cloudRefusal(short_row), short_row.string() + ": not a readable point cloud (PCD line 9: '4 5' holds 2 values "
+                                                          "where a point has 3; fix or delete the line)");
   // Two billion points announced in a file of a few bytes: Open3D allocated them first.
   const auto huge = writeFile("huge.pcd", fields + "WIDTH 100000000\nHEIGHT 20\nPOINTS 2000000000\nDATA binary\n");
   EXPECT_EQ(cloudRefusal(huge), huge.string() + ": not a readable point cloud (the binary PCD announces 2000000000 "
@@ -94,7 +96,7 @@ TEST(Open3dInputChecks, RefusesPcdHeadersOpen3dWouldMisread) {
   }
   const auto grid = writeFile("grid.pcd", fields + "WIDTH 2\nHEIGHT 1\nPOINTS 3\nDATA ascii\n");
   EXPECT_EQ(cloudRefusal(grid),
-            grid.string() + ": the PCD header's WIDTH x HEIGHT (2 x 1) is not its POINTS (3); is the file damaged?");
+            grid.string() + ": not a readable point cloud (the PCD header's POINTS 3 is not WIDTH x HEIGHT (2 x 1))");
 }
 
 TEST(Open3dInputChecks, RefusesPlyFacesAndCountsOpen3dWouldMisread) {
@@ -105,15 +107,21 @@ TEST(Open3dInputChecks, RefusesPlyFacesAndCountsOpen3dWouldMisread) {
            {"2 0 1\n", "the PLY's face element, record 0: a face of 2 corners (3 to 255)"},
            {"4 0 1 2 900000\n", "the PLY's face element, record 0: a face names vertex 900000 of 3"},
            {"3 0 1 -1\n", "the PLY's face element, record 0: a face names vertex -1 of 3"},
-           {"3 0 1\n", "the PLY's face element, record 0: the file ends, or a value is no number"}}) {
+           {"3 0 1\n", "the PLY's face element announces 1 record; the file ends in record 0"},
+           {"3 0 1 x\n", "the PLY's face element, record 0: a vertex index that is no whole number"},
+           {"3 0 1 2\n0 0 0\n", "data after the last element its header announces; do the header's element counts match the data?"}}) {
     const auto file = writeFile("face.ply", kPlyTriangleHeader + face);
     EXPECT_EQ(meshRefusal(file), file.string() + ": not a readable mesh (" + message + ")");
     EXPECT_EQ(cloudRefusal(file), file.string() + ": not a readable point cloud (" + message + ")");
   }
   const auto huge = writeFile("huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\n"
                                           "property float x\nproperty float y\nproperty float z\nend_header\n");
-  EXPECT_EQ(cloudRefusal(huge), huge.string() + ": the PLY header promises 2000000000 vertex rows, more than its 0 bytes "
-                                                "of data hold; is the file damaged?");
+  EXPECT_EQ(cloudRefusal(huge), huge.string() + ": not a readable point cloud (the PLY's vertex element announces "
+                                                "2000000000 records of 12 bytes, more than the file's remaining 0 bytes hold)");
+  const auto tail = writeFile("tail.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
+                                          "property float y\nproperty float z\nend_header\n" + std::string(13, '\0'));
+  EXPECT_EQ(cloudRefusal(tail), tail.string() + ": not a readable point cloud (data after the last element its header "
+                                                "announces; do the header's element counts match the data?)");
   const auto scalar = writeFile("scalar.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
                                               "property float z\nelement face 1\nproperty int vertex_indices\nend_header\n0 0 0\n0\n");
   EXPECT_EQ(meshRefusal(scalar),
