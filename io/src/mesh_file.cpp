@@ -59,11 +59,15 @@ void appendTriangles(const std::vector<Eigen::Vector3d>& vertices, std::vector<s
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
   while (corners.size() > 1 && corners.front() == corners.back()) corners.pop_back();
   if (corners.size() < 3) return;
+  if (corners.size() == 3) {
+    triangles.push_back({corners[0], corners[1], corners[2]});
+    return;
+  }
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < corners.size(); ++i)
     normal += vertices[corners[i]].cross(vertices[corners[(i + 1) % corners.size()]]);
   std::vector<Eigen::Vector2d> flat;
-  if (corners.size() > 3 && normal.norm() > 0.0) {
+  if (normal.norm() > 0.0) {
     const Eigen::Vector3d n = normal.normalized();
     const Eigen::Vector3d u = n.unitOrthogonal(), w = n.cross(u);
     for (std::size_t c : corners) {
