@@ -99,10 +99,11 @@ void appendTriangles(const std::vector<Eigen::Vector3d>& vertices, std::vector<s
     triangles.push_back({corners[left[0]], corners[left[i]], corners[left[i + 1]]});
 }
 
-// The rotation from a file's axes into ceilplan's (z up). glTF is y up by its specification and
-// assimp turns a COLLADA file's <up_axis> into y up; FBX states its axes in its global settings,
-// which assimp 5.2 passes on as metadata without applying them. Other formats carry no axes:
-// they are taken as z up.
+// The map from a file's axes and unit into ceilplan's (metres, z up). glTF is y up in metres by
+// its specification and assimp turns a COLLADA file's <up_axis> into y up and its <unit> into
+// metres; FBX states its axes and unit (centimetres per unit) in its global settings, which
+// assimp 5.2 passes on as metadata without applying them. Other formats carry neither: they are
+// taken as z up in metres.
 Eigen::Matrix3d axesOf(const aiScene& scene, const std::string& extension) {
   Eigen::Matrix3d yUp;
   yUp << 1, 0, 0, 0, 0, -1, 0, 1, 0;
@@ -125,7 +126,12 @@ Eigen::Matrix3d axesOf(const aiScene& scene, const std::string& extension) {
   rotation.row(0) = axis(coord, coord_sign).transpose();
   rotation.row(1) = -axis(front, front_sign).transpose();
   rotation.row(2) = axis(up, up_sign).transpose();
-  if (std::abs(rotation.determinant() - 1.0) > 1e-9) return yUp;  // not a proper rotation: metadata we cannot use
+  if (std::abs(rotation.determinant() - 1.0) > 1e-9) rotation = yUp;  // not a proper rotation: metadata we cannot use
+  float centimetres_per_unit = 1.0f;  // FBX's default unit
+  double stated = 1.0;
+  if (!metadata.Get("UnitScaleFactor", centimetres_per_unit) && metadata.Get("UnitScaleFactor", stated))
+    centimetres_per_unit = static_cast<float>(stated);
+  if (std::isfinite(centimetres_per_unit) && centimetres_per_unit > 0.0f) rotation *= 0.01 * centimetres_per_unit;
   return rotation;
 }
 
@@ -163,7 +169,6 @@ environment::TriangleMesh readTriangleMesh(const std::filesystem::path& file) {
   Assimp::Importer importer;
   auto* io_system = new CheckedIOSystem;  // the importer owns it
   importer.SetIOHandler(io_system);
-  importer.SetPropertyBool(AI_CONFIG_FBX_CONVERT_TO_M, true);
   // No post-processing: faces are triangulated, their corners checked and node transforms applied
   // below (aiProcess_ValidateDataStructure and aiProcess_PreTransformVertices refuse a point
   // cloud's vertices without saying what they are).

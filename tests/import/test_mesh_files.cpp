@@ -188,6 +188,40 @@ TEST(MeshFiles, GltfGlbAndColladaScenesArePlacedByTheirNodesWithZUp) {
   expectBox(readTriangleMesh(y_up), {0, -6, 0}, {1, -5, 1}, y_up.string());
 }
 
+// An ASCII FBX 7.4 scene: the unit cube as six quads, its model moved 10 units along x, with the
+// axes (up, front and its sign; x to the right) and unit (centimetres per unit) it states.
+std::string cubeFbx(int up, int front, int front_sign, double centimetres_per_unit) {
+  const auto setting = [](const std::string& name, const std::string& type, const auto& value) {
+    return "P: \"" + name + "\", \"" + type + "\", \"\", \"\"," + std::to_string(value) + "\n";
+  };
+  std::string corners, quads;
+  for (char c : std::string(kCubeCorners)) corners += c == ' ' || c == '\n' ? ',' : c;
+  corners.pop_back();
+  for (const auto& q : kCubeQuads)  // the last corner of a polygon is stored as -(index + 1)
+    quads += std::to_string(q[0]) + "," + std::to_string(q[1]) + "," + std::to_string(q[2]) + "," +
+             std::to_string(-q[3] - 1) + ",";
+  quads.pop_back();
+  return "; FBX 7.4.0 project file\nFBXHeaderExtension: {\nFBXHeaderVersion: 1003\nFBXVersion: 7400\n}\n"
+         "GlobalSettings: {\nVersion: 1000\nProperties70: {\n" +
+         setting("UpAxis", "int", up) + setting("UpAxisSign", "int", 1) + setting("FrontAxis", "int", front) +
+         setting("FrontAxisSign", "int", front_sign) + setting("CoordAxis", "int", 0) +
+         setting("CoordAxisSign", "int", 1) + setting("UnitScaleFactor", "double", centimetres_per_unit) +
+         "}\n}\nObjects: {\nGeometry: 1000, \"Geometry::cube\", \"Mesh\" {\nVertices: *24 {\na: " + corners +
+         "\n}\nPolygonVertexIndex: *24 {\na: " + quads +
+         "\n}\nGeometryVersion: 124\n}\nModel: 2000, \"Model::cube\", \"Mesh\" {\nVersion: 232\nProperties70: {\n"
+         "P: \"Lcl Translation\", \"Lcl Translation\", \"\", \"A\",10,0,0\n}\n}\n}\n"
+         "Connections: {\nC: \"OO\",2000,0\nC: \"OO\",1000,2000\n}\n";
+}
+
+TEST(MeshFiles, FbxScenesAreTurnedZUpAndScaledToMetresByTheirGlobalSettings) {
+  // Maya's axes (y up, z towards the viewer) in metres (100 cm per unit): y becomes z, z becomes -y.
+  const auto maya = writeFile("maya.fbx", cubeFbx(1, 2, 1, 100.0));
+  expectBox(readTriangleMesh(maya), {10, -1, 0}, {11, 0, 1}, maya.string());
+  // Blender's (z up, -y forward) in centimetres, FBX's default unit.
+  const auto blender = writeFile("blender.fbx", cubeFbx(2, 1, -1, 1.0));
+  expectBox(readTriangleMesh(blender), {0.1, 0, 0}, {0.11, 0.01, 0.01}, blender.string());
+}
+
 TEST(MeshFiles, CoordinatesBeyondSinglePrecisionAreReadInDoubleOrRefused) {
   // A triangle in UTM coordinates: PLY keeps its doubles (read with Open3D); OBJ, read in single
   // precision, would move it by up to 0.5 m and is refused.
