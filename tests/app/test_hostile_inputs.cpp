@@ -690,6 +690,8 @@ std::vector<Case> successCases() {
       {"ok_rainflow", kRainflow + " --json {out}", 0, "cycles in all"},
       {"ok_calibrate", kCalibrate + " --out {out}", 0, "rmse_a"},
       {"ok_import", "import --points {fx}/points.xyz --resolution 0.1 --out {out}", 0, "import:", Out::Absent, {}, "out.bt"},
+      {"ok_import_crop", "import --points {fx}/points.xyz --resolution 0.1 --crop -1,-1,-1,0.5,2,2 --out {out}", 0,
+       "(cropped to (-1.00, -1.00, -1.00) to (0.50, 2.00, 2.00))", Out::Absent, {}, "out.bt"},
       {"ok_probe", kProbe + " --json {out}", 0, "valid"},
       {"ok_bench_planners", kBench + " --json {out}", 0, "RRTstar"},
   };
