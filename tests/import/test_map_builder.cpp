@@ -102,7 +102,7 @@ TEST(MapBuilders, AShellIsOnlyItsSurfaceAndACropThroughAClosedMeshKeepsItsInside
   const auto shell = environment::mapFromMesh(testing::boxMesh(min, max), options);
   EXPECT_EQ(stateIn(shell, centre), "free");
   EXPECT_EQ(stateIn(shell, {min.x(), centre.y(), centre.z()}), "occupied");
-  EXPECT_NE(shell.free_space.find("closed mesh, triangles facing outward: thin shell, both sides free"), std::string::npos)
+  EXPECT_EQ(shell.free_space.rfind("closed mesh, triangles facing outward: thin shell, both sides free", 0), 0u)
       << shell.free_space;
   // A room (inward-facing), cut in half by the crop: its inside stays free, its outside unknown,
   // though the crop's face at x = 3 runs through the room.
