@@ -12,6 +12,7 @@
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <numeric>
+#include <system_error>
 
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/core/printable_text.hpp"
@@ -37,7 +38,10 @@ constexpr std::size_t kMaxVertices = 200'000'000;
 // reader makes first, so that a FIFO or a device named there is refused, not read for ever.
 class CheckedIOSystem : public Assimp::DefaultIOSystem {
  public:
-  bool Exists(const char* file) const override { return std::filesystem::exists(file); }
+  bool Exists(const char* file) const override {
+    std::error_code error;
+    return std::filesystem::exists(file, error);  // without opening it: a FIFO would block
+  }
   Assimp::IOStream* Open(const char* file, const char* mode) override {
     try {
       requireInputFile(file, "mesh file");
