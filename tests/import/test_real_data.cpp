@@ -120,6 +120,15 @@ void tourBothModes(const std::string& data_set, const fs::path& map, bool check_
   expectTourWithinTheData(out / "free", loaded, check_free_standoff_max);
 }
 
+TEST(RealData, EverySetCarriesItsLicenceAndSource) {
+  for (const char* data_set : {"octomap_scan", "mrpt_vlp16", "fzk_haus", "house_regr01"}) {
+    for (const char* file : {"LICENSE", "SOURCE.md"})
+      EXPECT_GT(fs::file_size(kData / data_set / file), 100u) << data_set << "/" << file;
+    EXPECT_NE(testing::readWholeFile(kData / data_set / "LICENSE").find("License: BSD-3-clause"), std::string::npos)
+        << data_set;
+  }
+}
+
 // --- OctoMap's example scan: one station, sensor at the origin, vaults 10 m up ---------------
 
 const std::string kScanPoints = "--points " + quoted(kData / "octomap_scan/scan.pcd");
