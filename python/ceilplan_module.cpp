@@ -614,4 +614,71 @@ PYBIND11_MODULE(ceilplan, m) {
       py::arg("models") = paper.ageing_models, py::arg("temperature_c") = paper.temperature_c,
       py::arg("chemistry") = paper.chemistry, py::arg("end_of_life_soh") = paper.end_of_life_soh,
       py::arg("woehler_n100") = paper.woehler.cycles_at_full_depth, py::arg("woehler_k") = paper.woehler.exponent);
+
+  const mission::ProposalOptions proposal_defaults;
+  const io::ProposalSettings settings_defaults;
+  m.def(
+      "propose",
+      [](const std::filesystem::path& map, const std::filesystem::path& vehicle, const std::filesystem::path& out,
+         std::optional<std::filesystem::path> picture, std::optional<std::vector<double>> home,
+         std::optional<std::vector<double>> crop, double min_area_m2, int max_regions, const std::string& camera,
+         double gsd_mm_px, double overlap_front, double overlap_side, std::uint32_t seed, const std::string& unknown,
+         std::optional<double> unknown_fill_max_m) {
+        io::ProposalRequest request;
+        request.mission_file = out;
+        request.picture_file = picture.value_or(std::filesystem::path());
+        request.mission_flag = "out";
+        request.picture_flag = "picture";
+        if (home) request.options.home_m = point(*home, "home");
+        if (crop) {
+          if (crop->size() != 6) throw InputError("crop must be (xmin, ymin, zmin, xmax, ymax, zmax) in metres");
+          request.options.crop_m = Eigen::AlignedBox3d(Eigen::Vector3d((*crop)[0], (*crop)[1], (*crop)[2]),
+                                                       Eigen::Vector3d((*crop)[3], (*crop)[4], (*crop)[5]));
+        }
+        request.options.min_region_area_m2 = min_area_m2;
+        request.options.max_regions = max_regions;
+        request.settings.map_file = map;
+        request.settings.vehicle_file = vehicle;
+        request.settings.camera_preset = camera;
+        request.settings.gsd_mm_px = gsd_mm_px;
+        request.settings.overlap_front_pct = overlap_front;
+        request.settings.overlap_side_pct = overlap_side;
+        request.settings.seed = seed;
+        request.settings.unknown = unknownSpace(unknown, unknown_fill_max_m);
+        const std::string call = "python: ceilplan.propose('" + map.string() + "', '" + vehicle.string() + "', '" +
+                                 out.string() + "')";
+        const mission::MissionProposal proposal = [&] {
+          py::gil_scoped_release release;
+          return io::proposeMissionFiles(request, io::Provenance::of(call));
+        }();
+        py::list regions;
+        for (const mission::ProposedRegion& region : proposal.regions) {
+          py::dict d;
+          d["name"] = region.name;
+          d["box_min"] = std::vector<double>{region.box_m.min().x(), region.box_m.min().y(), region.box_m.min().z()};
+          d["box_max"] = std::vector<double>{region.box_m.max().x(), region.box_m.max().y(), region.box_m.max().z()};
+          d["area_m2"] = region.area_m2;
+          d["elements"] = region.elements;
+          regions.append(d);
+        }
+        py::dict d;
+        d["regions"] = regions;
+        d["home"] = std::vector<double>{proposal.home_m.x(), proposal.home_m.y(), proposal.home_m.z()};
+        d["home_given"] = proposal.home_given;
+        d["home_height_m"] = std::isfinite(proposal.home_height_m) ? py::object(py::float_(proposal.home_height_m)) : py::none();
+        d["dropped_regions"] = proposal.dropped_regions;
+        d["dropped_area_m2"] = proposal.dropped_area_m2;
+        d["overhead_area_m2"] = proposal.overhead_area_m2;
+        d["mission"] = request.mission_file;
+        d["picture"] = request.picture_file;
+        return d;
+      },
+      "Proposes a coverage mission from a map, as `ceilplan propose`: its overhead surfaces as regions and a home; "
+      "writes the mission file and a plan-view picture (.svg) and returns what was proposed",
+      py::arg("map"), py::arg("vehicle"), py::arg("out"), py::arg("picture") = py::none(), py::arg("home") = py::none(),
+      py::arg("crop") = py::none(), py::arg("min_area_m2") = proposal_defaults.min_region_area_m2,
+      py::arg("max_regions") = proposal_defaults.max_regions, py::arg("camera") = settings_defaults.camera_preset,
+      py::arg("gsd_mm_px") = settings_defaults.gsd_mm_px, py::arg("overlap_front") = settings_defaults.overlap_front_pct,
+      py::arg("overlap_side") = settings_defaults.overlap_side_pct, py::arg("seed") = settings_defaults.seed,
+      py::arg("unknown") = "occupied", py::arg("unknown_fill_max_m") = py::none());
 }

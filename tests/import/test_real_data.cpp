@@ -199,9 +199,9 @@ TEST(RealData, Vlp16StreetScanImportsAtACoarseResolution) {
   EXPECT_EQ(stateAt(OccupancyMap::load(map), {1.0, 0.0, 0.0}), "free");  // beside the sensor
 }
 
-// At 0.05 m the returns' box (149 x 210 x 16 m) is over the index cap, and --max-range 30 still
-// keeps the far returns' box (issue 24, "--max-range really drops far returns"): enable when that lands.
-TEST(RealData, DISABLED_Vlp16MaxRangeDropsFarReturnsFromTheBox) {
+// At 0.05 m the returns' box (149 x 210 x 16 m) is over the index cap; --max-range 30 drops the
+// far returns, and the box shrinks with them.
+TEST(RealData, Vlp16MaxRangeDropsFarReturnsFromTheBox) {
   const fs::path map = testing::scratchDirectory("mrpt_vlp16_range") / "vlp16.bt";
   const auto sidecar = importMap(kVlp16 + " --resolution 0.05 --max-range 30", map);
   for (int i = 0; i < 3; ++i) {
@@ -235,10 +235,9 @@ TEST(RealData, HouseRegr01ToursRoundTheHouseInBothModes) {
   tourBothModes("house_regr01", map, /*check_free_standoff_max=*/false);
 }
 
-// The open mesh's inside is filled as occupied today (auto -> solid): its rooms vanish. An open
-// mesh must become a thin shell, free on both sides (issue 24, "Open meshes turn hollow"): enable
-// when that lands.
-TEST(RealData, DISABLED_HouseRegr01OpenMeshIsAThinShell) {
+// An open mesh is a thin shell, free on both sides: its rooms stay rooms (before, auto filled the
+// inside as occupied).
+TEST(RealData, HouseRegr01OpenMeshIsAThinShell) {
   const fs::path map = testing::scratchDirectory("house_regr01_shell") / "house_regr01.bt";
   importMap(kHouse + " --resolution 0.1", map);
   const OccupancyMap loaded = OccupancyMap::load(map);
@@ -263,10 +262,9 @@ TEST(RealData, DISABLED_HouseRegr01ToursWithoutAGeodeticOrigin) {
 
 // --- KIT's FZK-Haus: a CAD model whose faces are polygons of up to 113 corners ---------------
 
-// Today: "fzk_haus.obj: the mesh has no triangles" (Open3D reads no polygon faces from OBJ files).
-// Needs polygon faces triangulated and open meshes kept as thin shells (issue 24, "Import takes
-// what users have"): enable when that lands.
-TEST(RealData, DISABLED_FzkHausPolygonMeshImportsWithItsRooms) {
+// Polygon faces triangulated, the open model kept as a thin shell: the house keeps its rooms
+// (Open3D read no polygon face from an OBJ file: "the mesh has no triangles").
+TEST(RealData, FzkHausPolygonMeshImportsWithItsRooms) {
   const fs::path map = testing::scratchDirectory("fzk_haus") / "fzk_haus.bt";
   const auto sidecar = importMap("--mesh " + quoted(kData / "fzk_haus/fzk_haus.obj") + " --resolution 0.1", map);
   EXPECT_GE(sidecar["figures"]["triangles"].get<int>(), 16037);  // at least one per polygon

@@ -23,6 +23,7 @@
 
 #include "ceilplan/mission/coverage_plan.hpp"
 #include "ceilplan/mission/mission.hpp"
+#include "ceilplan/mission/mission_proposal.hpp"
 #include "ceilplan/mission/planning_context.hpp"
 #include "ceilplan/mission/route_planning.hpp"
 #include "ceilplan/mission/tour_planner.hpp"
@@ -36,6 +37,7 @@
 #include "ceilplan/io/mission_file.hpp"
 #include "ceilplan/io/octomap_file.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/proposal_files.hpp"
 #include "ceilplan/io/report_json.hpp"
 #include "ceilplan/io/soc_series_file.hpp"
 #include "ceilplan/io/tour_files.hpp"

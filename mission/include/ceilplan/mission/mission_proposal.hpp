@@ -1,0 +1,65 @@
+#pragma once
+// A coverage mission proposed from the map alone (`ceilplan propose`, docs/import.md): the
+// overhead surfaces a scan or model holds, grouped into regions, and a home to take off from.
+// The regions are the map's down-facing occupied faces with known free space below them
+// (environment/surface_elements.hpp), joined where they touch (26-connected voxels); the home is
+// a valid body position in known free space low above the floor, with room to climb 1.5 m
+// straight up, near the regions.
+
+#include "ceilplan/core/progress.hpp"
+#include "ceilplan/environment/environment.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ceilplan::mission {
+
+struct ProposalOptions {
+  // Only overhead surfaces inside this box (map frame); none: the whole map.
+  std::optional<Eigen::AlignedBox3d> crop_m;
+  // The home, checked rather than proposed.
+  std::optional<Eigen::Vector3d> home_m;
+  // Regions of less overhead area are dropped (a bracket, a lamp, a scan's stray return).
+  double min_region_area_m2 = 1.0;
+  // At most this many regions, the largest first: each is a coverage surface of the tour.
+  int max_regions = 8;
+  // The proposed home's height above the floor under it (the lowest one that is a valid state).
+  double min_home_height_m = 0.5;
+  double max_home_height_m = 3.0;
+
+  // Throws ceilplan::InputError naming the option: non-finite or empty crop, area < 0,
+  // max_regions outside [1, 100], heights outside (0, 100] or min above max.
+  void validate() const;
+};
+
+struct ProposedRegion {
+  std::string name;          // "overhead_1", ... by area, largest first
+  Eigen::AlignedBox3d box_m;  // the region's faces, each with its half voxel around it
+  double area_m2 = 0.0;      // the surface's area (environment::SurfaceElement::area_m2)
+  std::size_t elements = 0;  // voxel faces
+  // All the overhead area inside the box: more than area_m2 where smaller surfaces (a closet's
+  // ceiling, a lamp) lie within its bounds. The mission's region covers them too.
+  double box_area_m2 = 0.0;
+};
+
+struct MissionProposal {
+  std::vector<ProposedRegion> regions;
+  Eigen::Vector3d home_m = Eigen::Vector3d::Zero();
+  bool home_given = false;
+  double home_height_m = 0.0;   // above the floor under the home (NaN when no floor lies below)
+  std::size_t dropped_regions = 0;  // below the area or beyond the count
+  double dropped_area_m2 = 0.0;
+  double overhead_area_m2 = 0.0;  // of every down-facing face onto known free space (in the crop)
+};
+
+// Throws ceilplan::InputError: no overhead surface with known free space below (in the crop),
+// none large enough, a given home that is outside the map, not a valid state or in unknown
+// space, or no valid home in known free space above any floor.
+MissionProposal proposeMission(const environment::Environment& environment, const ProposalOptions& options,
+                               const ProgressCallback& progress = {});
+
+}  // namespace ceilplan::mission

@@ -1,0 +1,238 @@
+#include "ceilplan/mission/mission_proposal.hpp"
+
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
+#include "ceilplan/environment/map_builder.hpp"
+#include "ceilplan/environment/surface_elements.hpp"
+#include "ceilplan/mission/coverage_region.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+
+namespace ceilplan::mission {
+namespace {
+
+using environment::CellState;
+using environment::Index3;
+
+// The columns searched for a home: one every half metre (at least every voxel).
+constexpr double kHomeColumnSpacing_m = 0.5;
+// A home has room to climb straight up this far: not under a shelf, a stair or a girder.
+constexpr double kHomeClimbRoom_m = 1.5;
+
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t count) : parent_(count) { std::iota(parent_.begin(), parent_.end(), 0); }
+  std::size_t root(std::size_t item) {
+    while (parent_[item] != item) item = parent_[item] = parent_[parent_[item]];
+    return item;
+  }
+  void join(std::size_t a, std::size_t b) { parent_[root(a)] = root(b); }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+
+// Down-facing elements joined where their voxels touch (faces, edges or corners).
+std::vector<ProposedRegion> overheadRegions(const environment::VoxelGrid& grid, const Eigen::AlignedBox3d& box_m,
+                                            double* overhead_area_m2,
+                                            std::vector<environment::SurfaceElement>& elements) {
+  for (environment::SurfaceElement& element : environment::exposedSurface(grid, box_m))
+    if (faceKindOf(element.normal) == FaceKind::Down) elements.push_back(element);
+  const environment::GridFrame& frame = grid.frame();
+  std::unordered_map<std::size_t, std::size_t> element_of_voxel;  // one element per voxel is enough to join
+  DisjointSets sets(elements.size());
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const Index3& v = elements[e].voxel;
+    const auto [it, inserted] = element_of_voxel.emplace(frame.linear(v[0], v[1], v[2]), e);
+    if (!inserted) sets.join(e, it->second);
+  }
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const Index3& v = elements[e].voxel;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int dk = -1; dk <= 1; ++dk) {
+          if (!frame.inside(v[0] + di, v[1] + dj, v[2] + dk)) continue;
+          const auto neighbour = element_of_voxel.find(frame.linear(v[0] + di, v[1] + dj, v[2] + dk));
+          if (neighbour != element_of_voxel.end()) sets.join(e, neighbour->second);
+        }
+  }
+  std::unordered_map<std::size_t, std::size_t> region_of_root;
+  std::vector<ProposedRegion> regions;
+  const Eigen::Vector3d half_voxel = Eigen::Vector3d::Constant(frame.resolution_m() / 2.0);
+  *overhead_area_m2 = 0.0;
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto [it, inserted] = region_of_root.emplace(sets.root(e), regions.size());
+    if (inserted) regions.emplace_back();
+    ProposedRegion& region = regions[it->second];
+    region.box_m.extend(elements[e].centre_m - half_voxel);
+    region.box_m.extend(elements[e].centre_m + half_voxel);
+    region.area_m2 += elements[e].area_m2;
+    ++region.elements;
+    *overhead_area_m2 += elements[e].area_m2;
+  }
+  // Largest first; ties by place, so that the order does not depend on the hash map's.
+  std::sort(regions.begin(), regions.end(), [](const ProposedRegion& a, const ProposedRegion& b) {
+    if (a.area_m2 != b.area_m2) return a.area_m2 > b.area_m2;
+    return std::lexicographical_compare(a.box_m.min().data(), a.box_m.min().data() + 3, b.box_m.min().data(),
+                                        b.box_m.min().data() + 3);
+  });
+  return regions;
+}
+
+// Whether the body at `body_m` is a valid state that relies on no assumption about unknown space.
+bool validInKnownFreeSpace(const environment::Environment& environment, const Eigen::Vector3d& body_m) {
+  return environment.contains(body_m) && environment.isStateValid(body_m) && !environment.assumesFree(body_m);
+}
+
+// The top of the lowest floor under (i, j): the first free voxel above an occupied one.
+std::optional<int> lowestFloor(const environment::VoxelGrid& grid, int i, int j) {
+  const int layers = grid.frame().size()[2];
+  for (int k = 1; k < layers; ++k)
+    if (grid.at(i, j, k) == CellState::Free && grid.at(i, j, k - 1) == CellState::Occupied) return k;
+  return std::nullopt;
+}
+
+// How far `body_m` lies above the nearest occupied voxel below it; NaN when there is none.
+double heightAboveFloor(const environment::VoxelGrid& grid, const Eigen::Vector3d& body_m) {
+  const environment::GridFrame& frame = grid.frame();
+  const int i = frame.indexOf(0, body_m.x()), j = frame.indexOf(1, body_m.y());
+  for (int k = frame.indexOf(2, body_m.z()); k >= 0; --k)
+    if (grid.at(i, j, k) == CellState::Occupied) return body_m.z() - frame.faceOf(2, k + 1);
+  return std::nan("");
+}
+
+struct HomeCandidate {
+  Eigen::Vector3d body_m;
+  double height_m;
+};
+
+// Low above a floor, in known free space, as close (horizontally) to `towards_m` as there is.
+std::optional<HomeCandidate> proposeHome(const environment::Environment& environment, const ProposalOptions& options,
+                                         const Eigen::Vector2d& towards_m, const ProgressCallback& progress) {
+  const environment::VoxelGrid& grid = environment.grid();
+  const environment::GridFrame& frame = grid.frame();
+  const double resolution_m = frame.resolution_m();
+  const int stride = std::max(1, static_cast<int>(std::lround(kHomeColumnSpacing_m / resolution_m)));
+  std::optional<HomeCandidate> best;
+  double best_distance_m = std::numeric_limits<double>::infinity();
+  const Index3& size = frame.size();
+  for (int i = 0; i < size[0]; i += stride) {
+    if (progress) progress("proposing a home", static_cast<double>(i) / size[0]);
+    for (int j = 0; j < size[1]; j += stride) {
+      const Eigen::Vector2d column(frame.centreOf(0, i), frame.centreOf(1, j));
+      const double distance_m = (column - towards_m).norm();
+      if (distance_m >= best_distance_m) continue;
+      if (options.crop_m && (column.x() < options.crop_m->min().x() || column.x() > options.crop_m->max().x() ||
+                             column.y() < options.crop_m->min().y() || column.y() > options.crop_m->max().y()))
+        continue;
+      const std::optional<int> floor = lowestFloor(grid, i, j);
+      if (!floor) continue;
+      const double floor_m = frame.faceOf(2, *floor);
+      for (double height_m = options.min_home_height_m; height_m <= options.max_home_height_m + 1e-9;
+           height_m += resolution_m) {
+        const Eigen::Vector3d body(column.x(), column.y(), floor_m + height_m);
+        const Eigen::Vector3d above = body + Eigen::Vector3d(0.0, 0.0, kHomeClimbRoom_m);
+        if (!validInKnownFreeSpace(environment, body) || !validInKnownFreeSpace(environment, above) ||
+            !environment.isMotionValid(body, above))
+          continue;
+        best = HomeCandidate{body, height_m};
+        best_distance_m = distance_m;
+        break;
+      }
+    }
+  }
+  if (progress) progress("proposing a home", 1.0);
+  return best;
+}
+
+}  // namespace
+
+void ProposalOptions::validate() const {
+  if (crop_m) environment::validateCrop(*crop_m);
+  if (home_m && !home_m->allFinite()) throw ceilplan::InputError("home: give three finite coordinates");
+  if (!(std::isfinite(min_region_area_m2) && min_region_area_m2 >= 0.0))
+    throw ceilplan::InputError("min_region_area_m2 " + formatNumber(min_region_area_m2) + ": a finite area >= 0");
+  if (max_regions < 1 || max_regions > 100)
+    throw ceilplan::InputError("max_regions " + std::to_string(max_regions) + ": use 1 to 100");
+  for (const double height_m : {min_home_height_m, max_home_height_m})
+    if (!(height_m > 0.0 && height_m <= 100.0))
+      throw ceilplan::InputError("home height " + formatNumber(height_m) + " m: use more than 0 and at most 100 m");
+  if (min_home_height_m > max_home_height_m)
+    throw ceilplan::InputError("home heights: the least (" + formatNumber(min_home_height_m) +
+                               " m) is above the greatest (" + formatNumber(max_home_height_m) + " m)");
+}
+
+MissionProposal proposeMission(const environment::Environment& environment, const ProposalOptions& options,
+                               const ProgressCallback& progress) {
+  options.validate();
+  const environment::VoxelGrid& grid = environment.grid();
+  if (options.home_m) {
+    if (!environment.contains(*options.home_m))
+      throw ceilplan::InputError("the given home " + formatPoint(*options.home_m) + " lies outside the map " +
+                                 formatPoint(grid.frame().bounds().min()) + " to " +
+                                 formatPoint(grid.frame().bounds().max()));
+    if (const auto violation = environment.stateViolation(*options.home_m))
+      throw ceilplan::InputError("the given home " + formatPoint(*options.home_m) +
+                                 " is no valid position: " + violation->describe());
+    if (environment.assumesFree(*options.home_m))
+      throw ceilplan::InputError("the given home " + formatPoint(*options.home_m) +
+                                 " overlaps unknown space: take off where the scan saw free space");
+  }
+  const Eigen::AlignedBox3d box_m = options.crop_m ? *options.crop_m : grid.frame().bounds();
+  if (progress) progress("finding overhead surfaces", 0.0);
+  MissionProposal proposal;
+  std::vector<environment::SurfaceElement> elements;
+  std::vector<ProposedRegion> regions = overheadRegions(grid, box_m, &proposal.overhead_area_m2, elements);
+  if (progress) progress("finding overhead surfaces", 1.0);
+  const std::string where = options.crop_m ? " inside the crop " + formatPoint(box_m.min()) + " to " +
+                                                 formatPoint(box_m.max())
+                                           : std::string(" in the map");
+  if (regions.empty())
+    throw ceilplan::InputError("no down-facing surface with known free space below it" + where +
+                               ": a scan without sensor origins may have no known free space (docs/import.md)");
+  for (ProposedRegion& region : regions) {
+    if (region.area_m2 >= options.min_region_area_m2 &&
+        proposal.regions.size() < static_cast<std::size_t>(options.max_regions)) {
+      region.name = "overhead_" + std::to_string(proposal.regions.size() + 1);
+      proposal.regions.push_back(region);
+    } else {
+      ++proposal.dropped_regions;
+      proposal.dropped_area_m2 += region.area_m2;
+    }
+  }
+  for (ProposedRegion& region : proposal.regions)
+    for (const environment::SurfaceElement& element : elements)
+      if (region.box_m.contains(element.centre_m)) region.box_area_m2 += element.area_m2;
+  if (proposal.regions.empty())
+    throw ceilplan::InputError("no overhead region of at least " + formatNumber(options.min_region_area_m2) + " m2" +
+                               where + " (the largest has " + formatNumber(regions.front().area_m2, 3) +
+                               " m2): lower the least region area");
+
+  if (options.home_m) {
+    proposal.home_m = *options.home_m;
+    proposal.home_given = true;
+    proposal.home_height_m = heightAboveFloor(grid, *options.home_m);
+    return proposal;
+  }
+  Eigen::Vector2d centroid_m = Eigen::Vector2d::Zero();
+  double area_m2 = 0.0;
+  for (const ProposedRegion& region : proposal.regions) {
+    centroid_m += region.area_m2 * region.box_m.center().head<2>();
+    area_m2 += region.area_m2;
+  }
+  centroid_m /= area_m2;
+  const std::optional<HomeCandidate> home = proposeHome(environment, options, centroid_m, progress);
+  if (!home)
+    throw ceilplan::InputError("no valid home in known free space " + formatNumber(options.min_home_height_m) + " to " +
+                               formatNumber(options.max_home_height_m) + " m above a floor" + where +
+                               ": give one (--home X,Y,Z)");
+  proposal.home_m = home->body_m;
+  proposal.home_height_m = home->height_m;
+  return proposal;
+}
+
+}  // namespace ceilplan::mission
