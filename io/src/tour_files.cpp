@@ -86,6 +86,18 @@ Provenance tourProvenance(Provenance provenance, const mission::Mission& mission
   return provenance;
 }
 
+std::vector<std::string> geodeticExportsSkipped(const mission::Mission& mission) {
+  if (mission.origin) return {};
+  return {"mission.plan", "mission.waypoints", "mission.kmz", "routes.kml", "routes.geojson"};
+}
+
+std::string geodeticExportsSkippedLine(const mission::Mission& mission) {
+  std::string files;
+  for (const std::string& file : geodeticExportsSkipped(mission)) files += (files.empty() ? "" : ", ") + file;
+  return "geodetic exports skipped (" + files + "): " + mission.name() +
+         " has no 'origin:' ({lat, lon, alt} of the map frame); every local-frame output was written";
+}
+
 std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission) {
   if (!mission.origin) return "no geodetic origin";
   const DjiWpmlOptions options = djiWpmlOptions(mission.dji);
@@ -113,6 +125,7 @@ std::vector<DjiClamp> djiClamps(const mission::TourResult& tour, const mission::
 }
 
 std::string exportNotes(const mission::TourResult& tour, const mission::Mission& mission) {
+  if (!mission.origin) return "";  // tourFilesLine names every geodetic export skipped, once
   if (const std::optional<std::string> dji = djiExportProblem(tour, mission)) return "  DJI KMZ not written: " + *dji + "\n";
   const std::vector<DjiClamp> clamps = djiClamps(tour, mission);
   if (clamps.empty()) return "";
@@ -164,6 +177,9 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   json["stops_rechosen"] = tour.stops_rechosen;
   const std::optional<std::string> dji = djiExportProblem(tour, mission);
   json["dji_kmz"] = dji ? "not written: " + *dji : "written";
+  if (!mission.origin)
+    json["geodetic_exports_skipped"] = {{"files", geodeticExportsSkipped(mission)},
+                                        {"reason", "the mission has no 'origin:' ({lat, lon, alt} of the map frame)"}};
   if (!dji) {
     nlohmann::json clamps = nlohmann::json::array();
     for (const DjiClamp& c : djiClamps(tour, mission))
@@ -296,7 +312,7 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
   writeReportHtml(dir / "report.html",
                   tourReport({&tour}, mission, environment,
                              mission.name() + ": " + mission::flightModeName(tour.mode) + " mode"));
-  if (!autopilot) return;
+  if (!autopilot || !mission.origin) return;  // the local frame's outputs need no origin, the rest are skipped
   const std::vector<AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
   for (int k = 0; k < count; ++k) {
     writeQgcPlan(sortieFileName(dir / "mission.plan", k + 1, count), missions[k]);
@@ -433,7 +449,7 @@ std::string tourFilesLine(const std::filesystem::path& dir, const mission::Missi
     const std::filesystem::path at = tours.size() > 1 ? dir / mission::flightModeName(tour.mode) : dir;
     std::string files = "tour.json, path.csv, trajectory.csv, trajectory.json, report.html, map_top.csv, map_side.csv";
     if (!mission.surfaces.empty()) files += ", photos.csv, coverage.json, coverage_elements.csv";
-    if (autopilot) {
+    if (autopilot && mission.origin) {
       files += ", mission.plan, mission.waypoints";
       if (!djiExportProblem(tour, mission)) files += ", mission.kmz";
       files += ", routes.kml, routes.geojson";
@@ -443,7 +459,11 @@ std::string tourFilesLine(const std::filesystem::path& dir, const mission::Missi
   }
   if (tours.size() > 1)
     text += "wrote " + dir.string() + ": comparison.txt, comparison.json, report.html, map_top.csv, map_side.csv\n";
-  if (!autopilot) text += "no autopilot files (--no-export)\n";
+  if (!autopilot) {
+    text += "no autopilot files (--no-export)\n";
+  } else if (!mission.origin) {
+    text += geodeticExportsSkippedLine(mission) + "\n";
+  }
   return text + "figures: scripts/plot-tour " + dir.string() + "\n";
 }
 

@@ -22,6 +22,14 @@ namespace ceilplan::io {
 // mission, map and vehicle files and the seed.
 Provenance tourProvenance(Provenance provenance, const mission::Mission& mission, std::uint64_t seed);
 
+// The geodetic exports (the autopilot missions, the KMZ, KML and GeoJSON) a tour of `mission`
+// skips because the mission has no origin: none when it has one. The local-frame outputs are
+// always written.
+std::vector<std::string> geodeticExportsSkipped(const mission::Mission& mission);
+// The one line that names them and says why, e.g. "geodetic exports skipped (mission.plan, ...):
+// scan.yaml has no 'origin:' ...; every local-frame output was written".
+std::string geodeticExportsSkippedLine(const mission::Mission& mission);
+
 // Why the tour's DJI KMZ cannot be written for the mission's aircraft and payload (`dji:`; a
 // gimbal pitch beyond the payload's range, naming the sortie and waypoint), or none.
 std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission);
@@ -55,8 +63,10 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
 
 // DIR/tour.json, DIR/path.csv, DIR/map_top.csv, DIR/map_side.csv, DIR/trajectory.csv and
 // DIR/trajectory.json (per sortie when several: trajectory_sortie2.csv, ...), DIR/report.html
-// and, with `autopilot`, DIR/mission.plan, DIR/mission.waypoints and DIR/mission.kmz (DJI WPML)
-// per sortie, DIR/routes.kml and DIR/routes.geojson (docs/tours.md, docs/flying.md).
+// and, with `autopilot` and the mission's origin, DIR/mission.plan, DIR/mission.waypoints and
+// DIR/mission.kmz (DJI WPML) per sortie, DIR/routes.kml and DIR/routes.geojson (docs/tours.md,
+// docs/flying.md); without an origin those are skipped (geodeticExportsSkipped, tour.json
+// geodetic_exports_skipped).
 void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour, const mission::Mission& mission,
                         const environment::Environment& environment, std::optional<Autopilot> autopilot,
                         const Provenance& provenance);
@@ -74,7 +84,8 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
 // "both"), the leg planner, the seed and the model whose wear the sortie split minimises.
 std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options);
 // Its last lines: each directory written (DIR, or DIR/ceiling and DIR/free for both modes) with
-// the files in it (the DJI KMZ only where it was written), then the command that draws the figures.
+// the files in it (the DJI KMZ only where it was written), the geodetic exports skipped for want
+// of an origin (geodeticExportsSkippedLine), then the command that draws the figures.
 std::string tourFilesLine(const std::filesystem::path& dir, const mission::Mission& mission,
                           const std::vector<mission::TourResult>& tours, std::optional<Autopilot> autopilot);
 
