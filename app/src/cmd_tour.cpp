@@ -130,9 +130,10 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                       "free mode: the conventional distance from every structure, kept where it fits")
       ->capture_default_str()->check(nonNegativeFinite());
   command->add_option("--free-standoff-max-m", a->options.free_standoff_max_m,
-                      "free mode: farthest viewpoint from a target (a conventional planner inspects from where its "
-                      "standoff lets it, with a zoom lens)")
-      ->capture_default_str()->check(positiveFinite() & atMost(mission::InspectionTarget::kMaxStandoff_m));
+                      "free mode: a target whose standoff range keeps less than --standoff-m may be seen from up to "
+                      "this far (a zoom lens), reported as beyond its range (default: every viewpoint within its "
+                      "target's range)")
+      ->check(positiveFinite() & atMost(mission::InspectionTarget::kMaxStandoff_m));
   command->add_option("--autopilot", a->autopilot, "mission files for px4 or ardupilot")
       ->capture_default_str()->check(CLI::IsMember({"px4", "ardupilot"}));
   command->add_flag("--search-every-leg", [a](std::int64_t) { a->options.straight_when_clear = false; },

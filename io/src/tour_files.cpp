@@ -49,7 +49,37 @@ nlohmann::json dutyJson(const mission::DutyProjection& duty, const mission::Tour
   return json;
 }
 
-// Free mode: where the tour kept less than the standoff, by leg and viewpoint.
+// A target's standoff range, "0.3-1.5 m".
+std::string rangeText(const mission::InspectionTarget& target) {
+  return formatNumber(target.standoff_min_m) + "-" + formatNumber(target.standoff_max_m) + " m";
+}
+
+// Free mode: the point targets whose standoff range keeps less than the conventional standoff.
+std::vector<const mission::TourStop*> standoffLimitedStops(const mission::TourResult& tour) {
+  std::vector<const mission::TourStop*> stops;
+  for (const mission::TourStop& stop : tour.stops)
+    if (stop.standoff_limited) stops.push_back(&stop);
+  return stops;
+}
+
+// Where free mode saw a standoff-limited target from: "seen from 1.50 m, within its range
+// 0.3-1.5 m, with the airframe's bounding sphere 0.97 m from the nearest structure".
+std::string seenFromText(const mission::TourStop& stop) {
+  return "seen from " + formatFixed(stop.viewpoint.distance_m, 2) + " m, " +
+         (stop.beyond_standoff_range ? "beyond its range " + rangeText(stop.target) + " (--free-standoff-max-m)"
+                                     : "within its range " + rangeText(stop.target)) +
+         ", with " + standoffText(stop.viewpoint.standoff_m);
+}
+
+// Why free mode's viewpoint of a target keeps less than the conventional standoff, and where it
+// saw the target from instead.
+std::string standoffLimitReason(const mission::TourStop& stop, double standoff_m) {
+  return "no viewpoint within its standoff range keeps " + formatNumber(standoff_m) + " m from every structure; " +
+         seenFromText(stop);
+}
+
+// Free mode: where the tour kept less than the standoff, by leg and viewpoint, and the targets
+// whose standoff range did not allow it.
 nlohmann::json tourStandoffJson(const mission::TourResult& tour, const mission::TourStandoff& standoff) {
   nlohmann::json legs = nlohmann::json::array(), viewpoints = nlohmann::json::array();
   for (const mission::NarrowedLeg& leg : standoff.legs) {
@@ -62,13 +92,22 @@ nlohmann::json tourStandoffJson(const mission::TourResult& tour, const mission::
   }
   for (int k : standoff.narrowed_stops)
     viewpoints.push_back({{"target", tour.stops[k].target.name}, {"standoff_m", tour.stops[k].viewpoint.standoff_m}});
+  nlohmann::json limited = nlohmann::json::array();
+  for (const mission::TourStop* stop : standoffLimitedStops(tour))
+    limited.push_back({{"target", stop->target.name},
+                       {"standoff_range_m", {stop->target.standoff_min_m, stop->target.standoff_max_m}},
+                       {"distance_m", stop->viewpoint.distance_m},
+                       {"viewpoint_standoff_m", stop->viewpoint.standoff_m},
+                       {"beyond_standoff_range", stop->beyond_standoff_range},
+                       {"reason", standoffLimitReason(*stop, standoff.standoff_m)}});
   return {{"standoff_m", standoff.standoff_m},
           {"length_m", standoff.length_m},
           {"narrowed_m", standoff.narrowed_m},
           {"min_standoff_m", standoff.min_standoff_m},
           {"narrowest", waypointsJson({standoff.narrowest_m})[0]},
           {"narrowed", legs},
-          {"narrowed_viewpoints", viewpoints}};
+          {"narrowed_viewpoints", viewpoints},
+          {"limited_targets", limited}};
 }
 
 std::vector<Eigen::Vector3d> flownRoute(const mission::TourResult& tour) {
@@ -433,6 +472,24 @@ std::string standoffLine(const mission::TourResult& tour) {
   return line + " (tour.json: standoff)";
 }
 
+std::string standoffText(double standoff_m) {
+  if (standoff_m >= 0.0)
+    return "the airframe's bounding sphere " + formatFixed(standoff_m, 2) + " m from the nearest structure";
+  return "the airframe's bounding sphere " + formatFixed(-standoff_m, 2) +
+         " m into the nearest structure (the sphere overlaps it; the airframe itself keeps its clearance)";
+}
+
+std::optional<std::string> standoffLimitedLine(const mission::TourResult& tour) {
+  const std::vector<const mission::TourStop*> stops = standoffLimitedStops(tour);
+  if (stops.empty() || !tour.standoff) return std::nullopt;
+  std::string line = std::to_string(stops.size()) + " target(s) keep less than the " +
+                     formatNumber(tour.standoff->standoff_m) +
+                     " m standoff, as no viewpoint in their standoff range keeps it:";
+  for (const mission::TourStop* stop : stops) line += " '" + stop->target.name + "' " + seenFromText(*stop) + ";";
+  line.back() = ' ';
+  return line + "(tour.json: standoff.limited_targets)";
+}
+
 std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options) {
   std::string inspects = std::to_string(mission.targets.size()) + " targets";
   if (mission.isCoverage())
@@ -487,7 +544,10 @@ std::string tourSummary(const mission::TourResult& tour) {
   std::snprintf(line, sizeof line, ", FEC %.5f, lowest SOC %.1f %% (reserve %.0f %%)\n", tour.plan.fec,
                 100.0 * tour.plan.min_soc, 100.0 * tour.reserve_soc);
   out << line;
-  if (tour.standoff) out << "  " << standoffLine(tour) << '\n';
+  if (tour.standoff) {
+    out << "  " << standoffLine(tour) << '\n';
+    if (const std::optional<std::string> limited = standoffLimitedLine(tour)) out << "  " << *limited << '\n';
+  }
   for (const mission::SortieRoute& route : tour.routes) {
     out << "  sortie " << route.sortie << " takes off straight up to " << formatFixed(route.takeoffHeight_m(), 2)
         << " m above home";
