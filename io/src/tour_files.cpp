@@ -107,7 +107,8 @@ nlohmann::json tourStandoffJson(const mission::TourResult& tour, const mission::
           {"narrowest", waypointsJson({standoff.narrowest_m})[0]},
           {"narrowed", legs},
           {"narrowed_viewpoints", viewpoints},
-          {"limited_targets", limited}};
+          {"limited_targets", limited},
+          {"standoff_measures", kStandoffMeasures}};
 }
 
 std::vector<Eigen::Vector3d> flownRoute(const mission::TourResult& tour) {
@@ -248,6 +249,11 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
                        {"hover_power_w", stop.hover.propulsion_power_w}});
   }
   json["targets"] = targets;
+  json["target_figures"] = {
+      {"distance_m", "from the viewpoint (the body centre) to the target point"},
+      {"standoff_m", "the target's standoff range [min, max] from the mission: distance_m's bounds"},
+      {"ceiling_gap_m", "from the rotor plane up to the nearest surface above (null: none)"},
+      {"viewpoint_standoff_m", kStandoffMeasures}};
   if (tour.standoff) json["standoff"] = tourStandoffJson(tour, *tour.standoff);
   nlohmann::json sorties = nlohmann::json::array();
   for (std::size_t k = 0; k < tour.plan.sorties.size(); ++k) {
@@ -468,15 +474,8 @@ std::string standoffLine(const mission::TourResult& tour) {
   line += "; " + std::to_string(standoff.narrowed_stops.size()) + " of " + std::to_string(tour.stops.size()) +
           " viewpoints keep less";
   if (std::isfinite(standoff.min_standoff_m) && standoff.min_standoff_m < standoff.standoff_m)
-    line += "; closest " + formatFixed(standoff.min_standoff_m, 2) + " m at " + formatPoint(standoff.narrowest_m);
+    line += "; closest: " + standoffText(standoff.min_standoff_m) + " at " + formatPoint(standoff.narrowest_m);
   return line + " (tour.json: standoff)";
-}
-
-std::string standoffText(double standoff_m) {
-  if (standoff_m >= 0.0)
-    return "the airframe's bounding sphere " + formatFixed(standoff_m, 2) + " m from the nearest structure";
-  return "the airframe's bounding sphere " + formatFixed(-standoff_m, 2) +
-         " m into the nearest structure (the sphere overlaps it; the airframe itself keeps its clearance)";
 }
 
 std::optional<std::string> standoffLimitedLine(const mission::TourResult& tour) {

@@ -6,6 +6,7 @@
 // viewpoint leave the range, and each one that does is reported as beyond it.
 
 #include "ceilplan/io/mission_file.hpp"
+#include "ceilplan/io/plan_files.hpp"
 #include "ceilplan/io/provenance.hpp"
 #include "ceilplan/io/tour_files.hpp"
 #include "ceilplan/mission/planning_context.hpp"
@@ -85,6 +86,10 @@ TEST(FreeModeBounds, EveryViewpointLiesInItsTargetsStandoffRangeAndTargetsItCann
               0u)
         << target;
   }
+  // What the figures measure, beside them.
+  EXPECT_EQ(json["standoff"]["standoff_measures"], io::kStandoffMeasures);
+  EXPECT_EQ(json["target_figures"]["viewpoint_standoff_m"], io::kStandoffMeasures);
+  EXPECT_EQ(json["target_figures"]["distance_m"], "from the viewpoint (the body centre) to the target point");
   for (const nlohmann::json& target : json["targets"])
     EXPECT_LE(target["distance_m"].get<double>(), target["standoff_m"][1].get<double>() + 1e-9) << target["name"];
 }

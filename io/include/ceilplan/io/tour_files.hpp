@@ -94,13 +94,10 @@ std::string tourFilesLine(const std::filesystem::path& dir, const mission::Missi
 std::string tourSummary(const mission::TourResult& tour);
 // Free mode (tour.standoff set): where the tour kept less than the conventional standoff, e.g.
 // "standoff 1 m: kept over 20.3 of 55.1 m flown, narrowed over 34.8 m on 9 legs; 9 of 9
-// viewpoints keep less; closest 0.12 m at (8.50, 0.24, 1.52) (tour.json: standoff)".
+// viewpoints keep less; closest: the airframe's bounding sphere 0.12 m from the nearest
+// structure at (8.50, 0.24, 1.52) (tour.json: standoff)"; a negative closest approach is said as
+// the overlap it is (standoffText).
 std::string standoffLine(const mission::TourResult& tour);
-// A standoff figure (planner::standoffAt: the gap between the airframe's bounding sphere and the
-// nearest structure) in words, a negative one as the overlap it is: "the airframe's bounding
-// sphere 0.42 m from the nearest structure", "the airframe's bounding sphere 0.07 m into the
-// nearest structure (the sphere overlaps it; the airframe itself keeps its clearance)".
-std::string standoffText(double standoff_m);
 // Free mode: the point targets whose standoff range holds no viewpoint keeping the conventional
 // standoff and where each was seen from, e.g. "1 target(s) keep less than the 1 m standoff, as no
 // viewpoint in their standoff range keeps it: 'deck_bay_14_north' seen from 1.50 m, within its
