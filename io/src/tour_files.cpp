@@ -247,12 +247,17 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
                        {"viewpoint_standoff_m", v.standoff_m},
                        {"dwell_s", stop.target.dwell_s},
                        {"hover_power_w", stop.hover.propulsion_power_w}});
+    if (stop.given_point_m) {
+      targets.back()["given_point"] = waypointsJson({*stop.given_point_m})[0];
+      targets.back()["moved_onto_surface_m"] = (*stop.given_point_m - stop.target.point_m).norm();
+    }
   }
   json["targets"] = targets;
   json["target_figures"] = {
       {"distance_m", "from the viewpoint (the body centre) to the target point"},
       {"standoff_m", "the target's standoff range [min, max] from the mission: distance_m's bounds"},
       {"ceiling_gap_m", "from the rotor plane up to the nearest surface above (null: none)"},
+      {"moved_onto_surface_m", "from given_point, inside a structure, to point, on its surface (only where moved)"},
       {"viewpoint_standoff_m", kStandoffMeasures}};
   if (tour.standoff) json["standoff"] = tourStandoffJson(tour, *tour.standoff);
   nlohmann::json sorties = nlohmann::json::array();
@@ -478,6 +483,20 @@ std::string standoffLine(const mission::TourResult& tour) {
   return line + " (tour.json: standoff)";
 }
 
+std::optional<std::string> movedOntoSurfaceLine(const mission::TourResult& tour) {
+  std::string moved;
+  int count = 0;
+  for (const mission::TourStop& stop : tour.stops) {
+    if (!stop.given_point_m) continue;
+    moved += std::string(count++ ? "; '" : " '") + stop.target.name + "' by " +
+             formatFixed((*stop.given_point_m - stop.target.point_m).norm(), 2) + " m, from " +
+             formatPoint(*stop.given_point_m) + " to " + formatPoint(stop.target.point_m);
+  }
+  if (count == 0) return std::nullopt;
+  return std::to_string(count) + " target(s) given inside a structure moved onto its surface:" + moved +
+         " (tour.json: targets[].moved_onto_surface_m)";
+}
+
 std::optional<std::string> standoffLimitedLine(const mission::TourResult& tour) {
   const std::vector<const mission::TourStop*> stops = standoffLimitedStops(tour);
   if (stops.empty() || !tour.standoff) return std::nullopt;
@@ -543,6 +562,7 @@ std::string tourSummary(const mission::TourResult& tour) {
   std::snprintf(line, sizeof line, ", FEC %.5f, lowest SOC %.1f %% (reserve %.0f %%)\n", tour.plan.fec,
                 100.0 * tour.plan.min_soc, 100.0 * tour.reserve_soc);
   out << line;
+  if (const std::optional<std::string> moved = movedOntoSurfaceLine(tour)) out << "  " << *moved << '\n';
   if (tour.standoff) {
     out << "  " << standoffLine(tour) << '\n';
     if (const std::optional<std::string> limited = standoffLimitedLine(tour)) out << "  " << *limited << '\n';

@@ -51,6 +51,9 @@ class Stopwatch {
 // minimum gap, so the leg's end passes the dense re-check with its rounding.
 constexpr double kViewpointGapMarginM = 0.01;
 
+// A target point within this of a structure's surface is on it.
+constexpr double kSurfaceTolerance_m = 1e-3;
+
 // A leg an OMPL planner misses is searched again this many times longer, twice: BIT* finds
 // long legs round the bridge's girders in a few seconds, but not always in 0.5 s.
 constexpr double kRetryTimeFactors[] = {10.0, 40.0};
@@ -79,6 +82,15 @@ ViewpointOptions viewpointOptions(const PlanningContext& context, FlightMode mod
   return options;
 }
 
+// A point target given inside a structure moves onto its surface, and keeps where it was given;
+// within a millimetre it stays where it is.
+void moveOntoSurface(TourStop& stop, const environment::Environment& environment) {
+  const std::optional<Eigen::Vector3d> surface = surfacePoint(stop.target, environment);
+  if (!surface || (*surface - stop.target.point_m).norm() <= kSurfaceTolerance_m) return;
+  stop.given_point_m = stop.target.point_m;
+  stop.target.point_m = *surface;
+}
+
 // A viewpoint per target, searched on the tour's threads, within the target's standoff range. A
 // point target whose range keeps less than free mode's conventional standoff is marked, and seen
 // from farther only where the options allow a zoom lens; a contact probe has no zoom.
@@ -89,7 +101,9 @@ std::vector<TourStop> viewpointStops(const std::vector<InspectionTarget>& target
   for (std::size_t k = 0; k < point_targets; ++k) requireOnStructure(targets[k], context.environment());
   std::vector<TourStop> stops(targets.size());
   parallelFor(targets.size(), options.workers, [&](std::size_t k) {
-    TourStop stop{targets[k], {}, {}, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
+    TourStop stop;
+    stop.target = targets[k];
+    if (k < point_targets) moveOntoSurface(stop, context.environment());
     stop.viewpoint = chooseViewpoint(stop.target, context.environment(), context.energy(), viewpoint_options);
     stop.standoff_limited = mode == FlightMode::Free && k < point_targets &&
                             stop.viewpoint.standoff_m < viewpoint_options.standoff_m - planner::kStandoffTolerance_m;

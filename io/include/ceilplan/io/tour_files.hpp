@@ -98,6 +98,11 @@ std::string tourSummary(const mission::TourResult& tour);
 // structure at (8.50, 0.24, 1.52) (tour.json: standoff)"; a negative closest approach is said as
 // the overlap it is (standoffText).
 std::string standoffLine(const mission::TourResult& tour);
+// The point targets given inside a structure and moved onto its surface (TourStop::given_point_m),
+// each with how far and from where to where, e.g. "1 target(s) given inside a structure moved
+// onto its surface: 'deck' by 0.08 m, from (10.00, 0.00, 6.08) to (10.00, 0.00, 6.00) (tour.json:
+// targets[].moved_onto_surface_m)"; none when no target was moved.
+std::optional<std::string> movedOntoSurfaceLine(const mission::TourResult& tour);
 // Free mode: the point targets whose standoff range holds no viewpoint keeping the conventional
 // standoff and where each was seen from, e.g. "1 target(s) keep less than the 1 m standoff, as no
 // viewpoint in their standoff range keeps it: 'deck_bay_14_north' seen from 1.50 m, within its

@@ -90,6 +90,9 @@ struct TourStop {
   // free_standoff_max_m allows it and that keeps more (beyond_standoff_range).
   bool standoff_limited = false;
   bool beyond_standoff_range = false;
+  // A point target given inside a structure (its point in an occupied voxel, as a scanned point
+  // is), moved onto the structure's surface (mission::surfacePoint): where the mission put it.
+  std::optional<Eigen::Vector3d> given_point_m;
 };
 
 // Seconds spent per phase of planTour.
