@@ -521,6 +521,57 @@ PYBIND11_MODULE(ceilplan, m) {
       py::arg("mission"), py::arg("mode") = "ceiling",
       py::arg("seed") = py::none(), py::arg("planner") = "roadmap", py::arg("ageing_model") = "xu");
 
+  const io::MapImportOptions import_defaults;  // `ceilplan import`'s defaults too
+  m.def(
+      "import_map",
+      [](const std::filesystem::path& out, const std::optional<std::filesystem::path>& points,
+         const std::optional<std::filesystem::path>& mesh, const std::optional<std::filesystem::path>& origins,
+         double resolution_m, const std::string& crs, double max_range_m, std::optional<double> free_distance_m,
+         std::optional<double> margin_m, const std::string& interior, bool skip_non_finite,
+         const std::optional<std::vector<double>>& crop) {
+        io::MapImportOptions options;
+        options.points = points.value_or("");
+        options.mesh = mesh.value_or("");
+        options.origins = origins.value_or("");
+        options.resolution_m = resolution_m;
+        options.crs = crs;
+        options.max_range_m = max_range_m;
+        options.free_distance_m = free_distance_m;
+        options.margin_m = margin_m;
+        options.interior = interior;
+        options.skip_non_finite = skip_non_finite;
+        if (crop) {
+          if (crop->size() != 6) throw InputError("crop must be (xmin, ymin, zmin, xmax, ymax, zmax) in metres");
+          options.crop_m = Eigen::AlignedBox3d(Eigen::Vector3d((*crop)[0], (*crop)[1], (*crop)[2]),
+                                               Eigen::Vector3d((*crop)[3], (*crop)[4], (*crop)[5]));
+        }
+        options.validate();  // before the output is staged or a file read
+        if (out.extension() != ".bt") throw InputError(out.string() + ": an imported map is written as .bt");
+        std::filesystem::path summary = out;
+        summary += ".json";
+        // The rules of `ceilplan import --out`: never replaces an input; the map and its summary appear together.
+        io::OutputSet outputs({{"out", out}, {"out's summary", summary}},
+                              {{"points", options.points}, {"origins", options.origins}, {"mesh", options.mesh}});
+        const io::MapImport imported = [&] {
+          py::gil_scoped_release release;
+          return io::importMap(options);
+        }();
+        const io::Provenance provenance = io::Provenance::of("python: ceilplan.import_map('" + out.string() + "', ...)")
+                                              .input("points", options.points)
+                                              .input("origins", options.origins)
+                                              .input("mesh", options.mesh);
+        io::writeImportedMap(outputs.path("out"), imported, options, provenance, outputs.path("out's summary"));
+        outputs.commit();
+        return pythonJson(io::withProvenance(io::mapImportJson(imported, options, out), provenance));
+      },
+      "Builds an OctoMap (.bt) from a point cloud or a mesh as `ceilplan import` does and writes it with its summary "
+      "(<out>.json); returns the summary: free_space says what was assumed and what it means for planning",
+      py::arg("out"), py::kw_only(), py::arg("points") = py::none(), py::arg("mesh") = py::none(),
+      py::arg("origins") = py::none(), py::arg("resolution_m") = import_defaults.resolution_m, py::arg("crs") = "",
+      py::arg("max_range_m") = import_defaults.max_range_m, py::arg("free_distance_m") = py::none(),
+      py::arg("margin_m") = py::none(), py::arg("interior") = import_defaults.interior,
+      py::arg("skip_non_finite") = false, py::arg("crop") = py::none());
+
   const battery::DutyStudyOptions paper;  // the defaults of the study and of `ceilplan duty`
   m.def(
       "duty",

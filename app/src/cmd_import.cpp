@@ -10,6 +10,7 @@
 #include "ceilplan/io/map_import.hpp"
 #include "ceilplan/io/mesh_file.hpp"
 #include "ceilplan/io/point_cloud_file.hpp"
+#include "ceilplan/io/point_text.hpp"
 #include "ceilplan/io/report_text.hpp"
 
 #include <cmath>
@@ -22,7 +23,7 @@ namespace {
 
 struct ImportArguments {
   io::MapImportOptions options;
-  std::string points, origins, mesh, out;
+  std::string points, origins, mesh, out, crop;
 };
 
 void runImport(const ImportArguments& args) {
@@ -45,6 +46,13 @@ void runImport(const ImportArguments& args) {
   if (!std::isfinite(options.max_range_m) || options.max_range_m < 0.0)
     throw ceilplan::InputError("--max-range " + formatNumber(options.max_range_m) +
                                ": a finite number of metres >= 0 (0: none)");
+  if (!args.crop.empty()) {
+    try {
+      options.crop_m = io::parseBox(args.crop);
+    } catch (const ceilplan::InputError& e) {
+      throw ceilplan::InputError(std::string("--crop ") + e.what());
+    }
+  }
 
   io::MapImport imported = [&] {
     const ProgressCallback progress = terminalProgress();  // cleared when the import ends
@@ -77,7 +85,9 @@ const CommandRegistration registration(19, [](CLI::App& parent) {
   command->add_option("--crs", args->options.crs,
                       "EPSG code of the data's projected CRS (e.g. EPSG:25832): moves them into a local east-north-up frame "
                       "and prints the geodetic origin for the mission file");
-  command->add_option("--max-range", args->options.max_range_m, "With --origins: longest ray carved, in metres (0: no limit)")
+  command->add_option("--max-range", args->options.max_range_m,
+                      "With --origins: returns farther than this from their origin are dropped, their rays carve up to "
+                      "it, in metres (0: no limit)")
       ->capture_default_str()
       ->needs(origins);
   command->add_option("--free-distance", args->options.free_distance_m,
@@ -86,8 +96,12 @@ const CommandRegistration registration(19, [](CLI::App& parent) {
       ->excludes(origins);
   command->add_option("--margin", args->options.margin_m,
                       "Known space beyond the data's bounding box, in metres (default: 1 for a mesh, 0 for a point cloud)");
+  command->add_option("--crop", args->crop,
+                      "XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX: a box in map coordinates (after --crs); data outside it are "
+                      "dropped before voxelising and the map goes no farther");
   command->add_option("--interior", args->options.interior,
-                      "Mesh: what the surface encloses: auto (solid, or free inside a closed inward-facing mesh), solid or hollow")
+                      "Mesh: what the surface encloses: auto (an open mesh is a thin shell, a closed one solid, or "
+                      "hollow when it faces inward), solid, hollow or shell")
       ->capture_default_str();
   command->add_flag("--skip-non-finite", args->options.skip_non_finite, "Drop points with NaN or infinite coordinates instead of refusing them");
   command->callback([args] { runImport(*args); });

@@ -31,14 +31,17 @@ void requireFinitePoints(const std::vector<Eigen::Vector3d>& points_m, const cha
                                  formatPoint(points_m[i]));
 }
 
-GridFrame importFrame(const Eigen::AlignedBox3d& box_m, double margin_m, double resolution_m) {
+GridFrame importFrame(const Eigen::AlignedBox3d& data_m, double margin_m, double resolution_m, const CropBox& crop_m,
+                      const char* what) {
   if (!(margin_m >= 0.0) || !std::isfinite(margin_m))
     throw ceilplan::InputError("margin " + formatNumber(margin_m) + " m must be a finite number >= 0");
+  const Eigen::AlignedBox3d box_m =
+      croppedBox(Eigen::AlignedBox3d(data_m.min().array() - margin_m, data_m.max().array() + margin_m), crop_m, what);
   constexpr double kKeyHalfRange = 32768.0;  // OctoMap keys are 16 bits, centred on coordinate 0
   Index3 origin, size;
   for (int axis = 0; axis < 3; ++axis) {
-    const double lo = std::floor((box_m.min()[axis] - margin_m) / resolution_m);
-    const double hi = std::floor((box_m.max()[axis] + margin_m) / resolution_m) + 1.0;
+    const double lo = std::floor(box_m.min()[axis] / resolution_m);
+    const double hi = std::floor(box_m.max()[axis] / resolution_m) + 1.0;
     if (lo < -kKeyHalfRange || hi > kKeyHalfRange)
       throw ceilplan::InputError("the data reach " + formatNumber(std::max(std::abs(box_m.min()[axis]), std::abs(box_m.max()[axis]))) +
                                  " m from the origin on the " + std::string(1, "xyz"[axis]) + " axis, beyond what OctoMap holds at " +
@@ -48,6 +51,21 @@ GridFrame importFrame(const Eigen::AlignedBox3d& box_m, double margin_m, double 
     size[axis] = static_cast<int>(hi - lo);
   }
   return GridFrame(resolution_m, origin, size);  // refuses a box of more than VoxelGrid::kMaxVoxels
+}
+
+Eigen::AlignedBox3d croppedBox(const Eigen::AlignedBox3d& box_m, const CropBox& crop_m, const char* what) {
+  if (crop_m.isEmpty()) return box_m;
+  const Eigen::AlignedBox3d box = box_m.intersection(crop_m);
+  if (box.isEmpty())
+    throw ceilplan::InputError(std::string("no ") + what + " lies in the crop box " + formatPoint(crop_m.min()) +
+                               " to " + formatPoint(crop_m.max()) + " (uncropped, the map would span " +
+                               formatPoint(box_m.min()) + " to " + formatPoint(box_m.max()) + ")");
+  return box;
+}
+
+std::string cropText(const CropBox& crop_m) {
+  return crop_m.isEmpty() ? std::string()
+                          : " (cropped to " + formatPoint(crop_m.min()) + " to " + formatPoint(crop_m.max()) + ")";
 }
 
 void addVolumeFigures(BuiltMap& built) {
@@ -75,9 +93,43 @@ void requirePoints(const std::vector<Eigen::Vector3d>& points_m) {
   detail::requireFinitePoints(points_m, "point");
 }
 
+// Shortens the segment start -> stop to its part inside `box` (Liang-Barsky); false when none
+// is. `cut` tells whether the end was moved.
+bool clipToBox(Eigen::Vector3d& start, Eigen::Vector3d& stop, const Eigen::AlignedBox3d& box, bool& cut) {
+  const Eigen::Vector3d direction = stop - start;
+  double enter = 0.0, leave = 1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (direction[axis] == 0.0) {
+      if (start[axis] < box.min()[axis] || start[axis] > box.max()[axis]) return false;
+      continue;
+    }
+    double a = (box.min()[axis] - start[axis]) / direction[axis], b = (box.max()[axis] - start[axis]) / direction[axis];
+    if (a > b) std::swap(a, b);
+    enter = std::max(enter, a);
+    leave = std::min(leave, b);
+    if (enter > leave) return false;
+  }
+  cut = leave < 1.0;
+  stop = start + direction * leave;
+  start += direction * enter;
+  return true;
+}
+
 int workerCount() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
 
 }  // namespace
+
+void validateCrop(const CropBox& crop_m) {
+  if (crop_m.min() == CropBox().min() && crop_m.max() == CropBox().max()) return;  // the default: no crop
+  if (!crop_m.min().allFinite() || !crop_m.max().allFinite())
+    throw ceilplan::InputError("a crop box needs finite corners, not " + formatPoint(crop_m.min()) + " to " +
+                               formatPoint(crop_m.max()));
+  for (int axis = 0; axis < 3; ++axis)
+    if (!(crop_m.min()[axis] < crop_m.max()[axis]))
+      throw ceilplan::InputError("a crop box's " + std::string(1, "xyz"[axis]) + " minimum (" +
+                                 formatNumber(crop_m.min()[axis]) + ") must be below its maximum (" +
+                                 formatNumber(crop_m.max()[axis]) + ")");
+}
 
 void SensorOrigins::validate(std::size_t point_count) const {
   if (first_point.size() != origin_m.size())
@@ -141,10 +193,41 @@ BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const Sens
   origins.validate(points_m.size());
   if (!std::isfinite(options.max_range_m))
     throw ceilplan::InputError("max range must be a finite number of metres (0 for none)");
-  Eigen::AlignedBox3d box = boundsOf(points_m);
-  for (const Eigen::Vector3d& origin : origins.origin_m) box.extend(origin);
-  const GridFrame frame = detail::importFrame(box, 0.0, resolution);  // refused here, before anything is allocated
+  validateCrop(options.crop_m);
   const double max_range = options.max_range_m > 0.0 ? options.max_range_m : std::numeric_limits<double>::infinity();
+  const CropBox& crop = options.crop_m;
+  const std::size_t scans = origins.origin_m.size();
+  const auto scanOf = [&](std::size_t point) {
+    return static_cast<std::size_t>(std::upper_bound(origins.first_point.begin(), origins.first_point.end(), point) -
+                                    origins.first_point.begin()) - 1;
+  };
+  const auto inRange = [&](std::size_t i, std::size_t scan) {
+    return (points_m[i] - origins.origin_m[scan]).norm() <= max_range;
+  };
+  const auto kept = [&](std::size_t i, std::size_t scan) {
+    return inRange(i, scan) && (crop.isEmpty() || crop.contains(points_m[i]));
+  };
+
+  // The box holds the returns kept and the origins, inside the crop: far returns do not grow it.
+  Eigen::AlignedBox3d box;
+  std::size_t within_range = 0, returns = 0;
+  for (std::size_t i = 0, scan = 0; i < points_m.size(); ++i) {
+    while (scan + 1 < scans && origins.first_point[scan + 1] <= i) ++scan;
+    within_range += inRange(i, scan);
+    if (kept(i, scan)) {
+      box.extend(points_m[i]);
+      ++returns;
+    }
+  }
+  if (returns == 0)
+    throw ceilplan::InputError("no return lies within " +
+                               (std::isfinite(max_range) ? formatNumber(max_range) + " m of its origin"
+                                                         : std::string()) +
+                               (std::isfinite(max_range) && !crop.isEmpty() ? " and " : "") +
+                               (crop.isEmpty() ? std::string() : "the crop box" + detail::cropText(crop)));
+  for (const Eigen::Vector3d& origin : origins.origin_m) box.extend(origin);
+  // Refused here, before anything is allocated.
+  const GridFrame frame = detail::importFrame(box, 0.0, resolution, crop, "return");
 
   // Rays are traced with OctoMap's own voxel traversal (computeRayKeys, the one insertPointCloud
   // uses) on both cores into a dense grid; insertPointCloud itself hashes every crossed voxel on
@@ -153,19 +236,21 @@ BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const Sens
   const std::size_t voxels = frame.voxelCount();
   const std::unique_ptr<std::atomic<std::uint8_t>[]> crossed(new std::atomic<std::uint8_t>[voxels]());
   const octomap::OcTree keys(resolution);  // only its key arithmetic is used, read-only from every thread
-  const auto linear = [&](const octomap::OcTreeKey& key) {
+  // Rays leave the box (to far or cropped returns, from origins outside the crop): only the
+  // voxels inside it are marked.
+  const auto mark = [&](const octomap::OcTreeKey& key) {
     constexpr int kKeyOffset = 32768;  // OctoMap key of global voxel index 0
-    return frame.linear(int(key[0]) - kKeyOffset - frame.origin()[0], int(key[1]) - kKeyOffset - frame.origin()[1],
-                        int(key[2]) - kKeyOffset - frame.origin()[2]);
+    const int i = int(key[0]) - kKeyOffset - frame.origin()[0], j = int(key[1]) - kKeyOffset - frame.origin()[1],
+              k = int(key[2]) - kKeyOffset - frame.origin()[2];
+    if (frame.inside(i, j, k)) crossed[frame.linear(i, j, k)].store(1, std::memory_order_relaxed);
   };
-  const std::size_t scans = origins.origin_m.size();
-  const auto scanOf = [&](std::size_t point) {
-    return static_cast<std::size_t>(std::upper_bound(origins.first_point.begin(), origins.first_point.end(), point) -
-                                    origins.first_point.begin()) - 1;
-  };
+  Eigen::AlignedBox3d frame_box_m;
+  for (int axis = 0; axis < 3; ++axis) {
+    frame_box_m.min()[axis] = frame.faceOf(axis, 0);
+    frame_box_m.max()[axis] = frame.faceOf(axis, frame.size()[axis]);
+  }
   constexpr std::size_t kPointsPerTask = 16384;
   const std::size_t tasks = (points_m.size() + kPointsPerTask - 1) / kPointsPerTask;
-  std::vector<std::size_t> returns_per_task(tasks, 0);
   parallelFor(
       tasks, workerCount(),
       [&](std::size_t task) {
@@ -177,16 +262,17 @@ BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const Sens
           while (scan + 1 < scans && origins.first_point[scan + 1] <= i) ++scan;
           const Eigen::Vector3d& origin = origins.origin_m[scan];
           const double length = (points_m[i] - origin).norm();
-          const bool returned = length <= max_range;
-          const Eigen::Vector3d stop = returned ? points_m[i] : Eigen::Vector3d(origin + (points_m[i] - origin) * (max_range / length));
-          if (!keys.computeRayKeys(octomap::point3d(float(origin.x()), float(origin.y()), float(origin.z())),
+          const bool truncated = length > max_range;
+          Eigen::Vector3d start = origin;
+          Eigen::Vector3d stop =
+              truncated ? Eigen::Vector3d(origin + (points_m[i] - origin) * (max_range / length)) : points_m[i];
+          bool cut = false;  // the ray leaves the box before its end
+          if (!clipToBox(start, stop, frame_box_m, cut)) continue;
+          if (!keys.computeRayKeys(octomap::point3d(float(start.x()), float(start.y()), float(start.z())),
                                    octomap::point3d(float(stop.x()), float(stop.y()), float(stop.z())), ray))
             continue;
-          for (const octomap::OcTreeKey& key : ray) crossed[linear(key)].store(1, std::memory_order_relaxed);
-          if (returned)
-            ++returns_per_task[task];
-          else
-            crossed[linear(keys.coordToKey(stop.x(), stop.y(), stop.z()))].store(1, std::memory_order_relaxed);
+          for (const octomap::OcTreeKey& key : ray) mark(key);
+          if (truncated || cut) mark(keys.coordToKey(stop.x(), stop.y(), stop.z()));
         }
       },
       progress ? std::function<void(double)>([&](double f) { progress(0.7 * f); }) : std::function<void(double)>());
@@ -198,25 +284,29 @@ BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const Sens
       grid.set(i[0], i[1], i[2], CellState::Free);
     }
   // A return marks its voxel occupied whatever other rays crossed it: rays grazing a thin wall
-  // from other positions would otherwise wear it away.
-  std::size_t scan = 0;
-  for (std::size_t i = 0; i < points_m.size(); ++i) {
+  // from other positions would otherwise wear it away. A return just outside the crop but in a
+  // voxel of the map counts too: that voxel is not free.
+  for (std::size_t i = 0, scan = 0; i < points_m.size(); ++i) {
     while (scan + 1 < scans && origins.first_point[scan + 1] <= i) ++scan;
-    if ((points_m[i] - origins.origin_m[scan]).norm() > max_range) continue;
-    grid.set(frame.indexOf(0, points_m[i].x()), frame.indexOf(1, points_m[i].y()), frame.indexOf(2, points_m[i].z()),
-             CellState::Occupied);
+    const Index3 v = {frame.indexOf(0, points_m[i].x()), frame.indexOf(1, points_m[i].y()),
+                      frame.indexOf(2, points_m[i].z())};
+    if (inRange(i, scan) && frame.inside(v[0], v[1], v[2])) grid.set(v[0], v[1], v[2], CellState::Occupied);
   }
   if (progress) progress(0.8);
 
   BuiltMap built;
   built.tree = toOcTree(grid);
   if (progress) progress(1.0);
-  std::size_t returns = 0;
-  for (std::size_t count : returns_per_task) returns += count;
   built.free_space = "carved by ray casting from " + std::to_string(scans) + " sensor origin" + (scans == 1 ? "" : "s") +
                      " (max range " + (std::isfinite(max_range) ? formatNumber(max_range) + " m" : std::string("none")) +
-                     "): space a ray crossed is free, a voxel holding a return is occupied, the rest is unknown";
-  built.figures = {{"points", double(points_m.size())}, {"scans", double(scans)}, {"returns_within_range", double(returns)}};
+                     ")" + detail::cropText(crop) + " along " + std::to_string(points_m.size()) + " ray" +
+                     (points_m.size() == 1 ? "" : "s") +
+                     ": space a ray crossed is free, a voxel holding a return is occupied, space no ray crossed is "
+                     "unknown: an obstacle for planning unless --unknown free or fill";
+  built.figures = {{"points", double(points_m.size())},
+                   {"scans", double(scans)},
+                   {"returns_within_range", double(within_range)}};
+  if (!crop.isEmpty()) built.figures.emplace_back("returns_in_crop", double(returns));
   detail::addVolumeFigures(built);
   return built;
 }
@@ -228,11 +318,24 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
   requirePoints(points_m);
   if (!(options.free_distance_m >= 0.0) || !std::isfinite(options.free_distance_m))
     throw ceilplan::InputError("free distance " + formatNumber(options.free_distance_m) + " m must be a finite number >= 0");
-  const GridFrame frame = detail::importFrame(boundsOf(points_m), options.margin_m, resolution);
-
-  VoxelGrid grid(frame);
+  validateCrop(options.crop_m);
+  const CropBox& crop = options.crop_m;
+  Eigen::AlignedBox3d box;
+  std::size_t in_crop = 0;
   for (const Eigen::Vector3d& point : points_m)
-    grid.set(frame.indexOf(0, point.x()), frame.indexOf(1, point.y()), frame.indexOf(2, point.z()), CellState::Occupied);
+    if (crop.isEmpty() || crop.contains(point)) {
+      box.extend(point);
+      ++in_crop;
+    }
+  if (in_crop == 0) detail::croppedBox(boundsOf(points_m), crop, "point");  // says where the points are
+  const GridFrame frame = detail::importFrame(box, options.margin_m, resolution, crop, "point");
+
+  // A point just outside the crop, in a voxel of the map, still makes that voxel occupied.
+  VoxelGrid grid(frame);
+  for (const Eigen::Vector3d& point : points_m) {
+    const Index3 v = {frame.indexOf(0, point.x()), frame.indexOf(1, point.y()), frame.indexOf(2, point.z())};
+    if (frame.inside(v[0], v[1], v[2])) grid.set(v[0], v[1], v[2], CellState::Occupied);
+  }
   if (progress) progress(0.1);
   const DistanceField distance(grid, /*unknown_is_blocked=*/false);
   if (progress) progress(0.4);
@@ -254,11 +357,20 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
   BuiltMap built;
   built.tree = toOcTree(grid);
   if (progress) progress(1.0);
-  built.free_space = "assumed, no sensor origins: voxels holding a point are occupied; every other voxel of the points' bounding box" +
-                     (options.margin_m > 0.0 ? " grown by " + formatNumber(options.margin_m) + " m" : std::string()) +
-                     " whose centre lies farther than " + formatNumber(free_distance) +
-                     " m from them is free; the rest is unknown";
+  const std::string box_text =
+      "the points' bounding box" +
+      (options.margin_m > 0.0 ? " grown by " + formatNumber(options.margin_m) + " m" : std::string()) +
+      detail::cropText(crop);
+  built.free_space =
+      "assumed, no sensor origins: voxels holding a point are occupied; " +
+      (free_distance > 0.0
+           ? "every other voxel of " + box_text + " whose centre lies farther than " + formatNumber(free_distance) +
+                 " m from them is free; the rest is unknown: an obstacle for planning unless --unknown free or fill, "
+                 "and no ceiling is seen through that band"
+           : "every other voxel of " + box_text +
+                 " is free, behind walls and inside solids too: planning may use space the scan never saw");
   built.figures = {{"points", double(points_m.size())}, {"free_distance_m", free_distance}};
+  if (!crop.isEmpty()) built.figures.emplace_back("points_in_crop", double(in_crop));
   detail::addVolumeFigures(built);
   return built;
 }

@@ -119,9 +119,61 @@ std::size_t voxeliseSurface(const TriangleMesh& mesh, VoxelGrid& grid, const std
   return total;
 }
 
+// Whether each voxel of the box's faces lies inside a closed mesh, by the parity of the
+// triangles a line along +x from far outside to the voxel's centre crosses (the line runs a
+// hair off the voxel centres' rows, so it never meets an edge or vertex lying on one). Needed
+// when a crop box cuts the mesh: its faces then pass through the inside.
+std::vector<bool> boundaryVoxelsInside(const TriangleMesh& mesh, const GridFrame& frame) {
+  const Index3& size = frame.size();
+  const double resolution = frame.resolution_m();
+  const double nudge_y = resolution * 1.1e-6, nudge_z = resolution * 1.3e-6;
+  // The rows (j, k) each triangle's y-z extent covers, for the triangles that reach the box in y and z.
+  std::vector<std::vector<std::size_t>> rows(static_cast<std::size_t>(size[1]) * size[2]);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    int lo[3], hi[3];
+    for (int axis = 1; axis < 3; ++axis) {
+      double a = mesh.vertices_m[tri[0]][axis], b = a;
+      for (std::size_t v : tri) a = std::min(a, mesh.vertices_m[v][axis]), b = std::max(b, mesh.vertices_m[v][axis]);
+      lo[axis] = std::max(frame.indexOf(axis, a) - 1, 0);
+      hi[axis] = std::min(frame.indexOf(axis, b) + 1, size[axis] - 1);
+    }
+    for (int k = lo[2]; k <= hi[2]; ++k)
+      for (int j = lo[1]; j <= hi[1]; ++j) rows[static_cast<std::size_t>(k) * size[1] + j].push_back(t);
+  }
+  std::vector<bool> inside(frame.voxelCount(), false);
+  std::vector<double> crossings;
+  for (int k = 0; k < size[2]; ++k)
+    for (int j = 0; j < size[1]; ++j) {
+      const bool face_row = j == 0 || k == 0 || j == size[1] - 1 || k == size[2] - 1;
+      const double y = frame.centreOf(1, j) + nudge_y, z = frame.centreOf(2, k) + nudge_z;
+      crossings.clear();
+      for (std::size_t t : rows[static_cast<std::size_t>(k) * size[1] + j]) {
+        const auto& tri = mesh.triangles[t];
+        const Eigen::Vector3d &a = mesh.vertices_m[tri[0]], &b = mesh.vertices_m[tri[1]], &c = mesh.vertices_m[tri[2]];
+        // Barycentric coordinates of (y, z) in the triangle's projection on the y-z plane.
+        const double det = (b.y() - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (b.z() - a.z());
+        if (det == 0.0) continue;  // edge-on to the line
+        const double u = ((y - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (z - a.z())) / det;
+        const double v = ((b.y() - a.y()) * (z - a.z()) - (y - a.y()) * (b.z() - a.z())) / det;
+        if (u < 0.0 || v < 0.0 || u + v > 1.0) continue;
+        crossings.push_back(a.x() + u * (b.x() - a.x()) + v * (c.x() - a.x()));
+      }
+      std::sort(crossings.begin(), crossings.end());
+      for (int i = 0; i < size[0]; ++i) {
+        if (!face_row && i != 0 && i != size[0] - 1) continue;
+        const double x = frame.centreOf(0, i);
+        const auto before = std::lower_bound(crossings.begin(), crossings.end(), x) - crossings.begin();
+        inside[frame.linear(i, j, k)] = before % 2 == 1;
+      }
+    }
+  return inside;
+}
+
 // Marks Free every voxel reachable from the box's faces through voxels that are not occupied
-// (face neighbours); returns how many voxels stay unreached: the enclosed ones.
-std::size_t floodFromOutside(VoxelGrid& grid) {
+// (face neighbours), starting from the face voxels not `inside` a closed mesh (none, when empty);
+// returns how many voxels stay unreached: the enclosed ones.
+std::size_t floodFromOutside(VoxelGrid& grid, const std::vector<bool>& inside) {
   const GridFrame& frame = grid.frame();
   const Index3& size = frame.size();
   std::vector<std::uint32_t> stack;  // linear indices; VoxelGrid::kMaxVoxels fits in 32 bits
@@ -133,7 +185,9 @@ std::size_t floodFromOutside(VoxelGrid& grid) {
   for (int k = 0; k < size[2]; ++k)
     for (int j = 0; j < size[1]; ++j)
       for (int i = 0; i < size[0]; ++i)
-        if (i == 0 || j == 0 || k == 0 || i == size[0] - 1 || j == size[1] - 1 || k == size[2] - 1) visit(i, j, k);
+        if ((i == 0 || j == 0 || k == 0 || i == size[0] - 1 || j == size[1] - 1 || k == size[2] - 1) &&
+            (inside.empty() || !inside[frame.linear(i, j, k)]))
+          visit(i, j, k);
   while (!stack.empty()) {
     const Index3 v = frame.unlinear(stack.back());
     stack.pop_back();
@@ -152,7 +206,7 @@ std::size_t floodFromOutside(VoxelGrid& grid) {
 std::string topologyText(const MeshTopology& topology) {
   if (!topology.closed())
     return "open mesh (" + std::to_string(topology.boundary_edges) + " boundary edges, " +
-           std::to_string(topology.non_manifold_edges) + " shared by more than two triangles)";
+           std::to_string(topology.non_manifold_edges) + " shared by more than two triangles, so not watertight)";
   if (!topology.consistently_oriented) return "closed mesh with inconsistently oriented triangles";
   return std::string("closed mesh, triangles facing ") + (topology.signed_volume_m3 >= 0.0 ? "outward" : "inward");
 }
@@ -163,7 +217,8 @@ MeshInterior meshInteriorFromName(const std::string& name) {
   if (name == "auto") return MeshInterior::Automatic;
   if (name == "solid") return MeshInterior::Solid;
   if (name == "hollow") return MeshInterior::Hollow;
-  throw ceilplan::InputError("unknown mesh interior '" + name + "': use auto, solid or hollow");
+  if (name == "shell") return MeshInterior::Shell;
+  throw ceilplan::InputError("unknown mesh interior '" + name + "': use auto, solid, hollow or shell");
 }
 
 MeshTopology meshTopology(const TriangleMesh& mesh) {
@@ -207,22 +262,29 @@ BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& opti
   const double resolution = options.resolution_m;
   detail::checkImportResolution(resolution);
   validateMesh(mesh);
+  validateCrop(options.crop_m);
   Eigen::AlignedBox3d box;
   for (const auto& tri : mesh.triangles)
     for (std::size_t v : tri) box.extend(mesh.vertices_m[v]);
-  const GridFrame frame = detail::importFrame(box, options.margin_m, resolution);
-  const MeshTopology topology = meshTopology(mesh);
-
-  VoxelGrid grid(frame);
-  const std::size_t surface = voxeliseSurface(
-      mesh, grid, progress ? std::function<void(double)>([&](double f) { progress(0.6 * f); }) : std::function<void(double)>());
-  const std::size_t enclosed = floodFromOutside(grid);
-  if (progress) progress(0.8);
+  const GridFrame frame = detail::importFrame(box, options.margin_m, resolution, options.crop_m, "triangle");
+  const MeshTopology topology = meshTopology(mesh);  // of the whole mesh, whatever the crop keeps
 
   MeshInterior interior = options.interior;
   if (interior == MeshInterior::Automatic)
-    interior = topology.closed() && topology.consistently_oriented && topology.signed_volume_m3 < 0.0 ? MeshInterior::Hollow
-                                                                                                       : MeshInterior::Solid;
+    interior = !topology.closed() ? MeshInterior::Shell
+               : topology.consistently_oriented && topology.signed_volume_m3 < 0.0 ? MeshInterior::Hollow
+                                                                                   : MeshInterior::Solid;
+  VoxelGrid grid(frame);
+  const std::size_t surface = voxeliseSurface(
+      mesh, grid, progress ? std::function<void(double)>([&](double f) { progress(0.6 * f); }) : std::function<void(double)>());
+  // A crop that cuts a closed mesh puts some of the box's faces inside it: the flood starts only
+  // from the faces outside.
+  const bool cut = !options.crop_m.isEmpty() && topology.closed() &&
+                   !options.crop_m.contains(Eigen::AlignedBox3d(box.min().array() - options.margin_m,
+                                                                box.max().array() + options.margin_m));
+  const std::size_t enclosed = floodFromOutside(grid, cut ? boundaryVoxelsInside(mesh, frame) : std::vector<bool>());
+  if (progress) progress(0.8);
+
   // After the flood fill: Free = reached from outside, Unknown = enclosed.
   for (std::size_t v = 0; v < frame.voxelCount(); ++v) {
     const Index3 i = frame.unlinear(v);
@@ -237,14 +299,35 @@ BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& opti
   built.tree = toOcTree(grid);
   if (progress) progress(1.0);
   const double voxel_volume = resolution * resolution * resolution;
-  const std::string around = "its bounding box" + (options.margin_m > 0.0 ? " grown by " + formatNumber(options.margin_m) + " m" : std::string());
-  std::string enclosed_text =
-      enclosed == 0 ? "it encloses no space at " + formatNumber(resolution) + " m"
-                    : "the " + formatNumber(double(enclosed) * voxel_volume, 4) + " m3 it encloses is " +
-                          (interior == MeshInterior::Solid ? "filled as occupied" : "free");
-  built.free_space = topologyText(topology) + ", surface voxelised (triangle-box overlap, occupied); " + enclosed_text + "; " +
-                     (interior == MeshInterior::Solid ? "the rest of " + around + " is free"
-                                                      : "the rest of " + around + " stays unknown (hollow interior)");
+  const std::string around =
+      "its bounding box" +
+      (options.margin_m > 0.0 ? " grown by " + formatNumber(options.margin_m) + " m" : std::string()) +
+      detail::cropText(options.crop_m);
+  const std::string enclosed_volume = formatNumber(double(enclosed) * voxel_volume, 4) + " m3";
+  std::string case_text, enclosed_text, rest_text;
+  switch (interior) {
+    case MeshInterior::Shell:
+      case_text = ": thin shell, both sides free";
+      enclosed_text = enclosed == 0 ? "it encloses no space at " + formatNumber(resolution) + " m"
+                                    : "the " + enclosed_volume + " it encloses at " + formatNumber(resolution) +
+                                          " m is free too";
+      rest_text = "the rest of " + around + " is free: planning may use both sides of every surface";
+      break;
+    case MeshInterior::Solid:
+      case_text = topology.closed() ? ": solid, interior filled" : ": filled as solid (--interior solid)";
+      enclosed_text = enclosed == 0 ? "it encloses no space at " + formatNumber(resolution) + " m"
+                                    : "the " + enclosed_volume + " it encloses is filled as occupied";
+      rest_text = "the rest of " + around + " is free: planning may use the space around it";
+      break;
+    default:
+      case_text = ": hollow, inside free";
+      enclosed_text = enclosed == 0 ? "it encloses no space at " + formatNumber(resolution) + " m"
+                                    : "the " + enclosed_volume + " it encloses is free";
+      rest_text = "the rest of " + around +
+                  " stays unknown (hollow interior): an obstacle for planning unless --unknown free or fill";
+  }
+  built.free_space = topologyText(topology) + case_text +
+                     "; surface voxelised (triangle-box overlap, occupied); " + enclosed_text + "; " + rest_text;
   built.figures = {{"triangles", double(mesh.triangles.size())},
                    {"boundary_edges", double(topology.boundary_edges)},
                    {"surface_voxels", double(surface)},

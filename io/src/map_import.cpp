@@ -40,18 +40,21 @@ env::BuiltMap build(const MapImportOptions& options, const std::vector<Eigen::Ve
     mesh_options.resolution_m = options.resolution_m;
     mesh_options.margin_m = options.margin_m.value_or(kMeshMargin_m);
     mesh_options.interior = env::meshInteriorFromName(options.interior);
+    mesh_options.crop_m = options.crop_m.value_or(env::CropBox());
     return env::mapFromMesh(mesh, mesh_options, report);
   }
   if (origins) {
     env::RayCarvingOptions carving;
     carving.resolution_m = options.resolution_m;
     carving.max_range_m = options.max_range_m;
+    carving.crop_m = options.crop_m.value_or(env::CropBox());
     return env::carveFromScans(points, *origins, carving, report);
   }
   env::PointAssumptionOptions assumption;
   assumption.resolution_m = options.resolution_m;
   assumption.free_distance_m = options.free_distance_m.value_or(2.0 * options.resolution_m);
   assumption.margin_m = options.margin_m.value_or(0.0);
+  assumption.crop_m = options.crop_m.value_or(env::CropBox());
   return env::mapFromPointsAlone(points, assumption, report);
 }
 
@@ -69,6 +72,11 @@ void MapImportOptions::validate() const {
   if (!std::isfinite(max_range_m) || max_range_m < 0.0)
     throw InputError("a maximum range of " + formatNumber(max_range_m) + " m: give a finite number >= 0 (0: none)");
   env::meshInteriorFromName(interior);
+  if (crop_m) {
+    if (crop_m->min() == env::CropBox().min() && crop_m->max() == env::CropBox().max())
+      throw InputError("a crop box must have corners; leave it out for no crop");
+    env::validateCrop(*crop_m);
+  }
   if (!crs.empty()) ProjectedFrame::validate(crs);
 }
 
@@ -124,6 +132,9 @@ nlohmann::json mapImportJson(const MapImport& imported, const MapImportOptions& 
       {"origins", options.origins.empty() ? nlohmann::json(nullptr) : nlohmann::json(options.origins.string())},
       {"resolution_m", options.resolution_m},
       {"free_space", imported.built.free_space},
+      {"crop_m", options.crop_m ? nlohmann::json{{"min", pointJson(options.crop_m->min())},
+                                                 {"max", pointJson(options.crop_m->max())}}
+                                : nlohmann::json(nullptr)},
       {"skipped_non_finite_points", imported.skipped_non_finite_points},
       {"extent_m", {{"min", pointJson(imported.extent_m.min())}, {"max", pointJson(imported.extent_m.max())}}},
       {"figures", figures},

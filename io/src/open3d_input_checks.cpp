@@ -403,7 +403,7 @@ void checkPlyFile(const std::filesystem::path &file, const std::string &kind) {
       if (elements.empty()) refuse(at + "a property before any element");
       const bool list = words.size() == 5 && words[1] == "list";
       const auto count = list ? plyType(words[2]) : std::nullopt;
-      const auto value = plyType(words[list ? 3 : 1]);
+      const auto value = words.size() >= 3 ? plyType(words[list ? 3 : 1]) : std::nullopt;  // "property" alone
       if ((!list && words.size() != 3) || !value || (list && (!count || count->kind == 'f')))
         refuse(at +
                "give 'property TYPE NAME' or 'property list COUNT_TYPE "

@@ -122,16 +122,25 @@ TEST_F(ImportBadInput, HeaderCountsThatDisagreeWithTheDataAndLinesThatAreNotPoin
 // A FIFO would block the reader that opens it, a device never end: each is refused before it is
 // opened (the timeout makes a reader that blocks fail the test rather than hang it).
 TEST_F(ImportBadInput, FifosDevicesAndDirectoriesAreNotInputFiles) {
-  for (const char* name : {"pipe.xyz", "pipe.pcd", "pipe.stl", "pipe.csv"})
+  for (const char* name : {"pipe.xyz", "pipe.pcd", "pipe.stl", "pipe.csv", "pipe.bin"})
     ASSERT_EQ(::mkfifo((dir_ / name).c_str(), 0600), 0) << name;
   std::filesystem::create_directories(dir_ / "folder.ply");
+  // A glTF scene names its buffer files; assimp opens them itself.
+  std::ofstream(dir_ / "buffer.gltf")
+      << R"({"asset":{"version":"2.0"},"buffers":[{"uri":"pipe.bin","byteLength":12}],)"
+         R"("bufferViews":[{"buffer":0,"byteLength":12}],"accessors":[{"bufferView":0,)"
+         R"("componentType":5126,"count":1,"type":"VEC3"}],"meshes":[{"primitives":)"
+         R"([{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]})";
   const struct {
     std::string arguments, says;
   } rows[] = {
       {"--points " + path("pipe.xyz"), "pipe.xyz: is a FIFO (named pipe), not a point cloud file; give a regular file"},
       {"--points " + path("pipe.pcd"), "pipe.pcd: is a FIFO (named pipe), not a point cloud file"},
       {"--mesh " + path("pipe.stl"), "pipe.stl: is a FIFO (named pipe), not a mesh file"},
-      {"--points " + path("good.pcd") + " --origins " + path("pipe.csv"), "pipe.csv: is a FIFO (named pipe), not a CSV file"},
+      {"--mesh " + path("buffer.gltf"),
+       "buffer.gltf: not a readable mesh (" + path("pipe.bin") + ": is a FIFO (named pipe)"},
+      {"--points " + path("good.pcd") + " --origins " + path("pipe.csv"),
+       "pipe.csv: is a FIFO (named pipe), not a CSV file"},
       {"--points " + path("folder.ply"), "folder.ply: is a directory, not a point cloud file"},
       {"--mesh " + path("folder.ply"), "folder.ply: is a directory, not a mesh file"},
   };

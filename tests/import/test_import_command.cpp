@@ -227,5 +227,175 @@ TEST(ImportMesh, AnOpenBoxIsNotFilled) {
   EXPECT_EQ(stateAt(dir / "open.bt", {3.0, 2.0, 1.5}), "free");
 }
 
+// The free-space line of a summary: one line, printed and in the sidecar.
+std::string freeSpaceLine(const testing::CommandResult& result, const std::filesystem::path& map) {
+  const std::string rule = sidecarOf(map)["free_space"];
+  EXPECT_EQ(rule.find('\n'), std::string::npos) << rule;
+  EXPECT_NE(result.out.find("free_space: " + rule + "\n"), std::string::npos) << result.out;
+  return rule;
+}
+
+// A box mesh with two of its faces (0 z-min, 1 z-max, 2 y-min, 3 y-max, 4 x-min, 5 x-max) left out.
+environment::TriangleMesh boxWithout(const Eigen::Vector3d& min, const Eigen::Vector3d& max, int face_a, int face_b) {
+  const environment::TriangleMesh box = testing::boxMesh(min, max);
+  environment::TriangleMesh mesh = box;
+  mesh.triangles.clear();
+  for (int t = 0; t < 12; ++t)
+    if (t / 2 != face_a && t / 2 != face_b) mesh.triangles.push_back(box.triangles[t]);
+  return mesh;
+}
+
+TEST(ImportMesh, AnOpenSweptTubeIsAThinShellWithItsInsideFree) {
+  // A deck modelled as a box profile swept along x, its ends open: its inside is free space the
+  // vehicle can fly in, its inner faces are surfaces to be seen from there.
+  const auto dir = testing::scratchDirectory("open_tube");
+  const Eigen::Vector3d min(0.03, -1.23, 2.02), max(10.03, 1.27, 3.82);
+  testing::writeObj(dir / "tube.obj", boxWithout(min, max, 4, 5));
+  const auto result =
+      importOk("--mesh " + (dir / "tube.obj").string() + " --resolution 0.1 --out " + (dir / "tube.bt").string());
+  const std::string rule = freeSpaceLine(result, dir / "tube.bt");
+  EXPECT_EQ(rule.rfind("open mesh (8 boundary edges, 0 shared by more than two triangles, so not watertight): thin "
+                       "shell, both sides free; surface voxelised",
+                       0),
+            0u)
+      << rule;
+  EXPECT_NE(rule.find("planning may use both sides of every surface"), std::string::npos) << rule;
+  const Eigen::Vector3d inside(5.0, 0.0, 2.9);
+  EXPECT_EQ(stateAt(dir / "tube.bt", inside), "free");
+  EXPECT_EQ(stateAt(dir / "tube.bt", {5.0, 0.0, 3.82}), "occupied");  // the deck's soffit, seen from inside
+  EXPECT_EQ(stateAt(dir / "tube.bt", {5.0, 0.0, 4.3}), "free");       // and above it
+  const Environment environment = environmentOf(dir / "tube.bt");
+  EXPECT_TRUE(environment.isStateValid(inside));
+  EXPECT_NEAR(environment.ceilingGapAt(inside), max.z() - inside.z(), kVoxel);
+  EXPECT_NEAR(environment.groundGapAt(inside), inside.z() - min.z(), kVoxel);
+}
+
+TEST(ImportMesh, OnlyClosedMeshesAreFilled) {
+  const auto dir = testing::scratchDirectory("closed_or_not");
+  const Eigen::Vector3d min(1.03, 1.07, 0.02), max(3.03, 3.07, 3.02), centre = (min + max) / 2;
+  testing::writeStlBinary(dir / "closed.stl", testing::boxMesh(min, max));
+  const auto closed =
+      importOk("--mesh " + (dir / "closed.stl").string() + " --resolution 0.1 --out " + (dir / "closed.bt").string());
+  EXPECT_EQ(freeSpaceLine(closed, dir / "closed.bt")
+                .rfind("closed mesh, triangles facing outward: solid, interior filled; surface voxelised", 0),
+            0u);
+  EXPECT_EQ(stateAt(dir / "closed.bt", centre), "occupied");
+  // The same box with its lid 1 mm above its walls: not watertight, though at 0.1 m its surface
+  // voxels enclose the inside. Only a closed mesh is filled.
+  environment::TriangleMesh lifted = boxWithout(min, max, 1, 1);
+  const std::size_t first = lifted.vertices_m.size();
+  const environment::TriangleMesh lid = testing::rectangleMesh(
+      {min.x(), min.y(), max.z() + 0.001}, {max.x() - min.x(), 0, 0}, {0, max.y() - min.y(), 0});
+  for (const Eigen::Vector3d& v : lid.vertices_m) lifted.vertices_m.push_back(v);
+  for (const auto& t : lid.triangles) lifted.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+  testing::writeStlBinary(dir / "lifted.stl", lifted);
+  const auto open =
+      importOk("--mesh " + (dir / "lifted.stl").string() + " --resolution 0.1 --out " + (dir / "lifted.bt").string());
+  const std::string rule = freeSpaceLine(open, dir / "lifted.bt");
+  EXPECT_NE(rule.find("thin shell, both sides free"), std::string::npos) << rule;
+  EXPECT_NE(rule.find(" m3 it encloses at 0.1 m is free too"), std::string::npos) << rule;
+  EXPECT_EQ(stateAt(dir / "lifted.bt", centre), "free");
+  EXPECT_GT(sidecarOf(dir / "lifted.bt")["figures"]["boundary_edges"].get<int>(), 0);
+  // Told it is solid, it is filled.
+  const auto forced = importOk("--mesh " + (dir / "lifted.stl").string() + " --interior solid --resolution 0.1 --out " +
+                               (dir / "forced.bt").string());
+  EXPECT_NE(freeSpaceLine(forced, dir / "forced.bt").find("filled as solid (--interior solid)"), std::string::npos);
+  EXPECT_EQ(stateAt(dir / "forced.bt", centre), "occupied");
+}
+
+TEST(ImportMesh, ACropClipsTrianglesAtItsFacesAndKeepsAClosedSolidFilled) {
+  const auto dir = testing::scratchDirectory("crop_mesh");
+  const Eigen::Vector3d min(1.03, 1.07, 0.02), max(3.03, 3.07, 3.02);
+  testing::writeObj(dir / "pier.obj", testing::boxMesh(min, max));
+  const auto result = importOk("--mesh " + (dir / "pier.obj").string() + " --crop 2,0,0,5,5,5 --resolution 0.1 --out " +
+                               (dir / "pier.bt").string());
+  EXPECT_NE(freeSpaceLine(result, dir / "pier.bt").find("(cropped to (2.00, 0.00, 0.00) to (5.00, 5.00, 5.00))"),
+            std::string::npos);
+  EXPECT_NE(result.out.find("extent_m: (2.00, 0.00, 0.00) to (4.10, 4.10, 4.10)"), std::string::npos) << result.out;
+  // The crop's face runs through the solid: what it keeps of the inside is still filled.
+  EXPECT_EQ(stateAt(dir / "pier.bt", {2.05, 2.0, 1.5}), "occupied");
+  EXPECT_EQ(stateAt(dir / "pier.bt", {2.5, 2.0, 1.5}), "occupied");
+  EXPECT_EQ(stateAt(dir / "pier.bt", {3.5, 2.0, 1.5}), "free");
+  EXPECT_EQ(stateAt(dir / "pier.bt", {1.5, 2.0, 1.5}), "unknown");  // outside the map
+  const auto sidecar = sidecarOf(dir / "pier.bt");
+  EXPECT_EQ(sidecar["crop_m"]["min"], nlohmann::json::parse("[2.0, 0.0, 0.0]"));
+  EXPECT_EQ(sidecar["crop_m"]["max"], nlohmann::json::parse("[5.0, 5.0, 5.0]"));
+}
+
+TEST(ImportPoints, MaxRangeDropsFarReturnsAndTheMapShrinks) {
+  const auto dir = testing::scratchDirectory("max_range");
+  const auto points = testing::sampleBoxSurface(kRoomMin, kRoomMax, 0.03);
+  testing::writePcd(dir / "room.pcd", points, true);
+  std::ofstream(dir / "origins.csv") << "x,y,z\n1.0,2.0,1.5\n";
+  const std::string input = "--points " + (dir / "room.pcd").string() + " --origins " + (dir / "origins.csv").string();
+  const auto whole = importOk(input + " --resolution 0.1 --out " + (dir / "whole.bt").string());
+  EXPECT_NE(whole.out.find("extent_m: (0.00, 0.00, 0.00) to (6.10, 4.10, 3.10)"), std::string::npos) << whole.out;
+  const auto near = importOk(input + " --max-range 2.5 --resolution 0.1 --out " + (dir / "near.bt").string());
+  EXPECT_NE(near.out.find("free_space: carved by ray casting from 1 sensor origin (max range 2.5 m) along " +
+                          std::to_string(points.size()) + " rays"),
+            std::string::npos)
+      << near.out;
+  // The far wall (5 m away) is gone, and the map ends where the nearest returns kept do.
+  const auto sidecar = sidecarOf(dir / "near.bt");
+  EXPECT_LE(sidecar["extent_m"]["max"][0].get<double>(), 1.0 + 2.5 + kVoxel);
+  EXPECT_LT(sidecar["figures"]["returns_within_range"].get<double>(), double(points.size()));
+  EXPECT_EQ(stateAt(dir / "near.bt", {6.0, 2.0, 1.5}), "unknown");
+  EXPECT_EQ(stateAt(dir / "near.bt", {0.05, 2.0, 1.5}), "occupied");  // the near wall stays
+  // Rays to the far wall carve up to 2.5 m, inside the box of what is kept (the floor within
+  // 2.5 m reaches x = 3).
+  EXPECT_EQ(stateAt(dir / "near.bt", {2.7, 2.0, 1.5}), "free");
+  EXPECT_EQ(stateAt(dir / "whole.bt", {6.0, 2.0, 1.5}), "occupied");
+}
+
+TEST(ImportPoints, ACropKeepsTheMapInsideTheBoxWithOrWithoutOrigins) {
+  const auto dir = testing::scratchDirectory("crop_points");
+  testing::writePcd(dir / "room.pcd", testing::sampleBoxSurface(kRoomMin, kRoomMax, 0.03), true);
+  std::ofstream(dir / "origins.csv") << "x,y,z\n3.0,2.0,1.5\n";
+  const std::string cloud = "--points " + (dir / "room.pcd").string() + " --crop -1,-1,-1,2,5,4 --resolution 0.1";
+  const auto rays =
+      importOk(cloud + " --origins " + (dir / "origins.csv").string() + " --out " + (dir / "rays.bt").string());
+  EXPECT_NE(rays.out.find("extent_m: (0.00, 0.00, 0.00) to (2.10, 4.10, 3.10)"), std::string::npos) << rays.out;
+  EXPECT_NE(freeSpaceLine(rays, dir / "rays.bt").find("(cropped to (-1.00, -1.00, -1.00) to (2.00, 5.00, 4.00)) along"),
+            std::string::npos);
+  EXPECT_EQ(stateAt(dir / "rays.bt", {0.05, 2.0, 1.5}), "occupied");
+  EXPECT_EQ(stateAt(dir / "rays.bt", {1.0, 2.0, 1.5}), "free");  // carved by rays from an origin outside the crop
+  EXPECT_EQ(stateAt(dir / "rays.bt", {3.0, 2.0, 1.5}), "unknown");
+  EXPECT_LT(sidecarOf(dir / "rays.bt")["figures"]["returns_in_crop"].get<double>(),
+            sidecarOf(dir / "rays.bt")["figures"]["points"].get<double>());
+  const auto alone = importOk(cloud + " --out " + (dir / "alone.bt").string());
+  EXPECT_LE(sidecarOf(dir / "alone.bt")["extent_m"]["max"][0].get<double>(), 2.0 + kVoxel + 1e-9);  // whole voxels
+  EXPECT_GT(sidecarOf(dir / "alone.bt")["figures"]["points_in_crop"].get<double>(), 0.0);
+}
+
+TEST(ImportFreeSpace, OneLineSaysWhatWasAssumedAndWhatItMeansForPlanning) {
+  const auto dir = testing::scratchDirectory("free_space_line");
+  const auto points = deckAndGround();
+  testing::writePcd(dir / "deck.pcd", points, true);
+  std::ofstream(dir / "origins.csv") << "x,y,z\n4.0,3.0,1.5\n";
+  const std::string deck = "--points " + (dir / "deck.pcd").string() + " --resolution 0.1 --out ";
+  const auto rays = importOk(deck + (dir / "rays.bt").string() + " --origins " + (dir / "origins.csv").string());
+  EXPECT_EQ(freeSpaceLine(rays, dir / "rays.bt"),
+            "carved by ray casting from 1 sensor origin (max range none) along " + std::to_string(points.size()) +
+                " rays: space a ray crossed is free, a voxel holding a return is occupied, space no ray crossed is "
+                "unknown: an obstacle for planning unless --unknown free or fill");
+  const auto band = importOk(deck + (dir / "band.bt").string());
+  EXPECT_EQ(freeSpaceLine(band, dir / "band.bt"),
+            "assumed, no sensor origins: voxels holding a point are occupied; every other voxel of the points' "
+            "bounding box whose centre lies farther than 0.2 m from them is free; the rest is unknown: an obstacle "
+            "for planning unless --unknown free or fill, and no ceiling is seen through that band");
+  const auto dense = importOk(deck + (dir / "dense.bt").string() + " --free-distance 0");
+  EXPECT_EQ(freeSpaceLine(dense, dir / "dense.bt"),
+            "assumed, no sensor origins: voxels holding a point are occupied; every other voxel of the points' "
+            "bounding box is free, behind walls and inside solids too: planning may use space the scan never saw");
+  testing::writeObj(dir / "hall.obj", testing::boxMesh(kRoomMin, kRoomMax, /*outward=*/false));
+  const auto hall =
+      importOk("--mesh " + (dir / "hall.obj").string() + " --resolution 0.1 --out " + (dir / "hall.bt").string());
+  const std::string hollow = freeSpaceLine(hall, dir / "hall.bt");
+  EXPECT_EQ(hollow.rfind("closed mesh, triangles facing inward: hollow, inside free; ", 0), 0u) << hollow;
+  EXPECT_NE(hollow.find("stays unknown (hollow interior): an obstacle for planning unless --unknown free or fill"),
+            std::string::npos)
+      << hollow;
+}
+
 }  // namespace
 }  // namespace ceilplan

@@ -88,6 +88,34 @@ TEST(MapBuilders, ATriangleThinnerThanAVoxelStillClosesTheVoxelsItCrosses) {
     }
 }
 
+// "occupied", "free" or "unknown" at a point of a built map.
+std::string stateIn(const environment::BuiltMap& built, const Eigen::Vector3d& p) {
+  const octomap::OcTreeNode* node = built.tree->search(p.x(), p.y(), p.z());
+  return !node ? "unknown" : built.tree->isNodeOccupied(node) ? "occupied" : "free";
+}
+
+TEST(MapBuilders, AShellIsOnlyItsSurfaceAndACropThroughAClosedMeshKeepsItsInsideAsWhole) {
+  const Eigen::Vector3d min(1.03, 1.07, 0.02), max(5.03, 4.07, 3.02), centre = (min + max) / 2;
+  environment::MeshVoxelisingOptions options;
+  options.resolution_m = 0.1;
+  options.interior = environment::MeshInterior::Shell;  // asked for, on a closed box
+  const auto shell = environment::mapFromMesh(testing::boxMesh(min, max), options);
+  EXPECT_EQ(stateIn(shell, centre), "free");
+  EXPECT_EQ(stateIn(shell, {min.x(), centre.y(), centre.z()}), "occupied");
+  EXPECT_EQ(shell.free_space.rfind("closed mesh, triangles facing outward: thin shell, both sides free", 0), 0u)
+      << shell.free_space;
+  // A room (inward-facing), cut in half by the crop: its inside stays free, its outside unknown,
+  // though the crop's face at x = 3 runs through the room.
+  options.interior = environment::MeshInterior::Automatic;
+  options.crop_m = environment::CropBox(Eigen::Vector3d(3, -5, -5), Eigen::Vector3d(9, 9, 9));
+  const auto room = environment::mapFromMesh(testing::boxMesh(min, max, /*outward=*/false), options);
+  EXPECT_EQ(stateIn(room, {3.05, centre.y(), centre.z()}), "free");
+  EXPECT_EQ(stateIn(room, {4.5, centre.y(), centre.z()}), "free");
+  EXPECT_EQ(stateIn(room, {5.6, centre.y(), centre.z()}), "unknown");
+  EXPECT_EQ(stateIn(room, {2.5, centre.y(), centre.z()}), "unknown");  // outside the crop
+  EXPECT_NE(room.free_space.find("hollow, inside free"), std::string::npos) << room.free_space;
+}
+
 TEST(MapBuilders, RefuseBadResolutionsAndHugeBoxesBeforeAllocating) {
   const std::vector<Eigen::Vector3d> points = {{0, 0, 0}, {1, 1, 1}};
   environment::PointAssumptionOptions options;

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <octomap/OcTree.h>
 
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -54,6 +55,19 @@ TEST(MapImport, RefusesBadOptionsBeforeReadingAnyFile) {
   options.crs = "EPSG:4326";
   EXPECT_NE(errorOf(options).find("is not a projected coordinate reference system"), std::string::npos);
   EXPECT_THROW(importMap(options), InputError);
+}
+
+TEST(MapImport, RefusesACropBoxWithoutVolumeOrFiniteCorners) {
+  MapImportOptions options;
+  options.points = "/nonexistent/cloud.pcd";
+  options.crop_m = Eigen::AlignedBox3d(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, std::nan("")));
+  EXPECT_EQ(errorOf(options).rfind("a crop box needs finite corners", 0), 0u) << errorOf(options);
+  options.crop_m = Eigen::AlignedBox3d(Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, 1));
+  EXPECT_EQ(errorOf(options), "a crop box's z minimum (1) must be below its maximum (1)");
+  options.crop_m = Eigen::AlignedBox3d();
+  EXPECT_EQ(errorOf(options), "a crop box must have corners; leave it out for no crop");
+  options.crop_m = Eigen::AlignedBox3d(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1));
+  EXPECT_EQ(errorOf(options), "(no error)");
 }
 
 TEST(MapImport, BuildsAMapFromACloudAlone) {

@@ -134,6 +134,18 @@ TEST(Open3dInputChecks, RefusesPlyFacesAndCountsOpen3dWouldMisread) {
   EXPECT_NE(meshRefusal(list_type).find("PLY header line 4: give 'property TYPE NAME'"), std::string::npos);
 }
 
+TEST(Open3dInputChecks, APropertyLineWithoutTypeOrNameIsRefused) {
+  // "property" with nothing after it was read past the line's words (a crash, found by mutating
+  // the PLY seed).
+  for (const std::string line : {"property", "property ", "property float"}) {
+    const auto file = writeFile("property.ply", "ply\nformat ascii 1.0\nelement vertex 8\n" + line);
+    EXPECT_EQ(meshRefusal(file), file.string() + ": not a readable mesh (PLY header line 4: give 'property TYPE NAME' "
+                                                 "or 'property list COUNT_TYPE TYPE NAME' with PLY's types, an integer "
+                                                 "count)")
+        << line;
+  }
+}
+
 TEST(Open3dInputChecks, WellFormedFilesStillRead) {
   for (const auto& [seed, points] : std::initializer_list<std::pair<const char*, std::size_t>>{
            {"pcd/ascii.pcd", 8}, {"pcd/binary.pcd", 8}, {"pcd/compressed.pcd", 8}, {"pcd/organised.pcd", 4}, {"ply/points.ply", 8}})

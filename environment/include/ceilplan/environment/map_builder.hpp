@@ -10,6 +10,7 @@
 #include <octomap/OcTree.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <cstddef>
@@ -43,11 +44,21 @@ struct SensorOrigins {
 // this way) together with their scans' bookkeeping; returns how many were dropped.
 std::size_t dropNonFinitePoints(std::vector<Eigen::Vector3d>& points_m, SensorOrigins* origins);
 
+// What an import keeps: an empty box (the default) keeps everything; otherwise the map covers
+// no more than this box, in map coordinates, and data outside it is dropped before voxelising.
+using CropBox = Eigen::AlignedBox3d;
+
+// Throws ceilplan::InputError unless `crop_m` is empty or finite with min < max on every axis.
+void validateCrop(const CropBox& crop_m);
+
 struct RayCarvingOptions {
   double resolution_m = 0.1;
-  // Rays longer than this carve free space up to this range only, and their end point is not
-  // marked occupied (OctoMap's maxrange); <= 0 keeps every ray whole.
+  // Returns farther than this from their origin are dropped: not occupied, and the map's box is
+  // not grown for them; their rays still carve free space up to this range inside the box of
+  // what is kept. <= 0 keeps every return.
   double max_range_m = 0.0;
+  // Returns outside it are dropped; rays carve only inside it.
+  CropBox crop_m = CropBox();
 };
 
 struct PointAssumptionOptions {
@@ -57,6 +68,8 @@ struct PointAssumptionOptions {
   double free_distance_m = 0.2;
   // The box is the points' bounding box grown by this on every side.
   double margin_m = 0.0;
+  // Points outside it are dropped; the box goes no farther.
+  CropBox crop_m = CropBox();
 };
 
 // A triangle mesh: vertex positions and, per triangle, three vertex indices.
@@ -67,12 +80,13 @@ struct TriangleMesh {
 
 // What fills the space a mesh's surface encloses.
 enum class MeshInterior {
-  Automatic,  // Solid, unless the mesh is closed with inward-facing triangles (a room, a tunnel): then Hollow
+  Automatic,  // Shell for an open mesh; for a closed one Solid, or Hollow when its triangles face inward (a room)
   Solid,      // enclosed space is occupied; space around the mesh is free
   Hollow,     // enclosed space is free; space outside the mesh stays unknown
+  Shell,      // only the surface is occupied: both of its sides are free, whatever it encloses
 };
 
-// "auto", "solid", "hollow"; throws ceilplan::InputError for any other name.
+// "auto", "solid", "hollow", "shell"; throws ceilplan::InputError for any other name.
 MeshInterior meshInteriorFromName(const std::string& name);
 
 struct MeshVoxelisingOptions {
@@ -80,6 +94,10 @@ struct MeshVoxelisingOptions {
   // The map's box is the mesh's bounding box grown by this on every side.
   double margin_m = 1.0;
   MeshInterior interior = MeshInterior::Automatic;
+  // Triangles are clipped at its faces (only voxels inside it are voxelised); whether the mesh
+  // is closed is decided on the whole mesh, and a closed mesh the box cuts is filled inside the
+  // box as it would be whole.
+  CropBox crop_m = CropBox();
 };
 
 // Closedness and orientation of a mesh, with vertices welded at identical positions.
@@ -115,8 +133,9 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
                             const std::function<void(double)>& progress = {});
 
 // Voxels a triangle touches are occupied (exact triangle-box overlap, so thin walls close);
-// space the surface encloses at that resolution is filled according to options.interior; the
-// rest of the box is free (or unknown outside a hollow mesh). Throws ceilplan::InputError for a
+// space the surface encloses at that resolution is filled according to options.interior (an
+// open mesh is a thin shell under Automatic); the rest of the box is free (or unknown outside a
+// hollow mesh). Throws ceilplan::InputError for a
 // bad resolution, no triangle, a non-finite vertex, a vertex index out of range, or a box too
 // large, before any map is allocated.
 BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& options,

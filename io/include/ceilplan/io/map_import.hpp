@@ -32,10 +32,14 @@ struct MapImportOptions {
   std::optional<double> margin_m;         // default kMeshMargin_m for a mesh, 0 for a cloud
   std::string interior = "auto";          // a mesh's inside: environment::meshInteriorFromName
   bool skip_non_finite = false;           // drop points with NaN or infinite coordinates
+  // A box in map coordinates (after --crs): data outside it is dropped before voxelising, and the
+  // map goes no farther (environment::CropBox).
+  std::optional<Eigen::AlignedBox3d> crop_m;
 
   // Throws ceilplan::InputError, before any file is read, for no or two inputs, origins without
   // a cloud, a resolution outside environment::kMin/kMaxImportResolution_m, a negative or
-  // non-finite maximum range, an unknown interior or a bad CRS.
+  // non-finite maximum range, an unknown interior, a bad CRS, or a crop box with a non-finite
+  // corner or a minimum not below its maximum.
   void validate() const;
 };
 
