@@ -174,6 +174,34 @@ TEST(RealData, OctomapScanToursUnderItsVaultsInBothModes) {
   tourBothModes("octomap_scan", map);  // free mode within each target's standoff range too
 }
 
+// A target picked from the scan itself (the return nearest vault_a) lies inside the occupied voxel
+// that holds it, where no line of sight reaches: the tour moves it onto the vault's underside and
+// says by how much (issue 24, "Targets snap").
+TEST(RealData, OctomapScanTargetOnAScannedPointMovesOntoTheVault) {
+  const fs::path map = testing::scratchDirectory("octomap_scan_snap") / "octomap_scan.bt";
+  importMap(kScanPoints + kScanOrigins + " --resolution 0.2", map);
+  const fs::path mission = missionFor("octomap_scan", map);
+  testing::writeWholeFile(mission,
+                          testing::substituted(testing::readWholeFile(mission),
+                                               {{"point: [18.0, -2.0, 10.0]", "point: [17.9914, -1.96918, 10.0533]"}}));
+  const fs::path out = map.parent_path() / "tour";
+  const auto result =
+      testing::runCeilplan("tour --mission " + quoted(mission) + " --mode ceiling --out " + quoted(out));
+  ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
+  EXPECT_NE(
+      result.out.find("\n  1 target(s) given inside a structure moved onto its surface: 'vault_a' by 0.05 m, from "
+                      "(17.99, -1.97, 10.05) to (17.99, -1.97, 10.00) (tour.json: targets[].moved_onto_surface_m)\n"),
+      std::string::npos)
+      << result.out;
+  const auto tour = nlohmann::json::parse(testing::readWholeFile(out / "tour.json"));
+  const nlohmann::json& vault = tour["targets"][0];
+  ASSERT_EQ(vault["name"], "vault_a");
+  EXPECT_NEAR(vault["moved_onto_surface_m"].get<double>(), 0.0533, 1e-4);
+  EXPECT_NEAR(vault["point"][2].get<double>(), 10.0, 1e-9);
+  EXPECT_NEAR(vault["given_point"][2].get<double>(), 10.0533, 1e-9);
+  EXPECT_EQ(tour["targets_visited"], 4);
+}
+
 // --- MRPT's VLP-16 street scan: 16 beams, returns up to 108 m ------------------------------
 
 const std::string kVlp16 =
