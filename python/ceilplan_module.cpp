@@ -492,8 +492,9 @@ PYBIND11_MODULE(ceilplan, m) {
             io::writeTourDirectory(out.path(), t.tour, *t.mission, t.context->environment(), autopilot, provenance);
             out.commit();
           },
-          "Writes tour.json, path.csv, map views, photos.csv and coverage.json for a coverage tour and (with an origin) "
-          "mission.plan and mission.waypoints, as `ceilplan tour`",
+          "Writes tour.json, path.csv, map views, photos.csv and coverage.json for a coverage tour and, with autopilot "
+          "and the mission's origin, the geodetic exports (mission.plan, mission.waypoints, mission.kmz, routes.kml, "
+          "routes.geojson; without an origin tour.json's geodetic_exports_skipped names them), as `ceilplan tour`",
           py::arg("dir"), py::arg("autopilot") = true);
 
   m.def(

@@ -19,7 +19,6 @@
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
-#include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 
 #include <CLI/CLI.hpp>
@@ -46,15 +45,9 @@ void runTour(TourArguments a) {
   io::OutputSet out(a.out, commandInputs({{"--mission", a.mission},
                                           {"the mission's map", mission.map_file},
                                           {"the mission's vehicle", mission.vehicle_file}}));
+  // Without the mission's origin the geodetic exports are skipped and said so; the rest is written.
   std::optional<io::Autopilot> autopilot;
-  if (!a.no_export) {
-    try {
-      mission.requireOrigin();  // fail before planning, not after
-    } catch (const InputError& e) {
-      throw InputError(std::string(e.what()) + "; or pass --no-export");
-    }
-    autopilot = a.autopilot == "ardupilot" ? io::Autopilot::ArduPilot : io::Autopilot::PX4;
-  }
+  if (!a.no_export) autopilot = a.autopilot == "ardupilot" ? io::Autopilot::ArduPilot : io::Autopilot::PX4;
   if (a.mode.empty()) a.mode = mission.mode.empty() ? "ceiling" : mission.mode;
   a.options.seed = a.seed ? *a.seed : mission.seed;
   a.options.validate();  // before indexing the map
@@ -137,15 +130,19 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                       "free mode: the conventional distance from every structure, kept where it fits")
       ->capture_default_str()->check(nonNegativeFinite());
   command->add_option("--free-standoff-max-m", a->options.free_standoff_max_m,
-                      "free mode: farthest viewpoint from a target (a conventional planner inspects from where its "
-                      "standoff lets it, with a zoom lens)")
-      ->capture_default_str()->check(positiveFinite() & atMost(mission::InspectionTarget::kMaxStandoff_m));
+                      "free mode: a target whose standoff range keeps less than --standoff-m may be seen from up to "
+                      "this far (a zoom lens), reported as beyond its range (default: every viewpoint within its "
+                      "target's range)")
+      ->check(positiveFinite() & atMost(mission::InspectionTarget::kMaxStandoff_m));
   command->add_option("--autopilot", a->autopilot, "mission files for px4 or ardupilot")
       ->capture_default_str()->check(CLI::IsMember({"px4", "ardupilot"}));
   command->add_flag("--search-every-leg", [a](std::int64_t) { a->options.straight_when_clear = false; },
                     "never take a clear straight line in place of the searched route (default: take it where it is valid and "
                     "cheaper)");
-  command->add_flag("--no-export", a->no_export, "skip mission.plan / mission.waypoints (no geodetic origin needed)");
+  command->add_flag(
+      "--no-export", a->no_export,
+      "skip the geodetic exports (mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson), which a "
+      "mission without an origin skips anyway");
   command->add_option("--missions-per-day", a->options.missions_per_day,
                       "duty projection: tours a day (default: as many as fit in a day, at most 15)")
       ->check(CLI::Range(1, 1000));

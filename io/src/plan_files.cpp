@@ -172,6 +172,13 @@ std::string routeCheckText(const mission::RouteCheck& check, std::size_t points,
   return text + "unknown space: " + unknownSpaceLine(context.environment()) + '\n';
 }
 
+std::string standoffText(double standoff_m) {
+  if (standoff_m >= 0.0)
+    return "the airframe's bounding sphere " + formatFixed(standoff_m, 2) + " m from the nearest structure";
+  return "the airframe's bounding sphere " + formatFixed(-standoff_m, 2) +
+         " m into the nearest structure (the sphere overlaps it; the airframe itself keeps its clearance)";
+}
+
 nlohmann::json standoffJson(const planner::StandoffReport& report) {
   nlohmann::json spans = nlohmann::json::array();
   for (const planner::NarrowedSpan& span : report.spans)
@@ -183,7 +190,8 @@ nlohmann::json standoffJson(const planner::StandoffReport& report) {
           {"length_m", report.length_m},
           {"narrowed_m", report.narrowed_m},
           {"min_standoff_m", finiteOrNull(report.min_standoff_m)},
-          {"narrowed", spans}};
+          {"narrowed", spans},
+          {"standoff_measures", kStandoffMeasures}};
 }
 
 std::string standoffLine(const planner::StandoffReport& report) {
@@ -194,8 +202,8 @@ std::string standoffLine(const planner::StandoffReport& report) {
   });
   return line + "kept over " + formatFixed(report.length_m - report.narrowed_m, 2) + " of " +
          formatFixed(report.length_m, 2) + " m, narrowed over " + formatFixed(report.narrowed_m, 2) + " m in " +
-         std::to_string(report.spans.size()) + (report.spans.size() == 1 ? " place" : " places") + ", to " +
-         formatFixed(narrowest->min_standoff_m, 2) + " m at " + formatPoint(narrowest->narrowest_m);
+         std::to_string(report.spans.size()) + (report.spans.size() == 1 ? " place" : " places") +
+         "; closest: " + standoffText(narrowest->min_standoff_m) + " at " + formatPoint(narrowest->narrowest_m);
 }
 
 std::string routeComparisonTable(const mission::RouteComparison& comparison, const mission::DutyOptions& duty,

@@ -49,7 +49,37 @@ nlohmann::json dutyJson(const mission::DutyProjection& duty, const mission::Tour
   return json;
 }
 
-// Free mode: where the tour kept less than the standoff, by leg and viewpoint.
+// A target's standoff range, "0.3-1.5 m".
+std::string rangeText(const mission::InspectionTarget& target) {
+  return formatNumber(target.standoff_min_m) + "-" + formatNumber(target.standoff_max_m) + " m";
+}
+
+// Free mode: the point targets whose standoff range keeps less than the conventional standoff.
+std::vector<const mission::TourStop*> standoffLimitedStops(const mission::TourResult& tour) {
+  std::vector<const mission::TourStop*> stops;
+  for (const mission::TourStop& stop : tour.stops)
+    if (stop.standoff_limited) stops.push_back(&stop);
+  return stops;
+}
+
+// Where free mode saw a standoff-limited target from: "seen from 1.50 m, within its range
+// 0.3-1.5 m, with the airframe's bounding sphere 0.97 m from the nearest structure".
+std::string seenFromText(const mission::TourStop& stop) {
+  return "seen from " + formatFixed(stop.viewpoint.distance_m, 2) + " m, " +
+         (stop.beyond_standoff_range ? "beyond its range " + rangeText(stop.target) + " (--free-standoff-max-m)"
+                                     : "within its range " + rangeText(stop.target)) +
+         ", with " + standoffText(stop.viewpoint.standoff_m);
+}
+
+// Why free mode's viewpoint of a target keeps less than the conventional standoff, and where it
+// saw the target from instead.
+std::string standoffLimitReason(const mission::TourStop& stop, double standoff_m) {
+  return "no viewpoint within its standoff range keeps " + formatNumber(standoff_m) + " m from every structure; " +
+         seenFromText(stop);
+}
+
+// Free mode: where the tour kept less than the standoff, by leg and viewpoint, and the targets
+// whose standoff range did not allow it.
 nlohmann::json tourStandoffJson(const mission::TourResult& tour, const mission::TourStandoff& standoff) {
   nlohmann::json legs = nlohmann::json::array(), viewpoints = nlohmann::json::array();
   for (const mission::NarrowedLeg& leg : standoff.legs) {
@@ -62,13 +92,23 @@ nlohmann::json tourStandoffJson(const mission::TourResult& tour, const mission::
   }
   for (int k : standoff.narrowed_stops)
     viewpoints.push_back({{"target", tour.stops[k].target.name}, {"standoff_m", tour.stops[k].viewpoint.standoff_m}});
+  nlohmann::json limited = nlohmann::json::array();
+  for (const mission::TourStop* stop : standoffLimitedStops(tour))
+    limited.push_back({{"target", stop->target.name},
+                       {"standoff_range_m", {stop->target.standoff_min_m, stop->target.standoff_max_m}},
+                       {"distance_m", stop->viewpoint.distance_m},
+                       {"viewpoint_standoff_m", stop->viewpoint.standoff_m},
+                       {"beyond_standoff_range", stop->beyond_standoff_range},
+                       {"reason", standoffLimitReason(*stop, standoff.standoff_m)}});
   return {{"standoff_m", standoff.standoff_m},
           {"length_m", standoff.length_m},
           {"narrowed_m", standoff.narrowed_m},
           {"min_standoff_m", standoff.min_standoff_m},
           {"narrowest", waypointsJson({standoff.narrowest_m})[0]},
           {"narrowed", legs},
-          {"narrowed_viewpoints", viewpoints}};
+          {"narrowed_viewpoints", viewpoints},
+          {"limited_targets", limited},
+          {"standoff_measures", kStandoffMeasures}};
 }
 
 std::vector<Eigen::Vector3d> flownRoute(const mission::TourResult& tour) {
@@ -84,6 +124,18 @@ Provenance tourProvenance(Provenance provenance, const mission::Mission& mission
   provenance.input("mission", mission.file).input("map", mission.map_file).input("vehicle", mission.vehicle_file);
   provenance.seed = seed;
   return provenance;
+}
+
+std::vector<std::string> geodeticExportsSkipped(const mission::Mission& mission) {
+  if (mission.origin) return {};
+  return {"mission.plan", "mission.waypoints", "mission.kmz", "routes.kml", "routes.geojson"};
+}
+
+std::string geodeticExportsSkippedLine(const mission::Mission& mission) {
+  std::string files;
+  for (const std::string& file : geodeticExportsSkipped(mission)) files += (files.empty() ? "" : ", ") + file;
+  return "geodetic exports skipped (" + files + "): " + mission.name() +
+         " has no 'origin:' ({lat, lon, alt} of the map frame); every local-frame output was written";
 }
 
 std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission) {
@@ -113,6 +165,7 @@ std::vector<DjiClamp> djiClamps(const mission::TourResult& tour, const mission::
 }
 
 std::string exportNotes(const mission::TourResult& tour, const mission::Mission& mission) {
+  if (!mission.origin) return "";  // tourFilesLine names every geodetic export skipped, once
   if (const std::optional<std::string> dji = djiExportProblem(tour, mission)) return "  DJI KMZ not written: " + *dji + "\n";
   const std::vector<DjiClamp> clamps = djiClamps(tour, mission);
   if (clamps.empty()) return "";
@@ -164,6 +217,9 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   json["stops_rechosen"] = tour.stops_rechosen;
   const std::optional<std::string> dji = djiExportProblem(tour, mission);
   json["dji_kmz"] = dji ? "not written: " + *dji : "written";
+  if (!mission.origin)
+    json["geodetic_exports_skipped"] = {{"files", geodeticExportsSkipped(mission)},
+                                        {"reason", "the mission has no 'origin:' ({lat, lon, alt} of the map frame)"}};
   if (!dji) {
     nlohmann::json clamps = nlohmann::json::array();
     for (const DjiClamp& c : djiClamps(tour, mission))
@@ -191,8 +247,18 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
                        {"viewpoint_standoff_m", v.standoff_m},
                        {"dwell_s", stop.target.dwell_s},
                        {"hover_power_w", stop.hover.propulsion_power_w}});
+    if (stop.given_point_m) {
+      targets.back()["given_point"] = waypointsJson({*stop.given_point_m})[0];
+      targets.back()["moved_onto_surface_m"] = (*stop.given_point_m - stop.target.point_m).norm();
+    }
   }
   json["targets"] = targets;
+  json["target_figures"] = {
+      {"distance_m", "from the viewpoint (the body centre) to the target point"},
+      {"standoff_m", "the target's standoff range [min, max] from the mission: distance_m's bounds"},
+      {"ceiling_gap_m", "from the rotor plane up to the nearest surface above (null: none)"},
+      {"moved_onto_surface_m", "from given_point, inside a structure, to point, on its surface (only where moved)"},
+      {"viewpoint_standoff_m", kStandoffMeasures}};
   if (tour.standoff) json["standoff"] = tourStandoffJson(tour, *tour.standoff);
   nlohmann::json sorties = nlohmann::json::array();
   for (std::size_t k = 0; k < tour.plan.sorties.size(); ++k) {
@@ -296,7 +362,7 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
   writeReportHtml(dir / "report.html",
                   tourReport({&tour}, mission, environment,
                              mission.name() + ": " + mission::flightModeName(tour.mode) + " mode"));
-  if (!autopilot) return;
+  if (!autopilot || !mission.origin) return;  // the local frame's outputs need no origin, the rest are skipped
   const std::vector<AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
   for (int k = 0; k < count; ++k) {
     writeQgcPlan(sortieFileName(dir / "mission.plan", k + 1, count), missions[k]);
@@ -413,8 +479,33 @@ std::string standoffLine(const mission::TourResult& tour) {
   line += "; " + std::to_string(standoff.narrowed_stops.size()) + " of " + std::to_string(tour.stops.size()) +
           " viewpoints keep less";
   if (std::isfinite(standoff.min_standoff_m) && standoff.min_standoff_m < standoff.standoff_m)
-    line += "; closest " + formatFixed(standoff.min_standoff_m, 2) + " m at " + formatPoint(standoff.narrowest_m);
+    line += "; closest: " + standoffText(standoff.min_standoff_m) + " at " + formatPoint(standoff.narrowest_m);
   return line + " (tour.json: standoff)";
+}
+
+std::optional<std::string> movedOntoSurfaceLine(const mission::TourResult& tour) {
+  std::string moved;
+  int count = 0;
+  for (const mission::TourStop& stop : tour.stops) {
+    if (!stop.given_point_m) continue;
+    moved += std::string(count++ ? "; '" : " '") + stop.target.name + "' by " +
+             formatFixed((*stop.given_point_m - stop.target.point_m).norm(), 2) + " m, from " +
+             formatPoint(*stop.given_point_m) + " to " + formatPoint(stop.target.point_m);
+  }
+  if (count == 0) return std::nullopt;
+  return std::to_string(count) + " target(s) given inside a structure moved onto its surface:" + moved +
+         " (tour.json: targets[].moved_onto_surface_m)";
+}
+
+std::optional<std::string> standoffLimitedLine(const mission::TourResult& tour) {
+  const std::vector<const mission::TourStop*> stops = standoffLimitedStops(tour);
+  if (stops.empty() || !tour.standoff) return std::nullopt;
+  std::string line = std::to_string(stops.size()) + " target(s) keep less than the " +
+                     formatNumber(tour.standoff->standoff_m) +
+                     " m standoff, as no viewpoint in their standoff range keeps it:";
+  for (const mission::TourStop* stop : stops) line += " '" + stop->target.name + "' " + seenFromText(*stop) + ";";
+  line.back() = ' ';
+  return line + "(tour.json: standoff.limited_targets)";
 }
 
 std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options) {
@@ -433,7 +524,7 @@ std::string tourFilesLine(const std::filesystem::path& dir, const mission::Missi
     const std::filesystem::path at = tours.size() > 1 ? dir / mission::flightModeName(tour.mode) : dir;
     std::string files = "tour.json, path.csv, trajectory.csv, trajectory.json, report.html, map_top.csv, map_side.csv";
     if (!mission.surfaces.empty()) files += ", photos.csv, coverage.json, coverage_elements.csv";
-    if (autopilot) {
+    if (autopilot && mission.origin) {
       files += ", mission.plan, mission.waypoints";
       if (!djiExportProblem(tour, mission)) files += ", mission.kmz";
       files += ", routes.kml, routes.geojson";
@@ -443,7 +534,11 @@ std::string tourFilesLine(const std::filesystem::path& dir, const mission::Missi
   }
   if (tours.size() > 1)
     text += "wrote " + dir.string() + ": comparison.txt, comparison.json, report.html, map_top.csv, map_side.csv\n";
-  if (!autopilot) text += "no autopilot files (--no-export)\n";
+  if (!autopilot) {
+    text += "no autopilot files (--no-export)\n";
+  } else if (!mission.origin) {
+    text += geodeticExportsSkippedLine(mission) + "\n";
+  }
   return text + "figures: scripts/plot-tour " + dir.string() + "\n";
 }
 
@@ -467,7 +562,11 @@ std::string tourSummary(const mission::TourResult& tour) {
   std::snprintf(line, sizeof line, ", FEC %.5f, lowest SOC %.1f %% (reserve %.0f %%)\n", tour.plan.fec,
                 100.0 * tour.plan.min_soc, 100.0 * tour.reserve_soc);
   out << line;
-  if (tour.standoff) out << "  " << standoffLine(tour) << '\n';
+  if (const std::optional<std::string> moved = movedOntoSurfaceLine(tour)) out << "  " << *moved << '\n';
+  if (tour.standoff) {
+    out << "  " << standoffLine(tour) << '\n';
+    if (const std::optional<std::string> limited = standoffLimitedLine(tour)) out << "  " << *limited << '\n';
+  }
   for (const mission::SortieRoute& route : tour.routes) {
     out << "  sortie " << route.sortie << " takes off straight up to " << formatFixed(route.takeoffHeight_m(), 2)
         << " m above home";

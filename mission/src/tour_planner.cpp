@@ -51,6 +51,9 @@ class Stopwatch {
 // minimum gap, so the leg's end passes the dense re-check with its rounding.
 constexpr double kViewpointGapMarginM = 0.01;
 
+// A target point within this of a structure's surface is on it.
+constexpr double kSurfaceTolerance_m = 1e-3;
+
 // A leg an OMPL planner misses is searched again this many times longer, twice: BIT* finds
 // long legs round the bridge's girders in a few seconds, but not always in 0.5 s.
 constexpr double kRetryTimeFactors[] = {10.0, 40.0};
@@ -79,20 +82,40 @@ ViewpointOptions viewpointOptions(const PlanningContext& context, FlightMode mod
   return options;
 }
 
-// A viewpoint per target, searched on the tour's threads. Point targets in free mode are seen
-// from as far as a conventional planner's zoom lens allows; a contact probe has no zoom.
+// A point target given inside a structure moves onto its surface, and keeps where it was given;
+// within a millimetre it stays where it is.
+void moveOntoSurface(TourStop& stop, const environment::Environment& environment) {
+  const std::optional<Eigen::Vector3d> surface = surfacePoint(stop.target, environment);
+  if (!surface || (*surface - stop.target.point_m).norm() <= kSurfaceTolerance_m) return;
+  stop.given_point_m = stop.target.point_m;
+  stop.target.point_m = *surface;
+}
+
+// A viewpoint per target, searched on the tour's threads, within the target's standoff range. A
+// point target whose range keeps less than free mode's conventional standoff is marked, and seen
+// from farther only where the options allow a zoom lens; a contact probe has no zoom.
 std::vector<TourStop> viewpointStops(const std::vector<InspectionTarget>& targets, std::size_t point_targets,
                                      const PlanningContext& context, FlightMode mode, const TourOptions& options,
                                      const planner::ReachablePredicate& reachable) {
   const ViewpointOptions viewpoint_options = viewpointOptions(context, mode, reachable);
-  // As the mission gives them, before free mode widens the range.
   for (std::size_t k = 0; k < point_targets; ++k) requireOnStructure(targets[k], context.environment());
   std::vector<TourStop> stops(targets.size());
   parallelFor(targets.size(), options.workers, [&](std::size_t k) {
-    TourStop stop{targets[k], {}, {}, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
-    if (mode == FlightMode::Free && k < point_targets)
-      stop.target.standoff_max_m = std::max(targets[k].standoff_max_m, options.free_standoff_max_m);
+    TourStop stop;
+    stop.target = targets[k];
+    if (k < point_targets) moveOntoSurface(stop, context.environment());
     stop.viewpoint = chooseViewpoint(stop.target, context.environment(), context.energy(), viewpoint_options);
+    stop.standoff_limited = mode == FlightMode::Free && k < point_targets &&
+                            stop.viewpoint.standoff_m < viewpoint_options.standoff_m - planner::kStandoffTolerance_m;
+    if (stop.standoff_limited && options.free_standoff_max_m &&
+        *options.free_standoff_max_m > stop.target.standoff_max_m) {
+      InspectionTarget wider = stop.target;
+      wider.standoff_max_m = *options.free_standoff_max_m;
+      const Viewpoint farther = chooseViewpoint(wider, context.environment(), context.energy(), viewpoint_options);
+      stop.beyond_standoff_range = farther.distance_m > stop.target.standoff_max_m &&
+                                   farther.standoff_m > stop.viewpoint.standoff_m + planner::kStandoffTolerance_m;
+      if (stop.beyond_standoff_range) stop.viewpoint = farther;
+    }
     stop.hover = hoverSample(context, stop.viewpoint.position_m);
     stops[k] = std::move(stop);
   });
@@ -159,8 +182,8 @@ std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext&
     const std::vector<InspectionTarget> points = contactTargets(context.environment().grid(), grid);
     targets.insert(targets.end(), points.begin(), points.end());
   }
-  // Point targets first in the search, so that free mode widens their standoff only; the stops
-  // list contact points before them.
+  // Point targets first in the search, so that free mode marks them only; the stops list contact
+  // points before them.
   std::vector<TourStop> viewpoints = viewpointStops(targets, mission.targets.size(), context, mode, options, reachable);
   std::rotate(viewpoints.begin(), viewpoints.begin() + static_cast<std::ptrdiff_t>(mission.targets.size()), viewpoints.end());
   for (std::size_t k = 0; k + mission.targets.size() < viewpoints.size(); ++k) viewpoints[k].contact = true;
@@ -884,9 +907,9 @@ void TourOptions::validate() const {
   // Unknown names, a temperature out of the models' range: refused by what will use them.
   planner::plannerInfo(planner);
   battery::makeAgeingModel(ageing_model, ageingModelOptions(temperature_c));
-  if (!(free_standoff_max_m > 0.0 && free_standoff_max_m <= InspectionTarget::kMaxStandoff_m))
-    throw InputError("tour options: free_standoff_max_m must be in (0, " + formatNumber(InspectionTarget::kMaxStandoff_m) +
-                     "] m, got " + formatNumber(free_standoff_max_m));
+  if (free_standoff_max_m && !(*free_standoff_max_m > 0.0 && *free_standoff_max_m <= InspectionTarget::kMaxStandoff_m))
+    throw InputError("tour options: free_standoff_max_m must be in (0, " +
+                     formatNumber(InspectionTarget::kMaxStandoff_m) + "] m, got " + formatNumber(*free_standoff_max_m));
   // The duty projection's times and counts, under the same rules as a route comparison's.
   DutyOptions duty;
   duty.idle_min = idle_min;

@@ -5,13 +5,6 @@
 #include <limits>
 
 namespace ceilplan::mission {
-namespace {
-
-// Within a millimetre of the standoff counts as kept, as in planner::standoffReport.
-constexpr double kToleranceM = 1e-3;
-
-}  // namespace
-
 TourStandoff measureTourStandoff(const TourResult& tour, const environment::Environment& environment, double standoff_m) {
   TourStandoff result;
   result.standoff_m = standoff_m;
@@ -25,7 +18,8 @@ TourStandoff measureTourStandoff(const TourResult& tour, const environment::Envi
   for (std::size_t k = 0; k < tour.stops.size(); ++k) {
     const Viewpoint& viewpoint = tour.stops[k].viewpoint;
     closest(viewpoint.standoff_m, viewpoint.position_m);
-    if (viewpoint.standoff_m < standoff_m - kToleranceM) result.narrowed_stops.push_back(static_cast<int>(k));
+    if (viewpoint.standoff_m < standoff_m - planner::kStandoffTolerance_m)
+      result.narrowed_stops.push_back(static_cast<int>(k));
   }
   for (std::size_t s = 0; s < tour.plan.sorties.size(); ++s)
     for (const SortieLeg& leg : tour.plan.sorties[s].legs) {

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 
 namespace ceilplan::mission {
 
@@ -172,6 +173,43 @@ void requireOnStructure(const InspectionTarget& target, const environment::Envir
   throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
                               " lies in free air: no structure within its standoff range of " +
                               formatNumber(reach_m) + " m; put the point on the surface it inspects");
+}
+
+std::optional<Eigen::Vector3d> surfacePoint(const InspectionTarget& target,
+                                            const environment::Environment& environment) {
+  const Eigen::Vector3d& p = target.point_m;
+  if (!environment.contains(p)) return p;
+  const environment::VoxelGrid& grid = environment.grid();
+  const environment::GridFrame& frame = grid.frame();
+  const int i0 = frame.indexOf(0, p.x()), j0 = frame.indexOf(1, p.y()), k0 = frame.indexOf(2, p.z());
+  if (grid.at(i0, j0, k0) != environment::CellState::Occupied) return p;
+  const double resolution_m = frame.resolution_m();
+  std::optional<Eigen::Vector3d> best;
+  double best_m = target.standoff_max_m;
+  // The nearest point of each face an occupied voxel shares with a free one, shell by shell (in
+  // whole voxels) outwards, until no voxel of the next shell can hold a nearer face.
+  for (int n = 0; (n - 1) * resolution_m <= best_m; ++n)
+    for (int k = k0 - n; k <= k0 + n; ++k)
+      for (int j = j0 - n; j <= j0 + n; ++j)
+        for (int i = i0 - n; i <= i0 + n; ++i) {
+          if (std::max({std::abs(i - i0), std::abs(j - j0), std::abs(k - k0)}) != n) continue;
+          if (grid.at(i, j, k) != environment::CellState::Occupied) continue;
+          const int voxel[3] = {i, j, k};
+          for (int axis = 0; axis < 3; ++axis)
+            for (int side : {-1, 1}) {
+              int neighbour[3] = {i, j, k};
+              neighbour[axis] += side;
+              if (grid.at(neighbour[0], neighbour[1], neighbour[2]) != environment::CellState::Free) continue;
+              Eigen::Vector3d on_face;
+              for (int other = 0; other < 3; ++other)
+                on_face[other] =
+                    std::clamp(p[other], frame.faceOf(other, voxel[other]), frame.faceOf(other, voxel[other] + 1));
+              on_face[axis] = frame.faceOf(axis, side > 0 ? voxel[axis] + 1 : voxel[axis]);
+              const double distance_m = (on_face - p).norm();
+              if (distance_m <= best_m) std::tie(best, best_m) = std::make_tuple(on_face, distance_m);
+            }
+        }
+  return best;
 }
 
 double hoverCurrentA(const environment::Environment& environment, const energy::EnergyModel& model,

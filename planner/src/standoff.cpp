@@ -24,14 +24,12 @@ StandoffReport standoffReport(const environment::Environment& environment,
   report.standoff_m = standoff_m;
   report.min_standoff_m = std::numeric_limits<double>::infinity();
   const double step_m = 0.5 * environment.grid().frame().resolution_m();
-  // Within a millimetre of the standoff counts as kept.
-  constexpr double kToleranceM = 1e-3;
   std::optional<NarrowedSpan> open_span;
   double along_m = 0.0, previous_m = 0.0;
   const auto visit = [&](const Eigen::Vector3d& p, double at_m) {
     const double standoff = standoffAt(environment, p);
     report.min_standoff_m = std::min(report.min_standoff_m, standoff);
-    const bool narrowed = standoff < standoff_m - kToleranceM;
+    const bool narrowed = standoff < standoff_m - kStandoffTolerance_m;
     if (narrowed && !open_span) open_span = NarrowedSpan{previous_m, at_m, standoff, p};
     if (narrowed) {
       open_span->to_m = at_m;

@@ -166,5 +166,38 @@ TEST(TourFiles, ATourRecordsTheMissionMapAndVehicleFilesAndTheSeed) {
   EXPECT_EQ(json["inputs"][1]["sha256"].get<std::string>().size(), 64u);
 }
 
+// Every standoff figure a summary prints says what it measures: the gap between the airframe's
+// bounding sphere and the nearest structure, and a negative one is said as the overlap it is,
+// never as a bare negative number.
+TEST(StandoffWords, EveryStandoffFigureSaysWhatItMeasuresAndANegativeOneIsAnOverlap) {
+  EXPECT_EQ(standoffText(0.42), "the airframe's bounding sphere 0.42 m from the nearest structure");
+  EXPECT_EQ(standoffText(-0.07),
+            "the airframe's bounding sphere 0.07 m into the nearest structure (the sphere overlaps it; the airframe "
+            "itself keeps its clearance)");
+
+  planner::StandoffReport plan;
+  plan.standoff_m = 1.0;
+  plan.length_m = 12.52;
+  plan.narrowed_m = 3.22;
+  plan.min_standoff_m = -0.19;
+  plan.spans = {{2.0, 4.0, 0.3, {0.0, 0.0, 1.0}}, {6.0, 7.22, -0.19, {1.0, 0.7, 5.2}}};
+  EXPECT_EQ(standoffLine(plan),
+            "standoff 1 m: kept over 9.30 of 12.52 m, narrowed over 3.22 m in 2 places; closest: the airframe's "
+            "bounding sphere 0.19 m into the nearest structure (the sphere overlaps it; the airframe itself keeps its "
+            "clearance) at (1.00, 0.70, 5.20)");
+  EXPECT_EQ(standoffJson(plan)["standoff_measures"], kStandoffMeasures);
+
+  mission::TourResult tour;
+  tour.mode = mission::FlightMode::Free;
+  tour.standoff = mission::TourStandoff{1.0, 55.1, 0.0, -0.07, {8.5, 0.24, 1.52}, {}, {}};
+  const std::string line = standoffLine(tour);
+  EXPECT_EQ(line,
+            "standoff 1 m: kept over the whole 55.1 m flown; 0 of 0 viewpoints keep less; closest: the airframe's "
+            "bounding sphere 0.07 m into the nearest structure (the sphere overlaps it; the airframe itself keeps its "
+            "clearance) at (8.50, 0.24, 1.52) (tour.json: standoff)");
+  EXPECT_EQ(line.find("-0."), std::string::npos) << line;
+  EXPECT_FALSE(standoffLimitedLine(tour));  // no target kept less for want of range
+}
+
 }  // namespace
 }  // namespace ceilplan::io

@@ -327,10 +327,44 @@ TEST(TourCommand, PairwisePlannersStillPlanEveryLeg) {
   EXPECT_EQ(tour["targets_visited"], 4);
 }
 
-TEST(TourCommand, MissingGeodeticOriginFailsWhenExporting) {
+// A scan without a coordinate reference still tours: every local-frame output is written, and
+// one line names the geodetic exports skipped (tour.json records them).
+TEST(TourCommand, MissionWithoutAnOriginWritesItsLocalOutputsAndNamesTheSkippedExports) {
+  const std::filesystem::path dir = scratchDirectory("tour_no_origin");
   MissionText text;
   text.origin = "";
-  expectFailure("origin", text, "", 2, "origin");
+  const std::filesystem::path mission = writeMission(dir, text);
+  const testing::CommandResult result =
+      runCeilplan("tour --mission " + mission.string() + " --mode ceiling --out " + (dir / "out").string() + kFast);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  for (const char* file :
+       {"tour.json", "path.csv", "trajectory.csv", "trajectory.json", "report.html", "map_top.csv", "map_side.csv"})
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "out" / file)) << file;
+  const std::vector<std::string> skipped = {"mission.plan", "mission.waypoints", "mission.kmz", "routes.kml",
+                                            "routes.geojson"};
+  for (const std::string& file : skipped) EXPECT_FALSE(std::filesystem::exists(dir / "out" / file)) << file;
+  EXPECT_EQ(readJson(dir / "out" / "tour.json")["targets_visited"], 4);
+
+  std::vector<std::string> lines;
+  std::istringstream out(result.out);
+  for (std::string line; std::getline(out, line);)
+    if (line.find("geodetic exports skipped") != std::string::npos) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 1u) << result.out;
+  EXPECT_EQ(lines[0],
+            "geodetic exports skipped (mission.plan, mission.waypoints, mission.kmz, routes.kml, "
+            "routes.geojson): " +
+                mission.string() +
+                " has no 'origin:' ({lat, lon, alt} of the map frame); every local-frame output was written");
+  const nlohmann::json recorded = readJson(dir / "out" / "tour.json")["geodetic_exports_skipped"];
+  EXPECT_EQ(recorded["files"].get<std::vector<std::string>>(), skipped);
+  EXPECT_NE(recorded["reason"].get<std::string>().find("no 'origin:'"), std::string::npos);
+
+  // --no-export keeps its meaning: no geodetic file, whatever the mission has.
+  const testing::CommandResult quiet = runCeilplan(
+      "tour --mission " + mission.string() + " --mode ceiling --no-export --out " + (dir / "quiet").string() + kFast);
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_NE(quiet.out.find("no autopilot files (--no-export)"), std::string::npos) << quiet.out;
+  EXPECT_EQ(quiet.out.find("geodetic exports skipped"), std::string::npos) << quiet.out;
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 """Tour.write follows the output rules of `ceilplan tour --out` (docs/cli.md, "Outputs")."""
 
+import json
 import os
 import shutil
 from pathlib import Path
@@ -59,3 +60,23 @@ def test_the_missions_map_is_never_an_output(tmp_path):
     with pytest.raises(ceilplan.InputError, match="is the input the mission's map"):
         tour.write(tmp_path / "open.bt")
     assert (tmp_path / "open.bt").read_bytes() == (MAPS / "open.bt").read_bytes()
+
+
+def test_a_mission_without_an_origin_writes_its_local_outputs(tmp_path):
+    # The coverage strip (tests/coverage/missions) with its origin left out: Tour.write, with
+    # the autopilot files asked for, writes every local-frame output and records the geodetic
+    # exports it skipped.
+    strip = Path(os.environ["CEILPLAN_SOURCE_DIR"]) / "tests/coverage/missions/bridge_strip.yaml"
+    text = "".join(line for line in strip.read_text().splitlines(True) if not line.startswith("origin:"))
+    (tmp_path / "strip.yaml").write_text(text.replace("../../../maps/", str(MAPS) + "/"))
+    tour = ceilplan.plan_tour(ceilplan.Mission.load(tmp_path / "strip.yaml"), mode="ceiling")
+    out = tmp_path / "tour"
+    tour.write(out)
+    for name in ["tour.json", "path.csv", "trajectory.csv", "trajectory.json", "report.html", "map_top.csv",
+                 "map_side.csv", "photos.csv", "coverage.json", "coverage_elements.csv"]:
+        assert (out / name).is_file(), name
+    skipped = ["mission.plan", "mission.waypoints", "mission.kmz", "routes.kml", "routes.geojson"]
+    assert not any((out / name).exists() for name in skipped)
+    recorded = json.loads((out / "tour.json").read_text())["geodetic_exports_skipped"]
+    assert recorded["files"] == skipped
+    assert "no 'origin:'" in recorded["reason"]

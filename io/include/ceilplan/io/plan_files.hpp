@@ -69,11 +69,23 @@ std::string routePlanText(const mission::RoutePlan& route);
 // objective, whether it is valid (and the violation) and what the map's unknown space counts as.
 std::string routeCheckText(const mission::RouteCheck& check, std::size_t points, const mission::PlanningContext& context);
 
+// What every standoff figure of the JSON outputs measures (their key `standoff_measures`).
+inline constexpr const char* kStandoffMeasures =
+    "the gap between the airframe's bounding sphere and the nearest structure (planner::standoffAt); negative where "
+    "the sphere overlaps a structure, as close under a ceiling, while the airframe itself keeps its clearance";
+// A standoff figure (planner::standoffAt) in words, a negative one as the overlap it is: "the
+// airframe's bounding sphere 0.42 m from the nearest structure", "the airframe's bounding sphere
+// 0.07 m into the nearest structure (the sphere overlaps it; the airframe itself keeps its
+// clearance)".
+std::string standoffText(double standoff_m);
+
 // Free mode's standoff report: standoff_m (asked for), length_m, narrowed_m, min_standoff_m and
-// `narrowed`, the spans with less ({from_m, to_m, min_standoff_m, at: [x, y, z]}, along the path).
+// `narrowed`, the spans with less ({from_m, to_m, min_standoff_m, at: [x, y, z]}, along the
+// path), and standoff_measures (kStandoffMeasures).
 nlohmann::json standoffJson(const planner::StandoffReport& report);
 // One line for a terminal, e.g. "standoff 1 m: kept over 9.30 of 12.52 m, narrowed over 3.22 m
-// in 2 places, to 0.18 m at (1.00, 0.70, 5.20)".
+// in 2 places; closest: the airframe's bounding sphere 0.18 m from the nearest structure at
+// (1.00, 0.70, 5.20)".
 std::string standoffLine(const planner::StandoffReport& report);
 
 // Both modes side by side with the duty projection, as `ceilplan compare` prints it.

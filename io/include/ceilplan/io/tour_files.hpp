@@ -22,6 +22,14 @@ namespace ceilplan::io {
 // mission, map and vehicle files and the seed.
 Provenance tourProvenance(Provenance provenance, const mission::Mission& mission, std::uint64_t seed);
 
+// The geodetic exports (the autopilot missions, the KMZ, KML and GeoJSON) a tour of `mission`
+// skips because the mission has no origin: none when it has one. The local-frame outputs are
+// always written.
+std::vector<std::string> geodeticExportsSkipped(const mission::Mission& mission);
+// The one line that names them and says why, e.g. "geodetic exports skipped (mission.plan, ...):
+// scan.yaml has no 'origin:' ...; every local-frame output was written".
+std::string geodeticExportsSkippedLine(const mission::Mission& mission);
+
 // Why the tour's DJI KMZ cannot be written for the mission's aircraft and payload (`dji:`; a
 // gimbal pitch beyond the payload's range, naming the sortie and waypoint), or none.
 std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission);
@@ -55,8 +63,10 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
 
 // DIR/tour.json, DIR/path.csv, DIR/map_top.csv, DIR/map_side.csv, DIR/trajectory.csv and
 // DIR/trajectory.json (per sortie when several: trajectory_sortie2.csv, ...), DIR/report.html
-// and, with `autopilot`, DIR/mission.plan, DIR/mission.waypoints and DIR/mission.kmz (DJI WPML)
-// per sortie, DIR/routes.kml and DIR/routes.geojson (docs/tours.md, docs/flying.md).
+// and, with `autopilot` and the mission's origin, DIR/mission.plan, DIR/mission.waypoints and
+// DIR/mission.kmz (DJI WPML) per sortie, DIR/routes.kml and DIR/routes.geojson (docs/tours.md,
+// docs/flying.md); without an origin those are skipped (geodeticExportsSkipped, tour.json
+// geodetic_exports_skipped).
 void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour, const mission::Mission& mission,
                         const environment::Environment& environment, std::optional<Autopilot> autopilot,
                         const Provenance& provenance);
@@ -74,7 +84,8 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
 // "both"), the leg planner, the seed and the model whose wear the sortie split minimises.
 std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options);
 // Its last lines: each directory written (DIR, or DIR/ceiling and DIR/free for both modes) with
-// the files in it (the DJI KMZ only where it was written), then the command that draws the figures.
+// the files in it (the DJI KMZ only where it was written), the geodetic exports skipped for want
+// of an origin (geodeticExportsSkippedLine), then the command that draws the figures.
 std::string tourFilesLine(const std::filesystem::path& dir, const mission::Mission& mission,
                           const std::vector<mission::TourResult>& tours, std::optional<Autopilot> autopilot);
 
@@ -83,7 +94,20 @@ std::string tourFilesLine(const std::filesystem::path& dir, const mission::Missi
 std::string tourSummary(const mission::TourResult& tour);
 // Free mode (tour.standoff set): where the tour kept less than the conventional standoff, e.g.
 // "standoff 1 m: kept over 20.3 of 55.1 m flown, narrowed over 34.8 m on 9 legs; 9 of 9
-// viewpoints keep less; closest 0.12 m at (8.50, 0.24, 1.52) (tour.json: standoff)".
+// viewpoints keep less; closest: the airframe's bounding sphere 0.12 m from the nearest
+// structure at (8.50, 0.24, 1.52) (tour.json: standoff)"; a negative closest approach is said as
+// the overlap it is (standoffText).
 std::string standoffLine(const mission::TourResult& tour);
+// The point targets given inside a structure and moved onto its surface (TourStop::given_point_m),
+// each with how far and from where to where, e.g. "1 target(s) given inside a structure moved
+// onto its surface: 'deck' by 0.08 m, from (10.00, 0.00, 6.08) to (10.00, 0.00, 6.00) (tour.json:
+// targets[].moved_onto_surface_m)"; none when no target was moved.
+std::optional<std::string> movedOntoSurfaceLine(const mission::TourResult& tour);
+// Free mode: the point targets whose standoff range holds no viewpoint keeping the conventional
+// standoff and where each was seen from, e.g. "1 target(s) keep less than the 1 m standoff, as no
+// viewpoint in their standoff range keeps it: 'deck_bay_14_north' seen from 1.50 m, within its
+// range 0.3-1.5 m, with the airframe's bounding sphere 0.97 m from the nearest structure
+// (tour.json: standoff.limited_targets)"; none when every target's range keeps it.
+std::optional<std::string> standoffLimitedLine(const mission::TourResult& tour);
 
 }  // namespace ceilplan::io

@@ -43,7 +43,10 @@ struct TourOptions {
   double lattice_spacing_m = planner::kTourLatticeSpacing_m;       // roadmap and lattice: between lattice nodes
   bool straight_when_clear = true;      // a pair joined by a valid straight motion skips the search
   std::string ageing_model = "xu";      // the split minimises this model's wear
-  double free_standoff_max_m = 3.0;     // free mode: farthest viewpoint (a conventional planner zooms)
+  // Free mode keeps each point target's own standoff range. Given, a target whose range holds no
+  // viewpoint keeping the conventional standoff may be seen from up to this far (a conventional
+  // planner with a zoom lens), and is reported so (TourStop::beyond_standoff_range).
+  std::optional<double> free_standoff_max_m;
   int workers = 2;                      // threads planning legs
   double temperature_c = 25.0;          // cell temperature for the ageing models
   // Duty projection, the founding paper's month: the whole tour is one mission.
@@ -71,7 +74,7 @@ struct TourOptions {
 };
 
 struct TourStop {
-  InspectionTarget target;  // its standoff range as searched in this mode; a photo: its aim point and hold
+  InspectionTarget target;  // as the mission gives it; a photo: its aim point and hold
   Viewpoint viewpoint;
   planner::PathSample hover;  // hovering at the viewpoint under the full model (the record's dwell)
   // A photo stop: its index in TourResult::coverage->photos. The pose is the plan's (position,
@@ -81,6 +84,15 @@ struct TourStop {
   std::optional<double> gimbal_pitch_deg;
   std::optional<double> max_speed_m_s;   // on the move: no faster than this from this photo to the next
   bool contact = false;                  // a contact grid point: its dwell is a reading, not a photo
+  // Free mode, a point target: no viewpoint within its standoff range keeps the conventional
+  // standoff from every structure; it is seen from within the range all the same, keeping less
+  // (viewpoint.standoff_m), or from beyond the range's maximum where TourOptions::
+  // free_standoff_max_m allows it and that keeps more (beyond_standoff_range).
+  bool standoff_limited = false;
+  bool beyond_standoff_range = false;
+  // A point target given inside a structure (its point in an occupied voxel, as a scanned point
+  // is), moved onto the structure's surface (mission::surfacePoint): where the mission put it.
+  std::optional<Eigen::Vector3d> given_point_m;
 };
 
 // Seconds spent per phase of planTour.

@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 
 namespace ceilplan::mission {
@@ -60,6 +61,13 @@ struct Viewpoint {
 // of its point. Throws ceilplan::InputError naming the target when none is, a target in free
 // air (a point outside the map is left to chooseViewpoint, which names the map's extent).
 void requireOnStructure(const InspectionTarget& target, const environment::Environment& environment);
+
+// Where a target given on or inside a structure (its point in an occupied voxel, as a scanned
+// point is) lies on the structure's surface: the nearest point of a face between an occupied and
+// a free voxel, at most the target's standoff_max_m away. The point itself when its voxel is not
+// occupied; none when no such face is that near (chooseViewpoint then names the target).
+std::optional<Eigen::Vector3d> surfacePoint(const InspectionTarget& target,
+                                            const environment::Environment& environment);
 
 // Pack current hovering at `body_m` under the full model: each rotor's mean gap and coverage
 // above, the mean gap below.

@@ -12,6 +12,9 @@
 
 namespace ceilplan::planner {
 
+// Within a millimetre of a standoff counts as keeping it (paths, viewpoints, tours).
+inline constexpr double kStandoffTolerance_m = 1e-3;
+
 // The radius of the sphere around the body centre that holds the airframe's collision
 // cylinder (without margins): 0.38 m for the default quad.
 double airframeRadius_m(const environment::VehicleGeometry& vehicle);
