@@ -31,9 +31,14 @@ void proposeAndTour(const std::filesystem::path& dir, const std::string& propose
   const std::string yaml = testing::readWholeFile(dir / "proposed.yaml");
   EXPECT_EQ(yaml.rfind("# ceilplan ", 0), 0u) << "the provenance comes first";
 
+  // No origin in a proposed mission: the tour writes its local-frame files and says what it skipped.
   const auto tour = testing::runCeilplan("tour --mission " + (dir / "proposed.yaml").string() +
-                                         " --mode both --no-export --out " + (dir / "tour").string());
+                                         " --mode both --out " + (dir / "tour").string());
   ASSERT_EQ(tour.exit_code, 0) << tour.err << tour.out;
+  EXPECT_NE(tour.out.find("geodetic exports skipped (mission.plan, mission.waypoints, mission.kmz, routes.kml, "
+                          "routes.geojson)"),
+            std::string::npos)
+      << tour.out;
   for (const char* mode : {"ceiling", "free"}) {
     const nlohmann::json coverage =
         nlohmann::json::parse(testing::readWholeFile(dir / "tour" / mode / "coverage.json"));

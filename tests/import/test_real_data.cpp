@@ -159,7 +159,8 @@ TEST(RealData, OctomapScanWithoutOriginsSaysWhatItAssumed) {
   EXPECT_EQ(
       sidecar["free_space"],
       "assumed, no sensor origins: voxels holding a point are occupied; every other voxel of the points' bounding "
-      "box whose centre lies farther than 0.4 m from them is free; the rest is unknown");
+      "box whose centre lies farther than 0.4 m from them is free; the rest is unknown: an obstacle for planning "
+      "unless --unknown free or fill, and no ceiling is seen through that band");
   EXPECT_NEAR(sidecar["figures"]["occupied_m3"].get<double>(), 75.0, 3.0);  // the same voxels hold points
   expectExtent(sidecar, {-0.2, -15.2, -1.2}, {27.2, 16.6, 10.2});
   const OccupancyMap loaded = OccupancyMap::load(map);
