@@ -81,13 +81,16 @@ std::vector<FlagFileEntry> readFlagFile(std::istream& input, const std::vector<s
                                         const std::string& command) {
   std::vector<FlagFileEntry> entries;
   try {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(input);
+    std::ostringstream text;
+    text << input.rdbuf();
+    const detail::YamlText loaded = detail::loadYamlText(text.str());
     // yaml-cpp's Load reads the first document only: a second one would be ignored silently.
-    if (documents.size() > 1)
-      throw InputError("config file holds " + std::to_string(documents.size()) +
+    if (loaded.documents > 1)
+      throw InputError("config file holds " + std::to_string(loaded.documents) +
                        " YAML documents (split by '---'); give one map of flag names to values");
-    if (documents.empty() || documents.front().IsNull()) return entries;
-    const YAML::Node& root = documents.front();
+    // Only a file of comments is empty: text that yaml-cpp reads as nothing is not a map.
+    if (loaded.first.IsNull() && loaded.documents == 0) return entries;
+    const YAML::Node& root = loaded.first;
     if (!root.IsMap()) throw InputError("config file must be a YAML map of flag names to values");
     std::vector<Given> given;
     collect(root, known_flags, command, entries, given);

@@ -7,6 +7,7 @@
 #include "ceilplan/core/spelling.hpp"
 
 #include <algorithm>
+#include <sstream>
 #include <cmath>
 #include <limits>
 
@@ -56,22 +57,51 @@ std::string kindName(FileKind kind) {
   return "file";
 }
 
+YamlText loadYamlText(const std::string& text) {
+  YamlText loaded;
+  loaded.first = YAML::Load(text);
+  bool content = false, ended = false;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto marker = [&](const char* word) {
+      return line.rfind(word, 0) == 0 && (line.size() == 3 || line[3] == ' ' || line[3] == '\t');
+    };
+    if (marker("---")) {
+      if (content || ended || loaded.documents == 0) ++loaded.documents;
+      content = ended = false;
+      continue;
+    }
+    if (marker("...")) {
+      ended = true;
+      content = false;
+      continue;
+    }
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line[start] == '#' || (line[0] == '%' && !content)) continue;
+    if (!content && (loaded.documents == 0 || ended)) ++loaded.documents;
+    content = true;
+    ended = false;
+  }
+  return loaded;
+}
+
 YamlFile::YamlFile(const std::filesystem::path& file, FileKind kind) : path_(file), kind_(kind) {
   // An empty file leaves `text` empty: refused below, as not a map.
   const std::string text = readInputFile(file, kindName(kind), kMaxYamlFileBytes);
   // A map or a program given by mistake: say so, rather than quote the parser on its bytes.
   if (text.find('\0') != std::string::npos) fail("holds binary data, not YAML text; is it a " + kindName(kind) + "?");
-  std::vector<YAML::Node> documents;
+  YamlText loaded;
   try {
-    documents = YAML::LoadAll(text);
+    loaded = loadYamlText(text);
   } catch (const YAML::Exception& e) {
     fail("malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " + printableText(e.msg));
   }
   // yaml-cpp's Load reads the first document only: a second one would be ignored silently.
-  if (documents.size() > 1)
-    fail("holds " + std::to_string(documents.size()) + " YAML documents (split by '---'); a " + kindName(kind) +
+  if (loaded.documents > 1)
+    fail("holds " + std::to_string(loaded.documents) + " YAML documents (split by '---'); a " + kindName(kind) +
          " is one document");
-  if (!documents.empty()) root_ = documents.front();
+  root_ = loaded.first;
   if (!root_.IsMap()) fail("a " + kindName(kind) + " must be a YAML map of keys (docs/missions.md)");
 }
 

@@ -42,6 +42,17 @@ struct Range {
 enum class FileKind { Mission, Vehicle, Battery };
 std::string kindName(FileKind kind);
 
+// The first YAML document of `text`, and how many documents it holds. yaml-cpp 0.7's LoadAll
+// never returns on some malformed text (fuzz-vehicle-yaml, fuzz-mission-yaml and fuzz-flag-file
+// found three, tests/io/fuzz_regressions_yaml/), so the first document is read
+// with Load and the others are counted by their markers: a '---' line after content, or content
+// after a '...' line. Throws YAML::Exception for malformed YAML.
+struct YamlText {
+  YAML::Node first;
+  std::size_t documents = 0;
+};
+YamlText loadYamlText(const std::string& text);
+
 class YamlFile {
  public:
   // Reads `file`, which must exist, be a regular file and hold a YAML map. Throws InputError.
