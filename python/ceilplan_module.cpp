@@ -80,6 +80,12 @@ Eigen::Vector3d point(const std::vector<double>& xyz, const char* what) {
   return {xyz[0], xyz[1], xyz[2]};
 }
 
+// A crop box given as (xmin, ymin, zmin, xmax, ymax, zmax); its corners are checked where it is used.
+Eigen::AlignedBox3d cropBox(const std::vector<double>& corners) {
+  if (corners.size() != 6) throw InputError("crop must be (xmin, ymin, zmin, xmax, ymax, zmax) in metres");
+  return {Eigen::Vector3d(corners[0], corners[1], corners[2]), Eigen::Vector3d(corners[3], corners[4], corners[5])};
+}
+
 environment::UnknownSpace unknownSpace(const std::string& policy, std::optional<double> fill_max_m) {
   environment::UnknownSpace unknown;
   unknown.policy = environment::unknownPolicyFromName(policy);
@@ -540,11 +546,7 @@ PYBIND11_MODULE(ceilplan, m) {
         options.margin_m = margin_m;
         options.interior = interior;
         options.skip_non_finite = skip_non_finite;
-        if (crop) {
-          if (crop->size() != 6) throw InputError("crop must be (xmin, ymin, zmin, xmax, ymax, zmax) in metres");
-          options.crop_m = Eigen::AlignedBox3d(Eigen::Vector3d((*crop)[0], (*crop)[1], (*crop)[2]),
-                                               Eigen::Vector3d((*crop)[3], (*crop)[4], (*crop)[5]));
-        }
+        if (crop) options.crop_m = cropBox(*crop);
         options.validate();  // before the output is staged or a file read
         if (out.extension() != ".bt") throw InputError(out.string() + ": an imported map is written as .bt");
         std::filesystem::path summary = out;
@@ -631,11 +633,7 @@ PYBIND11_MODULE(ceilplan, m) {
         request.mission_flag = "out";
         request.picture_flag = "picture";
         if (home) request.options.home_m = point(*home, "home");
-        if (crop) {
-          if (crop->size() != 6) throw InputError("crop must be (xmin, ymin, zmin, xmax, ymax, zmax) in metres");
-          request.options.crop_m = Eigen::AlignedBox3d(Eigen::Vector3d((*crop)[0], (*crop)[1], (*crop)[2]),
-                                                       Eigen::Vector3d((*crop)[3], (*crop)[4], (*crop)[5]));
-        }
+        if (crop) request.options.crop_m = cropBox(*crop);
         request.options.min_region_area_m2 = min_area_m2;
         request.options.max_regions = max_regions;
         request.settings.map_file = map;
