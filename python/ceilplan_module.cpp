@@ -533,7 +533,7 @@ PYBIND11_MODULE(ceilplan, m) {
       [](const std::filesystem::path& out, const std::optional<std::filesystem::path>& points,
          const std::optional<std::filesystem::path>& mesh, const std::optional<std::filesystem::path>& origins,
          double resolution_m, const std::string& crs, double max_range_m, std::optional<double> free_distance_m,
-         std::optional<double> margin_m, const std::string& interior, bool skip_non_finite,
+         const std::string& free_region, std::optional<double> margin_m, const std::string& interior, bool skip_non_finite,
          const std::optional<std::vector<double>>& crop) {
         io::MapImportOptions options;
         options.points = points.value_or("");
@@ -543,6 +543,7 @@ PYBIND11_MODULE(ceilplan, m) {
         options.crs = crs;
         options.max_range_m = max_range_m;
         options.free_distance_m = free_distance_m;
+        options.free_region = free_region;
         options.margin_m = margin_m;
         options.interior = interior;
         options.skip_non_finite = skip_non_finite;
@@ -571,7 +572,8 @@ PYBIND11_MODULE(ceilplan, m) {
       py::arg("out"), py::kw_only(), py::arg("points") = py::none(), py::arg("mesh") = py::none(),
       py::arg("origins") = py::none(), py::arg("resolution_m") = import_defaults.resolution_m, py::arg("crs") = "",
       py::arg("max_range_m") = import_defaults.max_range_m, py::arg("free_distance_m") = py::none(),
-      py::arg("margin_m") = py::none(), py::arg("interior") = import_defaults.interior,
+      py::arg("free_region") = import_defaults.free_region, py::arg("margin_m") = py::none(),
+      py::arg("interior") = import_defaults.interior,
       py::arg("skip_non_finite") = false, py::arg("crop") = py::none());
 
   const battery::DutyStudyOptions paper;  // the defaults of the study and of `ceilplan duty`

@@ -94,6 +94,12 @@ const CommandRegistration registration(19, [](CLI::App& parent) {
                       "Without --origins: space farther than this from every point is free (default: two voxels)")
       ->needs(points)
       ->excludes(origins);
+  command->add_option("--free-region", args->options.free_region,
+                      "Without --origins: where that holds: between (only where a point lies above and below, in "
+                      "the voxel's column: beyond the scanned surfaces stays unknown) or box (the whole box)")
+      ->capture_default_str()
+      ->needs(points)
+      ->excludes(origins);
   command->add_option("--margin", args->options.margin_m,
                       "Known space beyond the data's bounding box, in metres (default: 1 for a mesh, 0 for a point cloud)");
   command->add_option("--crop", args->crop,

@@ -311,6 +311,12 @@ BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const Sens
   return built;
 }
 
+AssumedFreeRegion assumedFreeRegionFromName(const std::string& name) {
+  if (name == "between") return AssumedFreeRegion::BetweenSurfaces;
+  if (name == "box") return AssumedFreeRegion::WholeBox;
+  throw ceilplan::InputError("unknown free region '" + name + "': use between or box");
+}
+
 BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const PointAssumptionOptions& options,
                             const std::function<void(double)>& progress) {
   const double resolution = options.resolution_m;
@@ -337,6 +343,20 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
     if (frame.inside(v[0], v[1], v[2])) grid.set(v[0], v[1], v[2], CellState::Occupied);
   }
   if (progress) progress(0.1);
+  // Each column's lowest and highest point-holding voxel: between them the cloud has a surface
+  // above and one below (AssumedFreeRegion::BetweenSurfaces).
+  const int nx = frame.size()[0], ny = frame.size()[1], nz = frame.size()[2];
+  std::vector<int> lowest(std::size_t(nx) * ny, nz), highest(std::size_t(nx) * ny, -1);
+  const bool between = options.region == AssumedFreeRegion::BetweenSurfaces;
+  if (between)
+    for (int k = 0; k < nz; ++k)
+      for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i)
+          if (grid.at(i, j, k) == CellState::Occupied) {
+            const std::size_t column = std::size_t(j) * nx + i;
+            lowest[column] = std::min(lowest[column], k);
+            highest[column] = k;
+          }
   const DistanceField distance(grid, /*unknown_is_blocked=*/false);
   if (progress) progress(0.4);
   const double free_distance = options.free_distance_m;
@@ -344,9 +364,11 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
       static_cast<std::size_t>(frame.size()[2]), workerCount(),
       [&](std::size_t layer) {
         const int k = static_cast<int>(layer);
-        for (int j = 0; j < frame.size()[1]; ++j)
-          for (int i = 0; i < frame.size()[0]; ++i) {
+        for (int j = 0; j < ny; ++j)
+          for (int i = 0; i < nx; ++i) {
             if (grid.at(i, j, k) == CellState::Occupied) continue;
+            const std::size_t column = std::size_t(j) * nx + i;
+            if (between && !(lowest[column] < k && k < highest[column])) continue;
             const Eigen::Vector3d centre(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k));
             if (distance.lowerBound_m(centre) > free_distance || distance.distance_m(centre) > free_distance)
               grid.set(i, j, k, CellState::Free);
@@ -361,14 +383,16 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
       "the points' bounding box" +
       (options.margin_m > 0.0 ? " grown by " + formatNumber(options.margin_m) + " m" : std::string()) +
       detail::cropText(crop);
-  built.free_space =
-      "assumed, no sensor origins: voxels holding a point are occupied; " +
-      (free_distance > 0.0
-           ? "every other voxel of " + box_text + " whose centre lies farther than " + formatNumber(free_distance) +
-                 " m from them is free; the rest is unknown: an obstacle for planning unless --unknown free or fill, "
-                 "and no ceiling is seen through that band"
-           : "every other voxel of " + box_text +
-                 " is free, behind walls and inside solids too: planning may use space the scan never saw");
+  std::string line = "assumed, no sensor origins: voxels holding a point are occupied; every other voxel of " +
+                     box_text + (between ? " with a point above and below it in its column" : "");
+  line += free_distance > 0.0 ? " whose centre lies farther than " + formatNumber(free_distance) +
+                                    " m from them is free; the rest is unknown: an obstacle for planning unless "
+                                    "--unknown free or fill, and no ceiling is seen through that band"
+                              : " is free";
+  line += between ? "; beyond the scanned surfaces (outside walls, beside the structure) the cloud says nothing, "
+                    "so that space is unknown"
+                  : ", behind walls and beside the structure too: planning may use space the scan never saw";
+  built.free_space = line;
   built.figures = {{"points", double(points_m.size())}, {"free_distance_m", free_distance}};
   if (!crop.isEmpty()) built.figures.emplace_back("points_in_crop", double(in_crop));
   detail::addVolumeFigures(built);

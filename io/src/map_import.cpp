@@ -53,6 +53,7 @@ env::BuiltMap build(const MapImportOptions& options, const std::vector<Eigen::Ve
   env::PointAssumptionOptions assumption;
   assumption.resolution_m = options.resolution_m;
   assumption.free_distance_m = options.free_distance_m.value_or(2.0 * options.resolution_m);
+  assumption.region = env::assumedFreeRegionFromName(options.free_region);
   assumption.margin_m = options.margin_m.value_or(0.0);
   assumption.crop_m = options.crop_m.value_or(env::CropBox());
   return env::mapFromPointsAlone(points, assumption, report);
@@ -72,6 +73,7 @@ void MapImportOptions::validate() const {
   if (!std::isfinite(max_range_m) || max_range_m < 0.0)
     throw InputError("a maximum range of " + formatNumber(max_range_m) + " m: give a finite number >= 0 (0: none)");
   env::meshInteriorFromName(interior);
+  env::assumedFreeRegionFromName(free_region);
   if (crop_m) {
     if (crop_m->min() == env::CropBox().min() && crop_m->max() == env::CropBox().max())
       throw InputError("a crop box must have corners; leave it out for no crop");

@@ -188,6 +188,7 @@ TEST_F(ImportBadInput, ResolutionsOutOfRangeAndBoxesTooLarge) {
   expectRefused("--points " + path("good.pcd") + " --max-range -1 --origins " + path("one.csv"), "--max-range -1");
   expectRefused("--mesh " + path("good.stl") + " --margin -1", "margin -1 m");
   expectRefused("--mesh " + path("good.stl") + " --interior porous", "unknown mesh interior 'porous'");
+  expectRefused("--points " + path("good.pcd") + " --free-region hull", "unknown free region 'hull': use between or box");
 }
 
 TEST_F(ImportBadInput, OriginsThatDoNotFitTheCloud) {

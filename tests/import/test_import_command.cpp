@@ -381,12 +381,20 @@ TEST(ImportFreeSpace, OneLineSaysWhatWasAssumedAndWhatItMeansForPlanning) {
   const auto band = importOk(deck + (dir / "band.bt").string());
   EXPECT_EQ(freeSpaceLine(band, dir / "band.bt"),
             "assumed, no sensor origins: voxels holding a point are occupied; every other voxel of the points' "
-            "bounding box whose centre lies farther than 0.2 m from them is free; the rest is unknown: an obstacle "
-            "for planning unless --unknown free or fill, and no ceiling is seen through that band");
+            "bounding box with a point above and below it in its column whose centre lies farther than 0.2 m from "
+            "them is free; the rest is unknown: an obstacle for planning unless --unknown free or fill, and no "
+            "ceiling is seen through that band; beyond the scanned surfaces (outside walls, beside the structure) "
+            "the cloud says nothing, so that space is unknown");
   const auto dense = importOk(deck + (dir / "dense.bt").string() + " --free-distance 0");
   EXPECT_EQ(freeSpaceLine(dense, dir / "dense.bt"),
             "assumed, no sensor origins: voxels holding a point are occupied; every other voxel of the points' "
-            "bounding box is free, behind walls and inside solids too: planning may use space the scan never saw");
+            "bounding box with a point above and below it in its column is free; beyond the scanned surfaces "
+            "(outside walls, beside the structure) the cloud says nothing, so that space is unknown");
+  const auto whole_box = importOk(deck + (dir / "box.bt").string() + " --free-distance 0 --free-region box");
+  EXPECT_EQ(freeSpaceLine(whole_box, dir / "box.bt"),
+            "assumed, no sensor origins: voxels holding a point are occupied; every other voxel of the points' "
+            "bounding box is free, behind walls and beside the structure too: planning may use space the scan "
+            "never saw");
   testing::writeObj(dir / "hall.obj", testing::boxMesh(kRoomMin, kRoomMax, /*outward=*/false));
   const auto hall =
       importOk("--mesh " + (dir / "hall.obj").string() + " --resolution 0.1 --out " + (dir / "hall.bt").string());

@@ -116,6 +116,34 @@ TEST(MapBuilders, AShellIsOnlyItsSurfaceAndACropThroughAClosedMeshKeepsItsInside
   EXPECT_NE(room.free_space.find("hollow, inside free"), std::string::npos) << room.free_space;
 }
 
+TEST(MapBuilders, ACloudAloneVouchesOnlyForSpaceBetweenItsSurfaces) {
+  // A floor 8 m x 6 m, and a ceiling 3 m up over its first 4 m only (a hall with an open yard).
+  auto points = testing::sampleRectangle({0.01, 0.02, 0.013}, {8, 0, 0}, {0, 6, 0}, 0.05);
+  const auto ceiling = testing::sampleRectangle({0.01, 0.02, 3.033}, {4, 0, 0}, {0, 6, 0}, 0.05);
+  points.insert(points.end(), ceiling.begin(), ceiling.end());
+  environment::PointAssumptionOptions options;
+  options.resolution_m = 0.1;
+  options.free_distance_m = 0.0;
+  const auto between = environment::mapFromPointsAlone(points, options);
+  EXPECT_EQ(stateIn(between, {2.0, 3.0, 1.5}), "free");     // under the ceiling
+  EXPECT_EQ(stateIn(between, {6.0, 3.0, 1.5}), "unknown");  // nothing scanned above: the cloud says nothing
+  EXPECT_EQ(stateIn(between, {2.0, 3.0, 3.033}), "occupied");
+  EXPECT_NE(between.free_space.find("with a point above and below it in its column is free; beyond the scanned "
+                                    "surfaces (outside walls, beside the structure) the cloud says nothing"),
+            std::string::npos)
+      << between.free_space;
+  options.region = environment::AssumedFreeRegion::WholeBox;
+  const auto box = environment::mapFromPointsAlone(points, options);
+  EXPECT_EQ(stateIn(box, {2.0, 3.0, 1.5}), "free");
+  EXPECT_EQ(stateIn(box, {6.0, 3.0, 1.5}), "free");
+  EXPECT_NE(box.free_space.find("behind walls and beside the structure too: planning may use space the scan never saw"),
+            std::string::npos)
+      << box.free_space;
+  EXPECT_EQ(environment::assumedFreeRegionFromName("between"), environment::AssumedFreeRegion::BetweenSurfaces);
+  EXPECT_EQ(environment::assumedFreeRegionFromName("box"), environment::AssumedFreeRegion::WholeBox);
+  EXPECT_THROW(environment::assumedFreeRegionFromName("hull"), InputError);
+}
+
 TEST(MapBuilders, RefuseBadResolutionsAndHugeBoxesBeforeAllocating) {
   const std::vector<Eigen::Vector3d> points = {{0, 0, 0}, {1, 1, 1}};
   environment::PointAssumptionOptions options;

@@ -153,20 +153,33 @@ TEST(RealData, OctomapScanWithItsSensorOriginIsCarvedByItsRays) {
   EXPECT_NE(info.out.find("volume_m3: 75.0 occupied, 942.6 free, 8915.4 unknown"), std::string::npos) << info.out;
 }
 
-TEST(RealData, OctomapScanWithoutOriginsSaysWhatItAssumed) {
-  const fs::path map = testing::scratchDirectory("octomap_scan_no_origins") / "octomap_scan.bt";
-  const auto sidecar = importMap(kScanPoints + " --resolution 0.2", map);
+TEST(RealData, OctomapScanWithoutOriginsVouchesOnlyForSpaceBetweenItsSurfaces) {
+  const fs::path dir = testing::scratchDirectory("octomap_scan_no_origins");
+  const auto sidecar = importMap(kScanPoints + " --resolution 0.2", dir / "between.bt");
   EXPECT_EQ(
       sidecar["free_space"],
       "assumed, no sensor origins: voxels holding a point are occupied; every other voxel of the points' bounding "
-      "box whose centre lies farther than 0.4 m from them is free; the rest is unknown: an obstacle for planning "
-      "unless --unknown free or fill, and no ceiling is seen through that band");
+      "box with a point above and below it in its column whose centre lies farther than 0.4 m from them is free; "
+      "the rest is unknown: an obstacle for planning unless --unknown free or fill, and no ceiling is seen through "
+      "that band; beyond the scanned surfaces (outside walls, beside the structure) the cloud says nothing, so that "
+      "space is unknown");
   EXPECT_NEAR(sidecar["figures"]["occupied_m3"].get<double>(), 75.0, 3.0);  // the same voxels hold points
   expectExtent(sidecar, {-0.2, -15.2, -1.2}, {27.2, 16.6, 10.2});
-  const OccupancyMap loaded = OccupancyMap::load(map);
-  EXPECT_EQ(stateAt(loaded, {2.0, 0.0, -0.1}), "occupied");
-  EXPECT_EQ(stateAt(loaded, {2.0, 0.0, 0.1}), "unknown");  // within 0.4 m of the ground's points
-  EXPECT_EQ(stateAt(loaded, {2.0, 0.0, 1.5}), "free");
+  // The scanner stood 5 cm above the ground: it saw the ground only round itself, and under the
+  // vaults nothing at all. So almost no column has a surface both above and below.
+  EXPECT_LT(sidecar["figures"]["free_m3"].get<double>(), 10.0);
+  const OccupancyMap between = OccupancyMap::load(dir / "between.bt");
+  EXPECT_EQ(stateAt(between, {2.0, 0.0, -0.1}), "occupied");
+  EXPECT_EQ(stateAt(between, {2.0, 0.0, 1.5}), "unknown");   // in front of the facade: nothing above
+  EXPECT_EQ(stateAt(between, {18.0, -2.0, 8.0}), "unknown");  // under a vault: nothing scanned below
+
+  // The whole box, as asked for: the air in front of the facade and behind its walls too.
+  const auto box = importMap(kScanPoints + " --resolution 0.2 --free-region box", dir / "box.bt");
+  EXPECT_GT(box["figures"]["free_m3"].get<double>(), 5000.0);
+  const OccupancyMap whole = OccupancyMap::load(dir / "box.bt");
+  EXPECT_EQ(stateAt(whole, {2.0, 0.0, 0.1}), "unknown");  // within 0.4 m of the ground's points
+  EXPECT_EQ(stateAt(whole, {2.0, 0.0, 1.5}), "free");
+  EXPECT_EQ(stateAt(whole, {20.0, 0.0, 2.0}), "free");  // behind the wall at x = 14.6, which no ray reached
 }
 
 TEST(RealData, OctomapScanToursUnderItsVaultsInBothModes) {

@@ -42,6 +42,21 @@ def test_an_open_mesh_is_a_thin_shell(tmp_path):
     assert "planning may use both sides of every surface" in summary["free_space"]
 
 
+def test_a_cloud_alone_vouches_only_for_space_between_its_surfaces(tmp_path):
+    # A floor 4 x 2 m and a ceiling 2 m up over its first 2 m only, 5 cm apart.
+    rows = ["%.3f %.3f 0.013" % (0.01 + 0.05 * i, 0.01 + 0.05 * j) for i in range(80) for j in range(40)]
+    rows += ["%.3f %.3f 2.033" % (0.01 + 0.05 * i, 0.01 + 0.05 * j) for i in range(40) for j in range(40)]
+    cloud = tmp_path / "hall.xyz"
+    cloud.write_text("\n".join(rows) + "\n")
+    between = ceilplan.import_map(tmp_path / "between.bt", points=cloud, resolution_m=0.1, free_distance_m=0.0)
+    assert "with a point above and below it in its column is free" in between["free_space"]
+    assert "the cloud says nothing, so that space is unknown" in between["free_space"]
+    box = ceilplan.import_map(tmp_path / "box.bt", points=cloud, resolution_m=0.1, free_distance_m=0.0, free_region="box")
+    assert "behind walls and beside the structure too" in box["free_space"]
+    # Free only under the ceiling: half the air the whole box calls free.
+    assert between["figures"]["free_m3"] == pytest.approx(box["figures"]["free_m3"] / 2, rel=0.1)
+
+
 @pytest.mark.parametrize(
     "options, says",
     [
@@ -50,6 +65,7 @@ def test_an_open_mesh_is_a_thin_shell(tmp_path):
         ({"crop": (float("nan"), 0, 0, 1, 1, 1)}, "a crop box needs finite corners"),
         ({"max_range_m": -1.0}, "a maximum range of -1 m"),
         ({"interior": "porous"}, "use auto, solid, hollow or shell"),
+        ({"free_region": "hull"}, "unknown free region 'hull': use between or box"),
     ],
 )
 def test_bad_options_are_refused_before_anything_is_written(tmp_path, options, says):

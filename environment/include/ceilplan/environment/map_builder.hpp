@@ -61,11 +61,24 @@ struct RayCarvingOptions {
   CropBox crop_m = CropBox();
 };
 
+// Where a cloud without sensor origins vouches for free space: the region its assumption covers.
+enum class AssumedFreeRegion {
+  // Between scanned surfaces: only voxels with a point-holding voxel above and one below them in
+  // their column. Outside a room's walls, beside a bridge, beyond the last scanned ceiling, the
+  // cloud says nothing, so that space stays unknown (the map knows where its data ends).
+  BetweenSurfaces,
+  WholeBox,  // every voxel of the box: behind walls and beside the structure too
+};
+
+// "between", "box"; throws ceilplan::InputError for any other name.
+AssumedFreeRegion assumedFreeRegionFromName(const std::string& name);
+
 struct PointAssumptionOptions {
   double resolution_m = 0.1;
-  // A voxel of the box is free when its centre lies farther than this from every voxel that
+  // A voxel of the region is free when its centre lies farther than this from every voxel that
   // holds a point (measured to that voxel's faces); nearer ones stay unknown.
   double free_distance_m = 0.2;
+  AssumedFreeRegion region = AssumedFreeRegion::BetweenSurfaces;
   // The box is the points' bounding box grown by this on every side.
   double margin_m = 0.0;
   // Points outside it are dropped; the box goes no farther.
@@ -127,8 +140,8 @@ struct BuiltMap {
 BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const SensorOrigins& origins,
                         const RayCarvingOptions& options, const std::function<void(double)>& progress = {});
 
-// No sensor positions: voxels holding a point are occupied, voxels of the box farther than
-// free_distance_m from any of them are free, the rest stay unknown. Same checks as above.
+// No sensor positions: voxels holding a point are occupied, voxels of options.region farther
+// than free_distance_m from any of them are free, the rest stay unknown. Same checks as above.
 BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const PointAssumptionOptions& options,
                             const std::function<void(double)>& progress = {});
 

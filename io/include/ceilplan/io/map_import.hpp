@@ -29,6 +29,8 @@ struct MapImportOptions {
   std::string crs;                // "EPSG:<code>" of the data's projected CRS; empty: local already
   double max_range_m = 0.0;       // with origins: the longest ray carved (0: no limit)
   std::optional<double> free_distance_m;  // without origins: default two voxels
+  // Without origins, where the assumption holds: environment::assumedFreeRegionFromName.
+  std::string free_region = "between";
   std::optional<double> margin_m;         // default kMeshMargin_m for a mesh, 0 for a cloud
   std::string interior = "auto";          // a mesh's inside: environment::meshInteriorFromName
   bool skip_non_finite = false;           // drop points with NaN or infinite coordinates
@@ -38,7 +40,7 @@ struct MapImportOptions {
 
   // Throws ceilplan::InputError, before any file is read, for no or two inputs, origins without
   // a cloud, a resolution outside environment::kMin/kMaxImportResolution_m, a negative or
-  // non-finite maximum range, an unknown interior, a bad CRS, or a crop box with a non-finite
+  // non-finite maximum range, an unknown interior or free region, a bad CRS, or a crop box with a non-finite
   // corner or a minimum not below its maximum.
   void validate() const;
 };
