@@ -111,6 +111,13 @@ struct SortiePlan {
 SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
                        const SortieOptions& options = {});
 
+// Where the stretches of `order` between consecutive `split_points` (as SortieOptions::split_points;
+// empty: every position) begin that no single sortie can fly alone, from home and back above the
+// reserve: planSorties refuses the tour while there are any. A stretch of several targets may fly
+// once split points divide it. Throws ceilplan::InputError as planSorties does.
+std::vector<int> stretchesNoSortieFlies(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
+                                        const std::vector<int>& split_points);
+
 // One sortie flying `targets` (matrix indices, in order) from home and back, its wear left 0
 // and its reason empty: for pricing a sortie chosen by hand.
 Sortie flySortie(const TourCosts& legs, const std::vector<int>& targets, const BatterySpec& battery);
