@@ -100,6 +100,8 @@ struct TourTimes {
   double stops_s = 0.0;     // coverage views and viewpoints
   double legs_s = 0.0;      // every pair, or the neighbours' estimates
   double order_s = 0.0;     // visiting order and sortie split, every round
+  double order_cpu_s = 0.0;  // the same phase's CPU time, every thread (a loaded machine stretches order_s)
+  double split_cpu_s = 0.0;  // of order_cpu_s, the sortie split: choosing split points, estimating legs, planSorties
   double routing_s = 0.0;   // large tours: the legs a plan flies, routed (the roadmap built on first need)
   double refining_s = 0.0;  // post-processing the legs flown
   double record_s = 0.0;    // dense re-check, flight record, wear, duty
