@@ -54,7 +54,8 @@ struct SortieOptions {
   std::string ageing_model = "xu";  // battery::ageingModelNames()
   battery::AgeingModelOptions ageing;
   // Positions in the order (0-based) where a sortie may start; 0 always may. Empty: every
-  // position. A tour of thousands of stops allows a few hundred (docs/tours.md, "Large tours").
+  // position. planTour spaces a large tour's by the sorties it needs (docs/tours.md, "Large
+  // tours").
   std::vector<int> split_points;
 };
 
