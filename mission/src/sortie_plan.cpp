@@ -364,8 +364,8 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
   return plan;
 }
 
-std::vector<int> stretchesNoSortieFlies(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
-                                        const std::vector<int>& split_points) {
+std::vector<int> stretchesNoSortieFlies(const TourCosts& legs, const std::vector<int>& order,
+                                        const BatterySpec& battery, const std::vector<int>& split_points) {
   checkTour(legs, order, battery);
   const std::vector<int> starts = stretchStarts(split_points, static_cast<int>(order.size()));
   const std::vector<std::uint8_t> flies = stretchesFly(SortieBuilder(legs, battery), order, starts, battery);

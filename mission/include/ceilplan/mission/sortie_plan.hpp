@@ -116,8 +116,8 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
 // empty: every position) begin that no single sortie can fly alone, from home and back above the
 // reserve: planSorties refuses the tour while there are any. A stretch of several targets may fly
 // once split points divide it. Throws ceilplan::InputError as planSorties does.
-std::vector<int> stretchesNoSortieFlies(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
-                                        const std::vector<int>& split_points);
+std::vector<int> stretchesNoSortieFlies(const TourCosts& legs, const std::vector<int>& order,
+                                        const BatterySpec& battery, const std::vector<int>& split_points);
 
 // One sortie flying `targets` (matrix indices, in order) from home and back, its wear left 0
 // and its reason empty: for pricing a sortie chosen by hand.
