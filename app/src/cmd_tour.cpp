@@ -115,8 +115,8 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                       "large tours: the order search joins each place only to its nearest this many")
       ->capture_default_str()->check(CLI::Range(1, 1000));
   command->add_option("--split-points", a->options.split_points,
-                      "large tours: sorties may start at this many evenly spaced positions of the order (and around the "
-                      "best of them)")
+                      "large tours: sorties may start at at least this many evenly spaced positions of the order, more "
+                      "where the tour needs more sorties, and around the best of them")
       ->capture_default_str()->check(CLI::Range(1, 100000));
   command->add_option("--order-kicks", a->options.order_kicks,
                       "large tours: rounds of iterated local search after the first (from the seed; slower, a little "

@@ -6,6 +6,10 @@
 //     maps/coverage/bridge_soffit.yaml) in ceiling and free mode. Target: under 60 s.
 //   BM_LongDeckSoffitTour/0 and /1: the soffit between the girders of a generated 200 m bridge
 //     (ceilplan mapgen --scene bridge --bridge-length-m 200), same camera. Target: under 10 min.
+//   BM_SoffitSplitScaling/GSD/0: the full soffit at GSD / 100 mm/px in ceiling mode, about 1,000
+//     to 10,000 photos: the CPU time of the order-and-split phase (order_cpu_s) and of the split
+//     within it (split_cpu_s) against the photos, whose exponents docs/tours.md ("Large tours")
+//     fits; per_sortie is photos per sortie.
 // Map loading and indexing (the PlanningContext) happen outside the timed loop. docs/coverage.md,
 // "Speed".
 
@@ -17,6 +21,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 
@@ -50,6 +55,8 @@ void report(benchmark::State& state, const mission::TourResult& tour) {
   state.counters["stops_s"] = t.stops_s;
   state.counters["legs_s"] = t.legs_s;
   state.counters["order_s"] = t.order_s;
+  state.counters["order_cpu_s"] = t.order_cpu_s;
+  state.counters["split_cpu_s"] = t.split_cpu_s;
   state.counters["routing_s"] = t.routing_s;
   state.counters["refining_s"] = t.refining_s;
   state.counters["record_s"] = t.record_s;
@@ -57,8 +64,13 @@ void report(benchmark::State& state, const mission::TourResult& tour) {
   state.counters["rounds"] = t.rounds;
 }
 
-void runTour(benchmark::State& state, const mission::Mission& mission, const mission::PlanningContext& context) {
-  const mission::FlightMode mode = state.range(0) == 0 ? mission::FlightMode::Ceiling : mission::FlightMode::Free;
+// Argument 0: ceiling mode, 1: free mode.
+mission::FlightMode modeArgument(std::int64_t argument) {
+  return argument == 0 ? mission::FlightMode::Ceiling : mission::FlightMode::Free;
+}
+
+void runTour(benchmark::State& state, const mission::Mission& mission, const mission::PlanningContext& context,
+             mission::FlightMode mode) {
   mission::TourOptions options;
   options.seed = mission.seed;
   mission::TourResult tour;
@@ -69,9 +81,24 @@ void runTour(benchmark::State& state, const mission::Mission& mission, const mis
 void BM_FullBridgeSoffitTour(benchmark::State& state) {
   static const mission::Mission mission = soffitMission({-2.0, -5.5, 4.95}, {50.0, 5.5, 6.05});
   static const mission::PlanningContext context(mission);
-  runTour(state, mission, context);
+  runTour(state, mission, context, modeArgument(state.range(0)));
 }
 BENCHMARK(BM_FullBridgeSoffitTour)->Arg(0)->Arg(1)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+
+void BM_SoffitSplitScaling(benchmark::State& state) {
+  static const mission::Mission full = soffitMission({-2.0, -5.5, 4.95}, {50.0, 5.5, 6.05});
+  static const mission::PlanningContext context(full);
+  mission::Mission mission = full;
+  mission.surfaces.at(0).gsd_mm_px = static_cast<double>(state.range(0)) / 100.0;
+  state.counters["gsd_mm_px"] = mission.surfaces.at(0).gsd_mm_px;
+  runTour(state, mission, context, modeArgument(state.range(1)));
+  state.counters["per_sortie"] = state.counters["photos"] / state.counters["sorties"];
+}
+BENCHMARK(BM_SoffitSplitScaling)
+    ->ArgsProduct({{80, 55, 45, 38, 33, 30}, {0}})
+    ->Iterations(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kSecond);
 
 void BM_LongDeckSoffitTour(benchmark::State& state) {
   constexpr double kLength_m = 200.0;
@@ -83,7 +110,7 @@ void BM_LongDeckSoffitTour(benchmark::State& state) {
                                   "bridge 200 m (generated)");
     return mission::PlanningContext(std::move(map), mission.vehicle, mission.battery, mission::planningOptions(mission));
   }();
-  runTour(state, mission, context);
+  runTour(state, mission, context, modeArgument(state.range(0)));
 }
 BENCHMARK(BM_LongDeckSoffitTour)->Arg(0)->Arg(1)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
 

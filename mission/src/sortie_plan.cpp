@@ -203,9 +203,14 @@ void offer(Best& best, const Best& before, double wear, int split) {
   if (first || total < best.wear - tie || (total <= best.wear + tie && sorties < best.sorties)) best = {total, sorties, split};
 }
 
-// The split points, sorted, 0 first, each a position of the order.
-std::vector<int> checkedSplitPoints(const std::vector<int>& split_points, int n) {
-  std::vector<int> starts{0};
+// Where the stretches between split points begin, sorted, 0 first (every position when there
+// are none), then the order's end: stretch b is order[starts[b]..starts[b + 1] - 1].
+std::vector<int> stretchStarts(const std::vector<int>& split_points, int n) {
+  std::vector<int> starts;
+  if (split_points.empty())
+    for (int k = 0; k < n; ++k) starts.push_back(k);
+  else
+    starts.push_back(0);
   for (int p : split_points) {
     if (p < 0 || p >= std::max(n, 1))
       throw ceilplan::InputError("sortie split point " + std::to_string(p) + " is not a position in the order 0.." +
@@ -214,7 +219,35 @@ std::vector<int> checkedSplitPoints(const std::vector<int>& split_points, int n)
   }
   std::sort(starts.begin(), starts.end());
   starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
+  starts.push_back(n);
   return starts;
+}
+
+// The checks planSorties and stretchesNoSortieFlies make of their input.
+void checkTour(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery) {
+  legs.validate();
+  battery.validate();
+  const int n = static_cast<int>(order.size());
+  if (n != legs.targetCount())
+    throw ceilplan::InputError("the visiting order lists " + std::to_string(n) + " targets, the tour has " +
+                                std::to_string(legs.targetCount()));
+  std::vector<int> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (int k = 0; k < n; ++k)
+    if (sorted[k] != k + 1)
+      throw ceilplan::InputError("the visiting order must list every target 1.." + std::to_string(n) + " exactly once");
+}
+
+// At or above the reserve, but for rounding.
+bool aboveReserve(const BatterySpec& battery, double soc) { return soc >= battery.reserve_soc - 1e-12; }
+
+// Whether one sortie flies each stretch between `starts` (stretchStarts) alone.
+std::vector<std::uint8_t> stretchesFly(const SortieBuilder& builder, const std::vector<int>& order,
+                                       const std::vector<int>& starts, const BatterySpec& battery) {
+  std::vector<std::uint8_t> flies(starts.size() - 1, 0);
+  for (std::size_t b = 0; b + 1 < starts.size(); ++b)
+    flies[b] = aboveReserve(battery, builder.build(order, starts[b], starts[b + 1] - 1).lowest_soc);
+  return flies;
 }
 
 // Cycle wear of a sortie from its SOC turning points alone (take-off, landing, the end of the
@@ -235,41 +268,24 @@ double turningPointWear(const battery::AgeingModel& prototype, const BatterySpec
 
 SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
                        const SortieOptions& options) {
-  legs.validate();
-  battery.validate();
+  checkTour(legs, order, battery);
   const int n = static_cast<int>(order.size());
-  if (n != legs.targetCount())
-    throw ceilplan::InputError("the visiting order lists " + std::to_string(n) + " targets, the tour has " +
-                                std::to_string(legs.targetCount()));
-  std::vector<int> sorted = order;
-  std::sort(sorted.begin(), sorted.end());
-  for (int k = 0; k < n; ++k)
-    if (sorted[k] != k + 1)
-      throw ceilplan::InputError("the visiting order must list every target 1.." + std::to_string(n) + " exactly once");
   const std::unique_ptr<battery::AgeingModel> prototype = battery::makeAgeingModel(options.ageing_model, options.ageing);
   const SortieBuilder builder(legs, battery);
-  const double reserve_tolerance = 1e-12;
-  const auto above = [&](double soc) { return soc >= battery.reserve_soc - reserve_tolerance; };
+  const auto above = [&](double soc) { return aboveReserve(battery, soc); };
   auto feasible = [&](const Sortie& sortie) { return above(sortie.lowest_soc); };
   const double soh = battery.pack.state_of_health;
 
   // Sorties start at `starts` (every position by default); best[e] covers order[0..starts[e]-1].
   const bool every_position = options.split_points.empty();
-  std::vector<int> starts;
-  if (every_position) {
-    for (int k = 0; k < n; ++k) starts.push_back(k);
-  } else {
-    starts = checkedSplitPoints(options.split_points, n);
-  }
-  const int stretches = static_cast<int>(starts.size());
-  starts.push_back(n);
+  const std::vector<int> starts = stretchStarts(options.split_points, n);
+  const int stretches = static_cast<int>(starts.size()) - 1;
   std::vector<Best> best(stretches + 1);
   best[0].wear = 0.0;
-  std::vector<std::uint8_t> stretch_flies(stretches, 0);  // the stretch between two split points, alone
+  const std::vector<std::uint8_t> stretch_flies = stretchesFly(builder, order, starts, battery);
 
   if (every_position) {
     // Every candidate sortie flown in full and priced by its whole SOC history: O(N^2) sorties.
-    for (int b = 0; b < stretches; ++b) stretch_flies[b] = feasible(builder.build(order, starts[b], starts[b + 1] - 1));
     if (std::all_of(stretch_flies.begin(), stretch_flies.end(), [](std::uint8_t f) { return f != 0; }))
       for (int e = 1; e <= stretches; ++e)
         for (int b = 0; b < e; ++b) {
@@ -293,7 +309,6 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
         SocIntegrator home = flight;
         builder.flyLeg(home, at, 0);
         if (!above(home.lowestSoc())) continue;
-        if (e == b + 1) stretch_flies[b] = 1;
         if (std::isfinite(best[b].wear))
           offer(best[e], best[b], turningPointWear(*prototype, battery, home, builder.rechargeS(home.chargeAh()), soh), b);
       }
@@ -347,6 +362,17 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
     plan.sorties.push_back(std::move(sortie));
   }
   return plan;
+}
+
+std::vector<int> stretchesNoSortieFlies(const TourCosts& legs, const std::vector<int>& order,
+                                        const BatterySpec& battery, const std::vector<int>& split_points) {
+  checkTour(legs, order, battery);
+  const std::vector<int> starts = stretchStarts(split_points, static_cast<int>(order.size()));
+  const std::vector<std::uint8_t> flies = stretchesFly(SortieBuilder(legs, battery), order, starts, battery);
+  std::vector<int> failing;
+  for (std::size_t b = 0; b < flies.size(); ++b)
+    if (!flies[b]) failing.push_back(starts[b]);
+  return failing;
 }
 
 Sortie flySortie(const TourCosts& legs, const std::vector<int>& targets, const BatterySpec& battery) {

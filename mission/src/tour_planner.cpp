@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <ctime>
 #include <iterator>
 #include <map>
 #include <memory>
@@ -33,6 +35,22 @@ FractionCallback stageProgress(const TourOptions& options, const std::string& st
   if (!options.progress) return {};
   return [callback = options.progress, stage](double fraction) { callback(stage, fraction); };
 }
+
+// CPU seconds of the whole process, every thread: what a phase costs on a shared machine.
+double processCpuS() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+// Adds the CPU seconds of its scope to `total_s`.
+class CpuTimer {
+ public:
+  explicit CpuTimer(double& total_s) : total_s_(total_s), start_s_(processCpuS()) {}
+  ~CpuTimer() { total_s_ += processCpuS() - start_s_; }
+  CpuTimer(const CpuTimer&) = delete;
+  CpuTimer& operator=(const CpuTimer&) = delete;
+
+ private:
+  double& total_s_;
+  double start_s_;
+};
 
 class Stopwatch {
  public:
@@ -482,7 +500,15 @@ void orderAndSplit(TourResult& tour, const PlanningContext& context, const TourO
   TourOrderOptions order_options;
   order_options.seed = options.seed;
   tour.order = orderTour(costs, order_options);
+  const CpuTimer timer(tour.times.split_cpu_s);
   tour.plan = planSorties(legs, tour.order.targets, context.battery(), sortieOptions(options));
+}
+
+// Positions 0, n / count, 2 n / count, ... of an order of n.
+std::set<int> evenlySpaced(int n, int count) {
+  std::set<int> positions;
+  for (int k = 0; k < count; ++k) positions.insert(static_cast<int>(static_cast<long long>(k) * n / count));
+  return positions;
 }
 
 // Rounds of a large tour that search the order again (see SparseLegs::orderAndSplit).
@@ -578,10 +604,23 @@ class SparseLegs {
           options_.seed);
     }
     const std::vector<int>& order = tour_.order.targets;
-    std::set<int> split_points;
-    const int coarse = std::max(1, std::min(options_.split_points, targets));
-    for (int k = 0; k < coarse; ++k) split_points.insert(static_cast<int>(static_cast<long long>(k) * targets / coarse));
+    // Split points: evenly spaced, at least --split-points of them, more where a stretch between
+    // two is more than a sortie can fly; then, with the sorties that needs known, spaced
+    // ~sqrt(targets per sortie / 2) apart at most. From each point the split flies about a
+    // sortie's targets, so the points cost targets x sqrt(targets per sortie / 2) flights, as
+    // much as the windows of every position a spacing either side of the sorties' starts that
+    // follow: the split grows with the targets, not with their square.
+    int coarse = std::max(1, std::min(options_.split_points, targets));
+    std::set<int> split_points = flyableSplitPoints(order, evenlySpaced(targets, coarse));
     tour_.plan = split(order, split_points);
+    const double per_sortie = static_cast<double>(targets) / static_cast<double>(tour_.plan.sorties.size());
+    const int spacing = std::max(1, static_cast<int>(std::sqrt(per_sortie / 2.0)));
+    if (spacing < (targets + coarse - 1) / coarse) {
+      coarse = (targets + spacing - 1) / spacing;
+      const std::set<int> closer = evenlySpaced(targets, coarse);
+      split_points.insert(closer.begin(), closer.end());
+      tour_.plan = split(order, split_points);
+    }
     if (coarse < targets && tour_.plan.sorties.size() > 1) {
       const int stride = (targets + coarse - 1) / coarse;
       int position = 0;
@@ -696,7 +735,8 @@ class SparseLegs {
     return best;
   }
 
-  SortiePlan split(const std::vector<int>& order, const std::set<int>& split_points) {
+  // The legs a split at `split_points` may fly, estimated where they are not stored yet.
+  TourCosts splitCosts(const std::vector<int>& order, const std::set<int>& split_points) {
     estimate(homeLegs(order, split_points));
     Pairs consecutive;
     for (std::size_t k = 1; k < order.size(); ++k) consecutive.emplace_back(order[k - 1], order[k]);
@@ -705,10 +745,34 @@ class SparseLegs {
     const auto add = [&](int from, int to) { costs.legs(from, to) = legCost(tour_.legs.at(from, to).evaluation); };
     for (const auto& [from, to] : consecutive) add(from, to);
     for (const auto& [from, to] : homeLegs(order, split_points)) add(from, to);
+    last_split_points_ = split_points;
+    return costs;
+  }
+
+  SortiePlan split(const std::vector<int>& order, const std::set<int>& split_points) {
+    const CpuTimer timer(tour_.times.split_cpu_s);
     SortieOptions sortie_options = sortieOptions(options_);
     sortie_options.split_points.assign(split_points.begin(), split_points.end());
-    last_split_points_ = split_points;
-    return planSorties(costs, order, context_.battery(), sortie_options);
+    return planSorties(splitCosts(order, split_points), order, context_.battery(), sortie_options);
+  }
+
+  // `split_points` and more, until one sortie flies each stretch between them alone: a stretch
+  // no sortie flies is halved, down to single targets (which planSorties then names).
+  std::set<int> flyableSplitPoints(const std::vector<int>& order, std::set<int> split_points) {
+    const CpuTimer timer(tour_.times.split_cpu_s);
+    const int targets = static_cast<int>(order.size());
+    for (bool halved = true; halved;) {
+      halved = false;
+      const std::vector<int> points(split_points.begin(), split_points.end());
+      for (int first : stretchesNoSortieFlies(splitCosts(order, split_points), order, context_.battery(), points)) {
+        const auto next = split_points.upper_bound(first);
+        const int end = next == split_points.end() ? targets : *next;
+        if (end - first < 2) continue;
+        split_points.insert(first + (end - first) / 2);
+        halved = true;
+      }
+    }
+    return split_points;
   }
 
   TourResult& tour_;
@@ -830,6 +894,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
     raw.erase(std::unique(raw.begin(), raw.end()), raw.end());
     return raw;
   };
+  double order_start_s = processCpuS();
   for (;;) {
     ++tour.times.rounds;
     Pairs flown;
@@ -852,6 +917,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
       if (unrefined(flown).empty()) throw;
     }
     tour.times.order_s += clock.lap_s();
+    tour.times.order_cpu_s += processCpuS() - order_start_s;
     const Pairs raw_legs = unrefined(flown);
     if (raw_legs.empty()) break;
     if (sparse) {
@@ -863,6 +929,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
                stageProgress(options, flightModeName(tour.mode) + " mode: refining " + std::to_string(to_refine.size()) +
                                           " legs"));
     tour.times.refining_s += clock.lap_s();
+    order_start_s = processCpuS();
   }
 
   // The independent re-check of every leg flown (the planner checked them too).

@@ -131,7 +131,16 @@ TEST(CoverageTours, BridgeSoffitCeilingMode) {
   EXPECT_EQ(planned.tour.order.method, "neighbour-list 2-opt+or-opt");
 }
 
-TEST(CoverageTours, BridgeSoffitFreeMode) { planAndCheckShipped("bridge_soffit", FlightMode::Free); }
+// Free mode's soffit needs two packs. The split that adapts its split points to the sorties a
+// tour needs chooses the sorties the 60 fixed split points did, to the last photo and microampere-hour.
+TEST(CoverageTours, BridgeSoffitFreeMode) {
+  const PlannedTour planned = planAndCheckShipped("bridge_soffit", FlightMode::Free);
+  const SortiePlan& plan = planned.tour.plan;
+  ASSERT_EQ(plan.sorties.size(), 2u);
+  EXPECT_EQ(plan.sorties[0].targets.size(), 270u);
+  EXPECT_EQ(plan.sorties[1].targets.size(), 254u);
+  EXPECT_NEAR(plan.charge_ah, 3.410819812168305, 1e-9);
+}
 
 TEST(CoverageTours, TunnelCrown) { planAndCheckShipped("tunnel_crown", FlightMode::Ceiling); }
 

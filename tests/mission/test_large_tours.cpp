@@ -180,6 +180,23 @@ TEST(LargeTours, SortiesStartAtSplitPointsAndLandAboveTheReserve) {
   EXPECT_THROW(planSorties(tour, order, battery, bad), ceilplan::InputError);
 }
 
+TEST(LargeTours, StretchesLongerThanASortieAreFoundUntilSplitPointsDivideThem) {
+  // 60 targets of 1/6 Ah each and the paper's pack (3.64 Ah to the reserve): about 20 a sortie.
+  const TourCosts tour = lineTour(60);
+  std::vector<int> order(60);
+  std::iota(order.begin(), order.end(), 1);
+  const BatterySpec battery;
+  EXPECT_EQ(stretchesNoSortieFlies(tour, order, battery, {0, 30}), (std::vector<int>{0, 30}));
+  EXPECT_EQ(stretchesNoSortieFlies(tour, order, battery, {0, 15, 30}), (std::vector<int>{30}));
+  EXPECT_TRUE(stretchesNoSortieFlies(tour, order, battery, {0, 15, 30, 45}).empty());
+  SortieOptions options;
+  options.split_points = {0, 15, 30};
+  EXPECT_THROW(planSorties(tour, order, battery, options), ceilplan::InfeasibleError);
+  options.split_points = {0, 15, 30, 45};
+  EXPECT_GE(planSorties(tour, order, battery, options).sorties.size(), 3u);
+  EXPECT_THROW(stretchesNoSortieFlies(tour, order, battery, {60}), ceilplan::InputError);
+}
+
 TEST(LargeTours, AStretchNoSortieCanFlyIsNamed) {
   TourCosts tour = lineTour(20);
   tour.dwells[12].duration_s = 3000.0;  // 8.3 Ah at 10 A: more than any sortie holds

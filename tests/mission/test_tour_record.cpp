@@ -19,6 +19,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 
 #include <unistd.h>
 
@@ -234,6 +235,36 @@ void expectSorties(double capacity_ah, std::size_t sorties) {
 TEST(SmallPackBridgeTour, TwoSorties) { expectSorties(0.75, 2); }
 TEST(SmallPackBridgeTour, ThreeSorties) { expectSorties(0.6, 3); }
 TEST(SmallPackBridgeTour, FiveSorties) { expectSorties(0.37, 5); }
+
+// A large tour (sparse legs, here from the third place on) that needs more sorties than it has
+// split points: a stretch between two that no sortie can fly is divided until one can, so the
+// tour flies (it was refused as if no sortie could reach its targets) and splits as it does with
+// a split point at every position.
+TEST(SmallPackBridgeTour, MoreSortiesThanSplitPointsFlyAsWithEveryPosition) {
+  Mission mission = io::readMission(kBridge);
+  mission.battery.pack.capacity_ah = 0.37;
+  const PlanningContext context(mission);
+  TourOptions options;
+  options.all_pairs_max_places = 2;
+  options.split_points = 2;
+  const TourResult few = planTour(mission, context, FlightMode::Ceiling, options);
+  options.split_points = 13;
+  const TourResult every = planTour(mission, context, FlightMode::Ceiling, options);
+
+  ASSERT_EQ(few.order.method, "neighbour-list 2-opt+or-opt");
+  EXPECT_GE(few.plan.sorties.size(), 5u);
+  std::multiset<int> flown;
+  for (const Sortie& sortie : few.plan.sorties) {
+    flown.insert(sortie.targets.begin(), sortie.targets.end());
+    EXPECT_GE(sortie.lowest_soc, mission.battery.reserve_soc - 1e-12);
+  }
+  EXPECT_EQ(flown.size(), 13u);
+  EXPECT_EQ(std::set<int>(flown.begin(), flown.end()).size(), 13u);
+  ASSERT_EQ(few.plan.sorties.size(), every.plan.sorties.size());
+  for (std::size_t s = 0; s < few.plan.sorties.size(); ++s)
+    EXPECT_EQ(few.plan.sorties[s].targets, every.plan.sorties[s].targets) << "sortie " << s + 1;
+  EXPECT_DOUBLE_EQ(few.plan.charge_ah, every.plan.charge_ah);
+}
 
 }  // namespace
 }  // namespace ceilplan::mission

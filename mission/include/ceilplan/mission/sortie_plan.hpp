@@ -54,7 +54,8 @@ struct SortieOptions {
   std::string ageing_model = "xu";  // battery::ageingModelNames()
   battery::AgeingModelOptions ageing;
   // Positions in the order (0-based) where a sortie may start; 0 always may. Empty: every
-  // position. A tour of thousands of stops allows a few hundred (docs/tours.md, "Large tours").
+  // position. planTour spaces a large tour's by the sorties it needs (docs/tours.md, "Large
+  // tours").
   std::vector<int> split_points;
 };
 
@@ -110,6 +111,13 @@ struct SortiePlan {
 // target of a stretch between two of them that no sortie can fly).
 SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
                        const SortieOptions& options = {});
+
+// Where the stretches of `order` between consecutive `split_points` (as SortieOptions::split_points;
+// empty: every position) begin that no single sortie can fly alone, from home and back above the
+// reserve: planSorties refuses the tour while there are any. A stretch of several targets may fly
+// once split points divide it. Throws ceilplan::InputError as planSorties does.
+std::vector<int> stretchesNoSortieFlies(const TourCosts& legs, const std::vector<int>& order,
+                                        const BatterySpec& battery, const std::vector<int>& split_points);
 
 // One sortie flying `targets` (matrix indices, in order) from home and back, its wear left 0
 // and its reason empty: for pricing a sortie chosen by hand.

@@ -58,7 +58,8 @@ struct TourOptions {
   // the stops) a leg joins every pair, as above. Beyond, the order search moves each place only
   // next to its `neighbours` nearest (straight-line distance), legs are estimated (the straight
   // line, scored) where the search looks and routed once a plan flies them, and sorties may
-  // start at `split_points` evenly spaced positions of the order and around the best of them.
+  // start at evenly spaced positions of the order, at least `split_points` of them and more where
+  // the tour needs more sorties, and around the best of them.
   // `order_kicks` rounds of iterated local search (segment double bridges, from `seed`) follow
   // the first local search: on the bridge soffit 100 of them save 0.6 % of the charge and take
   // about as long again as the search.
@@ -100,6 +101,8 @@ struct TourTimes {
   double stops_s = 0.0;     // coverage views and viewpoints
   double legs_s = 0.0;      // every pair, or the neighbours' estimates
   double order_s = 0.0;     // visiting order and sortie split, every round
+  double order_cpu_s = 0.0;  // the same phase's CPU time, every thread (a loaded machine stretches order_s)
+  double split_cpu_s = 0.0;  // of order_cpu_s, the sortie split: choosing split points, estimating legs, planSorties
   double routing_s = 0.0;   // large tours: the legs a plan flies, routed (the roadmap built on first need)
   double refining_s = 0.0;  // post-processing the legs flown
   double record_s = 0.0;    // dense re-check, flight record, wear, duty
