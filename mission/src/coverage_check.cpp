@@ -177,7 +177,8 @@ CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera, c
           result.best_gsd_mm_px[e] = std::min(result.best_gsd_mm_px[e], static_cast<float>(gsd));
           if (gsd > region.gsd_mm_px || cos_incidence < cos_max) continue;
           if (result.view_count[e] < std::numeric_limits<std::uint16_t>::max()) ++result.view_count[e];
-          if (std::abs(image->right_tan) <= central_wide && std::abs(image->up_tan) <= central_high) result.covered[e] = 1;
+          if (std::abs(image->right_tan) <= central_wide && std::abs(image->up_tan) <= central_high)
+            result.covered[e] = 1;
         }
       }
       rays += cast;
