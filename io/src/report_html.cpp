@@ -201,8 +201,8 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
                                std::lround(std::floor(p.z() / bucket_m))};
   };
   std::map<std::array<long, 3>, std::vector<Eigen::Vector3d>> buckets;
-  environment::Index3 low{std::numeric_limits<int>::max(), std::numeric_limits<int>::max(), std::numeric_limits<int>::max()};
-  environment::Index3 high{std::numeric_limits<int>::min(), std::numeric_limits<int>::min(), std::numeric_limits<int>::min()};
+  constexpr int kMost = std::numeric_limits<int>::max(), kLeast = std::numeric_limits<int>::min();
+  environment::Index3 low{kMost, kMost, kMost}, high{kLeast, kLeast, kLeast};
   for (const Eigen::Vector3d& p : probes) {
     buckets[bucketOf(p)].push_back(p);
     for (int axis = 0; axis < 3; ++axis) {
