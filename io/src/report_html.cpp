@@ -8,7 +8,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <string_view>
 #include <unordered_map>
 
@@ -177,27 +180,62 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
   if (route_m.size() > 1 && (route_m.back() - probes.back()).norm() > 0.0) probes.push_back(route_m.back());
   const auto occupied = [&](int i, int j, int k) { return grid.at(i, j, k) == environment::CellState::Occupied; };
   const auto isFree = [&](int i, int j, int k) { return grid.at(i, j, k) == environment::CellState::Free; };
-  std::unordered_map<std::size_t, std::uint8_t> chosen;  // voxel -> faces towards free space
   const int reach = static_cast<int>(std::ceil(radius_m / r));
+  // Whether probe p's sphere takes voxel (i, j, k): its row within reach, its centre within the
+  // row's run of centres inside the sphere.
+  const auto takes = [&](const Eigen::Vector3d& p, int i, int j, int k) {
+    if (std::abs(j - frame.indexOf(1, p.y())) > reach || std::abs(k - frame.indexOf(2, p.z())) > reach) return false;
+    const double dz = frame.centreOf(2, k) - p.z(), dy = frame.centreOf(1, j) - p.y();
+    const double rest = radius_m * radius_m - dz * dz - dy * dy;
+    if (rest < 0.0) return false;
+    const double half = std::sqrt(rest);
+    return i >= frame.indexOf(0, p.x() - half) && i <= frame.indexOf(0, p.x() + half) &&
+           std::abs(frame.centreOf(0, i) - p.x()) <= half;
+  };
+  // Each voxel is visited once, not once per probe whose sphere holds it (spheres half a metre
+  // apart overlap a dozen times over): the probes are bucketed in cubes at least the radius
+  // wide, so every probe that may take a voxel lies in the 27 cubes around the voxel's.
+  const double bucket_m = radius_m + r;
+  const auto bucketOf = [&](const Eigen::Vector3d& p) {
+    return std::array<long, 3>{std::lround(std::floor(p.x() / bucket_m)), std::lround(std::floor(p.y() / bucket_m)),
+                               std::lround(std::floor(p.z() / bucket_m))};
+  };
+  std::map<std::array<long, 3>, std::vector<Eigen::Vector3d>> buckets;
+  constexpr int kMost = std::numeric_limits<int>::max(), kLeast = std::numeric_limits<int>::min();
+  environment::Index3 low{kMost, kMost, kMost}, high{kLeast, kLeast, kLeast};
   for (const Eigen::Vector3d& p : probes) {
-    const int cj = frame.indexOf(1, p.y()), ck = frame.indexOf(2, p.z());
-    for (int k = ck - reach; k <= ck + reach; ++k)
-      for (int j = cj - reach; j <= cj + reach; ++j) {
-        // The row's run of voxel centres inside the sphere.
-        const double dz = frame.centreOf(2, k) - p.z(), dy = frame.centreOf(1, j) - p.y();
-        const double rest = radius_m * radius_m - dz * dz - dy * dy;
-        if (rest < 0.0) continue;
-        const double half = std::sqrt(rest);
-        for (int i = frame.indexOf(0, p.x() - half); i <= frame.indexOf(0, p.x() + half); ++i) {
-          if (!frame.inside(i, j, k) || !occupied(i, j, k)) continue;
-          if (std::abs(frame.centreOf(0, i) - p.x()) > half) continue;
-          const std::uint8_t faces = static_cast<std::uint8_t>(
-              isFree(i - 1, j, k) | isFree(i + 1, j, k) << 1 | isFree(i, j - 1, k) << 2 | isFree(i, j + 1, k) << 3 |
-              isFree(i, j, k - 1) << 4 | isFree(i, j, k + 1) << 5);
-          if (faces) chosen.emplace(frame.linear(i, j, k), faces);
-        }
-      }
+    buckets[bucketOf(p)].push_back(p);
+    for (int axis = 0; axis < 3; ++axis) {
+      low[axis] = std::min(low[axis], frame.indexOf(axis, p[axis]) - reach - 1);
+      high[axis] = std::max(high[axis], frame.indexOf(axis, p[axis]) + reach + 1);
+    }
   }
+  const environment::Index3& size = frame.size();
+  std::unordered_map<std::size_t, std::uint8_t> chosen;  // voxel -> faces towards free space
+  for (int k = std::max(0, low[2]); k <= std::min(size[2] - 1, high[2]); ++k)
+    for (int j = std::max(0, low[1]); j <= std::min(size[1] - 1, high[1]); ++j)
+      for (int i = std::max(0, low[0]); i <= std::min(size[0] - 1, high[0]); ++i) {
+        if (!occupied(i, j, k)) continue;
+        const std::uint8_t faces = static_cast<std::uint8_t>(
+            isFree(i - 1, j, k) | isFree(i + 1, j, k) << 1 | isFree(i, j - 1, k) << 2 | isFree(i, j + 1, k) << 3 |
+            isFree(i, j, k - 1) << 4 | isFree(i, j, k + 1) << 5);
+        if (!faces) continue;
+        const std::array<long, 3> centre =
+            bucketOf(Eigen::Vector3d(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k)));
+        bool taken = false;
+        for (long dx = -1; dx <= 1 && !taken; ++dx)
+          for (long dy = -1; dy <= 1 && !taken; ++dy)
+            for (long dz = -1; dz <= 1 && !taken; ++dz) {
+              const auto bucket = buckets.find({centre[0] + dx, centre[1] + dy, centre[2] + dz});
+              if (bucket == buckets.end()) continue;
+              for (const Eigen::Vector3d& p : bucket->second)
+                if (takes(p, i, j, k)) {
+                  taken = true;
+                  break;
+                }
+            }
+        if (taken) chosen.emplace(frame.linear(i, j, k), faces);
+      }
   std::vector<std::pair<std::size_t, std::uint8_t>> voxels(chosen.begin(), chosen.end());
   std::sort(voxels.begin(), voxels.end());
   // Coarsen until it fits: a coarse cell holds any chosen voxel and draws any face they show.

@@ -3,9 +3,11 @@
 #include "ceilplan/core/parallel_for.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace ceilplan::mission {
 namespace {
@@ -14,21 +16,109 @@ constexpr double kDegree = M_PI / 180.0;
 // Histogram edges as multiples of the required GSD.
 constexpr double kGsdBinShares[] = {0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 4.0};
 
+// The tree's known-free leaves, one bit per voxel over the box of its known leaves, read once:
+// a line of sight looks up each of its keys here instead of walking the tree from the root for
+// each (OcTree::search), with the same answer (a key in no leaf, or outside the box, is unknown).
+class FreeVoxels {
+ public:
+  explicit FreeVoxels(const octomap::OcTree& tree) {
+    const unsigned max_depth = tree.getTreeDepth();
+    std::array<unsigned, 3> low{}, high{};
+    low.fill(std::numeric_limits<unsigned>::max());
+    for (auto leaf = tree.begin_leafs(), end = tree.end_leafs(); leaf != end; ++leaf) {
+      const octomap::OcTreeKey& key = leaf.getIndexKey();
+      const unsigned span = 1u << (max_depth - leaf.getDepth());
+      for (int a = 0; a < 3; ++a) {
+        low[a] = std::min<unsigned>(low[a], key[a]);
+        high[a] = std::max<unsigned>(high[a], key[a] + span);
+      }
+    }
+    if (low[0] > high[0]) return;  // no leaf: everything unknown
+    for (int a = 0; a < 3; ++a) {
+      low_[a] = low[a];
+      size_[a] = high[a] - low[a];
+    }
+    bits_.assign((static_cast<std::size_t>(size_[0]) * size_[1] * size_[2] + 63) / 64, 0);
+    for (auto leaf = tree.begin_leafs(), end = tree.end_leafs(); leaf != end; ++leaf) {
+      if (tree.isNodeOccupied(*leaf)) continue;
+      const octomap::OcTreeKey& key = leaf.getIndexKey();
+      const unsigned span = 1u << (max_depth - leaf.getDepth());
+      for (unsigned z = key[2]; z < key[2] + span; ++z)
+        for (unsigned y = key[1]; y < key[1] + span; ++y)
+          for (unsigned x = key[0]; x < key[0] + span; ++x) {
+            const std::size_t bit = index(x, y, z);
+            bits_[bit / 64] |= std::uint64_t{1} << (bit % 64);
+          }
+    }
+  }
+
+  bool free(const octomap::OcTreeKey& key) const {
+    if (key[0] < low_[0] || key[1] < low_[1] || key[2] < low_[2] || key[0] >= low_[0] + size_[0] ||
+        key[1] >= low_[1] + size_[1] || key[2] >= low_[2] + size_[2])
+      return false;
+    const std::size_t bit = index(key[0], key[1], key[2]);
+    return (bits_[bit / 64] >> (bit % 64)) & 1u;
+  }
+
+ private:
+  std::size_t index(unsigned x, unsigned y, unsigned z) const {
+    return (static_cast<std::size_t>(z - low_[2]) * size_[1] + (y - low_[1])) * size_[0] + (x - low_[0]);
+  }
+
+  std::array<unsigned, 3> low_{}, size_{};
+  std::vector<std::uint64_t> bits_;
+};
+
 // Whether every node on the way from the camera to a point just in front of the face is known
 // free in the tree: the ray's keys (OctoMap excludes the end's), then the end's own.
-bool clearInTree(const octomap::OcTree& tree, const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
-                 octomap::KeyRay& ray) {
+bool clearInTree(const octomap::OcTree& tree, const FreeVoxels& free, const Eigen::Vector3d& from_m,
+                 const Eigen::Vector3d& to_m, octomap::KeyRay& ray) {
   const octomap::point3d from(static_cast<float>(from_m.x()), static_cast<float>(from_m.y()), static_cast<float>(from_m.z()));
   const octomap::point3d to(static_cast<float>(to_m.x()), static_cast<float>(to_m.y()), static_cast<float>(to_m.z()));
   octomap::OcTreeKey end;
   if (!tree.coordToKeyChecked(to, end) || !tree.computeRayKeys(from, to, ray)) return false;
-  const auto freeAt = [&](const octomap::OcTreeKey& key) {
-    const octomap::OcTreeNode* node = tree.search(key);
-    return node != nullptr && !tree.isNodeOccupied(node);
-  };
   for (const octomap::OcTreeKey& key : ray)
-    if (!freeAt(key)) return false;
-  return freeAt(end);
+    if (!free.free(key)) return false;
+  return free.free(end);
+}
+
+// Elements grouped by the cube of kTile_m they lie in, so that a photo is tested only against
+// the groups its frustum may reach.
+constexpr double kTile_m = 1.0;
+
+struct Tile {
+  Eigen::Vector3d centre_m;
+  std::vector<std::size_t> elements;
+};
+
+std::vector<Tile> tilesOf(const RegionSurface& surface) {
+  std::map<std::array<long, 3>, std::vector<std::size_t>> cells;
+  for (std::size_t e = 0; e < surface.elements.size(); ++e) {
+    const Eigen::Vector3d& c = surface.elements[e].centre_m;
+    cells[{std::lround(std::floor(c.x() / kTile_m)), std::lround(std::floor(c.y() / kTile_m)),
+           std::lround(std::floor(c.z() / kTile_m))}]
+        .push_back(e);
+  }
+  std::vector<Tile> tiles;
+  for (auto& [cell, elements] : cells)
+    tiles.push_back({(Eigen::Vector3d(cell[0], cell[1], cell[2]) + Eigen::Vector3d::Constant(0.5)) * kTile_m,
+                     std::move(elements)});
+  return tiles;
+}
+
+// Whether some point within `radius_m` of `centre_m` may land in the frame (within the
+// half-width and half-height tangents, at least `min_depth_m` deep): false only when the whole
+// ball lies beyond one of the frustum's planes, so no element of a tile it holds is lost.
+bool mayProject(const CameraFrame& frame, double wide, double high, double min_depth_m, const Eigen::Vector3d& centre_m,
+                double radius_m) {
+  const Eigen::Vector3d d = centre_m - frame.position_m();
+  if (d.dot(frame.forward()) + radius_m < min_depth_m) return false;
+  for (const Eigen::Vector3d& outward : {Eigen::Vector3d(frame.right() - wide * frame.forward()),
+                                         Eigen::Vector3d(-frame.right() - wide * frame.forward()),
+                                         Eigen::Vector3d(frame.up() - high * frame.forward()),
+                                         Eigen::Vector3d(-frame.up() - high * frame.forward())})
+    if (outward.dot(d) > radius_m * outward.norm()) return false;
+  return true;
 }
 
 }  // namespace
@@ -42,6 +132,7 @@ CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera, c
   std::vector<CameraFrame> frames;
   for (const CameraPose& pose : photos) frames.emplace_back(camera, pose);
   const double offset_m = 0.01 * tree.getResolution();
+  const FreeVoxels free(tree);
 
   CoverageCheck check;
   std::atomic<std::size_t> rays{0};
@@ -59,27 +150,36 @@ CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera, c
     const double wide = camera.halfWidthTan(), high = camera.halfHeightTan();
     const double central_wide = wide * region.widthShare(), central_high = high * region.heightShare();
 
-    parallelFor(n, workers, [&](std::size_t e) {
-      const environment::SurfaceElement& element = surface.elements[e];
-      const Eigen::Vector3d end = element.centre_m + element.faceNormal() * offset_m;
+    const std::vector<Tile> tiles = tilesOf(surface);
+    // A tile's ball holds its cube; the margin keeps elements on its faces and rounding inside.
+    const double tile_radius_m = 0.5 * std::sqrt(3.0) * kTile_m + 1e-6;
+    parallelFor(tiles.size(), workers, [&](std::size_t t) {
+      std::vector<const CameraFrame*> near;
+      for (const CameraFrame& frame : frames)
+        if (mayProject(frame, wide, high, camera.min_focus_m, tiles[t].centre_m, tile_radius_m)) near.push_back(&frame);
       octomap::KeyRay ray;
       std::size_t cast = 0;
-      for (const CameraFrame& frame : frames) {
-        const auto image = frame.project(element.centre_m);
-        if (!image || std::abs(image->right_tan) > wide || std::abs(image->up_tan) > high ||
-            image->depth_m < camera.min_focus_m)
-          continue;
-        const Eigen::Vector3d sight = element.centre_m - frame.position_m();
-        const double distance_m = sight.norm();
-        const double cos_incidence = -sight.dot(element.normal) / distance_m;
-        if (cos_incidence <= 0.0) continue;
-        ++cast;
-        if (!clearInTree(tree, frame.position_m(), end, ray)) continue;
-        const double gsd = camera.gsd_mm_px(distance_m, std::acos(std::min(1.0, cos_incidence)));
-        result.best_gsd_mm_px[e] = std::min(result.best_gsd_mm_px[e], static_cast<float>(gsd));
-        if (gsd > region.gsd_mm_px || cos_incidence < cos_max) continue;
-        if (result.view_count[e] < std::numeric_limits<std::uint16_t>::max()) ++result.view_count[e];
-        if (std::abs(image->right_tan) <= central_wide && std::abs(image->up_tan) <= central_high) result.covered[e] = 1;
+      for (const std::size_t e : tiles[t].elements) {
+        const environment::SurfaceElement& element = surface.elements[e];
+        const Eigen::Vector3d end = element.centre_m + element.faceNormal() * offset_m;
+        for (const CameraFrame* frame : near) {
+          const auto image = frame->project(element.centre_m);
+          if (!image || std::abs(image->right_tan) > wide || std::abs(image->up_tan) > high ||
+              image->depth_m < camera.min_focus_m)
+            continue;
+          const Eigen::Vector3d sight = element.centre_m - frame->position_m();
+          const double distance_m = sight.norm();
+          const double cos_incidence = -sight.dot(element.normal) / distance_m;
+          if (cos_incidence <= 0.0) continue;
+          ++cast;
+          if (!clearInTree(tree, free, frame->position_m(), end, ray)) continue;
+          const double gsd = camera.gsd_mm_px(distance_m, std::acos(std::min(1.0, cos_incidence)));
+          result.best_gsd_mm_px[e] = std::min(result.best_gsd_mm_px[e], static_cast<float>(gsd));
+          if (gsd > region.gsd_mm_px || cos_incidence < cos_max) continue;
+          if (result.view_count[e] < std::numeric_limits<std::uint16_t>::max()) ++result.view_count[e];
+          if (std::abs(image->right_tan) <= central_wide && std::abs(image->up_tan) <= central_high)
+            result.covered[e] = 1;
+        }
       }
       rays += cast;
     });

@@ -816,6 +816,21 @@ void recordPhotos(TourResult& tour, const Mission& mission, const PlanningContex
       checkCoverage(context.map().tree(), *mission.camera, mission.surfaces, surfaces, reachable, poses, options.workers);
 }
 
+// Releases the samples of the legs the plan does not fly: they served the order search and the
+// split only, and a large tour (thousands of photos, about twenty legs stored for each) would
+// otherwise hold hundreds of megabytes of them while its other mode plans.
+void releaseUnflownSamples(TourResult& tour) {
+  std::set<std::pair<int, int>> flown;
+  for (const Sortie& sortie : tour.plan.sorties)
+    for (const SortieLeg& leg : sortie.legs) flown.emplace(leg.from, leg.to);
+  for (int from = 0; from < tour.legs.placeCount(); ++from) {
+    std::vector<int> unflown;
+    for (const auto& entry : tour.legs.row(from))
+      if (flown.count({from, entry.first}) == 0) unflown.push_back(entry.first);
+    for (const int to : unflown) std::vector<planner::PathSample>().swap(tour.legs.find(from, to)->evaluation.samples);
+  }
+}
+
 // The tour with stops where `reachable` holds (every valid place when empty).
 TourResult planTourWith(const Mission& mission, const PlanningContext& context, FlightMode mode,
                         const TourOptions& options, const planner::ReachablePredicate& reachable) {
@@ -955,6 +970,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
     tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));
   tour.duty = projectDuty(tour, context.battery(), options);
+  releaseUnflownSamples(tour);
   tour.times.record_s = clock.lap_s();
   if (tour.coverage) {
     recordPhotos(tour, mission, context, options);

@@ -1,9 +1,10 @@
 #pragma once
 // The independent coverage re-check: what a set of photos really covers. It takes the photo
 // poses alone (not which region or element a planner meant them for), tests every photo against
-// every surface element with the camera model, and casts each line of sight through the OctoMap
-// tree itself (OcTree::computeRayKeys and search), not through the planner's voxel grid or any
-// of its visibility bookkeeping. docs/coverage.md, "Re-check".
+// every surface element with the camera model (skipping only the photos whose frustum cannot reach
+// an element's 1 m cube), and casts each line of sight through the OctoMap tree itself
+// (OcTree::computeRayKeys, the keys looked up among the tree's known-free leaves, read once), not
+// through the planner's voxel grid or any of its visibility bookkeeping. docs/coverage.md, "Re-check".
 
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"

@@ -125,7 +125,7 @@ struct TourResult {
   std::vector<std::string> names;             // places: 0 home, k the target of stops[k - 1]
   std::vector<Eigen::Vector3d> places_m;
   std::vector<TourStop> stops;
-  LegTable legs;                              // legs[i][j]: every pair, or those a large tour looked at
+  LegTable legs;  // legs[i][j]: every pair, or those a large tour looked at; samples only where the plan flies
   TourOrder order;
   SortiePlan plan;
   FlightRecord record;                // what the plan flies, sample by sample
