@@ -270,10 +270,14 @@ std::string proposalText(const mission::MissionProposal& proposal, const fs::pat
       text << " (with smaller surfaces inside it: " << formatNumber(region.box_area_m2, 4) << " m2 to cover)";
     text << "\n";
   }
-  if (proposal.too_low_area_m2 > 0.0)
-    text << "left out " << formatNumber(proposal.too_low_area_m2, 4) << " m2 with less than "
-         << formatFixed(proposal.min_room_below_m, 2) << " m of free space below (the vehicle with its margins and "
-         << "the camera's standoff): too low to photograph from below\n";
+  if (proposal.too_low_area_m2 > 0.0) {
+    const std::string room = formatFixed(proposal.min_room_below_m, 2) + " m";
+    text << "left out " << formatNumber(proposal.too_low_area_m2, 4) << " m2 with less than " << room
+         << " of free space below";
+    if (std::isfinite(proposal.ground_m))
+      text << " or less than " << room << " above the ground at " << formatFixed(proposal.ground_m, 2) << " m";
+    text << " (the vehicle with its margins and the camera's standoff): too low to photograph from below\n";
+  }
   if (proposal.dropped_regions > 0)
     text << "dropped " << proposal.dropped_regions << " smaller region" << (proposal.dropped_regions == 1 ? "" : "s")
          << " (" << formatFixed(proposal.dropped_area_m2, 1) << " m2 in all): below the least area or beyond the most "

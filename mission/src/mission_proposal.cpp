@@ -63,12 +63,16 @@ double roomBelow_m(const environment::Environment& environment, const environmen
   return (top - k) * frame.resolution_m();
 }
 
-// Down-facing elements with `min_room_below_m` of free air below them, joined where their voxels
-// touch (faces, edges or corners). `elements` gets every down-facing element, low or not.
+// Down-facing elements with `proposal.min_room_below_m` of free air below them and at least as
+// high above the ground (an open mesh's or a scan's ground seen from under it is no overhead
+// surface), joined where their voxels touch (faces, edges or corners). `elements` gets every
+// down-facing element, low or not.
 std::vector<ProposedRegion> overheadRegions(const environment::Environment& environment,
-                                            const Eigen::AlignedBox3d& box_m, double min_room_below_m,
-                                            MissionProposal& proposal,
+                                            const Eigen::AlignedBox3d& box_m, MissionProposal& proposal,
                                             std::vector<environment::SurfaceElement>& elements) {
+  const double min_room_below_m = proposal.min_room_below_m;
+  const double lowest_m = std::isfinite(proposal.ground_m) ? proposal.ground_m + min_room_below_m
+                                                           : -std::numeric_limits<double>::infinity();
   const environment::VoxelGrid& grid = environment.grid();
   std::vector<environment::SurfaceElement> high;
   proposal.overhead_area_m2 = proposal.too_low_area_m2 = 0.0;
@@ -76,7 +80,8 @@ std::vector<ProposedRegion> overheadRegions(const environment::Environment& envi
     if (faceKindOf(element.normal) != FaceKind::Down) continue;
     elements.push_back(element);
     proposal.overhead_area_m2 += element.area_m2;
-    if (roomBelow_m(environment, element) + 1e-9 >= min_room_below_m) high.push_back(element);
+    if (element.centre_m.z() + 1e-9 >= lowest_m && roomBelow_m(environment, element) + 1e-9 >= min_room_below_m)
+      high.push_back(element);
     else proposal.too_low_area_m2 += element.area_m2;
   }
   const environment::GridFrame& frame = grid.frame();
@@ -176,10 +181,9 @@ std::optional<HomeCandidate> columnHome(const environment::Environment& environm
   return std::nullopt;
 }
 
-// On the lowest floor or ground a home can stand on (within kHomeGroundTolerance_m), as close
-// (horizontally) to `towards_m` as there is: a ledge, a roof or a table top is no home.
-std::optional<HomeCandidate> proposeHome(const environment::Environment& environment, const ProposalOptions& options,
-                                         const Eigen::Vector2d& towards_m, const ProgressCallback& progress) {
+// A home in every column (every half metre, inside the crop) that has one.
+std::vector<HomeCandidate> homeCandidates(const environment::Environment& environment, const ProposalOptions& options,
+                                          const ProgressCallback& progress) {
   const environment::GridFrame& frame = environment.grid().frame();
   const int stride = std::max(1, static_cast<int>(std::lround(kHomeColumnSpacing_m / frame.resolution_m())));
   std::vector<HomeCandidate> candidates;
@@ -195,11 +199,21 @@ std::optional<HomeCandidate> proposeHome(const environment::Environment& environ
     }
   }
   if (progress) progress("proposing a home", 1.0);
-  if (candidates.empty()) return std::nullopt;
-  const double ground_m =
-      std::min_element(candidates.begin(), candidates.end(), [](const HomeCandidate& a, const HomeCandidate& b) {
-        return a.floor_m < b.floor_m;
-      })->floor_m;
+  return candidates;
+}
+
+// The ground: the lowest floor a home can stand on; NaN when there is none.
+double groundOf(const std::vector<HomeCandidate>& candidates) {
+  double ground_m = std::nan("");
+  for (const HomeCandidate& candidate : candidates)
+    if (!(candidate.floor_m >= ground_m)) ground_m = candidate.floor_m;
+  return ground_m;
+}
+
+// On the ground (within kHomeGroundTolerance_m of it), as close (horizontally) to `towards_m` as
+// there is: a ledge, a roof or a table top is no home.
+std::optional<HomeCandidate> proposeHome(const std::vector<HomeCandidate>& candidates, double ground_m,
+                                         const Eigen::Vector2d& towards_m) {
   std::optional<HomeCandidate> best;
   double best_distance_m = std::numeric_limits<double>::infinity();
   for (const HomeCandidate& candidate : candidates) {
@@ -253,13 +267,14 @@ MissionProposal proposeMission(const environment::Environment& environment, cons
                                  " overlaps unknown space: take off where the scan saw free space");
   }
   const Eigen::AlignedBox3d box_m = options.crop_m ? *options.crop_m : grid.frame().bounds();
-  if (progress) progress("finding overhead surfaces", 0.0);
   MissionProposal proposal;
   const environment::VehicleGeometry& vehicle = environment.vehicle();
   proposal.min_room_below_m = options.standoff_m + vehicle.inflatedTop_m() - vehicle.inflatedBottom_m();
+  const std::vector<HomeCandidate> homes = homeCandidates(environment, options, progress);
+  proposal.ground_m = groundOf(homes);
   std::vector<environment::SurfaceElement> elements;
-  std::vector<ProposedRegion> regions =
-      overheadRegions(environment, box_m, proposal.min_room_below_m, proposal, elements);
+  if (progress) progress("finding overhead surfaces", 0.0);
+  std::vector<ProposedRegion> regions = overheadRegions(environment, box_m, proposal, elements);
   if (progress) progress("finding overhead surfaces", 1.0);
   const std::string where = options.crop_m ? " inside the crop " + formatPoint(box_m.min()) + " to " +
                                                  formatPoint(box_m.max())
@@ -302,7 +317,7 @@ MissionProposal proposeMission(const environment::Environment& environment, cons
     area_m2 += region.area_m2;
   }
   centroid_m /= area_m2;
-  const std::optional<HomeCandidate> home = proposeHome(environment, options, centroid_m, progress);
+  const std::optional<HomeCandidate> home = proposeHome(homes, proposal.ground_m, centroid_m);
   if (!home)
     throw ceilplan::InputError("no valid home in known free space " + formatNumber(options.min_home_height_m) + " to " +
                                formatNumber(options.max_home_height_m) + " m above a floor" + where +

@@ -122,15 +122,15 @@ TEST(MissionProposal, TheCropTheLeastAreaAndTheMostRegionsSayWhatTheyLeft) {
             "a crop box's y minimum (0) must be below its maximum (0)");
 }
 
-// A yard under a roof, with what a real scan holds besides the roof: 8 x 4 m, the ground's top at
-// 0.2 m with a hole under it at x < -2 (free from -0.2 to 0 m: its underside faces free space, as
-// a scan's rays under the ground make it), a table (underside at 0.9 m) at x in [-1.5, -0.5),
+// A yard under a roof, with what a real scan or an open mesh holds besides the roof: 8 x 4 m, the
+// ground's top at 0.2 m with a hollow under it at x < -2 (free from -1.8 to 0 m: the ground's
+// underside faces free space, as an open mesh's thin ground or a scan's rays under it make it), a table (underside at 0.9 m) at x in [-1.5, -0.5),
 // y in [-1, 1), and a roof whose underside is at 3.4 m over x < 2.5; beyond x = 2, a ledge up to
 // 2.2 m, 1.2 m below the roof's edge.
 environment::OccupancyMap yardWithTableAndLedge() {
   using environment::CellState;
-  return testing::analyticMap({-4, -2, -0.4}, {4, 2, 4.0}, 0.1, [](const Eigen::Vector3d& c) {
-    if (c.z() < -0.2) return CellState::Occupied;
+  return testing::analyticMap({-4, -2, -2.0}, {4, 2, 4.0}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < -1.8) return CellState::Occupied;
     if (c.z() < 0.0) return c.x() < -2.0 ? CellState::Free : CellState::Occupied;
     if (c.z() < 0.2) return CellState::Occupied;
     if (c.x() >= 2.0 && c.z() < 2.2) return CellState::Occupied;
@@ -142,9 +142,9 @@ environment::OccupancyMap yardWithTableAndLedge() {
 }
 
 // Only a down-facing face with room below it for the vehicle (0.3 m inflated, the quad) and the
-// standoff (1 m) is overhead: the roof over the yard; not the table's underside (0.7 m above the
-// ground), nor the ground seen from the hole under it (0.2 m), nor the roof's edge over the ledge
-// (1.2 m).
+// standoff (1 m), and as high above the ground, is overhead: the roof over the yard; not the
+// table's underside (0.7 m above the ground), nor the roof's edge over the ledge (1.2 m), nor the
+// ground seen from the hollow under it (1.8 m of free space, but below the ground a home stands on).
 TEST(MissionProposal, OnlySurfacesWithRoomBelowToPhotographThemAreOverhead) {
   const testing::CoverageScene yard(yardWithTableAndLedge());
   const MissionProposal proposal = proposeMission(yard.environment, ProposalOptions{});
@@ -155,12 +155,14 @@ TEST(MissionProposal, OnlySurfacesWithRoomBelowToPhotographThemAreOverhead) {
   EXPECT_NEAR(roof.box_m.min().x(), -4.0, 1e-9);
   EXPECT_NEAR(roof.box_m.max().x(), 2.0, 1e-9);  // the roof's edge over the ledge left out
   EXPECT_NEAR(roof.area_m2, 6.0 * 4.0, 0.1);
-  // The roof's edge, the table and the hole, less what the staircase normals at their edges lean.
+  EXPECT_NEAR(proposal.ground_m, 0.2, 1e-9);
+  // The roof's edge, the table and the hollow, less what the staircase normals at their edges lean.
   EXPECT_NEAR(proposal.too_low_area_m2, 0.5 * 4.0 + 1.0 * 2.0 + 2.0 * 4.0, 0.1);
   EXPECT_NEAR(proposal.overhead_area_m2, roof.area_m2 + proposal.too_low_area_m2, 1e-9);
   EXPECT_NE(io::proposalText(proposal, "m.yaml", "m.svg")
-                .find("\nleft out 11.94 m2 with less than 1.30 m of free space below (the vehicle with its margins "
-                      "and the camera's standoff): too low to photograph from below\n"),
+                .find("\nleft out 11.94 m2 with less than 1.30 m of free space below or less than 1.30 m above the "
+                      "ground at 0.20 m (the vehicle with its margins and the camera's standoff): too low to "
+                      "photograph from below\n"),
             std::string::npos)
       << io::proposalText(proposal, "m.yaml", "m.svg");
 
@@ -173,8 +175,8 @@ TEST(MissionProposal, OnlySurfacesWithRoomBelowToPhotographThemAreOverhead) {
 }
 
 // The regions' centre (x = -1, y = 0) lies over the table. The home stands on the ground beside
-// it, not on the table top (a column's floor is its lowest one with room for the vehicle: the
-// ground, not the hole under it), and not on the ledge.
+// it, not on the table top, and not on the ledge (nor in the hollow under the ground, where no
+// home can climb).
 TEST(MissionProposal, TheHomeStandsOnTheGroundNotOnATableOrALedge) {
   const testing::CoverageScene yard(yardWithTableAndLedge());
   const MissionProposal proposal = proposeMission(yard.environment, ProposalOptions{});

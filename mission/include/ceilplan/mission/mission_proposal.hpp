@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,10 +60,14 @@ struct MissionProposal {
   std::size_t dropped_regions = 0;  // below the area or beyond the count
   double dropped_area_m2 = 0.0;
   double overhead_area_m2 = 0.0;  // of every down-facing face onto known free space (in the crop)
-  // Of that, the faces with less known free space below than the vehicle needs to photograph
-  // them (min_room_below_m): a scan's ground seen from underneath, a table top's underside.
+  // Of that, the faces with less free space below than the vehicle needs to photograph them
+  // (min_room_below_m), or less high than that above the ground: a table's underside, the
+  // ground seen from a hole under it (a scan's) or from below (an open mesh's).
   double too_low_area_m2 = 0.0;
   double min_room_below_m = 0.0;  // ProposalOptions::standoff_m + the vehicle's inflated height
+  // The lowest floor a home can stand on (inside the crop), a proposed home within 0.5 m of it;
+  // NaN when there is none.
+  double ground_m = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The standoff a proposed region leaves room for below it: free mode's distance kept from every
