@@ -272,11 +272,11 @@ std::string proposalText(const mission::MissionProposal& proposal, const fs::pat
   }
   if (proposal.too_low_area_m2 > 0.0) {
     const std::string room = formatFixed(proposal.min_room_below_m, 2) + " m";
-    text << "left out " << formatNumber(proposal.too_low_area_m2, 4) << " m2 with less than " << room
-         << " of free space below";
+    text << "left out " << formatNumber(proposal.too_low_area_m2, 4) << " m2 too low to photograph from below: with less than "
+         << room << " of free space below most of its region";
     if (std::isfinite(proposal.ground_m))
-      text << " or less than " << room << " above the ground at " << formatFixed(proposal.ground_m, 2) << " m";
-    text << " (the vehicle with its margins and the camera's standoff): too low to photograph from below\n";
+      text << ", or less than " << room << " above the ground at " << formatFixed(proposal.ground_m, 2) << " m";
+    text << " (the vehicle with its margins and the camera's standoff)\n";
   }
   if (proposal.dropped_regions > 0)
     text << "dropped " << proposal.dropped_regions << " smaller region" << (proposal.dropped_regions == 1 ? "" : "s")

@@ -63,10 +63,11 @@ double roomBelow_m(const environment::Environment& environment, const environmen
   return (top - k) * frame.resolution_m();
 }
 
-// Down-facing elements with `proposal.min_room_below_m` of free air below them and at least as
-// high above the ground (an open mesh's or a scan's ground seen from under it is no overhead
-// surface), joined where their voxels touch (faces, edges or corners). `elements` gets every
-// down-facing element, low or not.
+// Down-facing elements at least `proposal.min_room_below_m` above the ground (an open mesh's or a
+// scan's ground seen from under it is no overhead surface), joined where their voxels touch
+// (faces, edges or corners); a region is kept when most of its area has that much free air below
+// it (a table's underside has not; a ceiling above a few lamps has, and its faces over the lamps
+// are seen obliquely). `elements` gets every down-facing element, low or not.
 std::vector<ProposedRegion> overheadRegions(const environment::Environment& environment,
                                             const Eigen::AlignedBox3d& box_m, MissionProposal& proposal,
                                             std::vector<environment::SurfaceElement>& elements) {
@@ -80,8 +81,7 @@ std::vector<ProposedRegion> overheadRegions(const environment::Environment& envi
     if (faceKindOf(element.normal) != FaceKind::Down) continue;
     elements.push_back(element);
     proposal.overhead_area_m2 += element.area_m2;
-    if (element.centre_m.z() + 1e-9 >= lowest_m && roomBelow_m(environment, element) + 1e-9 >= min_room_below_m)
-      high.push_back(element);
+    if (element.centre_m.z() + 1e-9 >= lowest_m) high.push_back(element);
     else proposal.too_low_area_m2 += element.area_m2;
   }
   const environment::GridFrame& frame = grid.frame();
@@ -104,16 +104,27 @@ std::vector<ProposedRegion> overheadRegions(const environment::Environment& envi
   }
   std::unordered_map<std::size_t, std::size_t> region_of_root;
   std::vector<ProposedRegion> regions;
+  std::vector<double> roomy_area_m2;  // per region: of faces with the room below them
   const Eigen::Vector3d half_voxel = Eigen::Vector3d::Constant(frame.resolution_m() / 2.0);
   for (std::size_t e = 0; e < high.size(); ++e) {
     const auto [it, inserted] = region_of_root.emplace(sets.root(e), regions.size());
-    if (inserted) regions.emplace_back();
+    if (inserted) {
+      regions.emplace_back();
+      roomy_area_m2.push_back(0.0);
+    }
     ProposedRegion& region = regions[it->second];
+    if (roomBelow_m(environment, high[e]) + 1e-9 >= min_room_below_m) roomy_area_m2[it->second] += high[e].area_m2;
     region.box_m.extend(high[e].centre_m - half_voxel);
     region.box_m.extend(high[e].centre_m + half_voxel);
     region.area_m2 += high[e].area_m2;
     ++region.elements;
   }
+  std::vector<ProposedRegion> roomy;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    if (2.0 * roomy_area_m2[r] >= regions[r].area_m2) roomy.push_back(regions[r]);
+    else proposal.too_low_area_m2 += regions[r].area_m2;
+  }
+  regions = std::move(roomy);
   // Largest first; ties by place, so that the order does not depend on the hash map's.
   std::sort(regions.begin(), regions.end(), [](const ProposedRegion& a, const ProposedRegion& b) {
     if (a.area_m2 != b.area_m2) return a.area_m2 > b.area_m2;

@@ -60,9 +60,9 @@ struct MissionProposal {
   std::size_t dropped_regions = 0;  // below the area or beyond the count
   double dropped_area_m2 = 0.0;
   double overhead_area_m2 = 0.0;  // of every down-facing face onto known free space (in the crop)
-  // Of that, the faces with less free space below than the vehicle needs to photograph them
-  // (min_room_below_m), or less high than that above the ground: a table's underside, the
-  // ground seen from a hole under it (a scan's) or from below (an open mesh's).
+  // Of that, the regions with less free space below most of their area than the vehicle needs
+  // to photograph them (min_room_below_m), and the faces less high than that above the ground: a
+  // table's underside, the ground seen from a hole under it (a scan's) or from below (an open mesh's).
   double too_low_area_m2 = 0.0;
   double min_room_below_m = 0.0;  // ProposalOptions::standoff_m + the vehicle's inflated height
   // The lowest floor a home can stand on (inside the crop), a proposed home within 0.5 m of it;
