@@ -670,6 +670,8 @@ PYBIND11_MODULE(ceilplan, m) {
         d["dropped_regions"] = proposal.dropped_regions;
         d["dropped_area_m2"] = proposal.dropped_area_m2;
         d["overhead_area_m2"] = proposal.overhead_area_m2;
+        d["too_low_area_m2"] = proposal.too_low_area_m2;
+        d["min_room_below_m"] = proposal.min_room_below_m;
         d["mission"] = request.mission_file;
         d["picture"] = request.picture_file;
         return d;

@@ -107,8 +107,11 @@ mission::MissionProposal proposeMissionFiles(ProposalRequest& request, Provenanc
   inputs.push_back({"the map", request.settings.map_file});
   inputs.push_back({"the vehicle", request.settings.vehicle_file});
   OutputSet outputs({{request.mission_flag, out}, {request.picture_flag, request.picture_file}}, inputs);
-  request.options.validate();
   request.settings.validate();
+  // The room a region needs below it comes from the camera the mission will fly.
+  const mission::Camera& camera = mission::cameraPreset(request.settings.camera_preset).camera;
+  request.options.standoff_m = mission::proposalStandoff_m(camera, request.settings.gsd_mm_px);
+  request.options.validate();
   const environment::VehicleGeometry vehicle = readVehicle(request.settings.vehicle_file).geometry;
   const environment::OccupancyMap map = environment::OccupancyMap::load(request.settings.map_file);
   provenance.input("map", request.settings.map_file).input("vehicle", request.settings.vehicle_file);
@@ -266,6 +269,14 @@ std::string proposalText(const mission::MissionProposal& proposal, const fs::pat
     if (region.box_area_m2 > region.area_m2 + 1e-6)
       text << " (with smaller surfaces inside it: " << formatNumber(region.box_area_m2, 4) << " m2 to cover)";
     text << "\n";
+  }
+  if (proposal.too_low_area_m2 > 0.0) {
+    const std::string room = formatFixed(proposal.min_room_below_m, 2) + " m";
+    text << "left out " << formatNumber(proposal.too_low_area_m2, 4) << " m2 too low to photograph from below: with less than "
+         << room << " of free space below most of its region";
+    if (std::isfinite(proposal.ground_m))
+      text << ", or less than " << room << " above the ground at " << formatFixed(proposal.ground_m, 2) << " m";
+    text << " (the vehicle with its margins and the camera's standoff)\n";
   }
   if (proposal.dropped_regions > 0)
     text << "dropped " << proposal.dropped_regions << " smaller region" << (proposal.dropped_regions == 1 ? "" : "s")

@@ -541,13 +541,15 @@ class SparseLegs {
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     Pairs missing;
-    std::vector<TourLeg*> cells;
     for (const auto& [from, to] : pairs)
-      if (from != to && !tour_.legs.contains(from, to)) {
-        missing.emplace_back(from, to);
-        cells.push_back(&tour_.legs(from, to));  // stored before the threads start
-      }
-    parallelFor(missing.size(), options_.workers, [&](std::size_t k) { *cells[k] = firstLeg(missing[k].first, missing[k].second); });
+      if (from != to && !tour_.legs.contains(from, to)) missing.emplace_back(from, to);
+    // Stored once all are estimated: an estimate that throws (no route joins the places) leaves
+    // no empty leg behind for a later round to fly.
+    std::vector<TourLeg> estimated(missing.size());
+    parallelFor(missing.size(), options_.workers,
+                [&](std::size_t k) { estimated[k] = firstLeg(missing[k].first, missing[k].second); });
+    for (std::size_t k = 0; k < missing.size(); ++k)
+      tour_.legs(missing[k].first, missing[k].second) = std::move(estimated[k]);
   }
 
   // Every place's neighbours, both ways.
@@ -561,8 +563,10 @@ class SparseLegs {
   // What a visit costs, estimating the leg on first use (from the order search's thread).
   double visitCost(int from, int to) {
     if (const TourLeg* leg = tour_.legs.find(from, to)) return mission::visitCost(tour_, *leg, to);
-    TourLeg& leg = tour_.legs(from, to);
-    leg = firstLeg(from, to);
+    // Stored once estimated: an estimate that throws (no route joins the places) leaves no empty
+    // leg behind, which a later round would fly as a leg without a waypoint.
+    TourLeg estimated = firstLeg(from, to);
+    const TourLeg& leg = tour_.legs(from, to) = std::move(estimated);
     return mission::visitCost(tour_, leg, to);
   }
 

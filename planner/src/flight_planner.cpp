@@ -156,7 +156,8 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
       throw ceilplan::InputError("a candidate route must run from the start to the goal");
     bool valid = true;
     for (std::size_t k = 1; k < candidate.size() && valid; ++k) valid = rules_.isMotionValid(candidate[k - 1], candidate[k]);
-    if (!valid) continue;
+    // The motion checks sample; a candidate the dense re-check refuses is no route (not a bug).
+    if (!valid || rules_.checkPathDensely(candidate)) continue;
     const std::vector<Eigen::Vector3d> improved = postProcess(candidate, request.refinement, request.refine);
     const double cost = objective_->pathCost(improved);
     if (cost < result.cost) {

@@ -122,6 +122,83 @@ TEST(MissionProposal, TheCropTheLeastAreaAndTheMostRegionsSayWhatTheyLeft) {
             "a crop box's y minimum (0) must be below its maximum (0)");
 }
 
+// A yard under a roof, with what a real scan or an open mesh holds besides the roof: 8 x 4 m, the
+// ground's top at 0.2 m with a hollow under it at x < -2 (free from -1.8 to 0 m: the ground's
+// underside faces free space, as an open mesh's thin ground or a scan's rays under it make it), a table (underside at 0.9 m) at x in [-1.5, -0.5),
+// y in [-1, 1), and a roof whose underside is at 3.4 m over x < 2.5; beyond x = 2, a ledge up to
+// 2.2 m, 1.2 m below the roof's edge.
+environment::OccupancyMap yardWithTableAndLedge() {
+  using environment::CellState;
+  return testing::analyticMap({-4, -2, -2.0}, {4, 2, 4.0}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < -1.8) return CellState::Occupied;
+    if (c.z() < 0.0) return c.x() < -2.0 ? CellState::Free : CellState::Occupied;
+    if (c.z() < 0.2) return CellState::Occupied;
+    if (c.x() >= 2.0 && c.z() < 2.2) return CellState::Occupied;
+    if (c.x() >= -1.5 && c.x() < -0.5 && std::abs(c.y()) < 1.0 && c.z() >= 0.9 && c.z() < 1.0)
+      return CellState::Occupied;
+    if (c.x() < 2.5 && c.z() >= 3.4) return CellState::Occupied;
+    return CellState::Free;
+  });
+}
+
+// Only a region with room below most of it for the vehicle (0.3 m inflated, the quad) and the
+// standoff (1 m), of faces as high above the ground, is overhead: the roof over the yard, its edge
+// over the ledge (1.2 m of room, 2 of its 26 m2) included; not the table's underside (0.7 m above
+// the ground), nor the ground seen from the hollow under it (1.8 m of free space, but below the
+// ground a home stands on).
+TEST(MissionProposal, OnlySurfacesWithRoomBelowToPhotographThemAreOverhead) {
+  const testing::CoverageScene yard(yardWithTableAndLedge());
+  const MissionProposal proposal = proposeMission(yard.environment, ProposalOptions{});
+  EXPECT_NEAR(proposal.min_room_below_m, 1.0 + 0.08 + 0.22, 1e-9);
+  ASSERT_EQ(proposal.regions.size(), 1u);
+  const ProposedRegion& roof = proposal.regions[0];
+  EXPECT_NEAR(roof.box_m.min().z(), 3.35, 1e-9);
+  EXPECT_NEAR(roof.box_m.min().x(), -4.0, 1e-9);
+  EXPECT_NEAR(roof.box_m.max().x(), 2.5, 1e-9);
+  EXPECT_NEAR(roof.area_m2, 6.5 * 4.0, 1e-6);
+  EXPECT_NEAR(proposal.ground_m, 0.2, 1e-9);
+  // The table and the hollow, less what the staircase normals at their edges lean.
+  EXPECT_NEAR(proposal.too_low_area_m2, 1.0 * 2.0 + 2.0 * 4.0, 0.1);
+  EXPECT_NEAR(proposal.overhead_area_m2, roof.area_m2 + proposal.too_low_area_m2, 1e-9);
+  EXPECT_NE(io::proposalText(proposal, "m.yaml", "m.svg")
+                .find("\nleft out 9.942 m2 too low to photograph from below: with less than 1.30 m of free space "
+                      "below most of its region, or less than 1.30 m above the ground at 0.20 m (the vehicle with "
+                      "its margins and the camera's standoff)\n"),
+            std::string::npos)
+      << io::proposalText(proposal, "m.yaml", "m.svg");
+
+  // A standoff the yard has no room for anywhere is refused, saying what it asked for.
+  ProposalOptions far;
+  far.standoff_m = 3.5;
+  EXPECT_EQ(testing::inputErrorOf([&] { proposeMission(yard.environment, far); }),
+            "no down-facing surface in the map has 3.8 m of free space below it, the vehicle's height with its "
+            "margins and a standoff of 3.5 m: the camera cannot photograph any from below");
+}
+
+// The regions' centre (x = -1, y = 0) lies over the table. The home stands on the ground beside
+// it, not on the table top, and not on the ledge (nor in the hollow under the ground, where no
+// home can climb).
+TEST(MissionProposal, TheHomeStandsOnTheGroundNotOnATableOrALedge) {
+  const testing::CoverageScene yard(yardWithTableAndLedge());
+  const MissionProposal proposal = proposeMission(yard.environment, ProposalOptions{});
+  EXPECT_NEAR(proposal.home_m.z() - proposal.home_height_m, 0.2, 1e-9);  // on the ground's top
+  EXPECT_NEAR(proposal.home_height_m, 0.5, 1e-9);
+  EXPECT_TRUE(yard.environment.isStateValid(proposal.home_m));
+  EXPECT_FALSE(yard.environment.assumesFree(proposal.home_m));
+  EXPECT_LT(proposal.home_m.x(), 2.0 - 0.46);  // off the ledge (collision radius and margin)
+  const bool beside_table = proposal.home_m.x() < -1.5 - 0.46 || proposal.home_m.x() > -0.5 + 0.46 ||
+                            std::abs(proposal.home_m.y()) > 1.0 + 0.46;
+  EXPECT_TRUE(beside_table) << proposal.home_m.transpose();
+  EXPECT_LT(std::hypot(proposal.home_m.x() + 1.0, proposal.home_m.y()), 1.6) << proposal.home_m.transpose();
+
+  // Standoffs are the camera's: free mode's 1 m, nearer for a fine GSD, never nearer than focus.
+  const Camera camera = testing::upwardCamera();
+  EXPECT_NEAR(proposalStandoff_m(camera, 2.0), 1.0, 1e-12);
+  EXPECT_NEAR(proposalStandoff_m(camera, 0.2), camera.distanceForGsd_m(0.2), 1e-12);
+  EXPECT_LT(camera.distanceForGsd_m(0.2), 1.0);
+  EXPECT_NEAR(proposalStandoff_m(camera, 0.01), camera.min_focus_m, 1e-12);
+}
+
 // The mission file, read back by the mission reader, is the proposal with the settings: its
 // map and vehicle found from where it lies, no origin, the camera on an upward mount.
 TEST(MissionProposal, TheMissionFileReadsBackAsTheProposal) {

@@ -2,16 +2,19 @@
 // A coverage mission proposed from the map alone (`ceilplan propose`, docs/import.md): the
 // overhead surfaces a scan or model holds, grouped into regions, and a home to take off from.
 // The regions are the map's down-facing occupied faces with known free space below them
-// (environment/surface_elements.hpp), joined where they touch (26-connected voxels); the home is
-// a valid body position in known free space low above the floor, with room to climb 1.5 m
-// straight up, near the regions.
+// (environment/surface_elements.hpp) with room below them for the vehicle to photograph them,
+// joined where they touch (26-connected voxels); the home is a valid body position in known free
+// space low above the lowest floor or ground, with room to climb 1.5 m straight up, near the
+// regions.
 
 #include "ceilplan/core/progress.hpp"
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/mission/camera.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,9 +33,12 @@ struct ProposalOptions {
   // The proposed home's height above the floor under it (the lowest one that is a valid state).
   double min_home_height_m = 0.5;
   double max_home_height_m = 3.0;
+  // Camera to surface: a down-facing face is overhead only with this much known free space below
+  // it besides the vehicle's inflated height (proposalStandoff_m; io sets it from the camera).
+  double standoff_m = 1.0;
 
   // Throws ceilplan::InputError naming the option: non-finite or empty crop, area < 0,
-  // max_regions outside [1, 100], heights outside (0, 100] or min above max.
+  // max_regions outside [1, 100], heights or standoff outside (0, 100] or min above max.
   void validate() const;
 };
 
@@ -54,11 +60,24 @@ struct MissionProposal {
   std::size_t dropped_regions = 0;  // below the area or beyond the count
   double dropped_area_m2 = 0.0;
   double overhead_area_m2 = 0.0;  // of every down-facing face onto known free space (in the crop)
+  // Of that, the regions with less free space below most of their area than the vehicle needs
+  // to photograph them (min_room_below_m), and the faces less high than that above the ground: a
+  // table's underside, the ground seen from a hole under it (a scan's) or from below (an open mesh's).
+  double too_low_area_m2 = 0.0;
+  double min_room_below_m = 0.0;  // ProposalOptions::standoff_m + the vehicle's inflated height
+  // The lowest floor a home can stand on (inside the crop), a proposed home within 0.5 m of it;
+  // NaN when there is none.
+  double ground_m = std::numeric_limits<double>::quiet_NaN();
 };
 
+// The standoff a proposed region leaves room for below it: free mode's distance kept from every
+// structure (ViewGenerationOptions::free_standoff_m, 1 m), nearer where the GSD asks for it (the
+// camera's distance for `gsd_mm_px` straight on), never nearer than the camera's minimum focus.
+double proposalStandoff_m(const Camera& camera, double gsd_mm_px);
+
 // Throws ceilplan::InputError: no overhead surface with known free space below (in the crop),
-// none large enough, a given home that is outside the map, not a valid state or in unknown
-// space, or no valid home in known free space above any floor.
+// none with room below it to photograph it, none large enough, a given home that is outside the
+// map, not a valid state or in unknown space, or no valid home in known free space above any floor.
 MissionProposal proposeMission(const environment::Environment& environment, const ProposalOptions& options,
                                const ProgressCallback& progress = {});
 
