@@ -223,14 +223,21 @@ TEST(RealData, OctomapScanProposedMissionToursInBothModesWithinItsData) {
 }
 
 // The same scan without its sensor origin: free space only between scanned surfaces (the map
-// knows where its data end), proposed and toured in both modes.
-TEST(RealData, OctomapScanWithoutOriginsProposedMissionToursInBothModesWithinItsData) {
-  GTEST_SKIP() << "needs the import of clouds without origins that frees space only between a scanned surface above "
-                  "and below (mapFromPointsAlone, the integrator's change 'without origins'): on main, the points' "
-                  "bounding box beyond 0.4 m of any point is free, above the vaults too";
-  ProposedTour proposal;
-  importProposeAndTour("octomap_scan_no_origins_propose", "octomap_scan.bt", kScanPoints + " --resolution 0.2",
-                       proposal);
+// knows where its data end). The scanner stood 5 cm above the ground and saw nothing under the
+// vaults, so nothing lies between a scanned surface above and one below: propose finds no
+// overhead surface with known free space below, says so in one line and writes nothing, where
+// the whole-box assumption would have proposed flying through air the scan never saw.
+TEST(RealData, OctomapScanWithoutOriginsProposesNothingItsDataDoesNotSupport) {
+  const fs::path dir = testing::scratchDirectory("octomap_scan_no_origins_propose");
+  importMap(kScanPoints + " --resolution 0.2", dir / "octomap_scan.bt");
+  const auto proposed = testing::runCeilplan("propose --map " + quoted(dir / "octomap_scan.bt") + " --vehicle " +
+                                             quoted(CEILPLAN_SOURCE_DIR "/maps/vehicles/quad.yaml") + " --out " +
+                                             quoted(dir / "mission.yaml"));
+  EXPECT_EQ(proposed.exit_code, 2) << proposed.out << proposed.err;
+  EXPECT_EQ(proposed.err,
+            "ceilplan: error: no down-facing surface with known free space below it in the map: a scan without "
+            "sensor origins may have no known free space (docs/import.md)\n");
+  EXPECT_FALSE(fs::exists(dir / "mission.yaml"));
 }
 
 // A target picked from the scan itself (the return nearest vault_a) lies inside the occupied voxel
