@@ -9,8 +9,8 @@
 //   Lanes are flown boustrophedon; a pose the safety rules refuse is dropped, as a pilot would
 //   move a photo off a structure (counted as `skipped`).
 //   Legs between photos are straight where the dense re-check passes, else routed; the legs out
-//   of home and back are routed in the mode; sorties may start at each lane's first photo and
-//   are split by planSorties, as the tour's are.
+//   of home and back are routed in the mode; all at the model's speeds, a hover stop per photo.
+//   Sorties may start at each lane's first photo and are split by planSorties, as a tour's are.
 //   BM_Lawnmower/MISSION/MODE/TOUR/GSD: MISSION 0 bridge soffit, 1 tunnel crown, 2 warehouse roof
 //   (maps/coverage/*.yaml); MODE 0 ceiling, 1 free; TOUR 1 also plans ceilplan's own tour of the
 //   mission in that mode and reports its figures beside the lawnmower's (tour_*); every region at
@@ -123,8 +123,8 @@ Flown fly(const mission::Mission& mission, const mission::PlanningContext& conte
       request.lattice.spacing_m = planner::kTourLatticeSpacing_m;  // the tour roadmap's spacing
       waypoints = mission::planRoute(context, mode, request).plan.waypoints;
     }
-    legs[{from, to}] = planner::evaluatePath(context.fullModel(), context.battery().pack, context.battery().start_soc,
-                                             waypoints, mission.speeds.inspection_m_s);
+    legs[{from, to}] =
+        planner::evaluatePath(context.fullModel(), context.battery().pack, context.battery().start_soc, waypoints);
   };
   mission::TourCosts costs;
   costs.names.assign(static_cast<std::size_t>(places), "photo");
