@@ -209,7 +209,9 @@ TEST(RealData, OctomapScanProposedMissionToursInBothModesWithinItsData) {
   if (HasFatalFailure()) return;
   const auto tour = nlohmann::json::parse(testing::readWholeFile(proposal.tour / "ceiling/tour.json"));
   EXPECT_EQ(tour["coverage"]["regions"].size(), 2u);
-  for (const auto& region : nlohmann::json::parse(testing::readWholeFile(proposal.tour / "ceiling/coverage.json"))["regions"])
+  // Named: a range-for over a member of parse()'s temporary would read it after it is destroyed.
+  const auto coverage = nlohmann::json::parse(testing::readWholeFile(proposal.tour / "ceiling/coverage.json"));
+  for (const auto& region : coverage["regions"])
     EXPECT_GT(region["area_m2"].get<double>(), 5.0) << region["name"];
   // The vaults, 7.7 m and more above the ground.
   EXPECT_NE(proposal.proposed.find("  overhead_1: 19.47 m2 in the box (15.60, -5.00, 7.70) to (21.60, 0.40, 10.20)"),
@@ -390,7 +392,9 @@ TEST(RealData, FzkHausProposedMissionToursInBothModesWithinItsData) {
                        " --resolution 0.2", proposal);
   if (HasFatalFailure()) return;
   EXPECT_NE(proposal.proposed.find(" above the ground at 0.20 m "), std::string::npos) << proposal.proposed;
-  for (const auto& region : nlohmann::json::parse(testing::readWholeFile(proposal.tour / "ceiling/coverage.json"))["regions"])
+  // Named: a range-for over a member of parse()'s temporary would read it after it is destroyed.
+  const auto coverage = nlohmann::json::parse(testing::readWholeFile(proposal.tour / "ceiling/coverage.json"));
+  for (const auto& region : coverage["regions"])
     EXPECT_GT(region["area_m2"].get<double>(), 30.0) << region["name"];
 }
 
