@@ -20,8 +20,9 @@ int main(int argc, char** argv) {
     for (const mission::TourResult* tour : {&ceiling, &free}) {
       const auto plans = io::autopilotMissions(*tour, mission, io::Autopilot::PX4);
       for (std::size_t k = 0; k < plans.size(); ++k) {
-        const std::filesystem::path file = io::sortieFileName(
-            std::filesystem::path(argv[2]) / (mission::flightModeName(tour->mode) + ".plan"), int(k) + 1, int(plans.size()));
+        const std::filesystem::path file =
+            io::sortieFileName(std::filesystem::path(argv[2]) / (mission::flightModeName(tour->mode) + ".plan"),
+                               int(k) + 1, int(plans.size()));
         io::writeQgcPlan(file, plans[k]);
         std::cout << "wrote " << file.string() << '\n';
       }

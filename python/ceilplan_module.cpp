@@ -107,7 +107,8 @@ py::dict gapsDict(const environment::SurfaceGaps& gaps) {
 }
 
 // Columns of samples as numpy arrays: t_s, x, y, z, current_a, soc (and speed, gaps).
-py::dict sampleArrays(const std::vector<std::vector<planner::PathSample>>& sorties, const std::vector<double>& offsets_s) {
+py::dict sampleArrays(const std::vector<std::vector<planner::PathSample>>& sorties,
+                      const std::vector<double>& offsets_s) {
   std::size_t n = 0;
   for (const auto& samples : sorties) n += samples.size();
   py::array_t<double> t(n), x(n), y(n), z(n), speed(n), gap(n), current(n), soc(n);
@@ -195,7 +196,9 @@ py::object pythonJson(const nlohmann::json& json) {
   return py::module_::import("json").attr("loads")(io::jsonText(json));
 }
 
-py::object noneIfEmpty(const std::optional<double>& value) { return value ? py::object(py::float_(*value)) : py::none(); }
+py::object noneIfEmpty(const std::optional<double>& value) {
+  return value ? py::object(py::float_(*value)) : py::none();
+}
 
 // A duty-series of samples as numpy arrays: t_s, current_a, soc, fec.
 py::dict dutySeries(const std::vector<battery::Sample>& samples) {
@@ -226,7 +229,8 @@ py::dict dutyAgeingDict(const battery::DutyStudyAgeing& ageing) {
   d["min_soc"] = p.min_soc;
   d["days_flown"] = p.days_flown;
   d["days_to_end_of_life"] = noneIfEmpty(p.days_to_end_of_life);
-  d["missions_to_end_of_life"] = p.missions_to_end_of_life ? py::object(py::int_(*p.missions_to_end_of_life)) : py::none();
+  d["missions_to_end_of_life"] =
+      p.missions_to_end_of_life ? py::object(py::int_(*p.missions_to_end_of_life)) : py::none();
   d["wear_reduction_pct"] = noneIfEmpty(ageing.wear_reduction_pct);
   d["wear_reduction_new_pack_pct"] = noneIfEmpty(ageing.wear_reduction_new_pack_pct);
   d["fade_reduction_pct"] = noneIfEmpty(ageing.fade_reduction_pct);
@@ -251,7 +255,8 @@ py::dict dutyStudyDict(const battery::DutyStudyOptions& options, const battery::
     d["discharge_ah"] = c.run.final_state.discharge_ah;
     d["fec_reduction_pct"] = c.fec_reduction_pct;
     py::dict ageing;
-    for (std::size_t m = 0; m < c.ageing.size(); ++m) ageing[py::str(options.ageing_models[m])] = dutyAgeingDict(c.ageing[m]);
+    for (std::size_t m = 0; m < c.ageing.size(); ++m)
+      ageing[py::str(options.ageing_models[m])] = dutyAgeingDict(c.ageing[m]);
     d["ageing"] = ageing;
     d["first_day"] = dutySeries(c.run.first_day);
     cases.append(d);
@@ -295,7 +300,8 @@ PYBIND11_MODULE(ceilplan, m) {
 
   py::class_<mission::Vehicle>(m, "Vehicle", "A multirotor: its shape and its energy model")
       .def_static("default", &mission::Vehicle::defaultQuad, "The built-in quadrotor (maps/vehicles/quad.yaml)")
-      .def_static("load", [](const std::filesystem::path& file) { return io::readVehicle(file); }, py::arg("path"))
+      .def_static(
+          "load", [](const std::filesystem::path& file) { return io::readVehicle(file); }, py::arg("path"))
       .def_readonly("name", &mission::Vehicle::name)
       .def(
           "current_a",
@@ -309,9 +315,9 @@ PYBIND11_MODULE(ceilplan, m) {
             flight.soc = soc.value_or(vehicle.energy.reference_soc);
             return model.currentA(noneAsInfinity(ceiling_gap_m), coverage, flight);
           },
-          "Pack current (A); a gap of None is free air", py::arg("ceiling_gap_m") = py::none(), py::arg("coverage") = 1.0,
-          py::arg("ground_gap_m") = py::none(), py::arg("speed_m_s") = 0.0, py::arg("climb_m_s") = 0.0,
-          py::arg("soc") = py::none());
+          "Pack current (A); a gap of None is free air", py::arg("ceiling_gap_m") = py::none(),
+          py::arg("coverage") = 1.0, py::arg("ground_gap_m") = py::none(), py::arg("speed_m_s") = 0.0,
+          py::arg("climb_m_s") = 0.0, py::arg("soc") = py::none());
 
   py::class_<PyEnvironment>(m, "Environment", "A map indexed for a vehicle and a battery")
       .def_static(
@@ -343,7 +349,8 @@ PYBIND11_MODULE(ceilplan, m) {
           },
           "Gaps above and below each rotor, clearance and validity with the body centre at (x, y, z)", py::arg("x"),
           py::arg("y"), py::arg("z"))
-      .def_property_readonly("resolution_m", [](const PyEnvironment& self) { return self.context->map().resolution_m(); });
+      .def_property_readonly("resolution_m",
+                             [](const PyEnvironment& self) { return self.context->map().resolution_m(); });
 
   const planner::PlanRequest defaults;  // `ceilplan plan`'s defaults too
   m.def(
@@ -399,7 +406,8 @@ PYBIND11_MODULE(ceilplan, m) {
       "Figures and safety (dense re-check) of any path of (x, y, z) points", py::arg("env"), py::arg("path"));
 
   py::class_<PyMission>(m, "Mission", "An inspection mission file (docs/missions.md)")
-      .def_static("load", [](const std::filesystem::path& path) { return PyMission{io::readMission(path)}; }, py::arg("path"))
+      .def_static(
+          "load", [](const std::filesystem::path& path) { return PyMission{io::readMission(path)}; }, py::arg("path"))
       .def_property_readonly("targets",
                              [](const PyMission& self) {
                                std::vector<std::string> names;
@@ -427,8 +435,9 @@ PYBIND11_MODULE(ceilplan, m) {
       .def_property_readonly("fec", [](const PyTour& t) { return t.tour.plan.fec; })
       .def_property_readonly("min_soc", [](const PyTour& t) { return t.tour.plan.min_soc; })
       .def_property_readonly("duration_s", [](const PyTour& t) { return t.tour.plan.flight_s; })
-      .def_property_readonly("stops_rechosen", [](const PyTour& t) { return t.tour.stops_rechosen; },
-                             "whether the first stops left one no route from home reaches, and they were chosen again")
+      .def_property_readonly(
+          "stops_rechosen", [](const PyTour& t) { return t.tour.stops_rechosen; },
+          "whether the first stops left one no route from home reaches, and they were chosen again")
       .def_property_readonly("sorties",
                              [](const PyTour& t) {
                                py::list list;
@@ -505,8 +514,8 @@ PYBIND11_MODULE(ceilplan, m) {
 
   m.def(
       "plan_tour",
-      [](const PyMission& mission, const std::string& mode, std::optional<std::uint32_t> seed, const std::string& planner,
-         const std::string& ageing_model) {
+      [](const PyMission& mission, const std::string& mode, std::optional<std::uint32_t> seed,
+         const std::string& planner, const std::string& ageing_model) {
         auto shared_mission = std::make_shared<const mission::Mission>(mission.mission);
         mission::TourOptions options;
         options.seed = seed.value_or(mission.mission.seed);
@@ -524,8 +533,8 @@ PYBIND11_MODULE(ceilplan, m) {
       },
       "Plans the mission's tour in one mode, as `ceilplan tour` does: point targets, contact grids and surfaces to "
       "photograph",
-      py::arg("mission"), py::arg("mode") = "ceiling",
-      py::arg("seed") = py::none(), py::arg("planner") = "roadmap", py::arg("ageing_model") = "xu");
+      py::arg("mission"), py::arg("mode") = "ceiling", py::arg("seed") = py::none(), py::arg("planner") = "roadmap",
+      py::arg("ageing_model") = "xu");
 
   const io::MapImportOptions import_defaults;  // `ceilplan import`'s defaults too
   m.def(
@@ -533,8 +542,8 @@ PYBIND11_MODULE(ceilplan, m) {
       [](const std::filesystem::path& out, const std::optional<std::filesystem::path>& points,
          const std::optional<std::filesystem::path>& mesh, const std::optional<std::filesystem::path>& origins,
          double resolution_m, const std::string& crs, double max_range_m, std::optional<double> free_distance_m,
-         const std::string& free_region, std::optional<double> margin_m, const std::string& interior, bool skip_non_finite,
-         const std::optional<std::vector<double>>& crop) {
+         const std::string& free_region, std::optional<double> margin_m, const std::string& interior,
+         bool skip_non_finite, const std::optional<std::vector<double>>& crop) {
         io::MapImportOptions options;
         options.points = points.value_or("");
         options.mesh = mesh.value_or("");
@@ -573,8 +582,7 @@ PYBIND11_MODULE(ceilplan, m) {
       py::arg("origins") = py::none(), py::arg("resolution_m") = import_defaults.resolution_m, py::arg("crs") = "",
       py::arg("max_range_m") = import_defaults.max_range_m, py::arg("free_distance_m") = py::none(),
       py::arg("free_region") = import_defaults.free_region, py::arg("margin_m") = py::none(),
-      py::arg("interior") = import_defaults.interior,
-      py::arg("skip_non_finite") = false, py::arg("crop") = py::none());
+      py::arg("interior") = import_defaults.interior, py::arg("skip_non_finite") = false, py::arg("crop") = py::none());
 
   const battery::DutyStudyOptions paper;  // the defaults of the study and of `ceilplan duty`
   m.def(
@@ -646,8 +654,8 @@ PYBIND11_MODULE(ceilplan, m) {
         request.settings.overlap_side_pct = overlap_side;
         request.settings.seed = seed;
         request.settings.unknown = unknownSpace(unknown, unknown_fill_max_m);
-        const std::string call = "python: ceilplan.propose('" + map.string() + "', '" + vehicle.string() + "', '" +
-                                 out.string() + "')";
+        const std::string call =
+            "python: ceilplan.propose('" + map.string() + "', '" + vehicle.string() + "', '" + out.string() + "')";
         const mission::MissionProposal proposal = [&] {
           py::gil_scoped_release release;
           return io::proposeMissionFiles(request, io::Provenance::of(call));
@@ -666,7 +674,8 @@ PYBIND11_MODULE(ceilplan, m) {
         d["regions"] = regions;
         d["home"] = std::vector<double>{proposal.home_m.x(), proposal.home_m.y(), proposal.home_m.z()};
         d["home_given"] = proposal.home_given;
-        d["home_height_m"] = std::isfinite(proposal.home_height_m) ? py::object(py::float_(proposal.home_height_m)) : py::none();
+        d["home_height_m"] =
+            std::isfinite(proposal.home_height_m) ? py::object(py::float_(proposal.home_height_m)) : py::none();
         d["dropped_regions"] = proposal.dropped_regions;
         d["dropped_area_m2"] = proposal.dropped_area_m2;
         d["overhead_area_m2"] = proposal.overhead_area_m2;
@@ -681,7 +690,8 @@ PYBIND11_MODULE(ceilplan, m) {
       py::arg("map"), py::arg("vehicle"), py::arg("out"), py::arg("picture") = py::none(), py::arg("home") = py::none(),
       py::arg("crop") = py::none(), py::arg("min_area_m2") = proposal_defaults.min_region_area_m2,
       py::arg("max_regions") = proposal_defaults.max_regions, py::arg("camera") = settings_defaults.camera_preset,
-      py::arg("gsd_mm_px") = settings_defaults.gsd_mm_px, py::arg("overlap_front") = settings_defaults.overlap_front_pct,
+      py::arg("gsd_mm_px") = settings_defaults.gsd_mm_px,
+      py::arg("overlap_front") = settings_defaults.overlap_front_pct,
       py::arg("overlap_side") = settings_defaults.overlap_side_pct, py::arg("seed") = settings_defaults.seed,
       py::arg("unknown") = "occupied", py::arg("unknown_fill_max_m") = py::none());
 }

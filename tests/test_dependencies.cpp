@@ -8,12 +8,12 @@
 #endif
 #include <dynamicEDT3D/dynamicEDTOctomap.h>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-#include <nlopt.hpp>
 #include <octomap/octomap.h>
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <yaml-cpp/yaml.h>
+#include <nlohmann/json.hpp>
+#include <nlopt.hpp>
 
 #include <Eigen/Dense>
 
@@ -62,8 +62,7 @@ TEST(Dependencies, OmplSamplesInsideBounds) {
 TEST(Dependencies, NloptMinimisesAQuadratic) {
   nlopt::opt optimiser(nlopt::LN_COBYLA, 1);
   optimiser.set_min_objective(
-      [](const std::vector<double>& x, std::vector<double>&, void*) { return (x[0] - 2) * (x[0] - 2); },
-      nullptr);
+      [](const std::vector<double>& x, std::vector<double>&, void*) { return (x[0] - 2) * (x[0] - 2); }, nullptr);
   optimiser.set_xtol_abs(1e-9);
   std::vector<double> x{0.0};
   double value = 0;

@@ -50,7 +50,8 @@ inline CLI::Validator finiteRange(double minimum, double maximum) {
 // A number strictly between `low` and `high`.
 inline CLI::Validator finiteBetween(double low, double high) {
   const std::string range = "(" + formatNumber(low) + ", " + formatNumber(high) + ")";
-  return numberWhere([low, high](double v) { return v > low && v < high; }, "a number in " + range, "NUMBER in " + range);
+  return numberWhere([low, high](double v) { return v > low && v < high; }, "a number in " + range,
+                     "NUMBER in " + range);
 }
 
 // At most `maximum`; NaN is left to the finiteness check it is combined with.

@@ -9,8 +9,8 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/io/atomic_file.hpp"
-#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/report_json.hpp"
 #include "ceilplan/io/report_text.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
@@ -71,8 +71,9 @@ void runBench(const BenchArguments& a) {
       planner::benchmarkPlanners(flight_planner, start, goal, reference, options);
   print(io::plannerBenchmarkTable(rows, a.search.time_limit_s));
   if (!a.json.empty())
-    io::writeJsonFile(out.path("--json"),
-                      io::withProvenance(io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows), provenance));
+    io::writeJsonFile(
+        out.path("--json"),
+        io::withProvenance(io::plannerBenchmarkJson(reference, a.search.lattice_spacing_m, rows), provenance));
   if (!a.log.empty()) io::writeTextAtomically(out.path("--log"), [&](std::ostream& file) { file << log.str(); });
   out.commit();
 }
@@ -88,7 +89,9 @@ const CommandRegistration registration(43, [](CLI::App& parent) {
   addSearchOptions(command, arguments->search);
   command->add_option("--planners", arguments->planners, "comma-separated planner names (lattice and roadmap too)")
       ->capture_default_str();
-  command->add_option("--runs", arguments->runs, "runs per planner")->capture_default_str()->check(CLI::Range(1u, 10000u));
+  command->add_option("--runs", arguments->runs, "runs per planner")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 10000u));
   command->add_option("--json", arguments->json, "write the table as JSON");
   command->add_option("--log", arguments->log, "write OMPL's benchmark log (ompl_benchmark_statistics format)");
   command->callback([arguments] { runBench(*arguments); });

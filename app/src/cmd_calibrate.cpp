@@ -3,10 +3,10 @@
 #include "command_registry.hpp"
 #include "output.hpp"
 
-#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/energy/calibration.hpp"
 #include "ceilplan/io/calibration_file.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 
@@ -42,8 +42,9 @@ void runCalibrate(const CalibrateOptions& options) {
   io::writeCalibratedVehicle(out.path("--out"), options.vehicle_path, result.parameters,
                              io::calibratedVehicleComment(options.data_path, samples.size(), result, provenance));
   if (!options.json_path.empty())
-    io::writeJsonFile(out.path("--json"), io::withProvenance(io::calibrationReportJson(options.data_path, samples.size(), result),
-                                                             provenance));
+    io::writeJsonFile(
+        out.path("--json"),
+        io::withProvenance(io::calibrationReportJson(options.data_path, samples.size(), result), provenance));
   out.commit();
   print("wrote " + options.out_path + "\n");
   if (!options.json_path.empty()) print("wrote " + options.json_path + "\n");
@@ -53,15 +54,17 @@ const CommandRegistration registration(31, [](CLI::App& parent) {
   auto options = std::make_shared<CalibrateOptions>();
   CLI::App* command = parent.add_subcommand(
       "calibrate", "Fit the energy model's free constants to measured currents (bounded least squares)");
-  command->add_option("--data", options->data_path,
-                      "CSV with current_a and any of gap_m, coverage, ground_gap_m, speed_m_s, climb_m_s, soc")
+  command
+      ->add_option("--data", options->data_path,
+                   "CSV with current_a and any of gap_m, coverage, ground_gap_m, speed_m_s, climb_m_s, soc")
       ->required();
   command->add_option("--out", options->out_path, "vehicle YAML file to write with the fitted values")->required();
   command->add_option("--vehicle", options->vehicle_path,
                       "vehicle YAML file to start from; default: the built-in quadrotor");
-  command->add_option("--fit", options->fit,
-                      "parameters to fit (hover_power_w, k1, k2_m, motor_efficiency, drag_area_m2, "
-                      "pack_resistance_ohm); default: those the data's varied columns identify")
+  command
+      ->add_option("--fit", options->fit,
+                   "parameters to fit (hover_power_w, k1, k2_m, motor_efficiency, drag_area_m2, "
+                   "pack_resistance_ohm); default: those the data's varied columns identify")
       ->delimiter(',');
   command->add_option("--json", options->json_path, "also write the fit report as JSON to this file");
   command->callback([options] { runCalibrate(*options); });

@@ -45,22 +45,27 @@ void runCompare(const CompareArguments& a) {
 
 const CommandRegistration registration(42, [](CLI::App& parent) {
   auto arguments = std::make_shared<CompareArguments>();
-  CLI::App* command =
-      parent.add_subcommand("compare", "Plan in ceiling and free mode, score both with the full model, project the duty");
+  CLI::App* command = parent.add_subcommand(
+      "compare", "Plan in ceiling and free mode, score both with the full model, project the duty");
   addPlanningOptions(command, arguments->planning);
   command->add_option("--start", arguments->start, "start body position x,y,z (m)")->required();
   command->add_option("--goal", arguments->goal, "goal body position x,y,z (m)")->required();
   addSearchOptions(command, arguments->search);
   mission::DutyOptions& duty = arguments->duty;
-  command->add_option("--flight-min", duty.flight_min,
-                      "duty: the slower plan is repeated to fill this flight time per mission (up to a day), the other flies as "
-                      "often (0: once)")
-      ->capture_default_str()->check(nonNegativeFinite() & atMost(mission::DutyOptions::kMaxMinutes));
+  command
+      ->add_option(
+          "--flight-min", duty.flight_min,
+          "duty: the slower plan is repeated to fill this flight time per mission (up to a day), the other flies as "
+          "often (0: once)")
+      ->capture_default_str()
+      ->check(nonNegativeFinite() & atMost(mission::DutyOptions::kMaxMinutes));
   command->add_option("--idle-min", duty.idle_min, "duty: idle time after the flight, up to a day")
-      ->capture_default_str()->check(nonNegativeFinite() & atMost(mission::DutyOptions::kMaxMinutes));
-  command->add_option("--charge-max-min", duty.charge_max_min,
-                      "duty: longest charge back to the start SOC, up to a day")
-      ->capture_default_str()->check(positiveFinite() & atMost(mission::DutyOptions::kMaxMinutes));
+      ->capture_default_str()
+      ->check(nonNegativeFinite() & atMost(mission::DutyOptions::kMaxMinutes));
+  command
+      ->add_option("--charge-max-min", duty.charge_max_min, "duty: longest charge back to the start SOC, up to a day")
+      ->capture_default_str()
+      ->check(positiveFinite() & atMost(mission::DutyOptions::kMaxMinutes));
   command->add_option("--missions-per-day", duty.missions_per_day)->capture_default_str()->check(CLI::Range(1, 1000));
   command->add_option("--days", duty.days)->capture_default_str()->check(CLI::Range(1, 3650));
   command->add_option("--out", arguments->out, "output directory")->required();

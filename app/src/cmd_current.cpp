@@ -71,15 +71,15 @@ const CommandRegistration registration(30, [](CLI::App& parent) {
   auto options = std::make_shared<CurrentOptions>();
   CLI::App* command = parent.add_subcommand(
       "current", "Predict battery current and power from ceiling gap, ground gap, speed, climb and SOC");
-  CLI::Option* gap = command->add_option("--gap-m", options->gap_m,
-                                         "rotor plane to ceiling (m); absent: no ceiling");
+  CLI::Option* gap = command->add_option("--gap-m", options->gap_m, "rotor plane to ceiling (m); absent: no ceiling");
   command->add_option("--ground-gap-m", options->ground_gap_m, "rotor plane to ground (m); absent: no ground");
   command->add_option("--coverage", options->coverage, "fraction of each rotor disc under the ceiling, 0..1")
       ->capture_default_str();
   command->add_option("--speed-m-s", options->speed_m_s, "horizontal speed (m/s)")->capture_default_str();
   constexpr double kMaxRate_m_s = planner::FlightSpeeds::kMaxVerticalSpeed_m_s;  // as a mission file allows
   command->add_option("--climb-m-s", options->climb_m_s, "climb rate (m/s), negative in descent")
-      ->capture_default_str()->check(finiteRange(-kMaxRate_m_s, kMaxRate_m_s));
+      ->capture_default_str()
+      ->check(finiteRange(-kMaxRate_m_s, kMaxRate_m_s));
   command->add_option("--soc", options->soc, "state of charge 0..1; default: the vehicle's reference_soc");
   command->add_option("--vehicle", options->vehicle_path, "vehicle YAML file; default: the built-in quadrotor");
   command->add_option("--json", options->json_path, "also write the result as JSON to this file");

@@ -8,9 +8,9 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
-#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/duty_study_files.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/output_set.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -100,10 +100,9 @@ CLI::Validator timeStep() {
 CLI::Validator chemistryName() {
   return CLI::Validator(
       [](std::string& input) -> std::string {
-        const bool plain = !input.empty() && input.size() <= 32 &&
-                           std::all_of(input.begin(), input.end(), [](char c) {
-                             return std::isalnum(static_cast<unsigned char>(c)) || c == '-';
-                           });
+        const bool plain = !input.empty() && input.size() <= 32 && std::all_of(input.begin(), input.end(), [](char c) {
+          return std::isalnum(static_cast<unsigned char>(c)) || c == '-';
+        });
         return plain ? std::string() : "must be 1 to 32 letters, digits or '-' (e.g. LiPo, NMC, LFP)";
       },
       "NAME");
@@ -111,48 +110,64 @@ CLI::Validator chemistryName() {
 
 void addDutyCommand(CLI::App& parent) {
   auto args = std::make_shared<DutyArguments>();
-  CLI::App* duty = parent.add_subcommand(
-      "duty", "Duty-cycle study: SOC, FEC and charge over repeated fly/idle/charge missions "
-              "(defaults: the founding paper's two cases)");
+  CLI::App* duty = parent.add_subcommand("duty",
+                                         "Duty-cycle study: SOC, FEC and charge over repeated fly/idle/charge missions "
+                                         "(defaults: the founding paper's two cases)");
   duty->add_option("--capacity-ah", args->study.pack.capacity_ah, "Nominal pack capacity [Ah], 0.01 to 1000")
       ->capture_default_str()
       ->check(finiteRange(battery::Pack::kMinCapacity_ah, battery::Pack::kMaxCapacity_ah));
   duty->add_option("--charge-current-a", args->study.pack.charge_current_a, "Charger current [A], up to 1000")
-      ->capture_default_str()->check(positiveFinite() & atMost(1000.0));
+      ->capture_default_str()
+      ->check(positiveFinite() & atMost(1000.0));
   duty->add_option("--flight-current-a", args->study.flight_currents_a,
                    "Mean flight current [A], up to 1000; repeat for one case each (first is the baseline)")
-      ->capture_default_str()->check(nonNegativeFinite() & atMost(1000.0))->take_all();
+      ->capture_default_str()
+      ->check(nonNegativeFinite() & atMost(1000.0))
+      ->take_all();
   duty->add_option("--flight-min", args->flight_min, "Flight time per mission [min], up to a day")
-      ->capture_default_str()->check(nonNegativeFinite() & atMost(kMinutesPerDay));
+      ->capture_default_str()
+      ->check(nonNegativeFinite() & atMost(kMinutesPerDay));
   duty->add_option("--idle-min", args->idle_min, "Idle time after landing [min], up to a day")
-      ->capture_default_str()->check(nonNegativeFinite() & atMost(kMinutesPerDay));
+      ->capture_default_str()
+      ->check(nonNegativeFinite() & atMost(kMinutesPerDay));
   duty->add_option("--charge-max-min", args->charge_max_min, "Longest charge per mission [min], up to a day")
-      ->capture_default_str()->check(nonNegativeFinite() & atMost(kMinutesPerDay));
+      ->capture_default_str()
+      ->check(nonNegativeFinite() & atMost(kMinutesPerDay));
   duty->add_option("--soc-start", args->study.soc_start, "SOC at the first take-off, and the charge-back target")
-      ->capture_default_str()->check(socFraction());
+      ->capture_default_str()
+      ->check(socFraction());
   duty->add_option("--missions-per-day", args->study.missions_per_day, "Missions per day")
-      ->capture_default_str()->check(CLI::Range(1, 1000));
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
   duty->add_option("--days", args->study.days, "Days simulated, up to 36500")
-      ->capture_default_str()->check(CLI::Range(1, battery::kMaxStudyDays));
+      ->capture_default_str()
+      ->check(CLI::Range(1, battery::kMaxStudyDays));
   duty->add_option("--dt-s", args->study.step_s, "Time step [s]: 0 = exact, event-driven, or 0.001 to 3600")
-      ->capture_default_str()->check(timeStep());
+      ->capture_default_str()
+      ->check(timeStep());
   duty->add_option("--years", args->study.years, "Study period in years, up to 100 (replaces --days)")
       ->check(positiveFinite() & atMost(battery::kMaxStudyDays / 365.0));
   std::vector<std::string> model_choices = battery::ageingModelNames();
   model_choices.insert(model_choices.end(), {"all", "none"});
   duty->add_option("--model", args->model, "Ageing model: fec, xu, schmalstieg, woehler, all or none")
-      ->capture_default_str()->check(CLI::IsMember(model_choices));
+      ->capture_default_str()
+      ->check(CLI::IsMember(model_choices));
   duty->add_option("--temperature-c", args->study.temperature_c, "Cell temperature [C] for the ageing models")
-      ->capture_default_str()->check(finiteAtLeast(-273.15, true));
+      ->capture_default_str()
+      ->check(finiteAtLeast(-273.15, true));
   duty->add_option("--eol-soh", args->study.end_of_life_soh, "End of life: state of health at or below this, in (0, 1)")
-      ->capture_default_str()->check(finiteBetween(0.0, 1.0));
+      ->capture_default_str()
+      ->check(finiteBetween(0.0, 1.0));
   duty->add_option("--chemistry", args->study.chemistry, "Pack chemistry, checked against each model's validity range")
-      ->capture_default_str()->check(chemistryName());
+      ->capture_default_str()
+      ->check(chemistryName());
   duty->add_option("--woehler-n100", args->study.woehler.cycles_at_full_depth,
                    "Cycles to end of life at 100 % DoD (fec, woehler), up to 1e6 [open]")
-      ->capture_default_str()->check(positiveFinite() & atMost(1e6));
+      ->capture_default_str()
+      ->check(positiveFinite() & atMost(1e6));
   duty->add_option("--woehler-k", args->study.woehler.exponent, "Woehler exponent k (woehler), 0 to 10 [open]")
-      ->capture_default_str()->check(nonNegativeFinite() & atMost(10.0));
+      ->capture_default_str()
+      ->check(nonNegativeFinite() & atMost(10.0));
   duty->add_option("--json", args->json_path, "Write the results as JSON to this file");
   duty->add_option("--csv-dir", args->csv_dir,
                    "Write time series (one mission, one day, the whole run) per case to this directory");

@@ -4,10 +4,10 @@
 #include "command_registry.hpp"
 #include "output.hpp"
 
-#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/scenes.hpp"
 #include "ceilplan/io/octomap_file.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/report_text.hpp"
 
 #include <filesystem>
@@ -45,9 +45,11 @@ const CommandRegistration registration(20, [](CLI::App& parent) {
   command->add_option("--resolution", options->scene_options.resolution_m, "Voxel size in metres (0.02 to 1)")
       ->capture_default_str();
   command->add_option("--seed", options->scene_options.seed, "Seed placing the scene's clutter")
-      ->capture_default_str()->check(wholeNumber());
-  command->add_option("--bridge-length-m", options->scene_options.bridge_length_m,
-                      "Bridge only: span between the abutments, a multiple of 4 m from 16 to 2000 (piers every 16 m)")
+      ->capture_default_str()
+      ->check(wholeNumber());
+  command
+      ->add_option("--bridge-length-m", options->scene_options.bridge_length_m,
+                   "Bridge only: span between the abutments, a multiple of 4 m from 16 to 2000 (piers every 16 m)")
       ->capture_default_str();
   command->callback([options] { runMapgen(*options); });
 });

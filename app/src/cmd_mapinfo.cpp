@@ -4,13 +4,13 @@
 #include "map_options.hpp"
 #include "output.hpp"
 
-#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/map_statistics.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/map_slice_file.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/report_json.hpp"
 #include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
@@ -48,9 +48,11 @@ void runMapinfo(const MapinfoOptions& options) {
   io::Provenance provenance = commandProvenance().input("map", options.map);
   if (!options.slice_csv.empty()) {
     std::unique_ptr<Environment> environment;
-    if (!options.vehicle.empty()) environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
+    if (!options.vehicle.empty())
+      environment = std::make_unique<Environment>(index, io::readVehicle(options.vehicle).geometry);
     provenance.input("vehicle", options.vehicle);
-    io::writeMapSliceCsv(out.path("--slice-csv"), *index, options.slice_z_m, environment.get(), "--slice-z", provenance);
+    io::writeMapSliceCsv(out.path("--slice-csv"), *index, options.slice_z_m, environment.get(), "--slice-z",
+                         provenance);
   }
   print(io::mapStatisticsText(options.map, stats));
   if (!options.json.empty())
@@ -66,9 +68,10 @@ const CommandRegistration registration(21, [](CLI::App& parent) {
   options->unknown.addTo(*command);
   CLI::Option* slice_z =
       command->add_option("--slice-z", options->slice_z_m, "Height of the slice --slice-csv writes, in metres");
-  command->add_option("--slice-csv", options->slice_csv,
-                      "Write one row per map column at --slice-z: x_m, y_m, state (occupied, free, unknown, "
-                      "assumed_free), under_ceiling, and with --vehicle valid and assumes_free")
+  command
+      ->add_option("--slice-csv", options->slice_csv,
+                   "Write one row per map column at --slice-z: x_m, y_m, state (occupied, free, unknown, "
+                   "assumed_free), under_ceiling, and with --vehicle valid and assumes_free")
       ->needs(slice_z);
   command->add_option("--vehicle", options->vehicle, "Vehicle file for --slice-csv's valid and assumes_free columns");
   command->callback([options] { runMapinfo(*options); });

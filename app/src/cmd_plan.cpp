@@ -25,7 +25,7 @@ void runPlan(const PlanArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
   const mission::FlightMode mode = mission::flightModeFromName(a.mode);
   io::OutputSet out(a.out, planningInputs(a.planning));  // checked and staged before any work
-  planner::seedOmpl(a.search.seed);  // before anything makes an OMPL random generator
+  planner::seedOmpl(a.search.seed);                      // before anything makes an OMPL random generator
   const auto context = makePlanningContext(a.planning);
   const planner::ObjectiveChoice objective = context->objective(start, goal);
   if (objective.name == "ageing") print(io::ageingObjectiveLine(objective.ageing) + "\n");
@@ -45,7 +45,9 @@ const CommandRegistration registration(40, [](CLI::App& parent) {
   addPlanningOptions(command, arguments->planning);
   command->add_option("--start", arguments->start, "start body position x,y,z (m)")->required();
   command->add_option("--goal", arguments->goal, "goal body position x,y,z (m)")->required();
-  command->add_option("--mode", arguments->mode, "ceiling: full proximity model; free: proximity ignored, the standoff preferred")
+  command
+      ->add_option("--mode", arguments->mode,
+                   "ceiling: full proximity model; free: proximity ignored, the standoff preferred")
       ->capture_default_str()
       ->check(CLI::IsMember(mission::flightModeNames()));
   addSearchOptions(command, arguments->search);

@@ -7,8 +7,8 @@
 
 #include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/position_probe.hpp"
-#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/report_json.hpp"
 #include "ceilplan/io/report_text.hpp"
 #include "ceilplan/io/unknown_space_report.hpp"
@@ -45,15 +45,16 @@ void runProbe(const ProbeOptions& options) {
   const PositionProbe probe = probePosition(environment, body);
   print(io::positionProbeText(body, probe, vehicle, io::unknownSpaceLine(environment)));
   if (!options.json.empty())
-    io::writeJsonFile(out.path("--json"), io::withProvenance(io::probeReportJson(probe, environment, options.map,
-                                                                                  options.vehicle),
-                                                             provenance));
+    io::writeJsonFile(
+        out.path("--json"),
+        io::withProvenance(io::probeReportJson(probe, environment, options.map, options.vehicle), provenance));
   out.commit();
 }
 
 const CommandRegistration registration(22, [](CLI::App& parent) {
   auto options = std::make_shared<ProbeOptions>();
-  CLI::App* command = parent.add_subcommand("probe", "Ceiling and ground gaps, clearance and validity at one body position");
+  CLI::App* command =
+      parent.add_subcommand("probe", "Ceiling and ground gaps, clearance and validity at one body position");
   command->add_option("--map", options->map, "OctoMap file (.bt or .ot)")->required();
   command->add_option("--at", options->at, "Body centre x,y,z in metres (map frame)")->required();
   command->add_option("--vehicle", options->vehicle, "Vehicle file (default: maps/vehicles/quad.yaml)");

@@ -52,9 +52,11 @@ void runPropose(ProposeArguments a) {
 const CommandRegistration registration(23, [](CLI::App& parent) {
   auto a = std::make_shared<ProposeArguments>();
   CLI::App* command = parent.add_subcommand(
-      "propose", "Propose a coverage mission from a map: its overhead surfaces, a home, and a picture (docs/import.md)");
+      "propose",
+      "Propose a coverage mission from a map: its overhead surfaces, a home, and a picture (docs/import.md)");
   command->add_option("--map", a->map, "OctoMap file (.bt or .ot), e.g. from ceilplan import")->required();
-  command->add_option("--vehicle", a->vehicle, "Vehicle file the mission flies (e.g. maps/vehicles/quad.yaml)")->required();
+  command->add_option("--vehicle", a->vehicle, "Vehicle file the mission flies (e.g. maps/vehicles/quad.yaml)")
+      ->required();
   command->add_option("--out", a->out, "The mission file to write (.yaml)")->required();
   command->add_option("--picture", a->picture, "Plan view of the regions and the home (.svg; default: beside --out)");
   command->add_option("--home", a->home, "Take-off position x,y,z in metres (default: proposed)");

@@ -6,8 +6,8 @@
 #include "ceilplan/battery/rainflow.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/printable_text.hpp"
-#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/provenance.hpp"
 #include "ceilplan/io/soc_series_file.hpp"
 
@@ -42,12 +42,13 @@ void runRainflow(const RainflowArguments& args) {
 
 void addRainflowCommand(CLI::App& parent) {
   auto args = std::make_shared<RainflowArguments>();
-  CLI::App* command = parent.add_subcommand(
-      "rainflow", "Rainflow cycles (ASTM E1049-85) of an SOC column: depth, mean SOC, count, "
-                  "and the 0-based data rows where each starts and ends");
-  command->add_option("--csv", args->csv_path,
-                      "CSV file with a header row; other columns may hold anything (e.g. `ceilplan duty "
-                      "--csv-dir`'s series); a t_s column, if present, must not go backwards")
+  CLI::App* command = parent.add_subcommand("rainflow",
+                                            "Rainflow cycles (ASTM E1049-85) of an SOC column: depth, mean SOC, count, "
+                                            "and the 0-based data rows where each starts and ends");
+  command
+      ->add_option("--csv", args->csv_path,
+                   "CSV file with a header row; other columns may hold anything (e.g. `ceilplan duty "
+                   "--csv-dir`'s series); a t_s column, if present, must not go backwards")
       ->required();
   command->add_option("--column", args->column, "Column holding the SOC, as a fraction in [0, 1]")->required();
   command->add_option("--json", args->json_path,

@@ -17,9 +17,9 @@
 #include "ceilplan/mission/tour_planner.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
-#include "ceilplan/core/format.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -85,73 +85,98 @@ void runTour(TourArguments a) {
 
 const CommandRegistration registration(50, [](CLI::App& parent) {
   auto a = std::make_shared<TourArguments>();
-  CLI::App* command = parent.add_subcommand(
-      "tour",
-      "Inspect every target of a mission file (point targets, contact grids, surfaces to photograph): stops, legs, order, "
-      "sorties, autopilot files");
+  CLI::App* command = parent.add_subcommand("tour",
+                                            "Inspect every target of a mission file (point targets, contact grids, "
+                                            "surfaces to photograph): stops, legs, order, "
+                                            "sorties, autopilot files");
   command->add_option("--mission", a->mission, "mission file (docs/missions.md)")->required()->check(CLI::ExistingFile);
   command->add_option("--out", a->out, "output directory")->required();
-  command->add_option("--mode", a->mode, "ceiling, free or both (default: the mission's `mode` if one of these, else ceiling)")
+  command
+      ->add_option("--mode", a->mode,
+                   "ceiling, free or both (default: the mission's `mode` if one of these, else ceiling)")
       ->check(CLI::IsMember({"ceiling", "free", "both"}));
   command->add_option("--seed", a->seed, "seed of the order heuristic (default: the mission's)")
       ->check(CLI::Range(1u, 4294967295u));
-  command->add_option("--planner", a->options.planner,
-                      "leg planner: " + planner::defaultTourPlannerName() +
-                          " (one lattice roadmap for all legs, deterministic), or a planner searching each pair of "
-                          "places (OMPL's, or the lattice A*; slow on large maps)")
+  command
+      ->add_option("--planner", a->options.planner,
+                   "leg planner: " + planner::defaultTourPlannerName() +
+                       " (one lattice roadmap for all legs, deterministic), or a planner searching each pair of "
+                       "places (OMPL's, or the lattice A*; slow on large maps)")
       ->capture_default_str()
       ->check(CLI::IsMember(planner::plannerNames()));
-  command->add_option("--time-limit-s", a->options.time_limit_s,
-                      "pairwise planners: search time per leg, up to a day")
-      ->capture_default_str()->check(positiveFinite() & atMost(planner::PlanRequest::kMaxTimeLimit_s));
+  command->add_option("--time-limit-s", a->options.time_limit_s, "pairwise planners: search time per leg, up to a day")
+      ->capture_default_str()
+      ->check(positiveFinite() & atMost(planner::PlanRequest::kMaxTimeLimit_s));
   command->add_option("--lattice-spacing-m", a->options.lattice_spacing_m, "roadmap and lattice: node spacing")
-      ->capture_default_str()->check(finiteRange(planner::kMinLatticeSpacing_m, planner::kMaxLatticeSpacing_m));
-  command->add_option("--workers", a->options.workers, "threads planning legs")->capture_default_str()->check(CLI::Range(1, 64));
-  command->add_option("--all-pairs-max-places", a->options.all_pairs_max_places,
-                      "a leg between every pair of places (home and the stops) up to this many; beyond, legs between "
-                      "near neighbours, routed once a plan flies them")
-      ->capture_default_str()->check(CLI::Range(2, 100000));
-  command->add_option("--neighbours", a->options.neighbours,
-                      "large tours: the order search joins each place only to its nearest this many")
-      ->capture_default_str()->check(CLI::Range(1, 1000));
-  command->add_option("--split-points", a->options.split_points,
-                      "large tours: sorties may start at at least this many evenly spaced positions of the order, more "
-                      "where the tour needs more sorties, and around the best of them")
-      ->capture_default_str()->check(CLI::Range(1, 100000));
-  command->add_option("--order-kicks", a->options.order_kicks,
-                      "large tours: rounds of iterated local search after the first (from the seed; slower, a little "
-                      "cheaper)")
-      ->capture_default_str()->check(CLI::Range(0, 100000));
+      ->capture_default_str()
+      ->check(finiteRange(planner::kMinLatticeSpacing_m, planner::kMaxLatticeSpacing_m));
+  command->add_option("--workers", a->options.workers, "threads planning legs")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
+  command
+      ->add_option("--all-pairs-max-places", a->options.all_pairs_max_places,
+                   "a leg between every pair of places (home and the stops) up to this many; beyond, legs between "
+                   "near neighbours, routed once a plan flies them")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 100000));
+  command
+      ->add_option("--neighbours", a->options.neighbours,
+                   "large tours: the order search joins each place only to its nearest this many")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  command
+      ->add_option("--split-points", a->options.split_points,
+                   "large tours: sorties may start at at least this many evenly spaced positions of the order, more "
+                   "where the tour needs more sorties, and around the best of them")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  command
+      ->add_option("--order-kicks", a->options.order_kicks,
+                   "large tours: rounds of iterated local search after the first (from the seed; slower, a little "
+                   "cheaper)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100000));
   command->add_option("--ageing-model", a->options.ageing_model, "the sortie split minimises this model's wear")
       ->capture_default_str()
       ->check(CLI::IsMember(battery::ageingModelNames()));
   a->unknown.addTo(*command);
-  command->add_option("--standoff-m", a->standoff_m,
-                      "free mode: the conventional distance from every structure, kept where it fits")
-      ->capture_default_str()->check(nonNegativeFinite());
-  command->add_option("--free-standoff-max-m", a->options.free_standoff_max_m,
-                      "free mode: a target whose standoff range keeps less than --standoff-m may be seen from up to "
-                      "this far (a zoom lens), reported as beyond its range (default: every viewpoint within its "
-                      "target's range)")
+  command
+      ->add_option("--standoff-m", a->standoff_m,
+                   "free mode: the conventional distance from every structure, kept where it fits")
+      ->capture_default_str()
+      ->check(nonNegativeFinite());
+  command
+      ->add_option("--free-standoff-max-m", a->options.free_standoff_max_m,
+                   "free mode: a target whose standoff range keeps less than --standoff-m may be seen from up to "
+                   "this far (a zoom lens), reported as beyond its range (default: every viewpoint within its "
+                   "target's range)")
       ->check(positiveFinite() & atMost(mission::InspectionTarget::kMaxStandoff_m));
   command->add_option("--autopilot", a->autopilot, "mission files for px4 or ardupilot")
-      ->capture_default_str()->check(CLI::IsMember({"px4", "ardupilot"}));
-  command->add_flag("--search-every-leg", [a](std::int64_t) { a->options.straight_when_clear = false; },
-                    "never take a clear straight line in place of the searched route (default: take it where it is valid and "
-                    "cheaper)");
+      ->capture_default_str()
+      ->check(CLI::IsMember({"px4", "ardupilot"}));
+  command->add_flag(
+      "--search-every-leg", [a](std::int64_t) { a->options.straight_when_clear = false; },
+      "never take a clear straight line in place of the searched route (default: take it where it is valid and "
+      "cheaper)");
   command->add_flag(
       "--no-export", a->no_export,
       "skip the geodetic exports (mission.plan, mission.waypoints, mission.kmz, routes.kml, routes.geojson), which a "
       "mission without an origin skips anyway");
-  command->add_option("--missions-per-day", a->options.missions_per_day,
-                      "duty projection: tours a day (default: as many as fit in a day, at most 15)")
+  command
+      ->add_option("--missions-per-day", a->options.missions_per_day,
+                   "duty projection: tours a day (default: as many as fit in a day, at most 15)")
       ->check(CLI::Range(1, 1000));
-  command->add_option("--days", a->options.days, "duty projection: days")->capture_default_str()->check(CLI::Range(1, 3650));
+  command->add_option("--days", a->options.days, "duty projection: days")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 3650));
   command->add_option("--idle-min", a->options.idle_min, "duty projection: idle after each tour, up to a day")
-      ->capture_default_str()->check(finiteAtLeast(0.0) & atMost(mission::DutyOptions::kMaxMinutes));
-  command->add_option("--charge-max-min", a->options.charge_max_min,
-                      "duty projection: longest charge back to the start SOC after each sortie, up to a day")
-      ->capture_default_str()->check(positiveFinite() & atMost(mission::DutyOptions::kMaxMinutes));
+      ->capture_default_str()
+      ->check(finiteAtLeast(0.0) & atMost(mission::DutyOptions::kMaxMinutes));
+  command
+      ->add_option("--charge-max-min", a->options.charge_max_min,
+                   "duty projection: longest charge back to the start SOC after each sortie, up to a day")
+      ->capture_default_str()
+      ->check(positiveFinite() & atMost(mission::DutyOptions::kMaxMinutes));
   command->callback([a] { runTour(*a); });
 });
 

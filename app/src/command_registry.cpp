@@ -14,14 +14,11 @@ std::vector<std::pair<int, AddCommand>>& registry() {
 
 }  // namespace
 
-CommandRegistration::CommandRegistration(int order, AddCommand add) {
-  registry().emplace_back(order, std::move(add));
-}
+CommandRegistration::CommandRegistration(int order, AddCommand add) { registry().emplace_back(order, std::move(add)); }
 
 void addRegisteredCommands(CLI::App& parent) {
   auto& commands = registry();
-  std::stable_sort(commands.begin(), commands.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(commands.begin(), commands.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const auto& entry : commands) entry.second(parent);
   // Subcommands pass `--config` (see yaml_config.hpp) and `--version` up to the main app.
   for (CLI::App* command : parent.get_subcommands({})) {

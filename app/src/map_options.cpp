@@ -23,7 +23,8 @@ void UnknownSpaceFlags::addTo(CLI::App& command) {
 }
 
 bool UnknownSpaceFlags::given() const {
-  return (policy_option_ != nullptr && policy_option_->count() > 0) || (fill_option_ != nullptr && fill_option_->count() > 0);
+  return (policy_option_ != nullptr && policy_option_->count() > 0) ||
+         (fill_option_ != nullptr && fill_option_->count() > 0);
 }
 
 environment::UnknownSpace UnknownSpaceFlags::value() const {

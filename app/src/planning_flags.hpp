@@ -22,8 +22,8 @@ namespace ceilplan::app {
 
 struct PlanningFlags {
   std::string map;
-  std::string vehicle;  // empty: the built-in vehicle (maps/vehicles/quad.yaml)
-  std::string battery;  // empty: the paper's pack at 95 %
+  std::string vehicle;               // empty: the built-in vehicle (maps/vehicles/quad.yaml)
+  std::string battery;               // empty: the paper's pack at 95 %
   mission::PlanningOptions options;  // its unknown-space policy comes from `unknown`
   UnknownSpaceFlags unknown;
 };

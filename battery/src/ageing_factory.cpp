@@ -10,8 +10,7 @@ const std::vector<std::string>& ageingModelNames() {
   return names;
 }
 
-std::unique_ptr<AgeingModel> makeAgeingModel(const std::string& name,
-                                             const AgeingModelOptions& options) {
+std::unique_ptr<AgeingModel> makeAgeingModel(const std::string& name, const AgeingModelOptions& options) {
   if (name == "fec") return std::make_unique<FecAgeingModel>(options.woehler);
   if (name == "xu") return std::make_unique<XuAgeingModel>(options.conditions, options.xu);
   if (name == "schmalstieg")

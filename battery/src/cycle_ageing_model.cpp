@@ -6,8 +6,7 @@ namespace ceilplan::battery {
 
 void CycleAgeingModel::addInterval(const AgeingSample&, const AgeingSample&) {}
 
-void CycleAgeingModel::consume(const AgeingSample* previous, const AgeingSample* samples,
-                               std::size_t count) {
+void CycleAgeingModel::consume(const AgeingSample* previous, const AgeingSample* samples, std::size_t count) {
   for (std::size_t i = 0; i < count; ++i) {
     const AgeingSample* before = i > 0 ? &samples[i - 1] : previous;
     if (before != nullptr) addInterval(*before, samples[i]);
@@ -27,8 +26,6 @@ double CycleAgeingModel::stateOfHealthAt(std::size_t index) const {
   return after == health_changes_.begin() ? 1.0 : std::prev(after)->state_of_health;
 }
 
-double CycleAgeingModel::stateOfHealthOf(const RainflowCycle& cycle) const {
-  return stateOfHealthAt(cycle.end);
-}
+double CycleAgeingModel::stateOfHealthOf(const RainflowCycle& cycle) const { return stateOfHealthAt(cycle.end); }
 
 }  // namespace ceilplan::battery

@@ -2,7 +2,6 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -26,12 +25,12 @@ void MissionTemplate::validate() const {
   if (!(std::isfinite(period_s) && period_s >= 0.0))
     throw ceilplan::InputError("mission period must be >= 0 s, got " + formatNumber(period_s));
   if (period_s > 0.0 && period_s < totalDurationS(segments))
-    throw ceilplan::InputError("mission period of " + formatNumber(period_s) +
-                                " s is shorter than its segments' " + formatNumber(totalDurationS(segments)) + " s");
+    throw ceilplan::InputError("mission period of " + formatNumber(period_s) + " s is shorter than its segments' " +
+                               formatNumber(totalDurationS(segments)) + " s");
 }
 
-MissionTemplate flyIdleChargeMission(double flight_current_a, double flight_s, double idle_s,
-                                     double charge_current_a, double charge_max_s, double target_soc) {
+MissionTemplate flyIdleChargeMission(double flight_current_a, double flight_s, double idle_s, double charge_current_a,
+                                     double charge_max_s, double target_soc) {
   MissionTemplate mission;
   mission.segments = {Segment::discharge(flight_current_a, flight_s), Segment::idle(idle_s),
                       Segment::charge(charge_current_a, charge_max_s, target_soc)};
@@ -47,7 +46,7 @@ void DutyCycle::validate() const {
     throw ceilplan::InputError("start SOC must be in (0, 1], got " + formatNumber(initial_soc));
   if (missions_per_day * mission.periodS() > day_s)
     throw ceilplan::InputError(std::to_string(missions_per_day) + " missions of " +
-                                formatNumber(mission.periodS() / 60.0) + " min do not fit in a day");
+                               formatNumber(mission.periodS() / 60.0) + " min do not fit in a day");
 }
 
 double stepsPerMission(const MissionTemplate& mission, double step_s) {
@@ -95,8 +94,8 @@ DutyResult simulateDuty(const Pack& pack, const DutyCycle& duty, const DutyOptio
         const double rest_s = tally.start_s + period_s - simulator.state().t_s;
         if (rest_s > 0.0) simulator.run(Segment::idle(rest_s), &mission_samples);
       } catch (const DepletionError& e) {
-        throw DepletionError("mission " + std::to_string(m + 1) + " of day " + std::to_string(day + 1) +
-                                 " (mission " + std::to_string(tally.index + 1) + " of the run) " + e.what(),
+        throw DepletionError("mission " + std::to_string(m + 1) + " of day " + std::to_string(day + 1) + " (mission " +
+                                 std::to_string(tally.index + 1) + " of the run) " + e.what(),
                              e.reachedSoc(), e.floorSoc());
       }
       const BatteryState& after = simulator.state();

@@ -81,9 +81,7 @@ void compareWithTheFirstCase(DutyStudyResult& result, std::size_t model_count) {
 
 }  // namespace
 
-int DutyStudyOptions::studyDays() const {
-  return years > 0.0 ? static_cast<int>(std::lround(365.0 * years)) : days;
-}
+int DutyStudyOptions::studyDays() const { return years > 0.0 ? static_cast<int>(std::lround(365.0 * years)) : days; }
 
 std::string DutyStudyOptions::spanText() const {
   const int study_days = studyDays();

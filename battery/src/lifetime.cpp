@@ -2,7 +2,6 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 
-
 #include <algorithm>
 #include <stdexcept>
 
@@ -14,7 +13,7 @@ void LifetimeOptions::validate() const {
     throw ceilplan::InputError("end-of-life state of health must be in (0, 1), got " + formatNumber(end_of_life_soh));
   if (max_projection_days < study_days)
     throw ceilplan::InputError("the projection limit of " + std::to_string(max_projection_days) +
-                                " days is shorter than the " + std::to_string(study_days) + "-day study");
+                               " days is shorter than the " + std::to_string(study_days) + "-day study");
 }
 
 LifetimeResult projectLifetime(const Pack& pack, const DutyCycle& duty, AgeingModel& model,
@@ -70,7 +69,8 @@ LifetimeResult projectLifetime(const Pack& pack, const DutyCycle& duty, AgeingMo
   try {
     simulateDuty(pack, projection, run_options);
     if (!result.missions_to_end_of_life)
-      result.stopped_because = "end of life not reached within " + std::to_string(options.max_projection_days) + " days";
+      result.stopped_because =
+          "end of life not reached within " + std::to_string(options.max_projection_days) + " days";
   } catch (const DepletionError& e) {
     if (static_cast<long>(result.soh_by_day.size()) < options.study_days) {
       // The study itself cannot be flown: report what was reached.

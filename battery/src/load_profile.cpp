@@ -2,7 +2,6 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 
-
 #include <cmath>
 #include <stdexcept>
 
@@ -10,9 +9,12 @@ namespace ceilplan::battery {
 
 std::string toString(Mode mode) {
   switch (mode) {
-    case Mode::Discharge: return "discharge";
-    case Mode::Idle: return "idle";
-    case Mode::Charge: return "charge";
+    case Mode::Discharge:
+      return "discharge";
+    case Mode::Idle:
+      return "idle";
+    case Mode::Charge:
+      return "charge";
   }
   return "unknown";
 }
@@ -29,9 +31,12 @@ Segment Segment::charge(double current_a, double max_duration_s, double until_so
 
 double Segment::signedCurrentA() const {
   switch (mode) {
-    case Mode::Discharge: return current_a;
-    case Mode::Charge: return -current_a;
-    case Mode::Idle: return 0.0;
+    case Mode::Discharge:
+      return current_a;
+    case Mode::Charge:
+      return -current_a;
+    case Mode::Idle:
+      return 0.0;
   }
   return 0.0;
 }
@@ -43,9 +48,9 @@ void Segment::validate() const {
   if (!(std::isfinite(duration_s) && duration_s >= 0.0))
     throw ceilplan::InputError(what + ": duration must be a finite number >= 0 s, got " + formatNumber(duration_s));
   if (mode == Mode::Charge && current_a == 0.0 && duration_s > 0.0)
-    throw ceilplan::InputError(what + ": charge current is 0 A, so the battery can never charge; set a charge current > 0");
-  if (mode == Mode::Idle && current_a != 0.0)
-    throw ceilplan::InputError(what + ": an idle segment carries no current");
+    throw ceilplan::InputError(what +
+                               ": charge current is 0 A, so the battery can never charge; set a charge current > 0");
+  if (mode == Mode::Idle && current_a != 0.0) throw ceilplan::InputError(what + ": an idle segment carries no current");
   if (stop_soc && !(*stop_soc > 0.0 && *stop_soc <= 1.0))
     throw ceilplan::InputError(what + ": stop SOC must be in (0, 1], got " + formatNumber(*stop_soc));
 }

@@ -8,10 +8,8 @@
 namespace ceilplan::battery {
 namespace {
 
-RainflowCycle makeCycle(double first, std::size_t first_index, double second,
-                        std::size_t second_index, double count) {
-  return RainflowCycle{std::fabs(second - first), 0.5 * (first + second), count, first_index,
-                       second_index};
+RainflowCycle makeCycle(double first, std::size_t first_index, double second, std::size_t second_index, double count) {
+  return RainflowCycle{std::fabs(second - first), 0.5 * (first + second), count, first_index, second_index};
 }
 
 }  // namespace
@@ -42,7 +40,7 @@ void RainflowCounter::pushTurningPoint(std::vector<TurningPoint>& stack, Turning
 void RainflowCounter::add(double value, std::vector<RainflowCycle>& closed) {
   if (!std::isfinite(value))
     throw ceilplan::InputError("rainflow: sample " + std::to_string(samples_seen_) +
-                                " is not a finite number; remove or fill it");
+                               " is not a finite number; remove or fill it");
   const std::size_t index = samples_seen_++;
   if (index == 0) {
     // The series' first sample is a turning point (ASTM's starting point).
@@ -61,8 +59,7 @@ void RainflowCounter::add(double value, std::vector<RainflowCycle>& closed) {
   candidate_ = {value, index};
 }
 
-void RainflowCounter::add(const double* values, std::size_t count,
-                          std::vector<RainflowCycle>& closed) {
+void RainflowCounter::add(const double* values, std::size_t count, std::vector<RainflowCycle>& closed) {
   for (std::size_t i = 0; i < count; ++i) add(values[i], closed);
 }
 
@@ -76,8 +73,7 @@ std::vector<RainflowCycle> RainflowCounter::residue() const {
   std::vector<TurningPoint> stack = stack_;
   pushTurningPoint(stack, candidate_, cycles);
   for (std::size_t i = 1; i < stack.size(); ++i)
-    cycles.push_back(
-        makeCycle(stack[i - 1].value, stack[i - 1].index, stack[i].value, stack[i].index, 0.5));
+    cycles.push_back(makeCycle(stack[i - 1].value, stack[i - 1].index, stack[i].value, stack[i].index, 0.5));
   return cycles;
 }
 

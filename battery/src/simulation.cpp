@@ -2,7 +2,6 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 
@@ -23,8 +22,7 @@ std::optional<double> stopSoc(const Segment& segment, const Pack& pack) {
 DepletionError::DepletionError(const std::string& message, double reached_soc, double floor_soc)
     : ceilplan::InfeasibleError(message), reached_soc_(reached_soc), floor_soc_(floor_soc) {}
 
-Simulator::Simulator(const Pack& pack, double initial_soc, double step_s)
-    : pack_(pack), step_s_(step_s) {
+Simulator::Simulator(const Pack& pack, double initial_soc, double step_s) : pack_(pack), step_s_(step_s) {
   pack_.validate();
   if (!(std::isfinite(step_s) && step_s >= 0.0))
     throw ceilplan::InputError("time step must be >= 0 s (0 = exact), got " + formatNumber(step_s));
@@ -88,9 +86,9 @@ double Simulator::run(const Segment& segment, std::vector<Sample>* record) {
   // Refuse a segment that would cross the floor before changing any state.
   const Advance whole = plan(segment, state_.soc, segment.duration_s);
   if (whole.soc_after < pack_.soc_min - 1e-12) {
-    throw DepletionError("would take the battery to " + formatNumber(100.0 * whole.soc_after) +
-                             " % SOC, " + formatNumber(100.0 * (pack_.soc_min - whole.soc_after)) +
-                             " points below its " + formatNumber(100.0 * pack_.soc_min) + " % floor",
+    throw DepletionError("would take the battery to " + formatNumber(100.0 * whole.soc_after) + " % SOC, " +
+                             formatNumber(100.0 * (pack_.soc_min - whole.soc_after)) + " points below its " +
+                             formatNumber(100.0 * pack_.soc_min) + " % floor",
                          whole.soc_after, pack_.soc_min);
   }
   enterMode(segment.mode);

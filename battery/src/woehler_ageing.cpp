@@ -2,7 +2,6 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -24,12 +23,12 @@ ValidityRange dataSheetValidity(std::string notes) {
 void WoehlerParameters::validate() const {
   if (!(cycles_at_full_depth > 0.0) || !std::isfinite(cycles_at_full_depth))
     throw ceilplan::InputError("Woehler N100 (cycles to end of life at DoD 1) must be positive, got " +
-                                formatNumber(cycles_at_full_depth));
+                               formatNumber(cycles_at_full_depth));
   if (!(exponent >= 0.0) || !std::isfinite(exponent))
     throw ceilplan::InputError("Woehler exponent k must be >= 0, got " + formatNumber(exponent));
   if (!(end_of_life_capacity_loss > 0.0 && end_of_life_capacity_loss <= 1.0))
     throw ceilplan::InputError("end-of-life capacity loss must be in (0, 1], got " +
-                                formatNumber(end_of_life_capacity_loss));
+                               formatNumber(end_of_life_capacity_loss));
 }
 
 double woehlerCyclesToEndOfLife(double depth, const WoehlerParameters& parameters) {
@@ -37,8 +36,7 @@ double woehlerCyclesToEndOfLife(double depth, const WoehlerParameters& parameter
   return parameters.cycles_at_full_depth * std::pow(std::min(depth, 1.0), -parameters.exponent);
 }
 
-WoehlerAgeingModel::WoehlerAgeingModel(const WoehlerParameters& parameters)
-    : parameters_(parameters) {
+WoehlerAgeingModel::WoehlerAgeingModel(const WoehlerParameters& parameters) : parameters_(parameters) {
   parameters_.validate();
 }
 
@@ -47,9 +45,7 @@ ValidityRange WoehlerAgeingModel::validity() const {
       "N100 and k come from a data sheet [open]; temperature and C-rate as the data sheet's tests");
 }
 
-std::unique_ptr<AgeingModel> WoehlerAgeingModel::clone() const {
-  return std::make_unique<WoehlerAgeingModel>(*this);
-}
+std::unique_ptr<AgeingModel> WoehlerAgeingModel::clone() const { return std::make_unique<WoehlerAgeingModel>(*this); }
 
 void WoehlerAgeingModel::addCycle(const RainflowCycle& cycle) {
   closed_damage_ += cycle.count / woehlerCyclesToEndOfLife(cycle.range, parameters_);
@@ -57,8 +53,7 @@ void WoehlerAgeingModel::addCycle(const RainflowCycle& cycle) {
 
 double WoehlerAgeingModel::damageWith(const std::vector<RainflowCycle>& open) const {
   double damage = closed_damage_;
-  for (const RainflowCycle& cycle : open)
-    damage += cycle.count / woehlerCyclesToEndOfLife(cycle.range, parameters_);
+  for (const RainflowCycle& cycle : open) damage += cycle.count / woehlerCyclesToEndOfLife(cycle.range, parameters_);
   return damage;
 }
 
@@ -73,20 +68,16 @@ FecAgeingModel::FecAgeingModel(const WoehlerParameters& parameters) : parameters
 }
 
 ValidityRange FecAgeingModel::validity() const {
-  return dataSheetValidity(
-      "no DoD, SOC, temperature or C-rate dependence; calendar ageing neglected (paper)");
+  return dataSheetValidity("no DoD, SOC, temperature or C-rate dependence; calendar ageing neglected (paper)");
 }
 
 double FecAgeingModel::modelCapacityLoss() const {
   return fec_ / parameters_.cycles_at_full_depth * parameters_.end_of_life_capacity_loss;
 }
 
-std::unique_ptr<AgeingModel> FecAgeingModel::clone() const {
-  return std::make_unique<FecAgeingModel>(*this);
-}
+std::unique_ptr<AgeingModel> FecAgeingModel::clone() const { return std::make_unique<FecAgeingModel>(*this); }
 
-void FecAgeingModel::consume(const AgeingSample* previous, const AgeingSample* samples,
-                             std::size_t count) {
+void FecAgeingModel::consume(const AgeingSample* previous, const AgeingSample* samples, std::size_t count) {
   // Summed sample by sample, so that any split of the history gives the same total. A swing
   // moved |dSOC| usable capacities, |dSOC| SOH nominal ones.
   double soc_before = previous != nullptr ? previous->soc : samples[0].soc;

@@ -33,13 +33,11 @@ ValidityRange XuAgeingModel::validity() const {
   return {{"LMO"}, 288.15, 318.15, 1.0, 1.0, "no C-rate term; depth clamped to 1"};
 }
 
-std::unique_ptr<AgeingModel> XuAgeingModel::clone() const {
-  return std::make_unique<XuAgeingModel>(*this);
-}
+std::unique_ptr<AgeingModel> XuAgeingModel::clone() const { return std::make_unique<XuAgeingModel>(*this); }
 
 double XuAgeingModel::cycleStress(const RainflowCycle& cycle) const {
-  return cycle.count * xuDepthStress(cycle.range, parameters_) *
-         xuSocStress(cycle.mean, parameters_) * temperature_stress_;
+  return cycle.count * xuDepthStress(cycle.range, parameters_) * xuSocStress(cycle.mean, parameters_) *
+         temperature_stress_;
 }
 
 void XuAgeingModel::addCycle(const RainflowCycle& cycle) { closed_cycle_damage_ += cycleStress(cycle); }
@@ -61,8 +59,7 @@ double XuAgeingModel::cycleDamage() const { return cycleDamageWith(rainflow().re
 double XuAgeingModel::calendarDamage() const {
   if (!(elapsed_s_ > 0.0)) return 0.0;
   const double mean_soc = soc_time_integral_s_ / elapsed_s_;
-  return parameters_.k_calendar_per_s * elapsed_s_ * xuSocStress(mean_soc, parameters_) *
-         temperature_stress_;
+  return parameters_.k_calendar_per_s * elapsed_s_ * xuSocStress(mean_soc, parameters_) * temperature_stress_;
 }
 
 double XuAgeingModel::capacityLossWith(const std::vector<RainflowCycle>& open) const {

@@ -73,9 +73,7 @@ void tenYearsMissionByMission(benchmark::State& state, const char* model_name) {
 void BM_XuTenYearsMissionByMission(benchmark::State& state) { tenYearsMissionByMission(state, "xu"); }
 BENCHMARK(BM_XuTenYearsMissionByMission)->Unit(benchmark::kMillisecond);
 
-void BM_SchmalstiegTenYearsMissionByMission(benchmark::State& state) {
-  tenYearsMissionByMission(state, "schmalstieg");
-}
+void BM_SchmalstiegTenYearsMissionByMission(benchmark::State& state) { tenYearsMissionByMission(state, "schmalstieg"); }
 BENCHMARK(BM_SchmalstiegTenYearsMissionByMission)->Unit(benchmark::kMillisecond);
 
 }  // namespace

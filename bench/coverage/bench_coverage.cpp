@@ -20,7 +20,8 @@ namespace {
 using namespace ceilplan;
 
 struct Bridge {
-  environment::OccupancyMap map = environment::OccupancyMap::load(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.bt");
+  environment::OccupancyMap map =
+      environment::OccupancyMap::load(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.bt");
   environment::Environment environment{map, testing::quad()};
   energy::EnergyModel energy{energy::paperQuadParameters()};
 };

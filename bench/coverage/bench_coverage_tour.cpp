@@ -108,7 +108,8 @@ void BM_LongDeckSoffitTour(benchmark::State& state) {
     scene.bridge_length_m = kLength_m;
     environment::OccupancyMap map(environment::toOcTree(environment::generateScene(environment::Scene::Bridge, scene)),
                                   "bridge 200 m (generated)");
-    return mission::PlanningContext(std::move(map), mission.vehicle, mission.battery, mission::planningOptions(mission));
+    return mission::PlanningContext(std::move(map), mission.vehicle, mission.battery,
+                                    mission::planningOptions(mission));
   }();
   runTour(state, mission, context, modeArgument(state.range(0)));
 }

@@ -49,7 +49,7 @@ struct Lawnmower {
 // The photos of one down-facing region: lanes along its long horizontal axis.
 void addRegionPhotos(const mission::Camera& camera, const mission::CoverageRegion& region,
                      const mission::RegionSurface& surface, const mission::PlanningContext& context, Lawnmower& out) {
-  const double a = region.widthShare() * camera.halfWidthTan();   // the covered part's corner, as tangents
+  const double a = region.widthShare() * camera.halfWidthTan();  // the covered part's corner, as tangents
   const double b = region.heightShare() * camera.halfHeightTan();
   // gsd_mm_px grows with the line of sight and 1 / cos(incidence): both (1 + a^2 + b^2)^(1/2) at a corner.
   const double distance_m = camera.distanceForGsd_m(region.gsd_mm_px) / (1.0 + a * a + b * b);
@@ -119,7 +119,7 @@ Flown fly(const mission::Mission& mission, const mission::PlanningContext& conte
       planner::PlanRequest request;
       request.start_m = place_m[from];
       request.goal_m = place_m[to];
-      request.planner = planner::referencePlannerName();    // the lattice A*, deterministic
+      request.planner = planner::referencePlannerName();           // the lattice A*, deterministic
       request.lattice.spacing_m = planner::kTourLatticeSpacing_m;  // the tour roadmap's spacing
       waypoints = mission::planRoute(context, mode, request).plan.waypoints;
     }

@@ -114,9 +114,9 @@ void BM_CeilingGapVehicleCastRay(benchmark::State& state) {
     int covered = 0;
     for (const auto& point : footprint) {
       octomap::point3d end;
-      covered += tree.castRay(octomap::point3d(p.x() + point.x(), p.y() + point.y(), p.z() + 0.03),
-                              octomap::point3d(0, 0, 1), end, false,
-                              reach_only ? 4 * vehicle.rotor_radius_m : 7.0 - p.z());
+      covered +=
+          tree.castRay(octomap::point3d(p.x() + point.x(), p.y() + point.y(), p.z() + 0.03), octomap::point3d(0, 0, 1),
+                       end, false, reach_only ? 4 * vehicle.rotor_radius_m : 7.0 - p.z());
     }
     benchmark::DoNotOptimize(covered);
   }

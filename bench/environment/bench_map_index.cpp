@@ -46,7 +46,8 @@ double processCpuSeconds() {
 void reportSizes(benchmark::State& state, const OccupancyMap& map, const MapIndex& index, double seconds_per_build,
                  double cpu_seconds_per_build) {
   const double voxel_m3 = std::pow(map.resolution_m(), 3);
-  const double known = std::round(index.grid().frame().voxelCount() - index.unknownSummary().unknown_volume_m3 / voxel_m3);
+  const double known =
+      std::round(index.grid().frame().voxelCount() - index.unknownSummary().unknown_volume_m3 / voxel_m3);
   state.counters["known_Mvox"] = known / 1e6;
   state.counters["box_Mvox"] = static_cast<double>(index.grid().frame().voxelCount()) / 1e6;
   state.counters["s_per_Mknown"] = seconds_per_build / (known / 1e6);

@@ -18,7 +18,10 @@ mission::Mission twentyTargetBridge() {
   const double bays[][2] = {{10.0, 0.0}, {18.0, 0.0}, {26.0, 0.0}, {34.0, 0.0}, {42.0, 0.0}, {18.0, -2.8}, {42.0, 2.8}};
   for (const auto& bay : bays) {
     mission::InspectionTarget target;
-    target.name = "extra_deck_bay_" + std::to_string(static_cast<int>(bay[0])) + (bay[1] > 0 ? "_north" : bay[1] < 0 ? "_south" : "");
+    target.name = "extra_deck_bay_" + std::to_string(static_cast<int>(bay[0])) +
+                  (bay[1] > 0   ? "_north"
+                   : bay[1] < 0 ? "_south"
+                                : "");
     target.point_m = Eigen::Vector3d(bay[0], bay[1], 6.0);
     target.dwell_s = 20.0;
     mission.targets.push_back(target);

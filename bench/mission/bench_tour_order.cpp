@@ -12,7 +12,9 @@ namespace {
 using ceilplan::mission::CostMatrix;
 
 // Climbing costs 2 per metre on top of distance: asymmetric, like battery costs.
-CostMatrix randomCosts(int targets, std::uint64_t seed) { return ceilplan::testing::randomTourCosts(targets, seed, 2.0); }
+CostMatrix randomCosts(int targets, std::uint64_t seed) {
+  return ceilplan::testing::randomTourCosts(targets, seed, 2.0);
+}
 
 void BM_HeldKarp(benchmark::State& state) {
   const CostMatrix costs = randomCosts(static_cast<int>(state.range(0)), 1);

@@ -47,7 +47,9 @@ void reachesQuery(benchmark::State& state, const std::filesystem::path& mission_
 
 void registerMission(const std::string& label, const std::filesystem::path& file) {
   benchmark::RegisterBenchmark(("flood/" + label).c_str(), flood, file)
-      ->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+      ->Iterations(1)
+      ->UseRealTime()
+      ->Unit(benchmark::kSecond);
   benchmark::RegisterBenchmark(("reaches/" + label).c_str(), reachesQuery, file)->Unit(benchmark::kMicrosecond);
 }
 

@@ -6,8 +6,8 @@
 #include "ceilplan/mission/planning_context.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 
-#include "ceilplan/planner/lattice_roadmap.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
+#include "ceilplan/planner/lattice_roadmap.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -75,8 +75,14 @@ void roadmapSearch(benchmark::State& state, mission::FlightMode planning_mode) {
   }
 }
 
-BENCHMARK_CAPTURE(roadmapBuild, ceiling, mission::FlightMode::Ceiling)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(roadmapBuild, free, mission::FlightMode::Free)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(roadmapBuild, ceiling, mission::FlightMode::Ceiling)
+    ->Iterations(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(roadmapBuild, free, mission::FlightMode::Free)
+    ->Iterations(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(roadmapSearch, ceiling, mission::FlightMode::Ceiling)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(roadmapSearch, free, mission::FlightMode::Free)->Unit(benchmark::kMillisecond);
 

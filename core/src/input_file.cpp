@@ -44,8 +44,9 @@ std::uintmax_t requireInputFile(const std::filesystem::path& file, const std::st
            S_ISDIR(status.st_mode) ? std::errc::is_a_directory : std::errc::invalid_argument);
   const auto size_bytes = static_cast<std::uintmax_t>(status.st_size);
   if (size_bytes > max_bytes)
-    refuse(file, "holds " + std::to_string(size_bytes) + " bytes, more than ceilplan reads for a " + what + " (" +
-                     std::to_string(max_bytes) + "); is it the right file?",
+    refuse(file,
+           "holds " + std::to_string(size_bytes) + " bytes, more than ceilplan reads for a " + what + " (" +
+               std::to_string(max_bytes) + "); is it the right file?",
            std::errc::file_too_large);
   if (!std::ifstream(file, std::ios::binary)) {
     const int error = errno;

@@ -15,9 +15,9 @@ namespace ceilplan::energy {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr FreeParameter kAllParameters[] = {FreeParameter::kHoverPowerW,      FreeParameter::kK1,
-                                            FreeParameter::kK2M,              FreeParameter::kMotorEfficiency,
-                                            FreeParameter::kDragAreaM2,       FreeParameter::kPackResistanceOhm};
+constexpr FreeParameter kAllParameters[] = {FreeParameter::kHoverPowerW, FreeParameter::kK1,
+                                            FreeParameter::kK2M,         FreeParameter::kMotorEfficiency,
+                                            FreeParameter::kDragAreaM2,  FreeParameter::kPackResistanceOhm};
 // Contact thrust ratio allowed during the fit: 1 / (1 - 0.95) = 20.
 constexpr double kMaxContactExcess = 0.95;
 // A parameter whose 100 % change moves the RMS current less than this is not in the data.
@@ -28,12 +28,18 @@ constexpr double kMinSingularValue = 1e-3;
 
 double& slot(EnergyParameters& p, FreeParameter parameter) {
   switch (parameter) {
-    case FreeParameter::kHoverPowerW: return p.rotor.hover_power_w;
-    case FreeParameter::kK1: return p.ceiling.k1;
-    case FreeParameter::kK2M: return p.ceiling.k2_m;
-    case FreeParameter::kMotorEfficiency: return p.rotor.motor_efficiency;
-    case FreeParameter::kDragAreaM2: return p.rotor.drag_area_m2;
-    case FreeParameter::kPackResistanceOhm: return p.pack.resistance_ohm;
+    case FreeParameter::kHoverPowerW:
+      return p.rotor.hover_power_w;
+    case FreeParameter::kK1:
+      return p.ceiling.k1;
+    case FreeParameter::kK2M:
+      return p.ceiling.k2_m;
+    case FreeParameter::kMotorEfficiency:
+      return p.rotor.motor_efficiency;
+    case FreeParameter::kDragAreaM2:
+      return p.rotor.drag_area_m2;
+    case FreeParameter::kPackResistanceOhm:
+      return p.pack.resistance_ohm;
   }
   throw std::logic_error("unknown calibration parameter");
 }
@@ -50,12 +56,18 @@ struct Range {
 
 Range allowedRange(FreeParameter parameter, const EnergyParameters& start) {
   switch (parameter) {
-    case FreeParameter::kHoverPowerW: return {start.rotor.hover_power_w / 4.0, start.rotor.hover_power_w * 4.0};
-    case FreeParameter::kK1: return {0.5, 500.0};
-    case FreeParameter::kK2M: return {1e-3, 1.0};
-    case FreeParameter::kMotorEfficiency: return {0.3, 1.0};
-    case FreeParameter::kDragAreaM2: return {1e-4, 1.0};
-    case FreeParameter::kPackResistanceOhm: return {1e-4, 0.5};
+    case FreeParameter::kHoverPowerW:
+      return {start.rotor.hover_power_w / 4.0, start.rotor.hover_power_w * 4.0};
+    case FreeParameter::kK1:
+      return {0.5, 500.0};
+    case FreeParameter::kK2M:
+      return {1e-3, 1.0};
+    case FreeParameter::kMotorEfficiency:
+      return {0.3, 1.0};
+    case FreeParameter::kDragAreaM2:
+      return {1e-4, 1.0};
+    case FreeParameter::kPackResistanceOhm:
+      return {1e-4, 0.5};
   }
   throw std::logic_error("unknown calibration parameter");
 }
@@ -93,7 +105,8 @@ bool hasCeilingWithinReach(const EnergyParameters& start, const std::vector<Cali
 std::string missingVariation(FreeParameter parameter, const EnergyParameters& start,
                              const std::vector<CalibrationSample>& samples) {
   switch (parameter) {
-    case FreeParameter::kHoverPowerW: return {};
+    case FreeParameter::kHoverPowerW:
+      return {};
     case FreeParameter::kK1:
     case FreeParameter::kK2M:
       if (!hasCeilingWithinReach(start, samples))
@@ -171,7 +184,8 @@ class Problem {
     EnergyParameters p = start_;
     for (std::size_t j = 0; j < free_.size(); ++j) slot(p, free_[j]) = std::exp(log_lower_[j] + x[j] * log_span_[j]);
     // Coordinates to parameters, after the parameters they depend on are in place.
-    if (isFree(free_, FreeParameter::kK1)) p.ceiling.k1 = radius_squared_m2_ / (p.ceiling.k1 * p.ceiling.k2_m * p.ceiling.k2_m);
+    if (isFree(free_, FreeParameter::kK1))
+      p.ceiling.k1 = radius_squared_m2_ / (p.ceiling.k1 * p.ceiling.k2_m * p.ceiling.k2_m);
     if (shaft_coordinate_) p.rotor.hover_power_w /= p.rotor.motor_efficiency;
     return p;
   }
@@ -256,7 +270,8 @@ std::string fitFailure(const Problem& problem, const std::vector<double>& start_
     return head + ", because the squared errors overflow: current_a reaches " + formatNumber(largest_a) +
            " A; give every current in amperes (a multirotor hovers at about 10 A) and remove the outlier";
   return head + "; the data may hold currents no setting of the model can approach (largest current_a " +
-         formatNumber(largest_a) + " A: an outlier, or mA given as A?) or contradict each other: check the "
+         formatNumber(largest_a) +
+         " A: an outlier, or mA given as A?) or contradict each other: check the "
          "data, or fit fewer parameters with --fit";
 }
 
@@ -269,7 +284,7 @@ void checkIdentifiable(const Problem& problem, const std::vector<FreeParameter>&
     const double sensitivity_a = j.col(c).norm() / std::sqrt(rows) / problem.logSpan(static_cast<std::size_t>(c));
     if (sensitivity_a < kMinSensitivityA)
       throw ceilplan::InputError("cannot identify " + parameterName(free[static_cast<std::size_t>(c)]) +
-                                  ": the measured currents do not depend on it; fix it instead of fitting it");
+                                 ": the measured currents do not depend on it; fix it instead of fitting it");
     normalised.col(c) /= j.col(c).norm();
   }
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(normalised, Eigen::ComputeThinV);
@@ -290,12 +305,18 @@ void checkIdentifiable(const Problem& problem, const std::vector<FreeParameter>&
 
 std::string parameterName(FreeParameter parameter) {
   switch (parameter) {
-    case FreeParameter::kHoverPowerW: return "hover_power_w";
-    case FreeParameter::kK1: return "k1";
-    case FreeParameter::kK2M: return "k2_m";
-    case FreeParameter::kMotorEfficiency: return "motor_efficiency";
-    case FreeParameter::kDragAreaM2: return "drag_area_m2";
-    case FreeParameter::kPackResistanceOhm: return "pack_resistance_ohm";
+    case FreeParameter::kHoverPowerW:
+      return "hover_power_w";
+    case FreeParameter::kK1:
+      return "k1";
+    case FreeParameter::kK2M:
+      return "k2_m";
+    case FreeParameter::kMotorEfficiency:
+      return "motor_efficiency";
+    case FreeParameter::kDragAreaM2:
+      return "drag_area_m2";
+    case FreeParameter::kPackResistanceOhm:
+      return "pack_resistance_ohm";
   }
   throw std::logic_error("unknown calibration parameter");
 }
@@ -327,7 +348,7 @@ CalibrationResult calibrate(const EnergyParameters& start, const std::vector<Cal
       if (free[a] == free[b]) throw ceilplan::InputError(parameterName(free[a]) + " is listed twice");
   if (samples.size() <= free.size())
     throw ceilplan::InputError(std::to_string(samples.size()) + " samples cannot identify " +
-                                std::to_string(free.size()) + " parameters: give more samples than parameters");
+                               std::to_string(free.size()) + " parameters: give more samples than parameters");
   for (FreeParameter parameter : free) {
     const std::string why = missingVariation(parameter, start, samples);
     if (!why.empty()) throw ceilplan::InputError("cannot identify " + parameterName(parameter) + ": " + why);
@@ -336,7 +357,8 @@ CalibrationResult calibrate(const EnergyParameters& start, const std::vector<Cal
     const EnergyModel start_model(start);  // every sample must be valid input to begin with
     for (std::size_t i = 0; i < samples.size(); ++i) {
       if (!std::isfinite(samples[i].current_a) || samples[i].current_a < 0.0)
-        throw ceilplan::InputError("sample " + std::to_string(i + 1) + ": current_a must be a finite, non-negative number");
+        throw ceilplan::InputError("sample " + std::to_string(i + 1) +
+                                   ": current_a must be a finite, non-negative number");
       try {
         evaluate(start_model, samples[i]);
       } catch (const std::exception& e) {
@@ -373,8 +395,8 @@ CalibrationResult calibrate(const EnergyParameters& start, const std::vector<Cal
   result.max_abs_error_a = r.cwiseAbs().maxCoeff();
   for (std::size_t j = 0; j < free.size(); ++j) {
     const Range range = problem.allowedParameterRange(j, result.parameters);
-    result.fitted.push_back({free[j], slot(result.parameters, free[j]), range.lower, range.upper,
-                             valueOf(start, free[j])});
+    result.fitted.push_back(
+        {free[j], slot(result.parameters, free[j]), range.lower, range.upper, valueOf(start, free[j])});
   }
   result.evaluations = problem.evaluations();
   return result;

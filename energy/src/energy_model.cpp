@@ -1,7 +1,7 @@
 #include "ceilplan/energy/energy_model.hpp"
 
-#include "ceilplan/energy/thrust_to_power.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/energy/thrust_to_power.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,11 +22,10 @@ constexpr double kPi = 3.14159265358979323846;
 
 const EnergyParameters& checked(const EnergyParameters& p) {
   const AirframeParameters& v = p.airframe;
-  if (!(v.mass_kg > 0.0) || !std::isfinite(v.mass_kg))
-    refuse("vehicle mass_kg", v.mass_kg, "must be positive");
+  if (!(v.mass_kg > 0.0) || !std::isfinite(v.mass_kg)) refuse("vehicle mass_kg", v.mass_kg, "must be positive");
   if (v.rotor_count < 1 || v.rotor_count > EnergyModel::kMaxRotors)
     throw ceilplan::InputError("vehicle rotor count " + std::to_string(v.rotor_count) + " must be between 1 and " +
-                                std::to_string(EnergyModel::kMaxRotors));
+                               std::to_string(EnergyModel::kMaxRotors));
   if (!(v.rotor_radius_m > 0.0) || !std::isfinite(v.rotor_radius_m))
     refuse("rotor radius_m", v.rotor_radius_m, "must be positive");
   if (!(v.max_speed_m_s >= 0.0) || !std::isfinite(v.max_speed_m_s))
@@ -36,12 +35,15 @@ const EnergyParameters& checked(const EnergyParameters& p) {
     refuse("hover_power_w", r.hover_power_w, "must be positive");
   if (!(r.motor_efficiency > 0.0 && r.motor_efficiency <= 1.0))
     refuse("motor_efficiency", r.motor_efficiency, "must be in (0, 1]");
-  if (!(r.induced_power_correction >= 0.0)) refuse("induced_power_correction", r.induced_power_correction, "must be >= 0");
-  if (!(r.drag_area_m2 >= 0.0) || !std::isfinite(r.drag_area_m2)) refuse("drag_area_m2", r.drag_area_m2, "must be >= 0");
+  if (!(r.induced_power_correction >= 0.0))
+    refuse("induced_power_correction", r.induced_power_correction, "must be >= 0");
+  if (!(r.drag_area_m2 >= 0.0) || !std::isfinite(r.drag_area_m2))
+    refuse("drag_area_m2", r.drag_area_m2, "must be >= 0");
   if (!(r.air_density_kg_m3 > 0.0)) refuse("air_density_kg_m3", r.air_density_kg_m3, "must be positive");
   if (!(r.descent_power_floor > 0.0 && r.descent_power_floor <= 1.0))
     refuse("descent_power_floor", r.descent_power_floor, "must be in (0, 1]");
-  if (!(p.reference_soc >= 0.0 && p.reference_soc <= 1.0)) refuse("reference_soc", p.reference_soc, "must be in [0, 1]");
+  if (!(p.reference_soc >= 0.0 && p.reference_soc <= 1.0))
+    refuse("reference_soc", p.reference_soc, "must be in [0, 1]");
   return p;
 }
 
@@ -56,12 +58,13 @@ EnergyModel::EnergyModel(const EnergyParameters& parameters)
     : parameters_(checked(parameters)),
       ceiling_(parameters.ceiling, parameters.airframe.rotor_radius_m),
       ground_(parameters.ground, parameters.airframe),
-      rotor_power_(RotaryWingPower::scaledToHover(
-          parameters.rotor.hover_power_w * parameters.rotor.motor_efficiency,
-          parameters.airframe.mass_kg * kStandardGravityM_s2,
-          parameters.airframe.rotor_count * kPi * parameters.airframe.rotor_radius_m * parameters.airframe.rotor_radius_m,
-          parameters.rotor.induced_power_correction, parameters.rotor.tip_speed_m_s, parameters.rotor.drag_area_m2,
-          parameters.rotor.air_density_kg_m3)),
+      rotor_power_(
+          RotaryWingPower::scaledToHover(parameters.rotor.hover_power_w * parameters.rotor.motor_efficiency,
+                                         parameters.airframe.mass_kg * kStandardGravityM_s2,
+                                         parameters.airframe.rotor_count * kPi * parameters.airframe.rotor_radius_m *
+                                             parameters.airframe.rotor_radius_m,
+                                         parameters.rotor.induced_power_correction, parameters.rotor.tip_speed_m_s,
+                                         parameters.rotor.drag_area_m2, parameters.rotor.air_density_kg_m3)),
       pack_(parameters.pack),
       inverse_efficiency_(1.0 / parameters.rotor.motor_efficiency),
       weight_n_(parameters.airframe.mass_kg * kStandardGravityM_s2) {}
@@ -101,7 +104,7 @@ CurrentBreakdown EnergyModel::breakdown(const RotorCeiling* rotors, int rotor_co
                                         const FlightCondition& flight) const {
   if (rotor_count != parameters_.airframe.rotor_count)
     throw ceilplan::InputError("got ceiling gaps for " + std::to_string(rotor_count) + " rotors, the vehicle has " +
-                                std::to_string(parameters_.airframe.rotor_count));
+                               std::to_string(parameters_.airframe.rotor_count));
   checkFlight(flight);
   const double ground_factor = ground_.thrustRatio(flight.ground_gap_m);
   double ceiling_sum = 0.0;

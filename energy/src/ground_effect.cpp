@@ -17,8 +17,7 @@ GroundEffect::GroundEffect(const GroundEffectParameters& p, const AirframeParame
   if (!(p.min_gap_radii > 0.25) || !std::isfinite(p.min_gap_radii))
     throw ceilplan::InputError("ground min_gap_radii must exceed 0.25, where Cheeseman-Bennett is singular");
   if (model_ != GroundEffectModel::kMultirotor) return;
-  if (vehicle.rotor_count < 2 || !(vehicle.adjacent_rotor_spacing_m > 0.0) ||
-      !(vehicle.opposite_rotor_spacing_m > 0.0))
+  if (vehicle.rotor_count < 2 || !(vehicle.adjacent_rotor_spacing_m > 0.0) || !(vehicle.opposite_rotor_spacing_m > 0.0))
     throw ceilplan::InputError(
         "the multirotor ground-effect form needs at least two rotors with positive spacing; use cheeseman-bennett");
   if (!(p.body_lift_factor >= 0.0) || !std::isfinite(p.body_lift_factor))

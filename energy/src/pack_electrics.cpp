@@ -1,6 +1,6 @@
 #include "ceilplan/energy/pack_electrics.hpp"
-#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -24,7 +24,7 @@ PackOperatingPoint PackElectrics::operatingPoint(double propulsion_power_w, doub
   const double discriminant = a * a - 4.0 * resistance_ohm_ * propulsion_power_w;
   if (!(discriminant >= 0.0) || !(a > 0.0))
     throw ceilplan::Error("the pack cannot deliver " + formatNumber(propulsion_power_w) + " W at SOC " +
-                             formatNumber(soc) + " (beyond its maximum power): lower the demand or check the pack");
+                          formatNumber(soc) + " (beyond its maximum power): lower the demand or check the pack");
   const double propulsion_current_a = 2.0 * propulsion_power_w / (a + std::sqrt(discriminant));
   const double current_a = propulsion_current_a + avionics_current_a_;
   return {current_a, open_circuit_v - resistance_ohm_ * current_a};

@@ -1,6 +1,6 @@
 #include "ceilplan/energy/rotary_wing_power.hpp"
-#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -23,23 +23,22 @@ RotaryWingPower::RotaryWingPower(double profile_power_w, double induced_power_w,
 }
 
 RotaryWingPower RotaryWingPower::fromBladeParameters(double delta, double rho, double solidity, double area_m2,
-                                                     double omega_rad_s, double radius_m, double k,
-                                                     double weight_n, double d0) {
+                                                     double omega_rad_s, double radius_m, double k, double weight_n,
+                                                     double d0) {
   const double profile = delta / 8.0 * rho * solidity * area_m2 * std::pow(omega_rad_s * radius_m, 3);
   const double induced = (1.0 + k) * std::pow(weight_n, 1.5) / std::sqrt(2.0 * rho * area_m2);
   const double v0 = std::sqrt(weight_n / (2.0 * rho * area_m2));
   return RotaryWingPower(profile, induced, omega_rad_s * radius_m, v0, 0.5 * d0 * rho * solidity * area_m2);
 }
 
-RotaryWingPower RotaryWingPower::scaledToHover(double hover_shaft_power_w, double weight_n, double area_m2,
-                                               double k, double tip_speed_m_s, double drag_area_m2,
-                                               double rho) {
+RotaryWingPower RotaryWingPower::scaledToHover(double hover_shaft_power_w, double weight_n, double area_m2, double k,
+                                               double tip_speed_m_s, double drag_area_m2, double rho) {
   const double induced = (1.0 + k) * std::pow(weight_n, 1.5) / std::sqrt(2.0 * rho * area_m2);
   const double profile = hover_shaft_power_w - induced;
   if (profile < 0.0)
     throw ceilplan::InputError("hover shaft power " + formatNumber(hover_shaft_power_w) +
-                                " W is below the momentum-theory induced power " + formatNumber(induced) +
-                                " W for this mass and rotor disc: raise hover_power_w or motor_efficiency");
+                               " W is below the momentum-theory induced power " + formatNumber(induced) +
+                               " W for this mass and rotor disc: raise hover_power_w or motor_efficiency");
   const double v0 = std::sqrt(weight_n / (2.0 * rho * area_m2));
   return RotaryWingPower(profile, induced, tip_speed_m_s, v0, 0.5 * rho * drag_area_m2);
 }

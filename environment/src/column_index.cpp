@@ -100,7 +100,7 @@ ColumnIndex::Boundary ColumnIndex::below(int i, int j, double z_m) const {
 }
 
 std::optional<CellState> ColumnIndex::firstBlocking(int i, int j, double bottom_m, double top_m,
-                                                  bool unknown_blocks) const {
+                                                    bool unknown_blocks) const {
   if (!(bottom_m < top_m)) return std::nullopt;
   if (!inside(i, j)) return unknown_blocks ? std::optional<CellState>(CellState::Unknown) : std::nullopt;
   for (const Run* run = beginRuns(i, j); run != endRuns(i, j); ++run) {

@@ -59,7 +59,10 @@ class LowerEnvelope {
 // Per thread: a line's features and costs, the envelope and a tile of kTileWidth lines.
 struct LineScratch {
   explicit LineScratch(int longest)
-      : cost(longest), best(longest), line(longest), tile(std::size_t(longest) * kTileWidth),
+      : cost(longest),
+        best(longest),
+        line(longest),
+        tile(std::size_t(longest) * kTileWidth),
         horizontal_tile(std::size_t(longest) * kTileWidth) {}
   std::vector<std::int64_t> cost;
   std::vector<int> best;
@@ -83,125 +86,139 @@ DistanceField::DistanceField(const ColumnIndex& columns, bool unknown_is_blocked
   horizontal_.resize(frame_.voxelCount());
   const int longest = std::max({nx, ny, nz});
   const auto stage = [&](double from, double to) {
-    return [&progress, from, to](double f) { if (progress) progress(from + (to - from) * f); };
+    return [&progress, from, to](double f) {
+      if (progress) progress(from + (to - from) * f);
+    };
   };
 
   // Along x, from the column runs: per band of rows, a cursor per column walks its runs as the
   // layers go up, so each row's blocked voxels come in memory order.
   const std::size_t row_bands = std::min<std::size_t>(ny, std::size_t(std::max(1, workers)) * 16);
-  parallelFor(row_bands, workers, [&](std::size_t band) {
-    const int j0 = static_cast<int>(band * ny / row_bands), j1 = static_cast<int>((band + 1) * ny / row_bands);
-    const std::size_t c0 = static_cast<std::size_t>(j0) * nx, c1 = static_cast<std::size_t>(j1) * nx;
-    std::vector<const ColumnIndex::Run*> cursor(c1 - c0);
-    for (std::size_t c = c0; c < c1; ++c) cursor[c - c0] = columns.runs().data() + columns.offsets()[c];
-    std::vector<char> blocked(nx);
-    for (int k = 0; k < nz; ++k)
-      for (int j = j0; j < j1; ++j) {
-        bool any = false;
-        for (int i = 0; i < nx; ++i) {
-          const ColumnIndex::Run*& run = cursor[static_cast<std::size_t>(j) * nx + i - c0];
-          while (run->hi <= k) ++run;  // the last run is unbounded: never runs off the end
-          const bool blocks = run->lo <= k && (run->state == CellState::Occupied || unknown_is_blocked);
-          blocked[i] = blocks;
-          any = any || blocks;
-        }
-        std::int32_t* row = nearest_.data() + (static_cast<std::size_t>(k) * ny + j) * nx;
-        const std::int32_t base = static_cast<std::int32_t>((static_cast<std::size_t>(k) * ny + j) * nx);
-        if (!any) {
-          std::fill(row, row + nx, -1);
-          continue;
-        }
-        int last = -1;
-        for (int i = 0; i < nx; ++i) {
-          if (blocked[i]) last = i;
-          row[i] = last;  // nearest blocked at or before i, -1 if none
-        }
-        int next = -1;
-        for (int i = nx - 1; i >= 0; --i) {
-          if (blocked[i]) next = i;
-          if (next >= 0 && (row[i] < 0 || next - i < i - row[i])) row[i] = next;
-          row[i] = row[i] < 0 ? -1 : base + row[i];
-        }
-      }
-  }, stage(0.0, 0.2));
+  parallelFor(
+      row_bands, workers,
+      [&](std::size_t band) {
+        const int j0 = static_cast<int>(band * ny / row_bands), j1 = static_cast<int>((band + 1) * ny / row_bands);
+        const std::size_t c0 = static_cast<std::size_t>(j0) * nx, c1 = static_cast<std::size_t>(j1) * nx;
+        std::vector<const ColumnIndex::Run*> cursor(c1 - c0);
+        for (std::size_t c = c0; c < c1; ++c) cursor[c - c0] = columns.runs().data() + columns.offsets()[c];
+        std::vector<char> blocked(nx);
+        for (int k = 0; k < nz; ++k)
+          for (int j = j0; j < j1; ++j) {
+            bool any = false;
+            for (int i = 0; i < nx; ++i) {
+              const ColumnIndex::Run*& run = cursor[static_cast<std::size_t>(j) * nx + i - c0];
+              while (run->hi <= k) ++run;  // the last run is unbounded: never runs off the end
+              const bool blocks = run->lo <= k && (run->state == CellState::Occupied || unknown_is_blocked);
+              blocked[i] = blocks;
+              any = any || blocks;
+            }
+            std::int32_t* row = nearest_.data() + (static_cast<std::size_t>(k) * ny + j) * nx;
+            const std::int32_t base = static_cast<std::int32_t>((static_cast<std::size_t>(k) * ny + j) * nx);
+            if (!any) {
+              std::fill(row, row + nx, -1);
+              continue;
+            }
+            int last = -1;
+            for (int i = 0; i < nx; ++i) {
+              if (blocked[i]) last = i;
+              row[i] = last;  // nearest blocked at or before i, -1 if none
+            }
+            int next = -1;
+            for (int i = nx - 1; i >= 0; --i) {
+              if (blocked[i]) next = i;
+              if (next >= 0 && (row[i] < 0 || next - i < i - row[i])) row[i] = next;
+              row[i] = row[i] < 0 ? -1 : base + row[i];
+            }
+          }
+      },
+      stage(0.0, 0.2));
 
   // Along y, layer by layer: the features lie in the same row, so their x is the index minus
   // the row's start.
-  parallelFor(static_cast<std::size_t>(nz), workers, [&](std::size_t k) {
-    LineScratch s(longest);
-    const std::size_t layer_base = k * layer;
-    for (int x0 = 0; x0 < nx; x0 += kTileWidth) {
-      const int width = std::min(kTileWidth, nx - x0);
-      for (int y = 0; y < ny; ++y)
-        std::copy_n(nearest_.data() + layer_base + static_cast<std::size_t>(y) * nx + x0, width,
-                    s.tile.data() + static_cast<std::size_t>(y) * kTileWidth);
-      for (int w = 0; w < width; ++w) {
-        const int x = x0 + w;
-        bool any = false;
-        for (int y = 0; y < ny; ++y) {
-          const std::int32_t feature = s.tile[static_cast<std::size_t>(y) * kTileWidth + w];
-          s.line[y] = feature;
-          if (feature < 0) {
-            s.cost[y] = kNoFeature;
-            continue;
+  parallelFor(
+      static_cast<std::size_t>(nz), workers,
+      [&](std::size_t k) {
+        LineScratch s(longest);
+        const std::size_t layer_base = k * layer;
+        for (int x0 = 0; x0 < nx; x0 += kTileWidth) {
+          const int width = std::min(kTileWidth, nx - x0);
+          for (int y = 0; y < ny; ++y)
+            std::copy_n(nearest_.data() + layer_base + static_cast<std::size_t>(y) * nx + x0, width,
+                        s.tile.data() + static_cast<std::size_t>(y) * kTileWidth);
+          for (int w = 0; w < width; ++w) {
+            const int x = x0 + w;
+            bool any = false;
+            for (int y = 0; y < ny; ++y) {
+              const std::int32_t feature = s.tile[static_cast<std::size_t>(y) * kTileWidth + w];
+              s.line[y] = feature;
+              if (feature < 0) {
+                s.cost[y] = kNoFeature;
+                continue;
+              }
+              any = true;
+              const std::int64_t dx =
+                  x - (feature - static_cast<std::int64_t>(layer_base + static_cast<std::size_t>(y) * nx));
+              s.cost[y] = dx * dx;
+            }
+            if (!any) continue;
+            s.envelope.run(ny, s.cost, s.best);
+            for (int y = 0; y < ny; ++y) s.tile[static_cast<std::size_t>(y) * kTileWidth + w] = s.line[s.best[y]];
           }
-          any = true;
-          const std::int64_t dx = x - (feature - static_cast<std::int64_t>(layer_base + static_cast<std::size_t>(y) * nx));
-          s.cost[y] = dx * dx;
+          for (int y = 0; y < ny; ++y)
+            std::copy_n(s.tile.data() + static_cast<std::size_t>(y) * kTileWidth, width,
+                        nearest_.data() + layer_base + static_cast<std::size_t>(y) * nx + x0);
         }
-        if (!any) continue;
-        s.envelope.run(ny, s.cost, s.best);
-        for (int y = 0; y < ny; ++y) s.tile[static_cast<std::size_t>(y) * kTileWidth + w] = s.line[s.best[y]];
-      }
-      for (int y = 0; y < ny; ++y)
-        std::copy_n(s.tile.data() + static_cast<std::size_t>(y) * kTileWidth, width,
-                    nearest_.data() + layer_base + static_cast<std::size_t>(y) * nx + x0);
-    }
-  }, stage(0.2, 0.55));
+      },
+      stage(0.2, 0.55));
 
   // Along z, row by row: the features lie in the same layer; their (x, y) give both the cost
   // and the horizontal distance the footprint masks need.
-  parallelFor(static_cast<std::size_t>(ny), workers, [&](std::size_t j) {
-    LineScratch s(longest);
-    const double inverse_nx = 1.0 / nx;
-    for (int x0 = 0; x0 < nx; x0 += kTileWidth) {
-      const int width = std::min(kTileWidth, nx - x0);
-      for (int z = 0; z < nz; ++z)
-        std::copy_n(nearest_.data() + z * layer + j * nx + x0, width, s.tile.data() + static_cast<std::size_t>(z) * kTileWidth);
-      for (int w = 0; w < width; ++w) {
-        const int x = x0 + w;
-        bool any = false;
-        for (int z = 0; z < nz; ++z) {
-          const std::int32_t feature = s.tile[static_cast<std::size_t>(z) * kTileWidth + w];
-          s.line[z] = feature;
-          std::uint16_t& horizontal = s.horizontal_tile[static_cast<std::size_t>(z) * kTileWidth + w];
-          if (feature < 0) {
-            s.cost[z] = kNoFeature;
-            horizontal = kHorizontalCap;
-            continue;
+  parallelFor(
+      static_cast<std::size_t>(ny), workers,
+      [&](std::size_t j) {
+        LineScratch s(longest);
+        const double inverse_nx = 1.0 / nx;
+        for (int x0 = 0; x0 < nx; x0 += kTileWidth) {
+          const int width = std::min(kTileWidth, nx - x0);
+          for (int z = 0; z < nz; ++z)
+            std::copy_n(nearest_.data() + z * layer + j * nx + x0, width,
+                        s.tile.data() + static_cast<std::size_t>(z) * kTileWidth);
+          for (int w = 0; w < width; ++w) {
+            const int x = x0 + w;
+            bool any = false;
+            for (int z = 0; z < nz; ++z) {
+              const std::int32_t feature = s.tile[static_cast<std::size_t>(z) * kTileWidth + w];
+              s.line[z] = feature;
+              std::uint16_t& horizontal = s.horizontal_tile[static_cast<std::size_t>(z) * kTileWidth + w];
+              if (feature < 0) {
+                s.cost[z] = kNoFeature;
+                horizontal = kHorizontalCap;
+                continue;
+              }
+              any = true;
+              // The feature's row within its layer, by a floating-point quotient corrected to exact.
+              const long within = feature - static_cast<long>(z * layer);
+              long fy = static_cast<long>(within * inverse_nx);
+              if (fy * nx > within) --fy;
+              if ((fy + 1) * nx <= within) ++fy;
+              const long dx = x - (within - fy * nx), dy = static_cast<long>(j) - fy;
+              const long squared = dx * dx + dy * dy;
+              s.cost[z] = squared;
+              horizontal = static_cast<std::uint16_t>(std::min<long>(squared, kHorizontalCap));
+            }
+            if (!any) continue;
+            s.envelope.run(nz, s.cost, s.best);
+            for (int z = 0; z < nz; ++z) s.tile[static_cast<std::size_t>(z) * kTileWidth + w] = s.line[s.best[z]];
           }
-          any = true;
-          // The feature's row within its layer, by a floating-point quotient corrected to exact.
-          const long within = feature - static_cast<long>(z * layer);
-          long fy = static_cast<long>(within * inverse_nx);
-          if (fy * nx > within) --fy;
-          if ((fy + 1) * nx <= within) ++fy;
-          const long dx = x - (within - fy * nx), dy = static_cast<long>(j) - fy;
-          const long squared = dx * dx + dy * dy;
-          s.cost[z] = squared;
-          horizontal = static_cast<std::uint16_t>(std::min<long>(squared, kHorizontalCap));
+          for (int z = 0; z < nz; ++z) {
+            std::copy_n(s.tile.data() + static_cast<std::size_t>(z) * kTileWidth, width,
+                        nearest_.data() + z * layer + j * nx + x0);
+            std::copy_n(s.horizontal_tile.data() + static_cast<std::size_t>(z) * kTileWidth, width,
+                        horizontal_.data() + z * layer + j * nx + x0);
+          }
         }
-        if (!any) continue;
-        s.envelope.run(nz, s.cost, s.best);
-        for (int z = 0; z < nz; ++z) s.tile[static_cast<std::size_t>(z) * kTileWidth + w] = s.line[s.best[z]];
-      }
-      for (int z = 0; z < nz; ++z) {
-        std::copy_n(s.tile.data() + static_cast<std::size_t>(z) * kTileWidth, width, nearest_.data() + z * layer + j * nx + x0);
-        std::copy_n(s.horizontal_tile.data() + static_cast<std::size_t>(z) * kTileWidth, width,
-                    horizontal_.data() + z * layer + j * nx + x0);
-      }
-    }
-  }, stage(0.55, 1.0));
+      },
+      stage(0.55, 1.0));
 }
 
 double DistanceField::boxDistance_m(const Eigen::Vector3d& point_m, std::int32_t voxel) const {
@@ -249,7 +266,8 @@ double DistanceField::lowerBound_m(const Eigen::Vector3d& point_m) const {
   if (feature < 0) return boundary;
   // The nearest blocked box to any point of this voxel is at least the centre-to-centre
   // distance minus both half diagonals.
-  const double centre_distance = (centreOf(feature) - centreOf(static_cast<std::int32_t>(frame_.linear(i, j, k)))).norm();
+  const double centre_distance =
+      (centreOf(feature) - centreOf(static_cast<std::int32_t>(frame_.linear(i, j, k)))).norm();
   const double half_diagonal = 0.5 * std::sqrt(3.0) * frame_.resolution_m();
   return std::min(boundary, std::max(0.0, centre_distance - 2.0 * half_diagonal));
 }

@@ -1,8 +1,8 @@
 #include "ceilplan/environment/environment.hpp"
 
-#include "ceilplan/environment/disc_area.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/environment/disc_area.hpp"
 
 #include <algorithm>
 #include <array>
@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kDenseStepVoxels = 0.1;  // checkPathDensely's step: finer than any planner's
-constexpr double kReachMargin_m = 1e-6;    // validReach_m stays this far short of a blocked voxel or the box
+constexpr double kReachMargin_m = 1e-6;   // validReach_m stays this far short of a blocked voxel or the box
 
 constexpr int kKeptGaps = 256;  // columns under a rotor disc: 9 for a 10" rotor at 0.1 m, 196 at 0.02 m
 
@@ -45,10 +45,14 @@ std::shared_ptr<const MapIndex> requireIndex(std::shared_ptr<const MapIndex> ind
 std::string Violation::describe() const {
   std::string where = "segment " + std::to_string(segment) + " at " + formatPoint(position_m, 3) + ": ";
   switch (kind) {
-    case ViolationKind::OutsideMap: return where + "the body centre lies outside the map";
-    case ViolationKind::Occupied: return where + "the vehicle (with its clearance margins) touches occupied space";
+    case ViolationKind::OutsideMap:
+      return where + "the body centre lies outside the map";
+    case ViolationKind::Occupied:
+      return where + "the vehicle (with its clearance margins) touches occupied space";
     case ViolationKind::Unknown:
-      return where + "the vehicle (with its clearance margins) touches unknown space, which the unknown-space policy keeps as an obstacle";
+      return where +
+             "the vehicle (with its clearance margins) touches unknown space, which the unknown-space policy keeps as "
+             "an obstacle";
   }
   return where;
 }
@@ -73,7 +77,10 @@ Environment::Environment(const OccupancyMap& map, VehicleGeometry vehicle, Envir
 Environment::Environment(const OccupancyMap& map, VehicleGeometry vehicle, EnvironmentOptions options,
                          const MapIndexOptions& index_options, const std::function<void(double)>& progress)
     : Environment((validated(vehicle), validateOptions(options),  // before the work starts
-                   MapIndex::build(map, index_options, [&](double f) { if (progress) progress(0.95 * f); })),
+                   MapIndex::build(map, index_options,
+                                   [&](double f) {
+                                     if (progress) progress(0.95 * f);
+                                   })),
                   vehicle, options, progress) {}
 
 void Environment::requireInside(const Eigen::Vector3d& point_m, const char* query) const {
@@ -82,8 +89,8 @@ void Environment::requireInside(const Eigen::Vector3d& point_m, const char* quer
   if (contains(point_m)) return;
   const Eigen::AlignedBox3d box = grid().frame().bounds();
   throw ceilplan::InputError(mapName() + ": " + query + " at " + formatPoint(point_m, 3) +
-                          ": the point lies outside the map, whose known voxels span " + formatPoint(box.min(), 3) +
-                          " to " + formatPoint(box.max(), 3));
+                             ": the point lies outside the map, whose known voxels span " + formatPoint(box.min(), 3) +
+                             " to " + formatPoint(box.max(), 3));
 }
 
 template <class Visit>
@@ -103,9 +110,10 @@ bool Environment::anyColumnUnderCylinder(const Eigen::Vector3d& body_m, Visit&& 
 }
 
 double Environment::columnGap(int i, int j, double z_m, Direction direction) const {
-  const ColumnIndex::Boundary boundary = direction == Direction::Up ? columns_->above(i, j, z_m) : columns_->below(i, j, z_m);
-  const bool surface = boundary.state == CellState::Occupied ||
-                       (boundary.state == CellState::Unknown && options_.unknown_is_surface);
+  const ColumnIndex::Boundary boundary =
+      direction == Direction::Up ? columns_->above(i, j, z_m) : columns_->below(i, j, z_m);
+  const bool surface =
+      boundary.state == CellState::Occupied || (boundary.state == CellState::Unknown && options_.unknown_is_surface);
   return surface ? std::abs(boundary.face_m - z_m) : kInfinity;
 }
 
@@ -225,7 +233,8 @@ std::optional<Violation> Environment::exactCylinderViolation(const Eigen::Vector
   anyColumnUnderCylinder(body_m, [&](int i, int j) {
     const auto state = columns_->firstBlocking(i, j, bottom, top, index_->unknownBlocks());
     if (state)
-      violation = Violation{0, body_m, *state == CellState::Occupied ? ViolationKind::Occupied : ViolationKind::Unknown};
+      violation =
+          Violation{0, body_m, *state == CellState::Occupied ? ViolationKind::Occupied : ViolationKind::Unknown};
     return state.has_value();
   });
   return violation;
@@ -263,7 +272,8 @@ std::optional<Violation> Environment::segmentViolation(const Eigen::Vector3d& fr
   return std::nullopt;
 }
 
-std::optional<Violation> Environment::motionViolation(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
+std::optional<Violation> Environment::motionViolation(const Eigen::Vector3d& from_m,
+                                                      const Eigen::Vector3d& to_m) const {
   return segmentViolation(from_m, to_m, options_.motion_step_voxels * grid().frame().resolution_m(), true);
 }
 
@@ -282,7 +292,8 @@ std::optional<Violation> Environment::checkPathDensely(const std::vector<Eigen::
 }
 
 bool Environment::assumesFree(const Eigen::Vector3d& body_m) const {
-  if (index_->unknownSpace().policy == UnknownPolicy::Occupied || !body_m.allFinite() || !contains(body_m)) return false;
+  if (index_->unknownSpace().policy == UnknownPolicy::Occupied || !body_m.allFinite() || !contains(body_m))
+    return false;
   const double bottom = body_m.z() + vehicle_.inflatedBottom_m();
   const double top = body_m.z() + vehicle_.inflatedTop_m();
   return anyColumnUnderCylinder(body_m, [&](int i, int j) { return index_->assumedFreeOverlaps(i, j, bottom, top); });

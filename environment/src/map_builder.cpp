@@ -1,9 +1,9 @@
 #include "ceilplan/environment/map_builder.hpp"
 
-#include "ceilplan/environment/distance_field.hpp"
-#include "ceilplan/environment/voxel_grid.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/core/parallel_for.hpp"
+#include "ceilplan/environment/distance_field.hpp"
+#include "ceilplan/environment/voxel_grid.hpp"
 
 #include "map_builder_checks.hpp"
 
@@ -27,8 +27,8 @@ void checkImportResolution(double resolution_m) {
 void requireFinitePoints(const std::vector<Eigen::Vector3d>& points_m, const char* what) {
   for (std::size_t i = 0; i < points_m.size(); ++i)
     if (!points_m[i].allFinite())
-      throw ceilplan::InputError(std::string(what) + " " + std::to_string(i) + " (counting from 0) has a non-finite coordinate " +
-                                 formatPoint(points_m[i]));
+      throw ceilplan::InputError(std::string(what) + " " + std::to_string(i) +
+                                 " (counting from 0) has a non-finite coordinate " + formatPoint(points_m[i]));
 }
 
 GridFrame importFrame(const Eigen::AlignedBox3d& data_m, double margin_m, double resolution_m, const CropBox& crop_m,
@@ -43,10 +43,11 @@ GridFrame importFrame(const Eigen::AlignedBox3d& data_m, double margin_m, double
     const double lo = std::floor(box_m.min()[axis] / resolution_m);
     const double hi = std::floor(box_m.max()[axis] / resolution_m) + 1.0;
     if (lo < -kKeyHalfRange || hi > kKeyHalfRange)
-      throw ceilplan::InputError("the data reach " + formatNumber(std::max(std::abs(box_m.min()[axis]), std::abs(box_m.max()[axis]))) +
-                                 " m from the origin on the " + std::string(1, "xyz"[axis]) + " axis, beyond what OctoMap holds at " +
-                                 formatNumber(resolution_m) + " m (" + formatNumber(kKeyHalfRange * resolution_m) +
-                                 " m); move the data near the origin (--crs does) or coarsen the resolution");
+      throw ceilplan::InputError(
+          "the data reach " + formatNumber(std::max(std::abs(box_m.min()[axis]), std::abs(box_m.max()[axis]))) +
+          " m from the origin on the " + std::string(1, "xyz"[axis]) + " axis, beyond what OctoMap holds at " +
+          formatNumber(resolution_m) + " m (" + formatNumber(kKeyHalfRange * resolution_m) +
+          " m); move the data near the origin (--crs does) or coarsen the resolution");
     origin[axis] = static_cast<int>(lo);
     size[axis] = static_cast<int>(hi - lo);
   }
@@ -137,16 +138,20 @@ void SensorOrigins::validate(std::size_t point_count) const {
                                std::to_string(origin_m.size()) + " origins");
   if (origin_m.empty()) throw ceilplan::InputError("sensor origins: no origin given");
   if (first_point.front() != 0)
-    throw ceilplan::InputError("sensor origins: the first scan must start at point 0, not " + std::to_string(first_point.front()));
+    throw ceilplan::InputError("sensor origins: the first scan must start at point 0, not " +
+                               std::to_string(first_point.front()));
   for (std::size_t s = 0; s < origin_m.size(); ++s) {
     if (!origin_m[s].allFinite())
-      throw ceilplan::InputError("sensor origins: scan " + std::to_string(s) + " has a non-finite origin " + formatPoint(origin_m[s]));
+      throw ceilplan::InputError("sensor origins: scan " + std::to_string(s) + " has a non-finite origin " +
+                                 formatPoint(origin_m[s]));
     if (first_point[s] >= point_count)
-      throw ceilplan::InputError("sensor origins: scan " + std::to_string(s) + " starts at point " + std::to_string(first_point[s]) +
-                                 " but the cloud has " + std::to_string(point_count) + " points");
+      throw ceilplan::InputError("sensor origins: scan " + std::to_string(s) + " starts at point " +
+                                 std::to_string(first_point[s]) + " but the cloud has " + std::to_string(point_count) +
+                                 " points");
     if (s > 0 && first_point[s] <= first_point[s - 1])
-      throw ceilplan::InputError("sensor origins: scan " + std::to_string(s) + " starts at point " + std::to_string(first_point[s]) +
-                                 ", not after scan " + std::to_string(s - 1) + " (" + std::to_string(first_point[s - 1]) + ")");
+      throw ceilplan::InputError("sensor origins: scan " + std::to_string(s) + " starts at point " +
+                                 std::to_string(first_point[s]) + ", not after scan " + std::to_string(s - 1) + " (" +
+                                 std::to_string(first_point[s - 1]) + ")");
   }
 }
 
@@ -199,7 +204,8 @@ BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const Sens
   const std::size_t scans = origins.origin_m.size();
   const auto scanOf = [&](std::size_t point) {
     return static_cast<std::size_t>(std::upper_bound(origins.first_point.begin(), origins.first_point.end(), point) -
-                                    origins.first_point.begin()) - 1;
+                                    origins.first_point.begin()) -
+           1;
   };
   const auto inRange = [&](std::size_t i, std::size_t scan) {
     return (points_m[i] - origins.origin_m[scan]).norm() <= max_range;
@@ -220,11 +226,11 @@ BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const Sens
     }
   }
   if (returns == 0)
-    throw ceilplan::InputError("no return lies within " +
-                               (std::isfinite(max_range) ? formatNumber(max_range) + " m of its origin"
-                                                         : std::string()) +
-                               (std::isfinite(max_range) && !crop.isEmpty() ? " and " : "") +
-                               (crop.isEmpty() ? std::string() : "the crop box" + detail::cropText(crop)));
+    throw ceilplan::InputError(
+        "no return lies within " +
+        (std::isfinite(max_range) ? formatNumber(max_range) + " m of its origin" : std::string()) +
+        (std::isfinite(max_range) && !crop.isEmpty() ? " and " : "") +
+        (crop.isEmpty() ? std::string() : "the crop box" + detail::cropText(crop)));
   for (const Eigen::Vector3d& origin : origins.origin_m) box.extend(origin);
   // Refused here, before anything is allocated.
   const GridFrame frame = detail::importFrame(box, 0.0, resolution, crop, "return");
@@ -297,15 +303,15 @@ BuiltMap carveFromScans(const std::vector<Eigen::Vector3d>& points_m, const Sens
   BuiltMap built;
   built.tree = toOcTree(grid);
   if (progress) progress(1.0);
-  built.free_space = "carved by ray casting from " + std::to_string(scans) + " sensor origin" + (scans == 1 ? "" : "s") +
-                     " (max range " + (std::isfinite(max_range) ? formatNumber(max_range) + " m" : std::string("none")) +
-                     ")" + detail::cropText(crop) + " along " + std::to_string(points_m.size()) + " ray" +
+  built.free_space = "carved by ray casting from " + std::to_string(scans) + " sensor origin" +
+                     (scans == 1 ? "" : "s") + " (max range " +
+                     (std::isfinite(max_range) ? formatNumber(max_range) + " m" : std::string("none")) + ")" +
+                     detail::cropText(crop) + " along " + std::to_string(points_m.size()) + " ray" +
                      (points_m.size() == 1 ? "" : "s") +
                      ": space a ray crossed is free, a voxel holding a return is occupied, space no ray crossed is "
                      "unknown: an obstacle for planning unless --unknown free or fill";
-  built.figures = {{"points", double(points_m.size())},
-                   {"scans", double(scans)},
-                   {"returns_within_range", double(within_range)}};
+  built.figures = {
+      {"points", double(points_m.size())}, {"scans", double(scans)}, {"returns_within_range", double(within_range)}};
   if (!crop.isEmpty()) built.figures.emplace_back("returns_in_crop", double(returns));
   detail::addVolumeFigures(built);
   return built;
@@ -323,7 +329,8 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
   detail::checkImportResolution(resolution);
   requirePoints(points_m);
   if (!(options.free_distance_m >= 0.0) || !std::isfinite(options.free_distance_m))
-    throw ceilplan::InputError("free distance " + formatNumber(options.free_distance_m) + " m must be a finite number >= 0");
+    throw ceilplan::InputError("free distance " + formatNumber(options.free_distance_m) +
+                               " m must be a finite number >= 0");
   validateCrop(options.crop_m);
   const CropBox& crop = options.crop_m;
   Eigen::AlignedBox3d box;
@@ -374,7 +381,8 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
               grid.set(i, j, k, CellState::Free);
           }
       },
-      progress ? std::function<void(double)>([&](double f) { progress(0.4 + 0.4 * f); }) : std::function<void(double)>());
+      progress ? std::function<void(double)>([&](double f) { progress(0.4 + 0.4 * f); })
+               : std::function<void(double)>());
 
   BuiltMap built;
   built.tree = toOcTree(grid);

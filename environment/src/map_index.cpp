@@ -26,7 +26,12 @@ VoxelGrid gridOf(const OccupancyMap& map, const std::function<void(double)>& pro
 MapIndex::MapIndex(const OccupancyMap& map, const MapIndexOptions& options, const std::function<void(double)>& progress)
     : map_name_(map.name()),
       unknown_(validated(options.unknown)),
-      grid_(gridOf(map, [&](double f) { if (progress) progress(0.15 * f); }, options.workers)) {
+      grid_(gridOf(
+          map,
+          [&](double f) {
+            if (progress) progress(0.15 * f);
+          },
+          options.workers)) {
   // Stages by their share of the time on the shipped scenes.
   if (progress) progress(0.15);
   const ColumnIndex raw(grid_, options.workers);
@@ -37,8 +42,9 @@ MapIndex::MapIndex(const OccupancyMap& map, const MapIndexOptions& options, cons
   assumed_runs_ = std::move(resolved.assumed_runs);
   summary_ = resolved.summary;
   if (progress) progress(0.3);
-  distance_ = std::make_unique<const DistanceField>(*columns_, unknownBlocks(), options.workers,
-                                                    [&](double f) { if (progress) progress(0.3 + 0.7 * f); });
+  distance_ = std::make_unique<const DistanceField>(*columns_, unknownBlocks(), options.workers, [&](double f) {
+    if (progress) progress(0.3 + 0.7 * f);
+  });
   if (progress) progress(1.0);
 }
 

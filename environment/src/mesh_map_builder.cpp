@@ -3,9 +3,9 @@
 
 #include "ceilplan/environment/map_builder.hpp"
 
-#include "ceilplan/environment/voxel_grid.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/core/parallel_for.hpp"
+#include "ceilplan/environment/voxel_grid.hpp"
 
 #include "map_builder_checks.hpp"
 
@@ -64,8 +64,8 @@ void validateMesh(const TriangleMesh& mesh) {
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (std::size_t v : mesh.triangles[t])
       if (v >= mesh.vertices_m.size())
-        throw ceilplan::InputError("triangle " + std::to_string(t) + " names vertex " + std::to_string(v) + " but the mesh has " +
-                                   std::to_string(mesh.vertices_m.size()));
+        throw ceilplan::InputError("triangle " + std::to_string(t) + " names vertex " + std::to_string(v) +
+                                   " but the mesh has " + std::to_string(mesh.vertices_m.size()));
 }
 
 // Marks every voxel a triangle touches occupied; layers of the grid are shared out between threads.
@@ -80,8 +80,10 @@ std::size_t voxeliseSurface(const TriangleMesh& mesh, VoxelGrid& grid, const std
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     for (int axis = 0; axis < 3; ++axis) {
-      const double lo = std::min({mesh.vertices_m[tri[0]][axis], mesh.vertices_m[tri[1]][axis], mesh.vertices_m[tri[2]][axis]});
-      const double hi = std::max({mesh.vertices_m[tri[0]][axis], mesh.vertices_m[tri[1]][axis], mesh.vertices_m[tri[2]][axis]});
+      const double lo =
+          std::min({mesh.vertices_m[tri[0]][axis], mesh.vertices_m[tri[1]][axis], mesh.vertices_m[tri[2]][axis]});
+      const double hi =
+          std::max({mesh.vertices_m[tri[0]][axis], mesh.vertices_m[tri[1]][axis], mesh.vertices_m[tri[2]][axis]});
       // One voxel of slack each way: a vertex exactly on a face touches the voxel below it too.
       ranges[t].lo[axis] = std::max(frame.indexOf(axis, lo) - 1, 0);
       ranges[t].hi[axis] = std::min(frame.indexOf(axis, hi) + 1, frame.size()[axis] - 1);
@@ -100,7 +102,8 @@ std::size_t voxeliseSurface(const TriangleMesh& mesh, VoxelGrid& grid, const std
           const int k0 = std::max(range.lo[2], k_begin), k1 = std::min(range.hi[2], k_end - 1);
           if (k0 > k1) continue;
           const auto& tri = mesh.triangles[t];
-          const Eigen::Vector3d &a = mesh.vertices_m[tri[0]], &b = mesh.vertices_m[tri[1]], &c = mesh.vertices_m[tri[2]];
+          const Eigen::Vector3d &a = mesh.vertices_m[tri[0]], &b = mesh.vertices_m[tri[1]],
+                                &c = mesh.vertices_m[tri[2]];
           for (int k = k0; k <= k1; ++k)
             for (int j = range.lo[1]; j <= range.hi[1]; ++j)
               for (int i = range.lo[0]; i <= range.hi[0]; ++i) {
@@ -258,7 +261,8 @@ MeshTopology meshTopology(const TriangleMesh& mesh) {
   return topology;
 }
 
-BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& options, const std::function<void(double)>& progress) {
+BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& options,
+                     const std::function<void(double)>& progress) {
   const double resolution = options.resolution_m;
   detail::checkImportResolution(resolution);
   validateMesh(mesh);
@@ -271,17 +275,18 @@ BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& opti
 
   MeshInterior interior = options.interior;
   if (interior == MeshInterior::Automatic)
-    interior = !topology.closed() ? MeshInterior::Shell
+    interior = !topology.closed()                                                  ? MeshInterior::Shell
                : topology.consistently_oriented && topology.signed_volume_m3 < 0.0 ? MeshInterior::Hollow
                                                                                    : MeshInterior::Solid;
   VoxelGrid grid(frame);
   const std::size_t surface = voxeliseSurface(
-      mesh, grid, progress ? std::function<void(double)>([&](double f) { progress(0.6 * f); }) : std::function<void(double)>());
+      mesh, grid,
+      progress ? std::function<void(double)>([&](double f) { progress(0.6 * f); }) : std::function<void(double)>());
   // A crop that cuts a closed mesh puts some of the box's faces inside it: the flood starts only
   // from the faces outside.
   const bool cut = !options.crop_m.isEmpty() && topology.closed() &&
-                   !options.crop_m.contains(Eigen::AlignedBox3d(box.min().array() - options.margin_m,
-                                                                box.max().array() + options.margin_m));
+                   !options.crop_m.contains(
+                       Eigen::AlignedBox3d(box.min().array() - options.margin_m, box.max().array() + options.margin_m));
   const std::size_t enclosed = floodFromOutside(grid, cut ? boundaryVoxelsInside(mesh, frame) : std::vector<bool>());
   if (progress) progress(0.8);
 
@@ -308,9 +313,9 @@ BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& opti
   switch (interior) {
     case MeshInterior::Shell:
       case_text = ": thin shell, both sides free";
-      enclosed_text = enclosed == 0 ? "it encloses no space at " + formatNumber(resolution) + " m"
-                                    : "the " + enclosed_volume + " it encloses at " + formatNumber(resolution) +
-                                          " m is free too";
+      enclosed_text = enclosed == 0
+                          ? "it encloses no space at " + formatNumber(resolution) + " m"
+                          : "the " + enclosed_volume + " it encloses at " + formatNumber(resolution) + " m is free too";
       rest_text = "the rest of " + around + " is free: planning may use both sides of every surface";
       break;
     case MeshInterior::Solid:
@@ -326,8 +331,8 @@ BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& opti
       rest_text = "the rest of " + around +
                   " stays unknown (hollow interior): an obstacle for planning unless --unknown free or fill";
   }
-  built.free_space = topologyText(topology) + case_text +
-                     "; surface voxelised (triangle-box overlap, occupied); " + enclosed_text + "; " + rest_text;
+  built.free_space = topologyText(topology) + case_text + "; surface voxelised (triangle-box overlap, occupied); " +
+                     enclosed_text + "; " + rest_text;
   built.figures = {{"triangles", double(mesh.triangles.size())},
                    {"boundary_edges", double(topology.boundary_edges)},
                    {"surface_voxels", double(surface)},

@@ -118,8 +118,7 @@ void checkNodeStream(const std::string& bytes, const Header& header, const std::
   while (!pending_depths.empty()) {
     const int depth = pending_depths.back();
     pending_depths.pop_back();
-    if (bytes.size() - position < node_bytes)
-      fail(name, "truncated OctoMap file: the tree data ends early");
+    if (bytes.size() - position < node_bytes) fail(name, "truncated OctoMap file: the tree data ends early");
     ++nodes;
     int inner_children = 0;
     int children = 0;
@@ -132,7 +131,7 @@ void checkNodeStream(const std::string& bytes, const Header& header, const std::
           if (pair == 3) ++inner_children;  // both bits: the child has children of its own
         }
       }
-      nodes += children;  // leaves are encoded in their parent's bits
+      nodes += children;        // leaves are encoded in their parent's bits
       nodes -= inner_children;  // inner children count when their own record is read
     } else {
       float value;

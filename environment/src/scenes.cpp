@@ -56,9 +56,9 @@ void boulders(VoxelGrid& grid, SceneRandom& random, int count = 8, double x_max 
 VoxelGrid bridge(double resolution_m, SceneRandom& random, double length) {
   const double end = length + 6;
   VoxelGrid grid = emptyGrid(resolution_m, Vector3d(-6, -10, -0.4), Vector3d(end, 10, 7.0));
-  box(grid, -6, end, -10, 10, 0.0, 7.0, kFree);              // what the scan from below saw
-  box(grid, -2, length + 2, -5.5, 5.5, 6.3, 7.0, kUnknown);  // above the deck: hidden from below
-  box(grid, -6, end, -10, 10, -0.4, 0.0, kOccupied);         // ground
+  box(grid, -6, end, -10, 10, 0.0, 7.0, kFree);               // what the scan from below saw
+  box(grid, -2, length + 2, -5.5, 5.5, 6.3, 7.0, kUnknown);   // above the deck: hidden from below
+  box(grid, -6, end, -10, 10, -0.4, 0.0, kOccupied);          // ground
   box(grid, -2, length + 2, -5.5, 5.5, 6.0, 6.3, kOccupied);  // deck slab
   for (const double x : {-2.0, length}) box(grid, x, x + 2, -5.5, 5.5, 0.0, 6.0, kOccupied);  // abutments
   const double girders[4] = {-4.2, -1.4, 1.4, 4.2};
@@ -69,10 +69,11 @@ VoxelGrid bridge(double resolution_m, SceneRandom& random, double length) {
   const auto pier = [length](int x) { return x % 16 == 0 && x <= length - 16; };
   for (int x = 4; x <= length - 4; x += 4) {
     if (pier(x)) continue;  // the pier caps stand there
-    for (int g = 0; g < 3; ++g) box(grid, x - 0.1, x + 0.1, girders[g] + 0.2, girders[g + 1] - 0.2, 5.4, 6.0, kOccupied);
+    for (int g = 0; g < 3; ++g)
+      box(grid, x - 0.1, x + 0.1, girders[g] + 0.2, girders[g + 1] - 0.2, 5.4, 6.0, kOccupied);
   }
   for (int x = 16; pier(x); x += 16) {
-    box(grid, x - 0.6, x + 0.6, -5.0, 5.0, 4.2, 5.0, kOccupied);  // pier cap
+    box(grid, x - 0.6, x + 0.6, -5.0, 5.0, 4.2, 5.0, kOccupied);                                            // pier cap
     for (const double y : {-1.4, 1.4}) box(grid, x - 0.2, x + 0.2, y - 0.2, y + 0.2, 5.0, 5.2, kOccupied);  // bearings
     for (const double y : {-2.5, 2.5}) box(grid, x - 0.5, x + 0.5, y - 0.5, y + 0.5, 0.0, 4.2, kOccupied);  // columns
   }
@@ -94,10 +95,14 @@ VoxelGrid open(double resolution_m, SceneRandom& random) {
 VoxelGrid tunnel(double resolution_m, SceneRandom& random) {
   VoxelGrid grid = emptyGrid(resolution_m, Vector3d(-6, -8, -0.4), Vector3d(46, 8, 8.0));
   const GridFrame& frame = grid.frame();
-  box(grid, -6, 46, -8, 8, 0.0, 7.6, kFree);  // the approaches, seen from the road
+  box(grid, -6, 46, -8, 8, 0.0, 7.6, kFree);    // the approaches, seen from the road
   box(grid, 0, 40, -8, 8, 0.0, 8.0, kUnknown);  // rock around the bore, unseen
-  const auto bore = [](double y, double z) { return z >= 0 && (z < 3 ? std::abs(y) < 4 : y * y + (z - 3) * (z - 3) < 16); };
-  const auto lining = [](double y, double z) { return z >= 0 && (z < 3 ? std::abs(y) < 4.4 : y * y + (z - 3) * (z - 3) < 4.4 * 4.4); };
+  const auto bore = [](double y, double z) {
+    return z >= 0 && (z < 3 ? std::abs(y) < 4 : y * y + (z - 3) * (z - 3) < 16);
+  };
+  const auto lining = [](double y, double z) {
+    return z >= 0 && (z < 3 ? std::abs(y) < 4.4 : y * y + (z - 3) * (z - 3) < 4.4 * 4.4);
+  };
   for (int k = 0; k < frame.size()[2]; ++k)
     for (int j = 0; j < frame.size()[1]; ++j)
       for (int i = 0; i < frame.size()[0]; ++i) {
@@ -110,10 +115,10 @@ VoxelGrid tunnel(double resolution_m, SceneRandom& random) {
           grid.set(i, j, k, kOccupied);
         }
       }
-  box(grid, -6, 46, -8, 8, -0.4, 0.0, kOccupied);                   // road and ground
-  box(grid, 0.4, 39.6, -4.0, -3.7, 2.4, 2.5, kOccupied);            // cable tray on the left wall
+  box(grid, -6, 46, -8, 8, -0.4, 0.0, kOccupied);         // road and ground
+  box(grid, 0.4, 39.6, -4.0, -3.7, 2.4, 2.5, kOccupied);  // cable tray on the left wall
   for (double x = random.decimetres(2, 4); x < 38; x += random.decimetres(5, 7))
-    box(grid, x, x + 0.6, -1.5, -0.9, 6.4, 6.9, kOccupied);         // lamps beside the crown
+    box(grid, x, x + 0.6, -1.5, -0.9, 6.4, 6.9, kOccupied);  // lamps beside the crown
   return grid;
 }
 
@@ -167,15 +172,20 @@ VoxelGrid generateScene(Scene scene, const SceneOptions& options) {
     throw ceilplan::InputError("scene resolution must lie between 0.02 and 1 m, got " + formatNumber(resolution_m));
   const double length = options.bridge_length_m;
   if (!(length >= 16.0 && length <= 2000.0) || std::abs(length / 4.0 - std::round(length / 4.0)) > 1e-9)
-    throw ceilplan::InputError("bridge length must be a multiple of 4 m between 16 and 2000 m, got " + formatNumber(length));
+    throw ceilplan::InputError("bridge length must be a multiple of 4 m between 16 and 2000 m, got " +
+                               formatNumber(length));
   if (scene != Scene::Bridge && length != kShippedBridgeLength_m)
     throw ceilplan::InputError("a bridge length applies only to the bridge scene");
   SceneRandom random(options.seed);
   switch (scene) {
-    case Scene::Bridge: return bridge(resolution_m, random, std::round(length));
-    case Scene::Tunnel: return tunnel(resolution_m, random);
-    case Scene::Warehouse: return warehouse(resolution_m, random);
-    case Scene::Open: return open(resolution_m, random);
+    case Scene::Bridge:
+      return bridge(resolution_m, random, std::round(length));
+    case Scene::Tunnel:
+      return tunnel(resolution_m, random);
+    case Scene::Warehouse:
+      return warehouse(resolution_m, random);
+    case Scene::Open:
+      return open(resolution_m, random);
   }
   throw ceilplan::InputError("unknown scene");
 }

@@ -40,7 +40,9 @@ class DisjointSets {
   std::vector<std::uint32_t> parent_;
 };
 
-bool inGridUnknown(const Run& run, int size_z) { return run.state == CellState::Unknown && run.lo >= 0 && run.hi <= size_z; }
+bool inGridUnknown(const Run& run, int size_z) {
+  return run.state == CellState::Unknown && run.lo >= 0 && run.hi <= size_z;
+}
 
 // Whether the column runs [begin, end) leave a free voxel in [lo, hi).
 bool leavesFree(const Run* begin, const Run* end, std::int32_t lo, std::int32_t hi) {
@@ -105,8 +107,8 @@ class RegionLabelling {
           region.voxels += static_cast<std::uint64_t>(run->hi - run->lo);
           region.touches_box = region.touches_box || edge || run->lo == 0 || run->hi == size_z;
           // Free voxels directly below or above, in the same column.
-          region.touches_free = region.touches_free || free_beside_[id] || run->lo > (run - 1)->hi ||
-                                run->hi < (run + 1)->lo;
+          region.touches_free =
+              region.touches_free || free_beside_[id] || run->lo > (run - 1)->hi || run->hi < (run + 1)->lo;
         }
       }
     return regions;
@@ -136,8 +138,10 @@ class RegionLabelling {
         continue;
       }
       if (a->lo <= b->hi && b->lo <= a->hi) sets.unite(ia, ib);
-      if (a->hi < b->hi) ++a;
-      else ++b;
+      if (a->hi < b->hi)
+        ++a;
+      else
+        ++b;
     }
   }
 
@@ -154,8 +158,8 @@ class RegionLabelling {
   GridFrame frame_;
   std::vector<std::uint32_t> run_id_;  // per raw run: its index among the in-grid unknown runs, or kNone
   std::uint32_t count_ = 0;
-  std::vector<bool> free_beside_;      // per unknown run: a face neighbour in the next column is free
-  std::vector<std::uint32_t> root_;    // per unknown run: its region's root
+  std::vector<bool> free_beside_;    // per unknown run: a face neighbour in the next column is free
+  std::vector<std::uint32_t> root_;  // per unknown run: its region's root
 };
 
 }  // namespace

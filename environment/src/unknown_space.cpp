@@ -9,8 +9,8 @@ namespace ceilplan::environment {
 
 void UnknownSpace::validate() const {
   if (!(fill_max_m > 0.0 && fill_max_m <= kMaxFill_m))
-    throw ceilplan::InputError("unknown space: the fill size must be a number of metres in (0, " + formatNumber(kMaxFill_m) +
-                               "], got " + formatNumber(fill_max_m));
+    throw ceilplan::InputError("unknown space: the fill size must be a number of metres in (0, " +
+                               formatNumber(kMaxFill_m) + "], got " + formatNumber(fill_max_m));
 }
 
 std::string UnknownSpace::describe() const {
@@ -27,9 +27,12 @@ UnknownPolicy unknownPolicyFromName(const std::string& name) {
 
 std::string unknownPolicyName(UnknownPolicy policy) {
   switch (policy) {
-    case UnknownPolicy::Occupied: return "occupied";
-    case UnknownPolicy::Free: return "free";
-    case UnknownPolicy::Fill: return "fill";
+    case UnknownPolicy::Occupied:
+      return "occupied";
+    case UnknownPolicy::Free:
+      return "free";
+    case UnknownPolicy::Fill:
+      return "fill";
   }
   return "occupied";
 }

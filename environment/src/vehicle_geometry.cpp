@@ -1,6 +1,6 @@
 #include "ceilplan/environment/vehicle_geometry.hpp"
-#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -17,14 +17,14 @@ void requirePositive(double value, const char* field) {
   requireFinite(value, field);
   if (value <= 0.0)
     throw ceilplan::InputError(std::string("vehicle geometry: ") + field + " must be positive, got " +
-                                formatNumber(value));
+                               formatNumber(value));
 }
 
 void requireNonNegative(double value, const char* field) {
   requireFinite(value, field);
   if (value < 0.0)
     throw ceilplan::InputError(std::string("vehicle geometry: ") + field + " must not be negative, got " +
-                                formatNumber(value));
+                               formatNumber(value));
 }
 
 }  // namespace
@@ -48,8 +48,7 @@ void VehicleGeometry::validate() const {
 
 std::vector<Eigen::Vector2d> rotorPositions(RotorLayout layout, int count, double arm_length_m) {
   if (count < 1 || count > 16)
-    throw ceilplan::InputError("vehicle geometry: rotors.count must be between 1 and 16, got " +
-                                std::to_string(count));
+    throw ceilplan::InputError("vehicle geometry: rotors.count must be between 1 and 16, got " + std::to_string(count));
   requirePositive(arm_length_m, "rotors.arm_length_m");
   const double step = 2.0 * M_PI / count;
   const double first = layout == RotorLayout::X ? step / 2.0 : 0.0;

@@ -27,9 +27,9 @@ Index3 checkedSize(const Index3& size) {
     count *= static_cast<std::size_t>(size[axis]);
     if (count > VoxelGrid::kMaxVoxels)
       throw ceilplan::InputError("the map's known voxels span a box of " + std::to_string(size[0]) + " x " +
-                                  std::to_string(size[1]) + " x " + std::to_string(size[2]) +
-                                  " voxels, more than ceilplan indexes (" + std::to_string(VoxelGrid::kMaxVoxels) +
-                                  "); crop the map or coarsen its resolution");
+                                 std::to_string(size[1]) + " x " + std::to_string(size[2]) +
+                                 " voxels, more than ceilplan indexes (" + std::to_string(VoxelGrid::kMaxVoxels) +
+                                 "); crop the map or coarsen its resolution");
   }
   return size;
 }
@@ -145,17 +145,19 @@ VoxelGrid VoxelGrid::fromTree(const octomap::OcTree& tree, const std::function<v
                            Index3{hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}));
   // Leaves are disjoint, so threads writing different leaves never share a voxel.
   const std::size_t chunk = 1024;
-  parallelFor((leaves.size() + chunk - 1) / chunk, workers, [&](std::size_t c) {
-    for (std::size_t n = c * chunk; n < std::min(leaves.size(), (c + 1) * chunk); ++n) {
-      const Leaf& leaf = leaves[n];
-      const int i0 = leaf.corner[0] - lo[0], j0 = leaf.corner[1] - lo[1], k0 = leaf.corner[2] - lo[2];
-      for (int k = k0; k < k0 + leaf.width; ++k)
-        for (int j = j0; j < j0 + leaf.width; ++j) {
-          CellState* row = grid.cells_.data() + grid.frame_.linear(i0, j, k);
-          std::fill(row, row + leaf.width, leaf.state);
-        }
-    }
-  }, progress);
+  parallelFor((leaves.size() + chunk - 1) / chunk, workers,
+              [&](std::size_t c) {
+                for (std::size_t n = c * chunk; n < std::min(leaves.size(), (c + 1) * chunk); ++n) {
+                  const Leaf& leaf = leaves[n];
+                  const int i0 = leaf.corner[0] - lo[0], j0 = leaf.corner[1] - lo[1], k0 = leaf.corner[2] - lo[2];
+                  for (int k = k0; k < k0 + leaf.width; ++k)
+                    for (int j = j0; j < j0 + leaf.width; ++j) {
+                      CellState* row = grid.cells_.data() + grid.frame_.linear(i0, j, k);
+                      std::fill(row, row + leaf.width, leaf.state);
+                    }
+                }
+              },
+              progress);
   return grid;
 }
 

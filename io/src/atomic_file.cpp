@@ -19,8 +19,9 @@ namespace {
 // before the stream's work), never "Success".
 [[noreturn]] void writeFailed(const std::filesystem::path& path) {
   const int error = errno;
-  throw ceilplan::Error("cannot write " + printableText(finalPathOf(path).string(), 256) + ": " +
-                        (error != 0 ? std::generic_category().message(error) : std::string("the write failed (disk full?)")));
+  throw ceilplan::Error(
+      "cannot write " + printableText(finalPathOf(path).string(), 256) + ": " +
+      (error != 0 ? std::generic_category().message(error) : std::string("the write failed (disk full?)")));
 }
 
 }  // namespace
@@ -33,8 +34,7 @@ void writeAtomically(const std::filesystem::path& path,
   output.commit();
 }
 
-void writeTextAtomically(const std::filesystem::path& path,
-                         const std::function<void(std::ostream& out)>& write) {
+void writeTextAtomically(const std::filesystem::path& path, const std::function<void(std::ostream& out)>& write) {
   writeAtomically(path, [&](const std::filesystem::path& temporary) {
     errno = 0;
     std::ofstream out(temporary);

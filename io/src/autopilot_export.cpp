@@ -2,8 +2,8 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
-#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/atomic_file.hpp"
+#include "ceilplan/io/json_values.hpp"
 
 #include <GeographicLib/LocalCartesian.hpp>
 
@@ -27,7 +27,8 @@ void requireNonNegative(double value, const std::string& what) {
 const GeodeticOrigin& checkedOrigin(const AutopilotMission& mission) {
   if (!mission.origin)
     throw ceilplan::InputError(
-        "cannot export to an autopilot without the map's geodetic origin: add origin: {lat, lon, alt} to the mission file");
+        "cannot export to an autopilot without the map's geodetic origin: add origin: {lat, lon, alt} to the mission "
+        "file");
   mission.origin->validate();
   if (mission.waypoints.empty()) throw ceilplan::InputError("cannot export a mission without waypoints");
   mission.validate();
@@ -74,7 +75,8 @@ GlobalMission toGlobal(const AutopilotMission& mission) {
     const ExportWaypoint& w = mission.waypoints[k];
     const double speed = mission.speedInto_m_s(k);
     if (!speed_set || std::abs(speed - *speed_set) >= kSpeedStep_m_s) {
-      global.items.push_back({mav::kDoChangeSpeed, mav::kFrameMission, {mav::kSpeedTypeGroundSpeed, speed, -1, 0, 0, 0, 0}});
+      global.items.push_back(
+          {mav::kDoChangeSpeed, mav::kFrameMission, {mav::kSpeedTypeGroundSpeed, speed, -1, 0, 0, 0, 0}});
       speed_set = speed;
     }
     if (w.gimbal_pitch_deg && pitch_set != pitches[k]) {
@@ -86,7 +88,8 @@ GlobalMission toGlobal(const AutopilotMission& mission) {
     // The last waypoint of a route that ends at home: above home at the landing height, then down.
     const bool last = k + 1 == mission.waypoints.size();
     const Eigen::Vector3d flown_m =
-        last && lands ? Eigen::Vector3d(mission.home_m + mission.landingHeight_m() * Eigen::Vector3d::UnitZ()) : w.position_m;
+        last && lands ? Eigen::Vector3d(mission.home_m + mission.landingHeight_m() * Eigen::Vector3d::UnitZ())
+                      : w.position_m;
     const Eigen::Vector3d position = toGeodetic(origin, flown_m);
     global.items.push_back({mav::kNavWaypoint,
                             mav::kFrameGlobalRelativeAlt,
@@ -107,11 +110,14 @@ GlobalMission toGlobal(const AutopilotMission& mission) {
   return global;
 }
 
-nlohmann::json numberOrNull(double value) { return std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value); }
+nlohmann::json numberOrNull(double value) {
+  return std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value);
+}
 
 }  // namespace
 
-AutopilotMission autopilotMission(const mission::SortieRoute& route, const GeodeticOrigin& origin, Autopilot autopilot) {
+AutopilotMission autopilotMission(const mission::SortieRoute& route, const GeodeticOrigin& origin,
+                                  Autopilot autopilot) {
   AutopilotMission mission;
   static_cast<mission::SortieRoute&>(mission) = route;
   mission.origin = origin;
@@ -164,7 +170,8 @@ nlohmann::json qgcPlan(const AutopilotMission& mission) {
           // Ignored by QGroundControl; where the map frame lies, for setting the EKF origin
           // without GNSS (docs/flying.md).
           {"ceilplan",
-           {{"ekf_origin", {{"lat_deg", origin.latitude_deg}, {"lon_deg", origin.longitude_deg}, {"alt_m", origin.altitude_m}}},
+           {{"ekf_origin",
+             {{"lat_deg", origin.latitude_deg}, {"lon_deg", origin.longitude_deg}, {"alt_m", origin.altitude_m}}},
             {"map_frame", "ENU: x east, y north, z up, metres from ekf_origin"},
             {"sortie", mission.sortie}}}};
 }

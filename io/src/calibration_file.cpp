@@ -17,12 +17,9 @@ using Field = double energy::CalibrationSample::*;
 // The columns, in the order the error message lists them.
 const std::vector<std::pair<std::string, Field>>& columns() {
   static const std::vector<std::pair<std::string, Field>> known = {
-      {"gap_m", &energy::CalibrationSample::ceiling_gap_m},
-      {"coverage", &energy::CalibrationSample::coverage},
-      {"ground_gap_m", &energy::CalibrationSample::ground_gap_m},
-      {"speed_m_s", &energy::CalibrationSample::speed_m_s},
-      {"climb_m_s", &energy::CalibrationSample::climb_m_s},
-      {"soc", &energy::CalibrationSample::soc},
+      {"gap_m", &energy::CalibrationSample::ceiling_gap_m},       {"coverage", &energy::CalibrationSample::coverage},
+      {"ground_gap_m", &energy::CalibrationSample::ground_gap_m}, {"speed_m_s", &energy::CalibrationSample::speed_m_s},
+      {"climb_m_s", &energy::CalibrationSample::climb_m_s},       {"soc", &energy::CalibrationSample::soc},
       {"current_a", &energy::CalibrationSample::current_a}};
   return known;
 }
@@ -62,9 +59,12 @@ nlohmann::json calibrationReportJson(const std::filesystem::path& data, std::siz
                       {"allowed_max", f.upper},
                       {"start", f.start},
                       {"at_bound", f.atBound()}});
-  return {{"data", data.string()},         {"samples", samples},
-          {"rmse_a", result.rmse_a},       {"max_abs_error_a", result.max_abs_error_a},
-          {"evaluations", result.evaluations}, {"fitted", fitted}};
+  return {{"data", data.string()},
+          {"samples", samples},
+          {"rmse_a", result.rmse_a},
+          {"max_abs_error_a", result.max_abs_error_a},
+          {"evaluations", result.evaluations},
+          {"fitted", fitted}};
 }
 
 std::string calibratedVehicleComment(const std::filesystem::path& data, std::size_t samples,

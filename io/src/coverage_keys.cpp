@@ -1,7 +1,7 @@
 #include "ceilplan/io/coverage_keys.hpp"
 
-#include "ceilplan/io/yaml_fields.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/io/yaml_fields.hpp"
 
 #include <limits>
 #include <set>
@@ -29,9 +29,12 @@ mission::FaceSet readFaces(const YAML::Node& node, const std::string& path) {
   for (std::size_t k = 0; k < node.size(); ++k) {
     const std::string item_path = path + "[" + std::to_string(k) + "]";
     const std::string kind = text(node[k], item_path);
-    if (kind == "down") faces.down = true;
-    else if (kind == "side") faces.side = true;
-    else if (kind == "up") faces.up = true;
+    if (kind == "down")
+      faces.down = true;
+    else if (kind == "side")
+      faces.side = true;
+    else if (kind == "up")
+      faces.up = true;
     else
       throw ceilplan::InputError("'" + item_path + "' is '" + kind + "', not a face kind (did you mean '" +
                                  nearestKey(kind, kinds) + "'?); choose down, side or up");
@@ -47,8 +50,9 @@ mission::RegionShape readShape(const YAML::Node& node, const std::string& path) 
   if (box) {
     const std::string box_path = keyPath(path, "box");
     requireKnownKeys(node["box"], {"min", "max"}, box_path);
-    return mission::RegionShape::makeBox(point3(requiredKey(node["box"], "min", box_path), box_path + ".min", kMaxPointCoordinate_m),
-                                         point3(requiredKey(node["box"], "max", box_path), box_path + ".max", kMaxPointCoordinate_m));
+    return mission::RegionShape::makeBox(
+        point3(requiredKey(node["box"], "min", box_path), box_path + ".min", kMaxPointCoordinate_m),
+        point3(requiredKey(node["box"], "max", box_path), box_path + ".max", kMaxPointCoordinate_m));
   }
   const std::string prism_path = keyPath(path, "prism");
   requireKnownKeys(node["prism"], {"polygon", "z"}, prism_path);
@@ -57,12 +61,12 @@ mission::RegionShape readShape(const YAML::Node& node, const std::string& path) 
   if (!polygon.IsSequence()) throw ceilplan::InputError("'" + polygon_path + "' must be a list of [x, y] vertices");
   std::vector<Eigen::Vector2d> vertices;
   for (std::size_t k = 0; k < polygon.size(); ++k) {
-    const std::vector<double> xy =
-        numbers(polygon[k], polygon_path + "[" + std::to_string(k) + "]", 2, -kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
+    const std::vector<double> xy = numbers(polygon[k], polygon_path + "[" + std::to_string(k) + "]", 2,
+                                           -kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
     vertices.emplace_back(xy[0], xy[1]);
   }
-  const std::vector<double> z = numbers(requiredKey(node["prism"], "z", prism_path), prism_path + ".z", 2, -kMaxPointCoordinate_m,
-                                        kMaxPointCoordinate_m, "m");
+  const std::vector<double> z = numbers(requiredKey(node["prism"], "z", prism_path), prism_path + ".z", 2,
+                                        -kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
   return mission::RegionShape::makePrism(std::move(vertices), z[0], z[1]);
 }
 
@@ -94,10 +98,11 @@ const std::vector<std::string>& coverageKeyNames() {
 }
 
 mission::Camera readCamera(const YAML::Node& node, const std::string& path) {
-  requireKnownKeys(node,
-                   {"preset", "sensor_width_mm", "sensor_height_mm", "image_width_px", "image_height_px", "focal_length_mm",
-                    "mount_offset_m", "gimbal_pitch_deg", "min_focus_m", "min_photo_interval_s", "capture"},
-                   path);
+  requireKnownKeys(
+      node,
+      {"preset", "sensor_width_mm", "sensor_height_mm", "image_width_px", "image_height_px", "focal_length_mm",
+       "mount_offset_m", "gimbal_pitch_deg", "min_focus_m", "min_photo_interval_s", "capture"},
+      path);
   mission::Camera camera;
   if (node["preset"]) {
     const std::string name = text(node["preset"], keyPath(path, "preset"));
@@ -106,13 +111,14 @@ mission::Camera readCamera(const YAML::Node& node, const std::string& path) {
     if (std::find(names.begin(), names.end(), name) == names.end()) {
       std::string list;
       for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-      throw ceilplan::InputError("'" + keyPath(path, "preset") + "' is '" + name + "', no shipped camera (did you mean '" +
-                                 nearestKey(name, names) + "'?); presets: " + list);
+      throw ceilplan::InputError("'" + keyPath(path, "preset") + "' is '" + name +
+                                 "', no shipped camera (did you mean '" + nearestKey(name, names) +
+                                 "'?); presets: " + list);
     }
     camera = mission::cameraPreset(name).camera;
   } else {
-    for (const char* key : {"sensor_width_mm", "sensor_height_mm", "image_width_px", "image_height_px", "focal_length_mm",
-                            "gimbal_pitch_deg", "min_focus_m"})
+    for (const char* key : {"sensor_width_mm", "sensor_height_mm", "image_width_px", "image_height_px",
+                            "focal_length_mm", "gimbal_pitch_deg", "min_focus_m"})
       requiredKey(node, key, path, "or give 'preset'");
   }
   const auto number = [&](const char* key, double& field) {
@@ -130,7 +136,8 @@ mission::Camera readCamera(const YAML::Node& node, const std::string& path) {
   number("min_photo_interval_s", camera.min_photo_interval_s);
   if (node["mount_offset_m"]) camera.mount_offset_m = point3(node["mount_offset_m"], keyPath(path, "mount_offset_m"));
   if (node["gimbal_pitch_deg"]) {
-    const std::vector<double> pitch = numbers(node["gimbal_pitch_deg"], keyPath(path, "gimbal_pitch_deg"), 2, -kAny, kAny, "deg");
+    const std::vector<double> pitch =
+        numbers(node["gimbal_pitch_deg"], keyPath(path, "gimbal_pitch_deg"), 2, -kAny, kAny, "deg");
     camera.gimbal_pitch_min_deg = pitch[0];
     camera.gimbal_pitch_max_deg = pitch[1];
   }
@@ -138,14 +145,18 @@ mission::Camera readCamera(const YAML::Node& node, const std::string& path) {
     const std::string capture_path = keyPath(path, "capture");
     const YAML::Node capture = node["capture"];
     requireKnownKeys(capture, {"style", "hover_s", "exposure_s", "blur_limit_px"}, capture_path);
-    const std::string style = text(requiredKey(capture, "style", capture_path, "hover or move"), capture_path + ".style");
-    if (style == "hover") camera.capture = mission::CaptureStyle::Hover;
-    else if (style == "move") camera.capture = mission::CaptureStyle::OnTheMove;
+    const std::string style =
+        text(requiredKey(capture, "style", capture_path, "hover or move"), capture_path + ".style");
+    if (style == "hover")
+      camera.capture = mission::CaptureStyle::Hover;
+    else if (style == "move")
+      camera.capture = mission::CaptureStyle::OnTheMove;
     else
       throw ceilplan::InputError("'" + capture_path + ".style' is '" + style + "' (did you mean '" +
                                  nearestKey(style, {"hover", "move"}) + "'?); choose hover or move");
     if (capture["hover_s"]) camera.hover_s = numberIn(capture["hover_s"], capture_path + ".hover_s", -kAny, kAny, "");
-    if (capture["exposure_s"]) camera.exposure_s = numberIn(capture["exposure_s"], capture_path + ".exposure_s", -kAny, kAny, "");
+    if (capture["exposure_s"])
+      camera.exposure_s = numberIn(capture["exposure_s"], capture_path + ".exposure_s", -kAny, kAny, "");
     if (capture["blur_limit_px"])
       camera.blur_limit_px = numberIn(capture["blur_limit_px"], capture_path + ".blur_limit_px", -kAny, kAny, "");
   }
@@ -159,15 +170,18 @@ mission::CoverageRegion readSurface(const YAML::Node& node, const std::string& p
   readPlace(node, path, region.name, region.shape, region.faces);
   region.gsd_mm_px = numberIn(requiredKey(node, "gsd_mm_px", path), keyPath(path, "gsd_mm_px"), -kAny, kAny, "mm/px");
   if (region.gsd_mm_px <= 0.0)
-    throw ceilplan::InputError("'" + keyPath(path, "gsd_mm_px") + "' must be positive, got " + formatNumber(region.gsd_mm_px));
+    throw ceilplan::InputError("'" + keyPath(path, "gsd_mm_px") + "' must be positive, got " +
+                               formatNumber(region.gsd_mm_px));
   if (node["overlap"]) {
     const std::string overlap_path = keyPath(path, "overlap");
     requireKnownKeys(node["overlap"], {"front", "side"}, overlap_path);
-    if (node["overlap"]["front"]) region.overlap_front_pct = readOverlap(node["overlap"]["front"], overlap_path + ".front");
+    if (node["overlap"]["front"])
+      region.overlap_front_pct = readOverlap(node["overlap"]["front"], overlap_path + ".front");
     if (node["overlap"]["side"]) region.overlap_side_pct = readOverlap(node["overlap"]["side"], overlap_path + ".side");
   }
   if (node["max_incidence_deg"])
-    region.max_incidence_deg = numberIn(node["max_incidence_deg"], keyPath(path, "max_incidence_deg"), -kAny, kAny, "deg");
+    region.max_incidence_deg =
+        numberIn(node["max_incidence_deg"], keyPath(path, "max_incidence_deg"), -kAny, kAny, "deg");
   checked(path, [&] { region.validate(); });
   return region;
 }
@@ -189,22 +203,27 @@ CoverageKeys readCoverageKeys(const YAML::Node& root) {
   std::set<std::string> names;
   const auto unique = [&](const std::string& name, const std::string& path) {
     if (!names.insert(name).second)
-      throw ceilplan::InputError("'" + path + ".name' repeats '" + name + "': surfaces and contact grids need distinct names");
+      throw ceilplan::InputError("'" + path + ".name' repeats '" + name +
+                                 "': surfaces and contact grids need distinct names");
   };
   if (const YAML::Node list = root["surfaces"]) {
-    if (!list.IsSequence() || list.size() == 0) throw ceilplan::InputError("'surfaces' must be a non-empty list of regions");
+    if (!list.IsSequence() || list.size() == 0)
+      throw ceilplan::InputError("'surfaces' must be a non-empty list of regions");
     for (std::size_t k = 0; k < list.size(); ++k) {
       const std::string path = "surfaces[" + std::to_string(k) + "]";
       keys.surfaces.push_back(readSurface(list[k], path));
       unique(keys.surfaces.back().name, path);
     }
     if (!keys.camera)
-      throw ceilplan::InputError("missing key 'camera' (surfaces are photographed: give a 'preset' or the sensor keys)");
+      throw ceilplan::InputError(
+          "missing key 'camera' (surfaces are photographed: give a 'preset' or the sensor keys)");
     for (std::size_t k = 0; k < keys.surfaces.size(); ++k)
-      checked("surfaces[" + std::to_string(k) + "]", [&] { mission::checkCameraReaches(*keys.camera, keys.surfaces[k]); });
+      checked("surfaces[" + std::to_string(k) + "]",
+              [&] { mission::checkCameraReaches(*keys.camera, keys.surfaces[k]); });
   }
   if (const YAML::Node list = root["contact_grid"]) {
-    if (!list.IsSequence() || list.size() == 0) throw ceilplan::InputError("'contact_grid' must be a non-empty list of grids");
+    if (!list.IsSequence() || list.size() == 0)
+      throw ceilplan::InputError("'contact_grid' must be a non-empty list of grids");
     for (std::size_t k = 0; k < list.size(); ++k) {
       const std::string path = "contact_grid[" + std::to_string(k) + "]";
       keys.contact_grids.push_back(readContactGrid(list[k], path));

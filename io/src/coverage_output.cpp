@@ -1,7 +1,7 @@
 #include "ceilplan/io/coverage_output.hpp"
 
-#include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/json_values.hpp"
 
 #include <cmath>
@@ -37,9 +37,10 @@ std::string photosCsv(const std::vector<PhotoRow>& rows) {
   for (const PhotoRow& row : rows) {
     out << row.index << ',' << (row.sortie ? std::to_string(*row.sortie) : "") << ','
         << (row.t_s ? formatFixed(*row.t_s, 2) : "") << ',' << formatFixed(row.camera_m.x(), 3) << ','
-        << formatFixed(row.camera_m.y(), 3) << ',' << formatFixed(row.camera_m.z(), 3) << ',' << formatFixed(row.yaw_deg, 2)
-        << ',' << formatFixed(row.gimbal_pitch_deg, 2) << ',' << formatFixed(row.distance_m, 3) << ','
-        << formatFixed(row.gsd_mm_px, 3) << ',' << csvField(row.region) << '\n';
+        << formatFixed(row.camera_m.y(), 3) << ',' << formatFixed(row.camera_m.z(), 3) << ','
+        << formatFixed(row.yaw_deg, 2) << ',' << formatFixed(row.gimbal_pitch_deg, 2) << ','
+        << formatFixed(row.distance_m, 3) << ',' << formatFixed(row.gsd_mm_px, 3) << ',' << csvField(row.region)
+        << '\n';
   }
   return out.str();
 }
@@ -55,8 +56,8 @@ void requireMatchingCheck(const mission::CoveragePlan& plan, const mission::Cove
     const mission::RegionPlan& planned = plan.regions[r];
     const mission::RegionCoverageCheck& checked = check.regions[r];
     if (checked.name != planned.region.name || checked.covered.size() != planned.surface.elements.size() ||
-        checked.best_gsd_mm_px.size() != checked.covered.size() || checked.view_count.size() != checked.covered.size() ||
-        planned.reachable.size() != checked.covered.size())
+        checked.best_gsd_mm_px.size() != checked.covered.size() ||
+        checked.view_count.size() != checked.covered.size() || planned.reachable.size() != checked.covered.size())
       throw ceilplan::InputError(std::string(file) + ": region " + std::to_string(r) + " of the check is '" +
                                  checked.name + "', of the plan '" + planned.region.name + "'");
   }

@@ -73,7 +73,8 @@ std::string columnList(const std::vector<std::string>& names) {
 }  // namespace
 
 CsvColumns CsvColumns::read(const std::filesystem::path& path, const std::vector<std::string>& required,
-                            const std::vector<std::string>& optional, const std::vector<std::string>& none_is_infinite) {
+                            const std::vector<std::string>& optional,
+                            const std::vector<std::string>& none_is_infinite) {
   const std::string shown = printableText(path.string(), 256);
   requireInputFile(path, "CSV file");
   std::ifstream input(path, std::ios::binary);
@@ -81,7 +82,8 @@ CsvColumns CsvColumns::read(const std::filesystem::path& path, const std::vector
 }
 
 CsvColumns CsvColumns::parse(std::istream& input, const std::string& source, const std::vector<std::string>& required,
-                             const std::vector<std::string>& optional, const std::vector<std::string>& none_is_infinite) {
+                             const std::vector<std::string>& optional,
+                             const std::vector<std::string>& none_is_infinite) {
   CsvColumns table;
   table.source_ = source;
   std::string line;
@@ -97,7 +99,8 @@ CsvColumns CsvColumns::parse(std::istream& input, const std::string& source, con
     const std::string where = source + " line " + std::to_string(line_number);
     if (!splitFields(line, fields)) throw ceilplan::InputError(where + ": a quoted field is not closed");
     if (!have_header) {
-      if (std::any_of(line.begin(), line.end(), [](char c) { return (c >= 0 && c < 0x20 && c != '\t' && c != '\r') || c == 0x7F; }))
+      if (std::any_of(line.begin(), line.end(),
+                      [](char c) { return (c >= 0 && c < 0x20 && c != '\t' && c != '\r') || c == 0x7F; }))
         throw ceilplan::InputError(where + ": the header holds control characters ('" + printableText(line, 24) +
                                    "'); is " + source + " a CSV text file?");
       for (const std::string& name : fields) {
@@ -120,7 +123,8 @@ CsvColumns CsvColumns::parse(std::istream& input, const std::string& source, con
         }
       table.kept_.resize(table.kept_names_.size());
       for (const std::string& name : table.kept_names_)
-        none_allowed.push_back(std::find(none_is_infinite.begin(), none_is_infinite.end(), name) != none_is_infinite.end());
+        none_allowed.push_back(std::find(none_is_infinite.begin(), none_is_infinite.end(), name) !=
+                               none_is_infinite.end());
       have_header = true;
       continue;
     }
@@ -157,8 +161,8 @@ bool CsvColumns::hasColumn(const std::string& name) const {
 const std::vector<double>& CsvColumns::column(const std::string& name) const {
   const auto it = std::find(kept_names_.begin(), kept_names_.end(), name);
   if (it == kept_names_.end())
-    throw ceilplan::InputError(source_ + " has no column " + quotedName(name) + " read; columns: " +
-                               columnList(names_));
+    throw ceilplan::InputError(source_ + " has no column " + quotedName(name) +
+                               " read; columns: " + columnList(names_));
   return kept_[static_cast<std::size_t>(it - kept_names_.begin())];
 }
 

@@ -37,7 +37,7 @@ std::string number(double value, int decimals = 6) {
 
 // DJI's ranges (WPML template.kml and common elements tables, docs/flying.md).
 constexpr double kMinSpeed_m_s = 1.0, kMaxSpeed_m_s = 15.0;  // waypointSpeed, autoFlightSpeed, globalTransitionalSpeed
-constexpr double kMinTakeOffSecurityHeight_m = 1.2;           // takeOffSecurityHeight with a remote controller
+constexpr double kMinTakeOffSecurityHeight_m = 1.2;          // takeOffSecurityHeight with a remote controller
 
 // Everything both files are written from.
 struct Plan {
@@ -166,7 +166,8 @@ class Writer {
     for (std::size_t k = 0; k < plan_.route.waypoints.size(); ++k) {
       const double length = (plan_.positions_m[k] - previous).norm();
       distance += length;
-      duration += length / (k == 0 ? plan_.cruise_speed_m_s : plan_.speeds_m_s[k - 1]) + plan_.route.waypoints[k].hold_s;
+      duration +=
+          length / (k == 0 ? plan_.cruise_speed_m_s : plan_.speeds_m_s[k - 1]) + plan_.route.waypoints[k].hold_s;
       previous = plan_.positions_m[k];
     }
     text("wpml:templateId", "0");
@@ -180,9 +181,8 @@ class Writer {
   void placemark(std::size_t k, bool is_template) {
     const mission::RouteWaypoint& w = plan_.route.waypoints[k];
     element("Placemark", [&] {
-      element("Point", [&] {
-        text("coordinates", number(plan_.geodetic[k].y(), 9) + "," + number(plan_.geodetic[k].x(), 9));
-      });
+      element("Point",
+              [&] { text("coordinates", number(plan_.geodetic[k].y(), 9) + "," + number(plan_.geodetic[k].x(), 9)); });
       text("wpml:index", std::to_string(k));
       if (is_template) {
         text("wpml:ellipsoidHeight", number(ellipsoidHeight(k), 4));
@@ -342,7 +342,8 @@ void DjiWpmlOptions::validate() const {
 namespace {
 
 // DJI Cloud API product support, "Enumeration values of aircraft, RC and dock" and "Enumeration
-// values of camera" (type-subtype-gimbalindex), https://developer.dji.com/doc/cloud-api-tutorial/en/overview/product-support.html
+// values of camera" (type-subtype-gimbalindex),
+// https://developer.dji.com/doc/cloud-api-tutorial/en/overview/product-support.html
 struct DjiDrone {
   const char* name;
   int type;
@@ -358,7 +359,7 @@ struct DjiPayload {
   int type;
   bool h20_series;  // tilt -120 to +30 degrees underslung (DJI Zenmuse H20 series specifications)
 };
-constexpr DjiPayload kPayloads[] = {{"h20", 42, true}, {"h20t", 43, true}, {"h20n", 61, true},
+constexpr DjiPayload kPayloads[] = {{"h20", 42, true},  {"h20t", 43, true},  {"h20n", 61, true},
                                     {"h30", 82, false}, {"h30t", 83, false}, {"builtin", 0, false}};
 
 template <typename Entry, std::size_t N>
@@ -381,8 +382,8 @@ const std::vector<std::string>& djiPayloadNames() {
 }
 
 DjiWpmlOptions djiWpmlOptions(const mission::DjiAircraft& aircraft) {
-  const auto drone = std::find_if(std::begin(kDrones), std::end(kDrones),
-                                  [&](const DjiDrone& d) { return aircraft.drone == d.name; });
+  const auto drone =
+      std::find_if(std::begin(kDrones), std::end(kDrones), [&](const DjiDrone& d) { return aircraft.drone == d.name; });
   const auto payload = std::find_if(std::begin(kPayloads), std::end(kPayloads),
                                     [&](const DjiPayload& p) { return aircraft.payload == p.name; });
   if (drone == std::end(kDrones)) throw InputError("dji: unknown drone '" + aircraft.drone + "'");
@@ -392,8 +393,9 @@ DjiWpmlOptions djiWpmlOptions(const mission::DjiAircraft& aircraft) {
   options.drone_sub_enum = drone->sub_type;
   const bool carries_payloads = drone->builtin_camera == 0;
   if (carries_payloads == (payload->type == 0))
-    throw InputError("dji: the " + aircraft.drone + (carries_payloads ? " carries a Zenmuse payload (h20, h20t, h20n, h30, h30t), not 'builtin'"
-                                                                       : " flies its own camera: payload: builtin"));
+    throw InputError("dji: the " + aircraft.drone +
+                     (carries_payloads ? " carries a Zenmuse payload (h20, h20t, h20n, h30, h30t), not 'builtin'"
+                                       : " flies its own camera: payload: builtin"));
   options.payload_enum = carries_payloads ? payload->type : drone->builtin_camera;
   const std::vector<std::string> mounts{"main", "right", "upper"};
   options.payload_position =
@@ -405,8 +407,8 @@ DjiWpmlOptions djiWpmlOptions(const mission::DjiAircraft& aircraft) {
     options.gimbal_pitch_range_deg = *aircraft.gimbal_pitch_range_deg;
   } else if (payload->h20_series) {
     // On the upper mount the gimbal hangs the other way up: its range mirrored about the horizon.
-    options.gimbal_pitch_range_deg = options.payload_position == 2 ? std::array<double, 2>{-30.0, 120.0}
-                                                                   : std::array<double, 2>{-120.0, 30.0};
+    options.gimbal_pitch_range_deg =
+        options.payload_position == 2 ? std::array<double, 2>{-30.0, 120.0} : std::array<double, 2>{-120.0, 30.0};
   } else {
     throw InputError("dji: the gimbal pitch range of payload '" + aircraft.payload +
                      "' is not built in: give gimbal_pitch_range_deg: [min, max] from its specifications");
@@ -441,8 +443,8 @@ DjiWpml djiWpml(const mission::SortieRoute& route, const mission::GeodeticOrigin
   for (std::size_t k = 0; k < route.waypoints.size(); ++k)
     plan.speeds_m_s.push_back(
         plan.within(route.speedInto_m_s(k + 1), kMinSpeed_m_s, kMaxSpeed_m_s, k + 1, "wpml:waypointSpeed"));
-  plan.takeoff_security_height_m = plan.within(route.takeoffHeight_m(), kMinTakeOffSecurityHeight_m, 1500.0, 0,
-                                               "wpml:takeOffSecurityHeight");
+  plan.takeoff_security_height_m =
+      plan.within(route.takeoffHeight_m(), kMinTakeOffSecurityHeight_m, 1500.0, 0, "wpml:takeOffSecurityHeight");
   Writer writer(plan);
   DjiWpml files;
   files.template_kml = writer.document(true);

@@ -70,7 +70,8 @@ void writeAgeing(std::ostream& out, const battery::DutyStudyOptions& options, co
       const auto& days_to_end = c.ageing[m].projection.days_to_end_of_life;
       return days_to_end ? formatFixed(*days_to_end, 1) : std::string("never*");
     });
-    row("  wear reduction vs first [%]", [m](const DutyStudyCase& c) { return percentCell(c.ageing[m].wear_reduction_pct); });
+    row("  wear reduction vs first [%]",
+        [m](const DutyStudyCase& c) { return percentCell(c.ageing[m].wear_reduction_pct); });
     row("  ... with the pack kept new [%]",
         [m](const DutyStudyCase& c) { return percentCell(c.ageing[m].wear_reduction_new_pack_pct); });
   }
@@ -88,25 +89,24 @@ nlohmann::json ageingJson(const battery::DutyStudyResult& result, const DutyStud
   nlohmann::json models = nlohmann::json::array();
   for (size_t m = 0; m < c.ageing.size(); ++m) {
     const battery::LifetimeResult& p = c.ageing[m].projection;
-    models.push_back(
-        {{"model", p.model},
-         {"cycle_wear_name", p.cycle_wear_name},
-         {"cycle_wear", p.cycle_wear},
-         {"cycle_wear_new_pack", c.ageing[m].new_pack.cycle_wear},
-         {"capacity_fade", p.capacity_loss},
-         {"fec", p.fec},
-         {"faded_pack_cycles", p.faded_pack_cycles},
-         {"min_soc", p.min_soc},
-         {"days_flown", p.days_flown},
-         {"days_to_end_of_life", optionalJson(p.days_to_end_of_life)},
-         {"missions_to_end_of_life",
-          p.missions_to_end_of_life ? nlohmann::json(*p.missions_to_end_of_life) : nlohmann::json(nullptr)},
-         {"comparison_days", result.comparison_days[m]},
-         {"wear_reduction_pct", optionalJson(c.ageing[m].wear_reduction_pct)},
-         {"wear_reduction_new_pack_pct", optionalJson(c.ageing[m].wear_reduction_new_pack_pct)},
-         {"fade_reduction_pct", optionalJson(c.ageing[m].fade_reduction_pct)},
-         {"stopped_because", p.stopped_because},
-         {"warnings", p.warnings}});
+    models.push_back({{"model", p.model},
+                      {"cycle_wear_name", p.cycle_wear_name},
+                      {"cycle_wear", p.cycle_wear},
+                      {"cycle_wear_new_pack", c.ageing[m].new_pack.cycle_wear},
+                      {"capacity_fade", p.capacity_loss},
+                      {"fec", p.fec},
+                      {"faded_pack_cycles", p.faded_pack_cycles},
+                      {"min_soc", p.min_soc},
+                      {"days_flown", p.days_flown},
+                      {"days_to_end_of_life", optionalJson(p.days_to_end_of_life)},
+                      {"missions_to_end_of_life", p.missions_to_end_of_life ? nlohmann::json(*p.missions_to_end_of_life)
+                                                                            : nlohmann::json(nullptr)},
+                      {"comparison_days", result.comparison_days[m]},
+                      {"wear_reduction_pct", optionalJson(c.ageing[m].wear_reduction_pct)},
+                      {"wear_reduction_new_pack_pct", optionalJson(c.ageing[m].wear_reduction_new_pack_pct)},
+                      {"fade_reduction_pct", optionalJson(c.ageing[m].fade_reduction_pct)},
+                      {"stopped_because", p.stopped_because},
+                      {"warnings", p.warnings}});
   }
   return models;
 }
@@ -124,10 +124,12 @@ std::string dutyStudyTable(const battery::DutyStudyOptions& options, const batte
   const std::string span = options.spanText();
   row("flight current [A]", [](const DutyStudyCase& c) { return formatFixed(c.flight_current_a, 2); });
   row("lowest SOC [%]", [](const DutyStudyCase& c) { return formatFixed(100 * c.run.minSoc(), 1); });
-  row("charge complete [min]", [](const DutyStudyCase& c) { return formatFixed(c.run.missions.back().charge_end_s / 60, 2); });
+  row("charge complete [min]",
+      [](const DutyStudyCase& c) { return formatFixed(c.run.missions.back().charge_end_s / 60, 2); });
   row("FEC per mission", [](const DutyStudyCase& c) { return formatFixed(c.run.fecPerMission(), 4); });
   row("FEC per day", [](const DutyStudyCase& c) { return formatFixed(c.run.fecPerDay(), 3); });
-  row("FEC after " + span.substr(0, span.find(" (")), [](const DutyStudyCase& c) { return formatFixed(c.run.fecTotal(), 2); });
+  row("FEC after " + span.substr(0, span.find(" (")),
+      [](const DutyStudyCase& c) { return formatFixed(c.run.fecTotal(), 2); });
   row("charge put back [Ah]", [](const DutyStudyCase& c) { return formatFixed(c.run.final_state.charge_ah, 1); });
   row("FEC reduction vs first [%]", [](const DutyStudyCase& c) { return formatFixed(c.fec_reduction_pct, 2); });
   if (!cases.front().ageing.empty()) writeAgeing(out, options, result);

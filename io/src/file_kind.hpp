@@ -13,7 +13,8 @@ namespace ceilplan::io::detail {
 
 inline std::string lowerExtension(const std::filesystem::path& file) {
   std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return extension;
 }
 
@@ -33,14 +34,16 @@ std::string joined(const List& extensions) {
 // `accepted`, or a file that ceilplan::requireInputFile refuses; returns the lower-case extension.
 // `kind` and `other_kind` name the kinds in messages ("mesh", "point-cloud").
 template <typename List, typename OtherList>
-std::string requireReadableFileOfKind(const std::filesystem::path& file, const List& accepted, const OtherList& other_kind_only,
-                                      const std::string& kind, const std::string& other_kind) {
+std::string requireReadableFileOfKind(const std::filesystem::path& file, const List& accepted,
+                                      const OtherList& other_kind_only, const std::string& kind,
+                                      const std::string& other_kind) {
   const std::string name = file.string();
   const std::string extension = lowerExtension(file);
   if (listed(other_kind_only, extension))
     throw ceilplan::InputError(name + ": " + extension + " is a " + other_kind + " format, not a " + kind);
   if (!listed(accepted, extension))
-    throw ceilplan::InputError(name + ": unknown " + kind + " format '" + extension + "' (read: " + joined(accepted) + ")");
+    throw ceilplan::InputError(name + ": unknown " + kind + " format '" + extension + "' (read: " + joined(accepted) +
+                               ")");
   requireInputFile(file, kind + " file");
   return extension;
 }

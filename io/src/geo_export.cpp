@@ -2,9 +2,9 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
-#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/autopilot_export.hpp"
+#include "ceilplan/io/json_values.hpp"
 
 #include <tinyxml2.h>
 
@@ -149,7 +149,8 @@ std::string routesKml(const std::vector<mission::SortieRoute>& routes, const mis
     const std::vector<double> headings = mission::headingsInEffect_deg(route);
     for (std::size_t k = 0; k < route.waypoints.size(); ++k) {
       const mission::RouteWaypoint& w = route.waypoints[k];
-      std::string description = "hold " + formatNumber(w.hold_s) + " s, heading " + formatNumber(headings[k], 4) + " deg";
+      std::string description =
+          "hold " + formatNumber(w.hold_s) + " s, heading " + formatNumber(headings[k], 4) + " deg";
       if (w.gimbal_pitch_deg) description += ", gimbal " + formatNumber(*w.gimbal_pitch_deg, 4) + " deg";
       if (w.take_photo) description += ", photo";
       if (w.contact_reading) description += ", contact reading";

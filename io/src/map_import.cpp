@@ -143,10 +143,12 @@ nlohmann::json mapImportJson(const MapImport& imported, const MapImportOptions& 
       {"crs", nullptr}};
   if (imported.frame) {
     const ImportedFrame& frame = *imported.frame;
-    summary["crs"] = {{"code", frame.crs},
-                      {"name", frame.crs_name},
-                      {"local_origin_in_crs", pointJson(frame.origin_projected)},
-                      {"origin", {{"lat", frame.origin.latitude_deg}, {"lon", frame.origin.longitude_deg}, {"alt", frame.origin.altitude_m}}}};
+    summary["crs"] = {
+        {"code", frame.crs},
+        {"name", frame.crs_name},
+        {"local_origin_in_crs", pointJson(frame.origin_projected)},
+        {"origin",
+         {{"lat", frame.origin.latitude_deg}, {"lon", frame.origin.longitude_deg}, {"alt", frame.origin.altitude_m}}}};
   }
   return summary;
 }

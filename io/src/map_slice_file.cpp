@@ -14,9 +14,12 @@ namespace {
 const char* stateName(environment::CellState state, bool assumed_free) {
   if (assumed_free) return "assumed_free";
   switch (state) {
-    case environment::CellState::Occupied: return "occupied";
-    case environment::CellState::Free: return "free";
-    case environment::CellState::Unknown: return "unknown";
+    case environment::CellState::Occupied:
+      return "occupied";
+    case environment::CellState::Free:
+      return "free";
+    case environment::CellState::Unknown:
+      return "unknown";
   }
   return "unknown";
 }

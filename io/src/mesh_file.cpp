@@ -131,7 +131,7 @@ Eigen::Matrix3d axesOf(const aiScene& scene, const std::string& extension) {
   rotation.row(1) = -axis(front, front_sign).transpose();
   rotation.row(2) = axis(up, up_sign).transpose();
   if (std::abs(rotation.determinant() - 1.0) > 1e-9) rotation = yUp;  // not a proper rotation: metadata we cannot use
-  float centimetres_per_unit = 1.0f;  // FBX's default unit
+  float centimetres_per_unit = 1.0f;                                  // FBX's default unit
   double stated = 1.0;
   if (!metadata.Get("UnitScaleFactor", centimetres_per_unit) && metadata.Get("UnitScaleFactor", stated))
     centimetres_per_unit = static_cast<float>(stated);

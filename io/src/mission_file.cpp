@@ -22,9 +22,9 @@ using detail::Range;
 using detail::Section;
 using detail::YamlFile;
 
-const std::vector<std::string> kBatteryKeys{"capacity_ah", "charge_current_a", "cell_count",      "soc_min",
-                                            "state_of_health", "start_soc",      "reserve_soc", "between_sorties",
-                                            "swap_s"};
+const std::vector<std::string> kBatteryKeys{"capacity_ah", "charge_current_a", "cell_count",
+                                            "soc_min",     "state_of_health",  "start_soc",
+                                            "reserve_soc", "between_sorties",  "swap_s"};
 // Any place in a map: a kilometre either way (the index refuses maps too large to hold anyway).
 const Range kCoordinateM = Range::closed(-kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
 
@@ -40,7 +40,8 @@ mission::BatterySpec readBatterySection(const Section& section, bool all_require
   pack.capacity_ah =
       number("capacity_ah", Range::closed(battery::Pack::kMinCapacity_ah, battery::Pack::kMaxCapacity_ah, "Ah"),
              pack.capacity_ah, all_required);
-  pack.charge_current_a = number("charge_current_a", Range::above(0.0, 1000.0, "A"), pack.charge_current_a, all_required);
+  pack.charge_current_a =
+      number("charge_current_a", Range::above(0.0, 1000.0, "A"), pack.charge_current_a, all_required);
   pack.cell_count = static_cast<int>(section.integer("cell_count", 1, 24, pack.cell_count));
   pack.soc_min = section.number("soc_min", Range::below(0.0, 1.0), pack.soc_min);
   pack.state_of_health = section.number("state_of_health", Range::above(0.0, 1.0), pack.state_of_health);
@@ -88,7 +89,8 @@ mission::MissionSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
 std::vector<mission::InspectionTarget> readTargets(const Section& root, bool required) {
   if (!root.has("targets")) {
     if (!required) return {};
-    root.fail("missing key 'targets' (a mission inspects point targets, or surfaces and contact grids: docs/missions.md)");
+    root.fail(
+        "missing key 'targets' (a mission inspects point targets, or surfaces and contact grids: docs/missions.md)");
   }
   const YAML::Node list = root.required("targets");
   if (!list.IsSequence() || list.size() == 0) root.fail("'targets' must be a non-empty list");
@@ -105,7 +107,8 @@ std::vector<mission::InspectionTarget> readTargets(const Section& root, bool req
     if (!names.insert(target.name).second) node.fail("duplicate target name '" + target.name + "' at '" + path + "'");
     target.point_m = node.vector3("point", kCoordinateM);
     target.dwell_s = node.number("dwell_s", Range::closed(0.0, 3600.0, "s"));
-    const std::vector<double> standoff = node.numbers("standoff_m", 2, Range::closed(0.0, mission::InspectionTarget::kMaxStandoff_m, "m"));
+    const std::vector<double> standoff =
+        node.numbers("standoff_m", 2, Range::closed(0.0, mission::InspectionTarget::kMaxStandoff_m, "m"));
     target.standoff_min_m = standoff[0];
     target.standoff_max_m = standoff[1];
     try {
@@ -154,7 +157,8 @@ mission::DjiAircraft readDjiAircraft(const Section& dji) {
   aircraft.payload_position = dji.choice("payload_position", {"main", "right", "upper"}, aircraft.payload_position);
   if (dji.has("gimbal_pitch_range_deg")) {
     const std::vector<double> range = dji.numbers("gimbal_pitch_range_deg", 2, Range::closed(-180.0, 180.0, "deg"));
-    if (!(range[0] < range[1])) dji.fail("'" + dji.keyPath("gimbal_pitch_range_deg") + "' must be [min, max] with min < max");
+    if (!(range[0] < range[1]))
+      dji.fail("'" + dji.keyPath("gimbal_pitch_range_deg") + "' must be [min, max] with min < max");
     aircraft.gimbal_pitch_range_deg = std::array<double, 2>{range[0], range[1]};
   }
   aircraft.rth_height_m = dji.number("rth_height_m", Range::closed(2.0, 1500.0, "m"), aircraft.rth_height_m);
@@ -174,9 +178,8 @@ mission::DjiAircraft readDjiAircraft(const Section& dji) {
 mission::Mission readMission(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Mission);
   const Section root(yaml, yaml.root(), "");
-  std::vector<std::string> keys{"map", "vehicle", "battery", "home",    "origin",
-                                "speeds", "mode",  "seed",     "unknown", "trajectory", "dji",
-                                "targets"};
+  std::vector<std::string> keys{"map",  "vehicle", "battery", "home",       "origin", "speeds",
+                                "mode", "seed",    "unknown", "trajectory", "dji",    "targets"};
   keys.insert(keys.end(), coverageKeyNames().begin(), coverageKeyNames().end());
   root.allowOnly(keys);
   mission::Mission mission;
@@ -191,7 +194,8 @@ mission::Mission readMission(const std::filesystem::path& file) {
     mission.speeds = readSpeeds(*speeds, mission.vehicle.energy.airframe.max_speed_m_s);
   mission.mode = root.choice("mode", {"ceiling", "free", "both"}, "");
   mission.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, 1));
-  if (const std::optional<Section> unknown = root.optionalSection("unknown")) mission.unknown = readUnknownSpace(*unknown);
+  if (const std::optional<Section> unknown = root.optionalSection("unknown"))
+    mission.unknown = readUnknownSpace(*unknown);
   if (const std::optional<Section> trajectory = root.optionalSection("trajectory")) {
     trajectory->allowOnly({"rate_hz", "corner_tolerance_m", "stop_turn_deg", "frame"});
     mission::TrajectoryOptions& t = mission.trajectory;
@@ -230,7 +234,8 @@ mission::BatterySpec readBattery(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Battery);
   const Section root(yaml, yaml.root(), "");
   // A mission file serves as a battery file: its other keys are the mission reader's to check.
-  if (root.has("battery") && (root.has("targets") || root.has("surfaces") || root.has("contact_grid"))) return readBatterySection(root.section("battery"), true);
+  if (root.has("battery") && (root.has("targets") || root.has("surfaces") || root.has("contact_grid")))
+    return readBatterySection(root.section("battery"), true);
   return readBatterySection(root, false);
 }
 

@@ -27,7 +27,7 @@ constexpr std::uint64_t kMaxCount = std::numeric_limits<std::int32_t>::max();  /
 // count's range.
 constexpr std::uint64_t kMaxFaceCorners = 255;
 
-std::vector<std::string> wordsOf(const std::string &line, const char *separators) {
+std::vector<std::string> wordsOf(const std::string& line, const char* separators) {
   std::vector<std::string> words;
   for (std::size_t start = line.find_first_not_of(separators); start != std::string::npos;) {
     const std::size_t end = line.find_first_of(separators, start);
@@ -37,7 +37,7 @@ std::vector<std::string> wordsOf(const std::string &line, const char *separators
   return words;
 }
 
-std::optional<std::uint64_t> wholeNumber(const std::string &word, std::uint64_t max) {
+std::optional<std::uint64_t> wholeNumber(const std::string& word, std::uint64_t max) {
   if (word.empty() || word.size() > 18) return std::nullopt;
   std::uint64_t value = 0;
   for (const char c : word) {
@@ -51,9 +51,9 @@ std::optional<std::uint64_t> wholeNumber(const std::string &word, std::uint64_t 
 // The next line without its '\n'; false at the end of the file. A line longer
 // than kMaxLineBytes is cut there (and refused), so a file without line breaks
 // is not read whole.
-bool readLine(std::istream &in, std::string &line) {
+bool readLine(std::istream& in, std::string& line) {
   line.clear();
-  std::streambuf &text = *in.rdbuf();
+  std::streambuf& text = *in.rdbuf();
   int c = text.sbumpc();
   if (c == std::char_traits<char>::eof()) return false;
   for (; c != std::char_traits<char>::eof() && c != '\n' && line.size() <= kMaxLineBytes; c = text.sbumpc())
@@ -62,7 +62,7 @@ bool readLine(std::istream &in, std::string &line) {
 }
 
 // A header line: at most kMaxLineBytes, no control byte but tab and CR.
-bool headerText(const std::string &line) {
+bool headerText(const std::string& line) {
   return line.size() <= kMaxLineBytes && std::none_of(line.begin(), line.end(), [](char c) {
            const auto byte = static_cast<unsigned char>(c);
            return (byte < 0x20 && c != '\t' && c != '\r') || byte == 0x7f;
@@ -72,14 +72,14 @@ bool headerText(const std::string &line) {
 std::string records(std::uint64_t count) { return std::to_string(count) + (count == 1 ? " record" : " records"); }
 
 struct Refusal {
-  const std::filesystem::path &file;
+  const std::filesystem::path& file;
   std::string kind;
-  [[noreturn]] void operator()(const std::string &problem) const {
+  [[noreturn]] void operator()(const std::string& problem) const {
     throw InputError(printableText(file.string(), 256) + ": not a readable " + kind + " (" + problem + ")");
   }
 };
 
-std::uint64_t bytesAfter(std::ifstream &in, const std::filesystem::path &file) {
+std::uint64_t bytesAfter(std::ifstream& in, const std::filesystem::path& file) {
   const std::uint64_t size = std::filesystem::file_size(file);
   const std::streamoff position = in.tellg();
   return position >= 0 && static_cast<std::uint64_t>(position) <= size ? size - static_cast<std::uint64_t>(position)
@@ -96,11 +96,11 @@ struct PcdField {
 };
 
 // What Open3D's binary PCD reader decodes; any other coordinate it reads as 0.
-bool decodable(const PcdField &field) { return field.type == 'F' ? field.size == 4 : field.size != 8; }
+bool decodable(const PcdField& field) { return field.type == 'F' ? field.size == 4 : field.size != 8; }
 
 }  // namespace
 
-void checkPcdFile(const std::filesystem::path &file) {
+void checkPcdFile(const std::filesystem::path& file) {
   const Refusal refuse{file, "point cloud"};
   std::ifstream in(file, std::ios::binary);
   std::vector<PcdField> fields;
@@ -115,8 +115,8 @@ void checkPcdFile(const std::filesystem::path &file) {
     const std::vector<std::string> words = wordsOf(line, " \t\r");
     if (words.empty() || words[0][0] == '#') continue;
     const std::string entry = words[0] == "COLUMNS" ? "FIELDS" : words[0];
-    constexpr std::array<const char *, 10> kEntries = {"VERSION", "FIELDS", "SIZE",      "TYPE",   "COUNT",
-                                                       "WIDTH",   "HEIGHT", "VIEWPOINT", "POINTS", "DATA"};
+    constexpr std::array<const char*, 10> kEntries = {"VERSION", "FIELDS", "SIZE",      "TYPE",   "COUNT",
+                                                      "WIDTH",   "HEIGHT", "VIEWPOINT", "POINTS", "DATA"};
     if (std::find(kEntries.begin(), kEntries.end(), entry) == kEntries.end())
       refuse(at + "'" + printableText(words[0], 24) +
              "' is no PCD v0.7 entry (VERSION, FIELDS, SIZE, TYPE, COUNT, "
@@ -177,7 +177,7 @@ void checkPcdFile(const std::filesystem::path &file) {
            " x " + std::to_string(height) + ")");
 
   std::uint64_t values_per_point = 0, bytes_per_point = 0;
-  for (const PcdField &field : fields) {
+  for (const PcdField& field : fields) {
     values_per_point += field.count;
     bytes_per_point += field.size * field.count;
     // A file Open3D reads, wrongly: said as such.
@@ -194,7 +194,7 @@ void checkPcdFile(const std::filesystem::path &file) {
            " bytes but holds " + std::to_string(available) + " bytes of data");
   if (storage == "binary_compressed") {
     std::uint32_t sizes[2] = {0, 0};  // compressed, uncompressed, as the file's machine wrote them
-    if (available < sizeof sizes || !in.read(reinterpret_cast<char *>(sizes), sizeof sizes))
+    if (available < sizeof sizes || !in.read(reinterpret_cast<char*>(sizes), sizeof sizes))
       refuse("the compressed PCD ends before its data sizes");
     if (sizes[1] != data_bytes || sizes[0] > available - sizeof sizes)
       refuse("the compressed PCD's data sizes (" + std::to_string(sizes[0]) + " compressed, " +
@@ -232,7 +232,7 @@ void checkPcdFile(const std::filesystem::path &file) {
 namespace {
 
 struct PlyType {
-  const char *name;
+  const char* name;
   int bytes;
   char kind;  // 'i' signed, 'u' unsigned, 'f' floating point
 };
@@ -253,8 +253,8 @@ constexpr std::array<PlyType, 16> kPlyTypes = {{{"char", 1, 'i'},
                                                 {"double", 8, 'f'},
                                                 {"float64", 8, 'f'}}};
 
-std::optional<PlyType> plyType(const std::string &name) {
-  for (const PlyType &type : kPlyTypes)
+std::optional<PlyType> plyType(const std::string& name) {
+  for (const PlyType& type : kPlyTypes)
     if (name == type.name) return type;
   return std::nullopt;
 }
@@ -275,11 +275,11 @@ struct PlyElement {
 // binary values.
 class PlyBody {
  public:
-  PlyBody(std::ifstream &in, bool ascii, bool big_endian) : in_(in), ascii_(ascii), big_endian_(big_endian) {}
+  PlyBody(std::ifstream& in, bool ascii, bool big_endian) : in_(in), ascii_(ascii), big_endian_(big_endian) {}
 
   // The next value as a number; nullopt at the end of the file or for a word
   // that is no number.
-  std::optional<double> value(const PlyType &type) {
+  std::optional<double> value(const PlyType& type) {
     if (ascii_) {
       // Coordinates are rply's to parse: only their presence matters here.
       if (type.kind == 'f') return skipWord() ? std::optional<double>(0.0) : std::nullopt;
@@ -291,7 +291,7 @@ class PlyBody {
       return negative ? -static_cast<double>(*magnitude) : static_cast<double>(*magnitude);
     }
     unsigned char bytes[8];
-    if (!in_.read(reinterpret_cast<char *>(bytes), type.bytes)) {
+    if (!in_.read(reinterpret_cast<char*>(bytes), type.bytes)) {
       ended_ = true;
       return std::nullopt;
     }
@@ -305,7 +305,7 @@ class PlyBody {
   // Whether anything but separators (ascii) or any byte (binary) follows the
   // values read so far.
   bool moreData() {
-    std::streambuf &text = *in_.rdbuf();
+    std::streambuf& text = *in_.rdbuf();
     for (int c = text.sbumpc(); c != std::char_traits<char>::eof(); c = text.sbumpc())
       if (!ascii_ || !separator(c)) return true;
     return false;
@@ -323,7 +323,7 @@ class PlyBody {
   static bool separator(int c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
 
   bool skipWord() {
-    std::streambuf &text = *in_.rdbuf();
+    std::streambuf& text = *in_.rdbuf();
     int c = text.sbumpc();
     while (c != std::char_traits<char>::eof() && separator(c)) c = text.sbumpc();
     if (c == std::char_traits<char>::eof()) return !(ended_ = true);
@@ -333,7 +333,7 @@ class PlyBody {
 
   std::optional<std::string> nextWord() {
     std::string word;
-    std::streambuf &text = *in_.rdbuf();
+    std::streambuf& text = *in_.rdbuf();
     for (int c = text.sbumpc(); c != std::char_traits<char>::eof(); c = text.sbumpc()) {
       if (separator(c)) {
         if (!word.empty()) return word;
@@ -348,7 +348,7 @@ class PlyBody {
     return word;
   }
 
-  static double decoded(const unsigned char *bytes, const PlyType &type) {
+  static double decoded(const unsigned char* bytes, const PlyType& type) {
     if (type.kind == 'f') {
       if (type.bytes == 4) {
         float value;
@@ -366,14 +366,14 @@ class PlyBody {
     return static_cast<double>(raw);
   }
 
-  std::ifstream &in_;
+  std::ifstream& in_;
   bool ascii_, big_endian_;
   bool ended_ = false;
 };
 
 }  // namespace
 
-void checkPlyFile(const std::filesystem::path &file, const std::string &kind) {
+void checkPlyFile(const std::filesystem::path& file, const std::string& kind) {
   const Refusal refuse{file, kind};
   std::ifstream in(file, std::ios::binary);
   std::string line;
@@ -386,7 +386,7 @@ void checkPlyFile(const std::filesystem::path &file, const std::string &kind) {
     if (!headerText(line)) refuse(at + "longer than 1000 bytes, or a control byte");
     const std::vector<std::string> words = wordsOf(line, " \t\r");
     if (words.empty()) refuse(at + "empty");
-    const std::string &keyword = words[0];
+    const std::string& keyword = words[0];
     if (keyword == "comment" || keyword == "obj_info") continue;
     if (number == 2 || keyword == "format") {
       if (number != 2 || words.size() != 3 || words[2] != "1.0" ||
@@ -420,16 +420,16 @@ void checkPlyFile(const std::filesystem::path &file, const std::string &kind) {
   }
 
   const auto vertex =
-      std::find_if(elements.begin(), elements.end(), [](const PlyElement &e) { return e.name == "vertex"; });
+      std::find_if(elements.begin(), elements.end(), [](const PlyElement& e) { return e.name == "vertex"; });
   const std::uint64_t vertices = vertex == elements.end() ? 0 : vertex->count;
   PlyBody body(in, format == "ascii", format == "binary_big_endian");
-  for (const PlyElement &element : elements) {
+  for (const PlyElement& element : elements) {
     const bool lists = std::any_of(element.properties.begin(), element.properties.end(),
-                                   [](const PlyProperty &p) { return p.count.has_value(); });
+                                   [](const PlyProperty& p) { return p.count.has_value(); });
     const std::string what = "the PLY's " + printableText(element.name, 24) + " element";
     if (!lists && format != "ascii") {
       std::uint64_t record_bytes = 0;
-      for (const PlyProperty &property : element.properties)
+      for (const PlyProperty& property : element.properties)
         record_bytes += static_cast<std::uint64_t>(property.value.bytes);
       const std::uint64_t available = bytesAfter(in, file);
       if (record_bytes > 0 && !body.skip(element.count, static_cast<int>(record_bytes), available))
@@ -441,12 +441,12 @@ void checkPlyFile(const std::filesystem::path &file, const std::string &kind) {
       const std::string where = what + ", record " + std::to_string(record) + ": ";
       // A value missing because the file ends says how much is missing;
       // otherwise, which value.
-      const auto unreadable = [&](const std::string &value) {
+      const auto unreadable = [&](const std::string& value) {
         if (body.ended())
           refuse(what + " announces " + records(element.count) + "; the file ends in record " + std::to_string(record));
         refuse(where + value);
       };
-      for (const PlyProperty &property : element.properties) {
+      for (const PlyProperty& property : element.properties) {
         const bool corners =
             element.name == "face" && (property.name == "vertex_indices" || property.name == "vertex_index");
         if (corners && !property.count) refuse(where + property.name + " must be a list");
@@ -484,17 +484,17 @@ void checkPlyFile(const std::filesystem::path &file, const std::string &kind) {
 
 // ---- XYZ
 
-void checkXyzFile(const std::filesystem::path &file, std::size_t numbers_per_line) {
+void checkXyzFile(const std::filesystem::path& file, std::size_t numbers_per_line) {
   const Refusal refuse{file, "point cloud"};
   std::ifstream in(file, std::ios::binary);
   std::string line;
   for (std::uint64_t line_number = 1; readLine(in, line); ++line_number) {
     if (line.size() > kMaxLineBytes) refuse("line " + std::to_string(line_number) + " is longer than 1000 bytes");
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const char *cursor = line.c_str();
+    const char* cursor = line.c_str();
     std::size_t read = 0;
     for (; read < numbers_per_line; ++read) {
-      char *end = nullptr;
+      char* end = nullptr;
       std::strtod(cursor, &end);
       if (end == cursor) break;
       cursor = end;

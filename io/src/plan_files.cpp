@@ -1,9 +1,9 @@
 #include "ceilplan/io/plan_files.hpp"
 
-#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/csv_columns.hpp"
+#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/map_views.hpp"
 #include "ceilplan/io/unknown_space_report.hpp"
 
@@ -40,7 +40,8 @@ nlohmann::json waypointsJson(const std::vector<Eigen::Vector3d>& waypoints_m) {
 void writePathCsv(const std::filesystem::path& file, const planner::PathEvaluation& evaluation,
                   const Provenance& provenance) {
   writeTextAtomically(file, [&](std::ostream& out) {
-    out << provenance.csvComment() << '\n' << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,ground_gap_m,assumed_free\n"
+    out << provenance.csvComment() << '\n'
+        << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,ground_gap_m,assumed_free\n"
         << std::setprecision(12);
     for (const planner::PathSample& s : evaluation.samples) {
       out << s.t_s << ',' << s.position_m.x() << ',' << s.position_m.y() << ',' << s.position_m.z() << ','
@@ -122,7 +123,8 @@ std::vector<Eigen::Vector3d> readPathWaypoints(const std::filesystem::path& file
   for (const char* axis : {"x", "y", "z"})
     if (!table.hasColumn(axis + suffix))
       throw InputError(file.string() + " has neither x, y, z (path.csv) nor x_m, y_m, z_m (trajectory.csv) columns");
-  const std::vector<double>&x = table.column("x" + suffix), &y = table.column("y" + suffix), &z = table.column("z" + suffix);
+  const std::vector<double>&x = table.column("x" + suffix), &y = table.column("y" + suffix),
+        &z = table.column("z" + suffix);
   std::vector<Eigen::Vector3d> points;
   for (std::size_t row = 0; row < table.rowCount(); ++row) points.emplace_back(x[row], y[row], z[row]);
   try {
@@ -162,7 +164,8 @@ std::string routePlanText(const mission::RoutePlan& route) {
   return text;
 }
 
-std::string routeCheckText(const mission::RouteCheck& check, std::size_t points, const mission::PlanningContext& context) {
+std::string routeCheckText(const mission::RouteCheck& check, std::size_t points,
+                           const mission::PlanningContext& context) {
   char lines[640];
   std::snprintf(lines, sizeof lines, "%zu points: %s\n%s cost %.6g %s\nvalid: %s\n", points,
                 figuresLine(check.evaluation).c_str(), context.options().objective.c_str(), check.cost,
@@ -213,7 +216,8 @@ std::string routeComparisonTable(const mission::RouteComparison& comparison, con
   char line[256];
   const auto row = [&](const char* label, double ceiling, double free, int decimals, bool with_reduction) {
     std::snprintf(line, sizeof line, "%-34s %14s %14s %12s\n", label, formatFixed(ceiling, decimals).c_str(),
-                  formatFixed(free, decimals).c_str(), with_reduction ? formatFixed(reductionPct(ceiling, free), 2).c_str() : "");
+                  formatFixed(free, decimals).c_str(),
+                  with_reduction ? formatFixed(reductionPct(ceiling, free), 2).c_str() : "");
     out += line;
   };
   std::snprintf(line, sizeof line, "both plans scored with the full model (start SOC %.0f %%)\n%-34s %14s %14s %12s\n",
@@ -230,8 +234,8 @@ std::string routeComparisonTable(const mission::RouteComparison& comparison, con
   std::snprintf(line, sizeof line,
                 "\nduty projection: each mission flies the route %d times (the slower plan fills %.0f min), idles "
                 "%.0f min, charges back at %.1f A; %d missions a day for %d days\n",
-                comparison.repeats, duty.flight_min, duty.idle_min, battery.pack.charge_current_a, duty.missions_per_day,
-                duty.days);
+                comparison.repeats, duty.flight_min, duty.idle_min, battery.pack.charge_current_a,
+                duty.missions_per_day, duty.days);
   out += line;
   const battery::DutyResult &cd = comparison.ceiling_duty, &fd = comparison.free_duty;
   row("FEC per mission", cd.fecPerMission(), fd.fecPerMission(), 4, true);
@@ -243,8 +247,11 @@ std::string routeComparisonTable(const mission::RouteComparison& comparison, con
 nlohmann::json routeComparisonJson(const mission::RouteComparison& comparison, const mission::DutyOptions& duty,
                                    const nlohmann::json& extra) {
   nlohmann::json json = extra;
-  json["duty"] = {{"flight_min", duty.flight_min}, {"idle_min", duty.idle_min}, {"charge_max_min", duty.charge_max_min},
-                  {"missions_per_day", duty.missions_per_day}, {"days", duty.days}};
+  json["duty"] = {{"flight_min", duty.flight_min},
+                  {"idle_min", duty.idle_min},
+                  {"charge_max_min", duty.charge_max_min},
+                  {"missions_per_day", duty.missions_per_day},
+                  {"days", duty.days}};
   const auto entry = [&](const mission::RoutePlan& route, const battery::DutyResult& result) {
     nlohmann::json figures = figuresJson(route.evaluation);
     figures["cost"] = route.plan.cost;
@@ -258,9 +265,10 @@ nlohmann::json routeComparisonJson(const mission::RouteComparison& comparison, c
   json["ceiling"] = entry(comparison.ceiling, comparison.ceiling_duty);
   json["free"] = entry(comparison.free, comparison.free_duty);
   const planner::PathEvaluation &c = comparison.ceiling.evaluation, &f = comparison.free.evaluation;
-  json["reduction_pct"] = {{"charge", reductionPct(c.charge_ah, f.charge_ah)},
-                           {"energy", reductionPct(c.energy_wh, f.energy_wh)},
-                           {"fec_total", reductionPct(comparison.ceiling_duty.fecTotal(), comparison.free_duty.fecTotal())}};
+  json["reduction_pct"] = {
+      {"charge", reductionPct(c.charge_ah, f.charge_ah)},
+      {"energy", reductionPct(c.energy_wh, f.energy_wh)},
+      {"fec_total", reductionPct(comparison.ceiling_duty.fecTotal(), comparison.free_duty.fecTotal())}};
   return json;
 }
 

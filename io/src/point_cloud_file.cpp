@@ -38,7 +38,8 @@ std::vector<Eigen::Vector3d> readPointCloud(const std::filesystem::path& file) {
   option.remove_nan_points = false;
   option.remove_infinite_points = false;
   if (const auto failure = detail::failureOf([&] { return open3d::io::ReadPointCloud(name, cloud, option); }))
-    throw ceilplan::InputError(name + ": not a readable point cloud" + (failure->empty() ? "" : " (Open3D: " + *failure + ")"));
+    throw ceilplan::InputError(name + ": not a readable point cloud" +
+                               (failure->empty() ? "" : " (Open3D: " + *failure + ")"));
   if (cloud.points_.empty()) throw ceilplan::InputError(name + ": the point cloud has no points");
   return std::move(cloud.points_);
 }
@@ -48,7 +49,8 @@ environment::SensorOrigins readSensorOrigins(const std::filesystem::path& path, 
   const CsvColumns table = CsvColumns::read(path, {}, {"x", "y", "z", "first_point"});
   for (const char* column : {"x", "y", "z"})
     if (!table.hasColumn(column))
-      throw ceilplan::InputError("--origins " + file + ": no column '" + column + "' (expected x,y,z or first_point,x,y,z)");
+      throw ceilplan::InputError("--origins " + file + ": no column '" + column +
+                                 "' (expected x,y,z or first_point,x,y,z)");
   const std::size_t rows = table.rowCount();
   if (rows == 0) throw ceilplan::InputError("--origins " + file + ": no origin rows");
   environment::SensorOrigins origins;
@@ -67,8 +69,9 @@ environment::SensorOrigins readSensorOrigins(const std::filesystem::path& path, 
   } else if (rows == point_count) {
     for (std::size_t row = 0; row < rows; ++row) origins.first_point.push_back(row);
   } else {
-    throw ceilplan::InputError("--origins " + file + ": " + std::to_string(rows) + " rows of x,y,z for " + std::to_string(point_count) +
-                               " points; give one row per point, a single row, or a first_point column for one row per scan");
+    throw ceilplan::InputError(
+        "--origins " + file + ": " + std::to_string(rows) + " rows of x,y,z for " + std::to_string(point_count) +
+        " points; give one row per point, a single row, or a first_point column for one row per scan");
   }
   try {
     origins.validate(point_count);

@@ -2,8 +2,8 @@
 
 #include "ceilplan/core/format.hpp"
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <proj.h>
+#include <GeographicLib/LocalCartesian.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +30,7 @@ struct ProjectedFrame::Projection {
   std::unique_ptr<PJ_CONTEXT, PJ_CONTEXT* (*)(PJ_CONTEXT*)> owned_context{proj_context_create(), proj_context_destroy};
   PJ_CONTEXT* context = owned_context.get();
   std::unique_ptr<PJ, PJ* (*)(PJ*)> to_wgs84{nullptr, proj_destroy};  // (easting, northing) -> (lon, lat) in degrees
-  double unit_m = 1.0;     // metres per unit of the CRS's axes (US survey feet exist)
+  double unit_m = 1.0;  // metres per unit of the CRS's axes (US survey feet exist)
   std::string name;
   GeographicLib::LocalCartesian enu;
 
@@ -39,7 +39,8 @@ struct ProjectedFrame::Projection {
       throw ceilplan::InputError("--crs '" + crs + "': expected EPSG:<code>, e.g. EPSG:25832 (ETRS89 / UTM zone 32N)");
     proj_log_level(context, PJ_LOG_NONE);  // errors come back through proj_context_errno
     Object source{proj_create(context, crs.c_str())};
-    if (!source.pj) throw ceilplan::InputError("unknown coordinate reference system " + crs + ": PROJ's database has no such code");
+    if (!source.pj)
+      throw ceilplan::InputError("unknown coordinate reference system " + crs + ": PROJ's database has no such code");
     Object horizontal{nullptr};
     PJ* projected = source.pj;
     if (proj_get_type(source.pj) == PJ_TYPE_COMPOUND_CRS) {
@@ -47,12 +48,14 @@ struct ProjectedFrame::Projection {
       projected = horizontal.pj;
     }
     if (!projected || proj_get_type(projected) != PJ_TYPE_PROJECTED_CRS)
-      throw ceilplan::InputError(crs + " (" + proj_get_name(source.pj) +
-                                 ") is not a projected coordinate reference system: its coordinates are not metres east and north");
+      throw ceilplan::InputError(
+          crs + " (" + proj_get_name(source.pj) +
+          ") is not a projected coordinate reference system: its coordinates are not metres east and north");
     name = proj_get_name(source.pj);
 
     Object system{proj_crs_get_coordinate_system(context, projected)};
-    if (!system.pj || !proj_cs_get_axis_info(context, system.pj, 0, nullptr, nullptr, nullptr, &unit_m, nullptr, nullptr, nullptr))
+    if (!system.pj ||
+        !proj_cs_get_axis_info(context, system.pj, 0, nullptr, nullptr, nullptr, &unit_m, nullptr, nullptr, nullptr))
       throw ceilplan::InputError(crs + ": PROJ cannot tell its axes' unit (" + lastError() + ")");
     Object wgs84{proj_create(context, "EPSG:4326")};
     Object operation{proj_create_crs_to_crs_from_pj(context, projected, wgs84.pj, nullptr, nullptr)};
@@ -70,13 +73,15 @@ void ProjectedFrame::validate(const std::string& crs) { Projection check(crs); }
 
 ProjectedFrame::ProjectedFrame(const std::string& crs, const Eigen::Vector3d& origin_projected)
     : crs_(crs), origin_projected_(origin_projected), projection_(std::make_unique<Projection>(crs)) {
-  if (!origin_projected.allFinite()) throw ceilplan::InputError("the local origin " + formatPoint(origin_projected) + " is not finite");
+  if (!origin_projected.allFinite())
+    throw ceilplan::InputError("the local origin " + formatPoint(origin_projected) + " is not finite");
   Projection& p = *projection_;
   name_ = p.name;
   PJ_COORD coordinate = proj_coord(origin_projected.x(), origin_projected.y(), 0.0, 0.0);
   const PJ_COORD geodetic = proj_trans(p.to_wgs84.get(), PJ_FWD, coordinate);
   if (!std::isfinite(geodetic.lp.lam) || !std::isfinite(geodetic.lp.phi) || std::abs(geodetic.lp.phi) > 90.0)
-    throw ceilplan::InputError("the origin " + formatPoint(origin_projected) + " lies outside where " + crs + " is defined");
+    throw ceilplan::InputError("the origin " + formatPoint(origin_projected) + " lies outside where " + crs +
+                               " is defined");
   origin_ = GeodeticOrigin{geodetic.lp.phi, geodetic.lp.lam, origin_projected.z() * p.unit_m};
   p.enu.Reset(origin_.latitude_deg, origin_.longitude_deg, origin_.altitude_m);
 }
@@ -105,13 +110,13 @@ void ProjectedFrame::toLocal(std::vector<Eigen::Vector3d>& points) const {
       x[i] = points[first + i].x();
       y[i] = points[first + i].y();
     }
-    proj_trans_generic(p.to_wgs84.get(), PJ_FWD, x.data(), sizeof(double), count, y.data(), sizeof(double), count, nullptr, 0, 0,
-                       nullptr, 0, 0);
+    proj_trans_generic(p.to_wgs84.get(), PJ_FWD, x.data(), sizeof(double), count, y.data(), sizeof(double), count,
+                       nullptr, 0, 0, nullptr, 0, 0);
     for (std::size_t i = 0; i < count; ++i) {
       Eigen::Vector3d& point = points[first + i];
       if (!std::isfinite(x[i]) || !std::isfinite(y[i]) || !std::isfinite(point.z()))
-        throw ceilplan::InputError("point " + std::to_string(first + i) + " " + formatPoint(point) + " cannot be transformed from " +
-                                   crs_ + " (outside its area, or not finite)");
+        throw ceilplan::InputError("point " + std::to_string(first + i) + " " + formatPoint(point) +
+                                   " cannot be transformed from " + crs_ + " (outside its area, or not finite)");
       p.enu.Forward(y[i], x[i], point.z() * p.unit_m, point.x(), point.y(), point.z());
     }
   }

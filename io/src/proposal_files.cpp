@@ -46,10 +46,14 @@ std::string quoted(const std::string& text) {
 std::string xmlText(const std::string& text) {
   std::string out;
   for (const char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else
+      out += c;
   }
   return out;
 }
@@ -98,7 +102,8 @@ mission::MissionProposal proposeMissionFiles(ProposalRequest& request, Provenanc
                                              const ProgressCallback& progress) {
   const fs::path& out = request.mission_file;
   if (out.extension() != ".yaml" && out.extension() != ".yml")
-    throw InputError(request.mission_flag + " " + printableText(out.string(), 256) + ": the mission file must end in .yaml or .yml");
+    throw InputError(request.mission_flag + " " + printableText(out.string(), 256) +
+                     ": the mission file must end in .yaml or .yml");
   if (request.picture_file.empty()) request.picture_file = fs::path(out).replace_extension(".svg");
   if (request.picture_file.extension() != ".svg")
     throw InputError(request.picture_flag + " " + printableText(request.picture_file.string(), 256) +
@@ -118,8 +123,11 @@ mission::MissionProposal proposeMissionFiles(ProposalRequest& request, Provenanc
   environment::MapIndexOptions index_options;
   index_options.unknown = request.settings.unknown;
   const std::string indexing = "indexing " + request.settings.map_file.string();
-  const environment::Environment environment(
-      environment::MapIndex::build(map, index_options, [&](double f) { if (progress) progress(indexing, f); }), vehicle);
+  const environment::Environment environment(environment::MapIndex::build(map, index_options,
+                                                                          [&](double f) {
+                                                                            if (progress) progress(indexing, f);
+                                                                          }),
+                                             vehicle);
   const mission::MissionProposal proposal = mission::proposeMission(environment, request.options, progress);
   writeTextAtomically(outputs.path(request.picture_flag), [&](std::ostream& svg) {
     svg << proposalPictureSvg(environment.grid(), proposal, request.settings.map_file.string());
@@ -155,8 +163,7 @@ std::string proposedMissionYaml(const mission::MissionProposal& proposal, const 
                  ? ", fill_max_m: " + formatNumber(settings.unknown.fill_max_m)
                  : std::string())
          << "}   # as the home was checked\n";
-  yaml
-       << "camera:\n  preset: " << settings.camera_preset << "\n"
+  yaml << "camera:\n  preset: " << settings.camera_preset << "\n"
        << "  gimbal_pitch_deg: [" << formatNumber(kUpwardPitchMin_deg) << ", " << formatNumber(kUpwardPitchMax_deg)
        << "]   # an upward gimbal mount: overhead surfaces are photographed looking up\n"
        << "  capture: {style: hover, hover_s: 2.0}\n"
@@ -240,7 +247,8 @@ std::string proposalPictureSvg(const environment::VoxelGrid& grid, const mission
         << (height > width ? " transform=\"rotate(-90 " + formatFixed(cx, 1) + " " + formatFixed(cy, 1) + ")\"" : "")
         << ">" << region.name << "</text>\n";
   }
-  svg << "<circle cx=\"" << formatFixed(px(proposal.home_m.x()), 1) << "\" cy=\"" << formatFixed(py(proposal.home_m.y()), 1)
+  svg << "<circle cx=\"" << formatFixed(px(proposal.home_m.x()), 1) << "\" cy=\""
+      << formatFixed(py(proposal.home_m.y()), 1)
       << "\" r=\"7\" fill=\"royalblue\" stroke=\"white\" stroke-width=\"2\"/>\n<text x=\""
       << formatFixed(px(proposal.home_m.x()) + 10, 1) << "\" y=\"" << formatFixed(py(proposal.home_m.y()) + 5, 1)
       << "\" fill=\"royalblue\">home</text>\n";
@@ -250,7 +258,8 @@ std::string proposalPictureSvg(const environment::VoxelGrid& grid, const mission
       << formatFixed(margin + bar_m * scale, 1) << "\" y2=\"" << formatFixed(bar_y, 1)
       << "\" stroke=\"black\" stroke-width=\"3\"/>\n<text x=\"" << formatFixed(margin + bar_m * scale + 8, 1)
       << "\" y=\"" << formatFixed(bar_y + 5, 1) << "\">" << formatNumber(bar_m) << " m; north up; grey: highest "
-      << "occupied voxel below the regions (darker is higher); orange: overhead regions</text>\n<text x=\"" << margin << "\" y=\"24\">"
+      << "occupied voxel below the regions (darker is higher); orange: overhead regions</text>\n<text x=\"" << margin
+      << "\" y=\"24\">"
       << "ceilplan propose: " << xmlText(printableText(title, 120)) << "</text>\n</svg>\n";
   return svg.str();
 }
@@ -272,8 +281,9 @@ std::string proposalText(const mission::MissionProposal& proposal, const fs::pat
   }
   if (proposal.too_low_area_m2 > 0.0) {
     const std::string room = formatFixed(proposal.min_room_below_m, 2) + " m";
-    text << "left out " << formatNumber(proposal.too_low_area_m2, 4) << " m2 too low to photograph from below: with less than "
-         << room << " of free space below most of its region";
+    text << "left out " << formatNumber(proposal.too_low_area_m2, 4)
+         << " m2 too low to photograph from below: with less than " << room
+         << " of free space below most of its region";
     if (std::isfinite(proposal.ground_m))
       text << ", or less than " << room << " above the ground at " << formatFixed(proposal.ground_m, 2) << " m";
     text << " (the vehicle with its margins and the camera's standoff)\n";
@@ -283,7 +293,8 @@ std::string proposalText(const mission::MissionProposal& proposal, const fs::pat
          << " (" << formatFixed(proposal.dropped_area_m2, 1) << " m2 in all): below the least area or beyond the most "
          << "regions\n";
   text << "home " << formatPoint(proposal.home_m) << ": " << (proposal.home_given ? "as given" : "proposed");
-  if (std::isfinite(proposal.home_height_m)) text << ", " << formatFixed(proposal.home_height_m, 2) << " m above the floor";
+  if (std::isfinite(proposal.home_height_m))
+    text << ", " << formatFixed(proposal.home_height_m, 2) << " m above the floor";
   text << "\nmission: " << printableText(mission_file.string(), 256) << " (no origin: tours write local-frame files)\n"
        << "picture: " << printableText(picture_file.string(), 256) << "\n";
   return text.str();

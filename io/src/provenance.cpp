@@ -36,7 +36,8 @@ Provenance& Provenance::input(const std::string& role, const std::filesystem::pa
 
 nlohmann::json Provenance::json() const {
   nlohmann::json files = nlohmann::json::array();
-  for (const InputFile& file : inputs) files.push_back({{"role", file.role}, {"path", file.path.string()}, {"sha256", file.sha256}});
+  for (const InputFile& file : inputs)
+    files.push_back({{"role", file.role}, {"path", file.path.string()}, {"sha256", file.sha256}});
   nlohmann::json out = {{"ceilplan", version}, {"command", command_line}, {"inputs", files}};
   out["seed"] = seed ? nlohmann::json(*seed) : nlohmann::json(nullptr);
   return out;

@@ -2,8 +2,8 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
-#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/atomic_file.hpp"
+#include "ceilplan/io/json_values.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -98,7 +98,8 @@ nlohmann::json structureJson(const ReportStructure& structure) {
 
 // JSON inside a <script> element: "</" must not appear.
 std::string scriptSafe(std::string text) {
-  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) text.replace(at, 2, "<\\/");
+  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
+    text.replace(at, 2, "<\\/");
   return text;
 }
 
@@ -216,9 +217,9 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
     for (int j = std::max(0, low[1]); j <= std::min(size[1] - 1, high[1]); ++j)
       for (int i = std::max(0, low[0]); i <= std::min(size[0] - 1, high[0]); ++i) {
         if (!occupied(i, j, k)) continue;
-        const std::uint8_t faces = static_cast<std::uint8_t>(
-            isFree(i - 1, j, k) | isFree(i + 1, j, k) << 1 | isFree(i, j - 1, k) << 2 | isFree(i, j + 1, k) << 3 |
-            isFree(i, j, k - 1) << 4 | isFree(i, j, k + 1) << 5);
+        const std::uint8_t faces =
+            static_cast<std::uint8_t>(isFree(i - 1, j, k) | isFree(i + 1, j, k) << 1 | isFree(i, j - 1, k) << 2 |
+                                      isFree(i, j + 1, k) << 3 | isFree(i, j, k - 1) << 4 | isFree(i, j, k + 1) << 5);
         if (!faces) continue;
         const std::array<long, 3> centre =
             bucketOf(Eigen::Vector3d(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k)));

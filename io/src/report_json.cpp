@@ -7,7 +7,8 @@ namespace ceilplan::io {
 namespace {
 
 nlohmann::json rotorGapJson(const environment::RotorGap& gap) {
-  return {{"nearest_gap_m", finiteOrNull(gap.nearest_gap_m)}, {"coverage", gap.coverage},
+  return {{"nearest_gap_m", finiteOrNull(gap.nearest_gap_m)},
+          {"coverage", gap.coverage},
           {"mean_gap_m", finiteOrNull(gap.mean_gap_m)}};
 }
 
@@ -80,7 +81,8 @@ nlohmann::json mapStatisticsJson(const std::string& map, const environment::MapS
             {"free", statistics.free_volume_m3},
             {"unknown", statistics.unknown_volume_m3}}},
           {"unknown", unknownSpaceJson(statistics.unknown, statistics.unknown_summary)},
-          {"ceiling", {{"min_headroom_m", statistics.ceiling.min_headroom_m}, {"min_area_m2", statistics.ceiling.min_area_m2}}},
+          {"ceiling",
+           {{"min_headroom_m", statistics.ceiling.min_headroom_m}, {"min_area_m2", statistics.ceiling.min_area_m2}}},
           {"ceiling_area_share", statistics.ceiling_area_share}};
 }
 
@@ -92,9 +94,9 @@ nlohmann::json currentReportJson(const std::string& vehicle, double ceiling_gap_
   return report;
 }
 
-nlohmann::json currentSweepReportJson(const std::string& vehicle, double coverage, const energy::FlightCondition& flight,
-                                      double rotor_radius_m, double free_air_current_a,
-                                      const std::vector<energy::GapPoint>& sweep) {
+nlohmann::json currentSweepReportJson(const std::string& vehicle, double coverage,
+                                      const energy::FlightCondition& flight, double rotor_radius_m,
+                                      double free_air_current_a, const std::vector<energy::GapPoint>& sweep) {
   nlohmann::json report = flightConditionJson(vehicle, coverage, flight);
   report["rotor_radius_m"] = rotor_radius_m;
   report["free_air_current_a"] = free_air_current_a;
@@ -110,8 +112,10 @@ nlohmann::json currentSweepReportJson(const std::string& vehicle, double coverag
 nlohmann::json plannerBenchmarkJson(const planner::PlanResult& reference, double lattice_spacing_m,
                                     const std::vector<planner::PlannerBenchmarkRow>& rows) {
   nlohmann::json json;
-  json["reference"] = {{"planner", reference.planner},       {"spacing_m", lattice_spacing_m},
-                       {"time_s", reference.total_time_s},   {"raw_cost", reference.search_cost},
+  json["reference"] = {{"planner", reference.planner},
+                       {"spacing_m", lattice_spacing_m},
+                       {"time_s", reference.total_time_s},
+                       {"raw_cost", reference.search_cost},
                        {"cost", reference.cost}};
   json["planners"] = nlohmann::json::array();
   for (const planner::PlannerBenchmarkRow& row : rows)

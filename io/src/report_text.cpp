@@ -41,8 +41,10 @@ std::string cell(double value, int decimals) {
 std::string positionProbeText(const Eigen::Vector3d& body_m, const environment::PositionProbe& probe,
                               const environment::VehicleGeometry& vehicle, const std::string& unknown_line) {
   const environment::SurfaceGaps &ceiling = probe.ceiling, &ground = probe.ground;
-  std::string text = printed("at: %.3f, %.3f, %.3f (vehicle %s)\n", body_m.x(), body_m.y(), body_m.z(), vehicle.name.c_str());
-  text += "ceiling_gap_m: " + gapText(ceiling.nearest_gap_m) + "\nceiling_coverage: " + formatFixed(ceiling.coverage, 4) +
+  std::string text =
+      printed("at: %.3f, %.3f, %.3f (vehicle %s)\n", body_m.x(), body_m.y(), body_m.z(), vehicle.name.c_str());
+  text += "ceiling_gap_m: " + gapText(ceiling.nearest_gap_m) +
+          "\nceiling_coverage: " + formatFixed(ceiling.coverage, 4) +
           "\nceiling_mean_gap_m: " + gapText(ceiling.mean_gap_m) + "\n";
   text += "ground_gap_m: " + gapText(ground.nearest_gap_m) + "\nground_coverage: " + formatFixed(ground.coverage, 4) +
           "\nground_mean_gap_m: " + gapText(ground.mean_gap_m) + "\n";
@@ -88,10 +90,12 @@ std::string currentBreakdownText(const std::optional<double>& ceiling_gap_m, con
          printed("  parasitic_w         %.3f\n  climb_w             %.3f\n", b.parasitic_w, b.climb_w) +
          printed("  avionics_w          %.3f\n", b.avionics_w) +
          printed("ceiling_factor        %.5f\nground_factor         %.5f\n", b.ceiling_factor, b.ground_factor) +
-         printed("induced_power_factor  %.5f\nterminal_voltage_v    %.3f\n", b.induced_power_factor, b.terminal_voltage_v);
+         printed("induced_power_factor  %.5f\nterminal_voltage_v    %.3f\n", b.induced_power_factor,
+                 b.terminal_voltage_v);
 }
 
-std::string currentSweepText(double rotor_radius_m, double free_air_current_a, const std::vector<energy::GapPoint>& sweep) {
+std::string currentSweepText(double rotor_radius_m, double free_air_current_a,
+                             const std::vector<energy::GapPoint>& sweep) {
   std::string text = printed("free air: current_a %.4f\n", free_air_current_a);
   text += printed("%10s %8s %10s %10s %14s\n", "gap_m", "gap_R", "current_a", "power_w", "ceiling_factor");
   for (const energy::GapPoint& point : sweep)
@@ -108,8 +112,8 @@ std::string calibrationText(const std::string& vehicle, const std::filesystem::p
                  result.max_abs_error_a, result.evaluations);
   out += printed("%-20s %14s %14s %14s %14s\n", "parameter", "fitted", "allowed_min", "allowed_max", "start");
   for (const energy::FittedParameter& f : result.fitted)
-    out += printed("%-20s %14.6g %14.6g %14.6g %14.6g%s\n", energy::parameterName(f.parameter).c_str(), f.value, f.lower,
-                   f.upper, f.start, f.atBound() ? "  (at its bound)" : "");
+    out += printed("%-20s %14.6g %14.6g %14.6g %14.6g%s\n", energy::parameterName(f.parameter).c_str(), f.value,
+                   f.lower, f.upper, f.start, f.atBound() ? "  (at its bound)" : "");
   return out;
 }
 
@@ -121,7 +125,8 @@ std::string plannerBenchmarkHeadline(const std::string& mode, const std::string&
 
 std::string latticeReferenceLine(const planner::PlanResult& reference, double lattice_spacing_m) {
   return printed("lattice reference (spacing %s m): %.6g raw, %.6g post-processed, %.1f s\n",
-                 formatNumber(lattice_spacing_m).c_str(), reference.search_cost, reference.cost, reference.total_time_s);
+                 formatNumber(lattice_spacing_m).c_str(), reference.search_cost, reference.cost,
+                 reference.total_time_s);
 }
 
 std::string plannerBenchmarkTable(const std::vector<planner::PlannerBenchmarkRow>& rows, double time_limit_s) {
@@ -132,10 +137,11 @@ std::string plannerBenchmarkTable(const std::vector<planner::PlannerBenchmarkRow
                     cell(row.median_first_solution_s, 2).c_str(), cell(row.median_raw_cost_ratio, 4).c_str(),
                     cell(row.median_cost_ratio, 4).c_str(), cell(row.best_cost_ratio, 4).c_str(),
                     cell(row.median_time_to_5pct_s, 2).c_str());
-  text += "medians over the solved runs; 'raw' and 'final' (after shortcuts and NLopt refinement) against the\n"
-          "post-processed lattice reference; 'to 5 %': when the planner's own best cost first came within 5 % of\n"
-          "the raw lattice optimum ('never': not within " +
-          formatNumber(time_limit_s) + " s)\n";
+  text +=
+      "medians over the solved runs; 'raw' and 'final' (after shortcuts and NLopt refinement) against the\n"
+      "post-processed lattice reference; 'to 5 %': when the planner's own best cost first came within 5 % of\n"
+      "the raw lattice optimum ('never': not within " +
+      formatNumber(time_limit_s) + " s)\n";
   return text;
 }
 
@@ -152,7 +158,8 @@ std::string generatedSceneLine(const std::string& scene, const environment::Scen
                  static_cast<std::uintmax_t>(std::filesystem::file_size(map_file)));
 }
 
-std::string mapImportText(const MapImport& imported, const MapImportOptions& options, const std::filesystem::path& map_file) {
+std::string mapImportText(const MapImport& imported, const MapImportOptions& options,
+                          const std::filesystem::path& map_file) {
   std::string text = "import: " + imported.source.string() + " -> " + map_file.string() + "\n";
   text += "resolution_m: " + formatNumber(options.resolution_m) + "\n";
   if (imported.skipped_non_finite_points > 0)
@@ -163,11 +170,11 @@ std::string mapImportText(const MapImport& imported, const MapImportOptions& opt
   text += "extent_m: " + formatPoint(imported.extent_m.min()) + " to " + formatPoint(imported.extent_m.max()) + "\n";
   if (imported.frame) {
     const ImportedFrame& frame = *imported.frame;
-    text += "crs: " + frame.crs + " (" + frame.crs_name + "); local origin at " + formatPoint(frame.origin_projected, 3) +
-            " in it\n";
-    text += "origin: {lat: " + formatFixed(frame.origin.latitude_deg, 8) + ", lon: " +
-            formatFixed(frame.origin.longitude_deg, 8) + ", alt: " + formatFixed(frame.origin.altitude_m, 3) +
-            "}   # for the mission file\n";
+    text += "crs: " + frame.crs + " (" + frame.crs_name + "); local origin at " +
+            formatPoint(frame.origin_projected, 3) + " in it\n";
+    text += "origin: {lat: " + formatFixed(frame.origin.latitude_deg, 8) +
+            ", lon: " + formatFixed(frame.origin.longitude_deg, 8) +
+            ", alt: " + formatFixed(frame.origin.altitude_m, 3) + "}   # for the mission file\n";
   }
   text += "wrote " + map_file.string() + " (" + std::to_string(imported.built.tree->size()) + " octree nodes, " +
           std::to_string(static_cast<std::uintmax_t>(std::filesystem::file_size(map_file))) + " bytes) and " +

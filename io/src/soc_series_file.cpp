@@ -28,8 +28,8 @@ std::vector<double> readSocSeries(const std::filesystem::path& file, const std::
   const std::vector<double>& time_s = table.hasColumn(kTimeColumn) ? table.column(kTimeColumn) : no_time;
   for (std::size_t row = 1; row < time_s.size(); ++row) {
     if (time_s[row] < time_s[row - 1])
-      throw InputError(table.source() + " line " + std::to_string(table.lineOfRow(row)) + ", column '" +
-                       kTimeColumn + "': time goes backwards (" + formatNumber(time_s[row - 1]) + " s to " +
+      throw InputError(table.source() + " line " + std::to_string(table.lineOfRow(row)) + ", column '" + kTimeColumn +
+                       "': time goes backwards (" + formatNumber(time_s[row - 1]) + " s to " +
                        formatNumber(time_s[row]) + " s)");
   }
   if (table.rowCount() < 2)
@@ -60,9 +60,9 @@ std::string rainflowText(const std::string& column, const std::filesystem::path&
         << formatFixed(c.count, 1) << std::setw(12) << c.start << std::setw(12) << c.end << '\n';
   const battery::RainflowTotals totals = battery::rainflowTotals(cycles);
   out << '\n'
-      << cycles.size() << " rows: " << formatNumber(totals.full_cycles) << " full and " << formatNumber(totals.half_cycles)
-      << " half cycles, " << formatNumber(totals.cycles) << " cycles in all; sum of count x range "
-      << formatNumber(totals.count_weighted_range) << '\n';
+      << cycles.size() << " rows: " << formatNumber(totals.full_cycles) << " full and "
+      << formatNumber(totals.half_cycles) << " half cycles, " << formatNumber(totals.cycles)
+      << " cycles in all; sum of count x range " << formatNumber(totals.count_weighted_range) << '\n';
   return out.str();
 }
 

@@ -3,10 +3,10 @@
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/coverage_output.hpp"
-#include "ceilplan/io/json_values.hpp"
-#include "ceilplan/io/map_views.hpp"
 #include "ceilplan/io/dji_wpml.hpp"
 #include "ceilplan/io/geo_export.hpp"
+#include "ceilplan/io/json_values.hpp"
+#include "ceilplan/io/map_views.hpp"
 #include "ceilplan/io/plan_files.hpp"
 #include "ceilplan/io/report_html.hpp"
 #include "ceilplan/io/tour_report.hpp"
@@ -15,11 +15,11 @@
 #include "reduction.hpp"
 
 #include <cmath>
-#include <map>
-#include <tuple>
 #include <cstdio>
 #include <iomanip>
+#include <map>
 #include <sstream>
+#include <tuple>
 
 namespace ceilplan::io {
 namespace {
@@ -166,7 +166,8 @@ std::vector<DjiClamp> djiClamps(const mission::TourResult& tour, const mission::
 
 std::string exportNotes(const mission::TourResult& tour, const mission::Mission& mission) {
   if (!mission.origin) return "";  // tourFilesLine names every geodetic export skipped, once
-  if (const std::optional<std::string> dji = djiExportProblem(tour, mission)) return "  DJI KMZ not written: " + *dji + "\n";
+  if (const std::optional<std::string> dji = djiExportProblem(tour, mission))
+    return "  DJI KMZ not written: " + *dji + "\n";
   const std::vector<DjiClamp> clamps = djiClamps(tour, mission);
   if (clamps.empty()) return "";
   std::map<std::string, std::vector<const DjiClamp*>> by_element;
@@ -176,8 +177,8 @@ std::string exportNotes(const mission::TourResult& tour, const mission::Mission&
     double lowest = list.front()->planned, written = list.front()->written;
     for (const DjiClamp* c : list)
       if (c->planned < lowest) std::tie(lowest, written) = std::make_tuple(c->planned, c->written);
-    text += " " + element + " " + std::to_string(list.size()) + "x (e.g. planned " + formatNumber(lowest) + ", written " +
-            formatNumber(written) + ");";
+    text += " " + element + " " + std::to_string(list.size()) + "x (e.g. planned " + formatNumber(lowest) +
+            ", written " + formatNumber(written) + ");";
   }
   text.back() = '\n';
   return text;
@@ -197,11 +198,13 @@ StopCounts stopCounts(const mission::TourResult& tour) {
   for (std::size_t k = 0; k < tour.stops.size(); ++k) count(k, counts.targets, counts.contact_readings, counts.photos);
   for (const mission::Sortie& sortie : tour.plan.sorties)
     for (int place : sortie.targets)
-      count(static_cast<std::size_t>(place - 1), counts.targets_visited, counts.contact_readings_taken, counts.photos_taken);
+      count(static_cast<std::size_t>(place - 1), counts.targets_visited, counts.contact_readings_taken,
+            counts.photos_taken);
   return counts;
 }
 
-nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission, const Provenance& provenance) {
+nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission,
+                        const Provenance& provenance) {
   nlohmann::json json;
   json["mission"] = mission.name();
   json["map"] = mission.map_file.string();
@@ -223,7 +226,10 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   if (!dji) {
     nlohmann::json clamps = nlohmann::json::array();
     for (const DjiClamp& c : djiClamps(tour, mission))
-      clamps.push_back({{"sortie", c.sortie}, {"waypoint", c.waypoint}, {"element", c.element}, {"planned", c.planned},
+      clamps.push_back({{"sortie", c.sortie},
+                        {"waypoint", c.waypoint},
+                        {"element", c.element},
+                        {"planned", c.planned},
                         {"written", c.written}});
     json["dji_clamps"] = clamps;
   }
@@ -275,20 +281,21 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
                       {"waypoints", waypointsJson(flown.waypoints)}});
     }
     const mission::SortieRoute& route = tour.routes[k];
-    sorties.push_back({{"targets", names},
-                       {"legs", legs},
-                       {"takeoff_height_m", route.takeoffHeight_m()},
-                       {"landing_height_m", route.endsAtHome() ? nlohmann::json(route.landingHeight_m()) : nlohmann::json()},
-                       {"takeoff_s", tour.record.sorties[k].takeoff_s},
-                       {"charge_ah", sortie.charge_ah},
-                       {"duration_s", sortie.flight_s},
-                       {"recharge_s", sortie.recharge_s},
-                       {"turnaround_s", sortie.turnaround_s},
-                       {"fec", sortie.fec},
-                       {"dod", sortie.dod},
-                       {"min_soc", sortie.lowest_soc},
-                       {"wear", sortie.wear},
-                       {"reason", sortie.reason}});
+    sorties.push_back(
+        {{"targets", names},
+         {"legs", legs},
+         {"takeoff_height_m", route.takeoffHeight_m()},
+         {"landing_height_m", route.endsAtHome() ? nlohmann::json(route.landingHeight_m()) : nlohmann::json()},
+         {"takeoff_s", tour.record.sorties[k].takeoff_s},
+         {"charge_ah", sortie.charge_ah},
+         {"duration_s", sortie.flight_s},
+         {"recharge_s", sortie.recharge_s},
+         {"turnaround_s", sortie.turnaround_s},
+         {"fec", sortie.fec},
+         {"dod", sortie.dod},
+         {"min_soc", sortie.lowest_soc},
+         {"wear", sortie.wear},
+         {"reason", sortie.reason}});
   }
   json["sorties"] = sorties;
   json["charge_ah"] = tour.plan.charge_ah;
@@ -308,7 +315,8 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   return json;
 }
 
-void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour, const Provenance& provenance) {
+void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour,
+                      const Provenance& provenance) {
   writeTextAtomically(file, [&](std::ostream& out) {
     out << provenance.csvComment() << '\n'
         << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie,ground_gap_m,phase,assumed_free\n"
@@ -317,8 +325,8 @@ void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResu
       const mission::SortieRecord& sortie = tour.record.sorties[k];
       for (std::size_t i = 0; i < sortie.samples.size(); ++i) {
         const planner::PathSample& s = sortie.samples[i];
-        out << sortie.takeoff_s + s.t_s << ',' << s.position_m.x() << ',' << s.position_m.y() << ','
-            << s.position_m.z() << ',' << s.speed_m_s << ',';
+        out << sortie.takeoff_s + s.t_s << ',' << s.position_m.x() << ',' << s.position_m.y() << ',' << s.position_m.z()
+            << ',' << s.speed_m_s << ',';
         if (std::isfinite(s.ceiling_gap_m)) out << s.ceiling_gap_m;
         out << ',' << s.current_a << ',' << s.soc << ',' << k + 1 << ',';
         if (std::isfinite(s.ground_gap_m)) out << s.ground_gap_m;
@@ -328,8 +336,8 @@ void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResu
       const planner::PathSample& landed = sortie.samples.back();
       out << sortie.takeoff_s + landed.t_s + sortie.recharge_s << ',' << landed.position_m.x() << ','
           << landed.position_m.y() << ',' << landed.position_m.z() << ",0,,"
-          << -tour.plan.sorties[k].charge_ah * 3600.0 / std::max(sortie.recharge_s, 1e-9) << ',' << tour.start_soc << ','
-          << k + 1 << ",,recharge,0\n";
+          << -tour.plan.sorties[k].charge_ah * 3600.0 / std::max(sortie.recharge_s, 1e-9) << ',' << tour.start_soc
+          << ',' << k + 1 << ",,recharge,0\n";
     }
   });
 }
@@ -345,9 +353,9 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
   return missions;
 }
 
-void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour, const mission::Mission& mission,
-                        const environment::Environment& environment, std::optional<Autopilot> autopilot,
-                        const Provenance& provenance) {
+void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour,
+                        const mission::Mission& mission, const environment::Environment& environment,
+                        std::optional<Autopilot> autopilot, const Provenance& provenance) {
   writeJsonFile(dir / "tour.json", tourJson(tour, mission, provenance));
   writeTourPathCsv(dir / "path.csv", tour, provenance);
   writeMapViews(dir, environment, flownRoute(tour), provenance);
@@ -359,9 +367,9 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
     writeTrajectoryJson(sortieFileName(dir / "trajectory.json", k + 1, count), tour.trajectories[k], frame,
                         mission.origin, provenance);
   }
-  writeReportHtml(dir / "report.html",
-                  tourReport({&tour}, mission, environment,
-                             mission.name() + ": " + mission::flightModeName(tour.mode) + " mode"));
+  writeReportHtml(
+      dir / "report.html",
+      tourReport({&tour}, mission, environment, mission.name() + ": " + mission::flightModeName(tour.mode) + " mode"));
   if (!autopilot || !mission.origin) return;  // the local frame's outputs need no origin, the rest are skipped
   const std::vector<AutopilotMission> missions = autopilotMissions(tour, mission, *autopilot);
   for (int k = 0; k < count; ++k) {
@@ -393,8 +401,8 @@ std::string comparisonTable(const mission::TourResult& ceiling, const mission::T
   row("targets visited", c_counts.targets_visited, f_counts.targets_visited, "%.0f", false);
   if (c_counts.contact_readings + f_counts.contact_readings > 0)
     row("contact readings taken", c_counts.contact_readings_taken, f_counts.contact_readings_taken, "%.0f", false);
-  row("sorties", static_cast<double>(ceiling.plan.sorties.size()), static_cast<double>(free.plan.sorties.size()), "%.0f",
-      false);
+  row("sorties", static_cast<double>(ceiling.plan.sorties.size()), static_cast<double>(free.plan.sorties.size()),
+      "%.0f", false);
   row("charge [Ah]", ceiling.plan.charge_ah, free.plan.charge_ah, "%.4f", true);
   row("flight time [s]", ceiling.plan.flight_s, free.plan.flight_s, "%.1f", true);
   if (ceiling.plan.sorties.size() > 1 || free.plan.sorties.size() > 1)
@@ -420,7 +428,8 @@ std::string comparisonTable(const mission::TourResult& ceiling, const mission::T
     row("FEC over the study", ceiling.duty.result->fecTotal(), free.duty.result->fecTotal(), "%.2f", true);
   } else {
     for (const mission::TourResult* tour : {&ceiling, &free})
-      if (!tour->duty.result) out << "duty projection, " << mission::flightModeName(tour->mode) << " mode: " << tour->duty.note << '\n';
+      if (!tour->duty.result)
+        out << "duty projection, " << mission::flightModeName(tour->mode) << " mode: " << tour->duty.note << '\n';
   }
   return out.str();
 }
@@ -431,8 +440,8 @@ nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission:
   for (const mission::TourResult* tour : {&ceiling, &free}) {
     const nlohmann::json full = tourJson(*tour, mission, provenance);
     nlohmann::json entry;
-    for (const char* key :
-         {"targets_total", "targets_visited", "contact_readings_taken", "photos_taken", "charge_ah", "flight_s", "duration_s", "fec", "min_soc", "wear", "duty"})
+    for (const char* key : {"targets_total", "targets_visited", "contact_readings_taken", "photos_taken", "charge_ah",
+                            "flight_s", "duration_s", "fec", "min_soc", "wear", "duty"})
       entry[key] = full[key];
     entry["sorties"] = tour->plan.sorties.size();
     json[mission::flightModeName(tour->mode)] = entry;
@@ -462,7 +471,8 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
   routes.insert(routes.end(), free_route.begin(), free_route.end());
   writeMapViews(dir, environment, routes, provenance);
   writeTextAtomically(dir / "comparison.txt", [&](std::ostream& stream) { stream << comparisonTable(ceiling, free); });
-  writeReportHtml(dir / "report.html", tourReport({&ceiling, &free}, mission, environment, mission.name() + ": both modes"));
+  writeReportHtml(dir / "report.html",
+                  tourReport({&ceiling, &free}, mission, environment, mission.name() + ": both modes"));
   writeJsonFile(dir / "comparison.json", comparisonJson(ceiling, free, mission, provenance));
 }
 
@@ -508,13 +518,14 @@ std::optional<std::string> standoffLimitedLine(const mission::TourResult& tour) 
   return line + "(tour.json: standoff.limited_targets)";
 }
 
-std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options) {
+std::string tourHeadline(const mission::Mission& mission, const std::string& mode,
+                         const mission::TourOptions& options) {
   std::string inspects = std::to_string(mission.targets.size()) + " targets";
   if (mission.isCoverage())
     inspects += ", " + std::to_string(mission.surfaces.size()) + " surface(s), " +
                 std::to_string(mission.contact_grids.size()) + " contact grid(s)";
-  return "tour of " + mission.file.string() + ": " + inspects + ", mode " + mode + ", planner " + options.planner + ", seed " +
-         std::to_string(options.seed) + ", split for least " + options.ageing_model + " wear\n";
+  return "tour of " + mission.file.string() + ": " + inspects + ", mode " + mode + ", planner " + options.planner +
+         ", seed " + std::to_string(options.seed) + ", split for least " + options.ageing_model + " wear\n";
 }
 
 std::string tourFilesLine(const std::filesystem::path& dir, const mission::Mission& mission,
@@ -578,9 +589,10 @@ std::string tourSummary(const mission::TourResult& tour) {
            "did)\n";
   if (!tour.duty.result) out << "  duty projection " << tour.duty.note << '\n';
   const mission::TourTimes& t = tour.times;
-  std::snprintf(line, sizeof line,
-                "  phases: stops %.1f s, legs %.1f s, order and split %.1f s, routing %.1f s, refining %.1f s, record %.1f s",
-                t.stops_s, t.legs_s, t.order_s, t.routing_s, t.refining_s, t.record_s);
+  std::snprintf(
+      line, sizeof line,
+      "  phases: stops %.1f s, legs %.1f s, order and split %.1f s, routing %.1f s, refining %.1f s, record %.1f s",
+      t.stops_s, t.legs_s, t.order_s, t.routing_s, t.refining_s, t.record_s);
   out << line;
   if (tour.coverage) out << ", coverage re-check " << formatFixed(t.coverage_check_s, 1) << " s";
   out << " (" << t.rounds << " rounds)\n";

@@ -50,7 +50,8 @@ ReportModel tourReport(const std::vector<const mission::TourResult*>& tours, con
     row("FEC", c.plan.fec, f.plan.fec, 5, true);
     row("lowest SOC [%]", 100 * c.plan.min_soc, 100 * f.plan.min_soc, 1, false);
     for (std::size_t m = 0; m < c.wear.size() && m < f.wear.size(); ++m)
-      row(c.wear[m].model + " capacity loss [%]", 100 * c.wear[m].capacity_loss, 100 * f.wear[m].capacity_loss, 5, true);
+      row(c.wear[m].model + " capacity loss [%]", 100 * c.wear[m].capacity_loss, 100 * f.wear[m].capacity_loss, 5,
+          true);
   }
   return model;
 }

@@ -1,8 +1,8 @@
 #include "ceilplan/io/trajectory_file.hpp"
 
 #include "ceilplan/core/format.hpp"
-#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/atomic_file.hpp"
+#include "ceilplan/io/json_values.hpp"
 
 #include <cmath>
 
@@ -26,7 +26,7 @@ constexpr int kDecimals[] = {3, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 4, 0};
 
 std::vector<std::string> trajectoryColumns(TrajectoryFrame frame) {
   if (frame == TrajectoryFrame::Ned)
-    return {"t_s",    "north_m", "east_m",  "down_m",  "vn_m_s",         "ve_m_s",           "vd_m_s",
+    return {"t_s",     "north_m", "east_m",  "down_m",  "vn_m_s",         "ve_m_s",           "vd_m_s",
             "an_m_s2", "ae_m_s2", "ad_m_s2", "yaw_rad", "yaw_rate_rad_s", "gimbal_pitch_deg", "trigger"};
   return {"t_s",     "x_m",     "y_m",     "z_m",     "vx_m_s",         "vy_m_s",           "vz_m_s",
           "ax_m_s2", "ay_m_s2", "az_m_s2", "yaw_rad", "yaw_rate_rad_s", "gimbal_pitch_deg", "trigger"};
@@ -40,8 +40,20 @@ std::vector<double> trajectoryRow(const mission::TrajectorySetpoint& s, Trajecto
   // NED yaw is clockwise from north: pi/2 - ENU yaw.
   const double yaw = ned ? wrapAngle(0.5 * kPi - s.yaw_rad) : s.yaw_rad;
   const double yaw_rate = ned ? -s.yaw_rate_rad_s : s.yaw_rate_rad_s;
-  return {s.t_s, p.x(), p.y(), p.z(), v.x(), v.y(), v.z(), a.x(), a.y(), a.z(), yaw, yaw_rate,
-          s.gimbal_pitch_deg, s.trigger ? 1.0 : 0.0};
+  return {s.t_s,
+          p.x(),
+          p.y(),
+          p.z(),
+          v.x(),
+          v.y(),
+          v.z(),
+          a.x(),
+          a.y(),
+          a.z(),
+          yaw,
+          yaw_rate,
+          s.gimbal_pitch_deg,
+          s.trigger ? 1.0 : 0.0};
 }
 
 std::string trajectoryCsv(const mission::Trajectory& trajectory, TrajectoryFrame frame) {

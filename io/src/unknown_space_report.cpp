@@ -4,7 +4,8 @@
 
 namespace ceilplan::io {
 
-nlohmann::json unknownSpaceJson(const environment::UnknownSpace& unknown, const environment::UnknownSpaceSummary& summary) {
+nlohmann::json unknownSpaceJson(const environment::UnknownSpace& unknown,
+                                const environment::UnknownSpaceSummary& summary) {
   const bool fill = unknown.policy == environment::UnknownPolicy::Fill;
   return {{"policy", environment::unknownPolicyName(unknown.policy)},
           {"fill_max_m", fill ? nlohmann::json(unknown.fill_max_m) : nlohmann::json(nullptr)},
@@ -18,7 +19,8 @@ nlohmann::json unknownSpaceJson(const environment::Environment& environment) {
   return unknownSpaceJson(environment.index()->unknownSpace(), environment.index()->unknownSummary());
 }
 
-std::string unknownSpaceLine(const environment::UnknownSpace& unknown, const environment::UnknownSpaceSummary& summary) {
+std::string unknownSpaceLine(const environment::UnknownSpace& unknown,
+                             const environment::UnknownSpaceSummary& summary) {
   std::string line = unknown.describe() + ": " + formatFixed(summary.assumed_free_volume_m3, 2) + " of " +
                      formatFixed(summary.unknown_volume_m3, 2) + " m3 unknown assumed free";
   if (unknown.policy == environment::UnknownPolicy::Fill)

@@ -87,12 +87,13 @@ void readPower(const Section& root, energy::EnergyParameters& p) {
   }
   const Section& s = *power;
   s.allowOnly({"reference_soc", "hover_current_a", "hover_power_w", "motor_efficiency", "induced_power_correction",
-               "tip_speed_m_s", "drag_area_m2", "air_density_kg_m3", "descent_power_floor", "thrust_to_power", "ceiling",
-               "ground", "pack"});
+               "tip_speed_m_s", "drag_area_m2", "air_density_kg_m3", "descent_power_floor", "thrust_to_power",
+               "ceiling", "ground", "pack"});
   p.reference_soc = s.number("reference_soc", Range::closed(0.0, 1.0), p.reference_soc);
   energy::RotorPowerParameters& r = p.rotor;
   r.motor_efficiency = s.number("motor_efficiency", Range::above(0.0, 1.0), r.motor_efficiency);
-  r.induced_power_correction = s.number("induced_power_correction", Range::closed(0.0, 1.0), r.induced_power_correction);
+  r.induced_power_correction =
+      s.number("induced_power_correction", Range::closed(0.0, 1.0), r.induced_power_correction);
   r.tip_speed_m_s = s.number("tip_speed_m_s", Range::above(0.0, 340.0, "m/s"), r.tip_speed_m_s);
   r.drag_area_m2 = s.number("drag_area_m2", Range::closed(0.0, 10.0, "m^2"), r.drag_area_m2);
   r.air_density_kg_m3 = s.number("air_density_kg_m3", Range::closed(0.5, 1.5, "kg/m^3"), r.air_density_kg_m3);
@@ -110,7 +111,8 @@ void readPower(const Section& root, energy::EnergyParameters& p) {
     pack->allowOnly({"cell_count", "resistance_ohm", "avionics_current_a"});
     p.pack.cell_count = static_cast<int>(pack->integer("cell_count", 1, 24, p.pack.cell_count));
     p.pack.resistance_ohm = pack->number("resistance_ohm", Range::closed(0.0, 1.0, "ohm"), p.pack.resistance_ohm);
-    p.pack.avionics_current_a = pack->number("avionics_current_a", Range::closed(0.0, 100.0, "A"), p.pack.avionics_current_a);
+    p.pack.avionics_current_a =
+        pack->number("avionics_current_a", Range::closed(0.0, 100.0, "A"), p.pack.avionics_current_a);
   }
 
   // Hover power: given, or solved from a measured hover current at the reference SOC.
@@ -133,8 +135,8 @@ void readPower(const Section& root, energy::EnergyParameters& p) {
     c.taper_end_radii = ceiling->number("taper_end_radii", Range::above(0.0, 10.0), c.taper_end_radii);
   }
   const bool explicit_constants = ceiling && (ceiling->has("k1") || ceiling->has("k2_m"));
-  const bool anchored =
-      ceiling && (ceiling->has("anchor_gap_m") || ceiling->has("anchor_current_a") || ceiling->has("contact_thrust_ratio"));
+  const bool anchored = ceiling && (ceiling->has("anchor_gap_m") || ceiling->has("anchor_current_a") ||
+                                    ceiling->has("contact_thrust_ratio"));
   if (explicit_constants && anchored) s.fail("give 'power.ceiling' k1 and k2_m, or its anchor_* keys, not both");
   if (explicit_constants) {
     c.k1 = ceiling->number("k1", Range::above(0.0, 1e3));
@@ -143,10 +145,10 @@ void readPower(const Section& root, energy::EnergyParameters& p) {
     const auto anchor = [&](const char* key, const Range& range, double fallback) {
       return ceiling ? ceiling->number(key, range, fallback) : fallback;
     };
-    c = energy::ceilingThroughAnchor(p, anchor("anchor_gap_m", Range::above(0.0, 1.0, "m"), energy::kPaperCeilingGapM),
-                                     anchor("anchor_current_a", Range::above(0.0, 1000.0, "A"), energy::kPaperCeilingCurrentA),
-                                     p.reference_soc,
-                                     anchor("contact_thrust_ratio", Range::above(1.0, 10.0), energy::kContactThrustRatio));
+    c = energy::ceilingThroughAnchor(
+        p, anchor("anchor_gap_m", Range::above(0.0, 1.0, "m"), energy::kPaperCeilingGapM),
+        anchor("anchor_current_a", Range::above(0.0, 1000.0, "A"), energy::kPaperCeilingCurrentA), p.reference_soc,
+        anchor("contact_thrust_ratio", Range::above(1.0, 10.0), energy::kContactThrustRatio));
   }
 }
 
@@ -176,7 +178,8 @@ YAML::Node defaultVehicleDocument() {
   document["mass_kg"] = shortestNumber(v.energy.airframe.mass_kg);
   document["rotors"]["count"] = static_cast<int>(v.geometry.rotor_positions_m.size());
   document["rotors"]["positions"] = YAML::Node(YAML::NodeType::Sequence);
-  for (const Eigen::Vector2d& xy : v.geometry.rotor_positions_m) document["rotors"]["positions"].push_back(flowPair(xy.x(), xy.y()));
+  for (const Eigen::Vector2d& xy : v.geometry.rotor_positions_m)
+    document["rotors"]["positions"].push_back(flowPair(xy.x(), xy.y()));
   document["rotors"]["radius_m"] = shortestNumber(v.geometry.rotor_radius_m);
   document["rotors"]["plane_height_m"] = shortestNumber(v.geometry.rotor_plane_height_m);
   document["airframe"]["top_height_m"] = shortestNumber(v.geometry.top_height_m);
@@ -215,7 +218,8 @@ mission::Vehicle readVehicle(const std::filesystem::path& file) {
       l.max_acceleration_m_s2 =
           limits->number("max_acceleration_m_s2", Range::above(0.0, 50.0, "m/s^2"), l.max_acceleration_m_s2);
       l.max_jerk_m_s3 = limits->number("max_jerk_m_s3", Range::above(0.0, 500.0, "m/s^3"), l.max_jerk_m_s3);
-      l.max_yaw_rate_deg_s = limits->number("max_yaw_rate_deg_s", Range::above(0.0, 720.0, "deg/s"), l.max_yaw_rate_deg_s);
+      l.max_yaw_rate_deg_s =
+          limits->number("max_yaw_rate_deg_s", Range::above(0.0, 720.0, "deg/s"), l.max_yaw_rate_deg_s);
     }
     return vehicle;
   } catch (const InputError& e) {

@@ -23,7 +23,8 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
     for (std::size_t j = 1; j <= b.size(); ++j) {
       const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
       d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
   return d[a.size()][b.size()];
 }
@@ -60,7 +61,9 @@ std::string nearestKey(const std::string& key, const std::vector<std::string>& v
   return best;
 }
 
-std::string keyPath(const std::string& parent, const std::string& key) { return parent.empty() ? key : parent + "." + key; }
+std::string keyPath(const std::string& parent, const std::string& key) {
+  return parent.empty() ? key : parent + "." + key;
+}
 
 void requireKnownKeys(const YAML::Node& node, const std::vector<std::string>& valid, const std::string& path) {
   if (!node.IsMap()) throw ceilplan::InputError("'" + path + "' must be a map");
@@ -80,7 +83,9 @@ void requireKnownKeys(const YAML::Node& node, const std::vector<std::string>& va
 YAML::Node requiredKey(const YAML::Node& parent, const std::string& key, const std::string& parent_path,
                        const std::string& what) {
   const YAML::Node node = parent[key];
-  if (!node) throw ceilplan::InputError("missing key '" + keyPath(parent_path, key) + "'" + (what.empty() ? "" : " (" + what + ")"));
+  if (!node)
+    throw ceilplan::InputError("missing key '" + keyPath(parent_path, key) + "'" +
+                               (what.empty() ? "" : " (" + what + ")"));
   return node;
 }
 
@@ -92,7 +97,8 @@ double numberIn(const YAML::Node& node, const std::string& path, double lo, doub
   } catch (const YAML::Exception&) {
     throw ceilplan::InputError("'" + path + "' must be a number, got '" + printable(node.Scalar()) + "'");
   }
-  if (!std::isfinite(value)) throw ceilplan::InputError("'" + path + "' must be a finite number, got " + formatNumber(value));
+  if (!std::isfinite(value))
+    throw ceilplan::InputError("'" + path + "' must be a finite number, got " + formatNumber(value));
   if (value < lo || value > hi)
     throw ceilplan::InputError("'" + path + "' must lie in [" + formatNumber(lo) + ", " + formatNumber(hi) + "]" +
                                (unit.empty() ? "" : " " + unit) + ", got " + formatNumber(value));
@@ -114,7 +120,8 @@ long integerIn(const YAML::Node& node, const std::string& path, long lo, long hi
 }
 
 std::string text(const YAML::Node& node, const std::string& path) {
-  if (!node.IsScalar() || node.Scalar().empty()) throw ceilplan::InputError("'" + path + "' must be a non-empty string");
+  if (!node.IsScalar() || node.Scalar().empty())
+    throw ceilplan::InputError("'" + path + "' must be a non-empty string");
   return node.Scalar();
 }
 
@@ -128,7 +135,8 @@ std::vector<double> numbers(const YAML::Node& node, const std::string& path, std
   if (!node.IsSequence() || node.size() != count)
     throw ceilplan::InputError("'" + path + "' must be a list of " + std::to_string(count) + " numbers");
   std::vector<double> values;
-  for (std::size_t k = 0; k < count; ++k) values.push_back(numberIn(node[k], path + "[" + std::to_string(k) + "]", lo, hi, unit));
+  for (std::size_t k = 0; k < count; ++k)
+    values.push_back(numberIn(node[k], path + "[" + std::to_string(k) + "]", lo, hi, unit));
   return values;
 }
 

@@ -7,9 +7,9 @@
 #include "ceilplan/core/spelling.hpp"
 
 #include <algorithm>
-#include <sstream>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace ceilplan::io::detail {
 namespace {
@@ -20,9 +20,12 @@ const std::vector<std::string>& signatureKeys(FileKind kind) {
   static const std::vector<std::string> vehicle{"rotors", "airframe", "clearance", "power", "mass_kg"};
   static const std::vector<std::string> battery{"capacity_ah", "charge_current_a", "state_of_health", "soc_min"};
   switch (kind) {
-    case FileKind::Mission: return mission;
-    case FileKind::Vehicle: return vehicle;
-    case FileKind::Battery: return battery;
+    case FileKind::Mission:
+      return mission;
+    case FileKind::Vehicle:
+      return vehicle;
+    case FileKind::Battery:
+      return battery;
   }
   return mission;
 }
@@ -50,9 +53,12 @@ std::string Range::describe() const {
 
 std::string kindName(FileKind kind) {
   switch (kind) {
-    case FileKind::Mission: return "mission file";
-    case FileKind::Vehicle: return "vehicle file";
-    case FileKind::Battery: return "battery file";
+    case FileKind::Mission:
+      return "mission file";
+    case FileKind::Vehicle:
+      return "vehicle file";
+    case FileKind::Battery:
+      return "battery file";
   }
   return "file";
 }
@@ -113,7 +119,8 @@ Section::Section(const YamlFile& file, YAML::Node node, std::string path)
   // yaml-cpp keeps a repeated key and answers with its first value: refuse it, as a typo.
   std::vector<std::string> keys;
   for (const auto& entry : node_) {
-    if (!entry.first.IsScalar()) fail("'" + (path_.empty() ? std::string("the top level") : path_) + "' has a key that is not text");
+    if (!entry.first.IsScalar())
+      fail("'" + (path_.empty() ? std::string("the top level") : path_) + "' has a key that is not text");
     const std::string& key = entry.first.Scalar();
     if (std::find(keys.begin(), keys.end(), key) != keys.end())
       fail("key '" + keyPath(printableText(key, 40)) + "' is given twice");

@@ -101,7 +101,8 @@ class Section {
   std::string text(const std::string& key) const;
   std::string text(const std::string& key, const std::string& fallback) const;
   // One of `choices`, naming them when it is not.
-  std::string choice(const std::string& key, const std::vector<std::string>& choices, const std::string& fallback) const;
+  std::string choice(const std::string& key, const std::vector<std::string>& choices,
+                     const std::string& fallback) const;
   // [x, y, z], each finite and in `range`.
   Eigen::Vector3d vector3(const std::string& key, const Range& range) const;
   // [a, b] (or longer), each finite and in `range`.

@@ -75,9 +75,11 @@ void Camera::validate() const {
   requireRange(sensor_width_mm, 1.0, 100.0, "sensor_width_mm", "mm");
   requireRange(sensor_height_mm, 1.0, 100.0, "sensor_height_mm", "mm");
   if (image_width_px < 16 || image_width_px > 100000)
-    throw ceilplan::InputError("camera 'image_width_px' must lie in [16, 100000] px, got " + std::to_string(image_width_px));
+    throw ceilplan::InputError("camera 'image_width_px' must lie in [16, 100000] px, got " +
+                               std::to_string(image_width_px));
   if (image_height_px < 16 || image_height_px > 100000)
-    throw ceilplan::InputError("camera 'image_height_px' must lie in [16, 100000] px, got " + std::to_string(image_height_px));
+    throw ceilplan::InputError("camera 'image_height_px' must lie in [16, 100000] px, got " +
+                               std::to_string(image_height_px));
   requireRange(focal_length_mm, 1.0, 1000.0, "focal_length_mm", "mm");
   if (!mount_offset_m.allFinite() || mount_offset_m.cwiseAbs().maxCoeff() > 2.0)
     throw ceilplan::InputError("camera 'mount_offset_m' must be [x, y, z] within 2 m of the body centre, got " +

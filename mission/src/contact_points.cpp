@@ -8,8 +8,8 @@ namespace ceilplan::mission {
 
 std::vector<InspectionTarget> contactTargets(const environment::VoxelGrid& grid, const ContactGrid& contact) {
   contact.validate();
-  return contactTargets(contact, extractRegionSurface(grid, contact.shape, contact.faces,
-                                                      "contact grid '" + contact.name + "'"));
+  return contactTargets(
+      contact, extractRegionSurface(grid, contact.shape, contact.faces, "contact grid '" + contact.name + "'"));
 }
 
 std::vector<InspectionTarget> contactTargets(const ContactGrid& contact, const RegionSurface& surface) {
@@ -36,8 +36,7 @@ std::vector<InspectionTarget> contactTargets(const ContactGrid& contact, const R
     const Plane& plane = planes[element.face];
     const Eigen::Vector2d extent = plane.max - plane.min;
     // Lattice centred on the extent: its first node leaves equal margins at both ends.
-    const Eigen::Vector2d first =
-        plane.min + 0.5 * (extent - spacing * (extent / spacing).array().floor().matrix());
+    const Eigen::Vector2d first = plane.min + 0.5 * (extent - spacing * (extent / spacing).array().floor().matrix());
     const Eigen::Vector2d at(element.centre_m[plane.p], element.centre_m[plane.q]);
     const long ip = std::lround((at.x() - first.x()) / spacing), iq = std::lround((at.y() - first.y()) / spacing);
     const double offset = (at - first - spacing * Eigen::Vector2d(ip, iq)).norm();

@@ -73,7 +73,8 @@ class FreeVoxels {
 // free in the tree: the ray's keys (OctoMap excludes the end's), then the end's own.
 bool clearInTree(const octomap::OcTree& tree, const FreeVoxels& free, const Eigen::Vector3d& from_m,
                  const Eigen::Vector3d& to_m, octomap::KeyRay& ray) {
-  const octomap::point3d from(static_cast<float>(from_m.x()), static_cast<float>(from_m.y()), static_cast<float>(from_m.z()));
+  const octomap::point3d from(static_cast<float>(from_m.x()), static_cast<float>(from_m.y()),
+                              static_cast<float>(from_m.z()));
   const octomap::point3d to(static_cast<float>(to_m.x()), static_cast<float>(to_m.y()), static_cast<float>(to_m.z()));
   octomap::OcTreeKey end;
   if (!tree.coordToKeyChecked(to, end) || !tree.computeRayKeys(from, to, ray)) return false;
@@ -101,8 +102,8 @@ std::vector<Tile> tilesOf(const RegionSurface& surface) {
   }
   std::vector<Tile> tiles;
   for (auto& [cell, elements] : cells)
-    tiles.push_back({(Eigen::Vector3d(cell[0], cell[1], cell[2]) + Eigen::Vector3d::Constant(0.5)) * kTile_m,
-                     std::move(elements)});
+    tiles.push_back(
+        {(Eigen::Vector3d(cell[0], cell[1], cell[2]) + Eigen::Vector3d::Constant(0.5)) * kTile_m, std::move(elements)});
   return tiles;
 }
 
@@ -113,18 +114,18 @@ bool mayProject(const CameraFrame& frame, double wide, double high, double min_d
                 double radius_m) {
   const Eigen::Vector3d d = centre_m - frame.position_m();
   if (d.dot(frame.forward()) + radius_m < min_depth_m) return false;
-  for (const Eigen::Vector3d& outward : {Eigen::Vector3d(frame.right() - wide * frame.forward()),
-                                         Eigen::Vector3d(-frame.right() - wide * frame.forward()),
-                                         Eigen::Vector3d(frame.up() - high * frame.forward()),
-                                         Eigen::Vector3d(-frame.up() - high * frame.forward())})
+  for (const Eigen::Vector3d& outward :
+       {Eigen::Vector3d(frame.right() - wide * frame.forward()),
+        Eigen::Vector3d(-frame.right() - wide * frame.forward()), Eigen::Vector3d(frame.up() - high * frame.forward()),
+        Eigen::Vector3d(-frame.up() - high * frame.forward())})
     if (outward.dot(d) > radius_m * outward.norm()) return false;
   return true;
 }
 
 }  // namespace
 
-CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera, const std::vector<CoverageRegion>& regions,
-                            const std::vector<RegionSurface>& surfaces,
+CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera,
+                            const std::vector<CoverageRegion>& regions, const std::vector<RegionSurface>& surfaces,
                             const std::vector<std::vector<std::uint8_t>>& reachable,
                             const std::vector<CameraPose>& photos, int workers) {
   if (surfaces.size() != regions.size() || reachable.size() != regions.size())
@@ -140,7 +141,8 @@ CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera, c
     const CoverageRegion& region = regions[r];
     const RegionSurface& surface = surfaces[r];
     const std::size_t n = surface.elements.size();
-    if (reachable[r].size() != n) throw ceilplan::InputError("coverage check: reachability of region '" + region.name + "' has the wrong size");
+    if (reachable[r].size() != n)
+      throw ceilplan::InputError("coverage check: reachability of region '" + region.name + "' has the wrong size");
     RegionCoverageCheck result;
     result.name = region.name;
     result.covered.assign(n, 0);

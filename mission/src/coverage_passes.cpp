@@ -3,10 +3,10 @@
 #include "ceilplan/mission/tour_order.hpp"
 
 #include <algorithm>
-#include <string>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
 
 namespace ceilplan::mission {
 namespace {
@@ -70,7 +70,8 @@ PassPlan orderIntoPasses(const std::vector<CameraPose>& poses, const std::vector
     double lowest = std::numeric_limits<double>::infinity();
     for (const std::uint32_t v : views) lowest = std::min(lowest, camera_m[v].dot(family.lane));
     std::map<long, std::vector<std::uint32_t>> lanes;
-    for (const std::uint32_t v : views) lanes[std::lround((camera_m[v].dot(family.lane) - lowest) / lane_width_m)].push_back(v);
+    for (const std::uint32_t v : views)
+      lanes[std::lround((camera_m[v].dot(family.lane) - lowest) / lane_width_m)].push_back(v);
     bool forward = true;
     for (auto& [lane, members] : lanes) {
       ViewPass pass;
@@ -78,7 +79,8 @@ PassPlan orderIntoPasses(const std::vector<CameraPose>& poses, const std::vector
       // C++17 lambdas cannot capture a structured binding (clang refuses): capture the direction.
       const Eigen::Vector3d along = family.along;
       std::stable_sort(pass.views.begin(), pass.views.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return forward ? camera_m[a].dot(along) < camera_m[b].dot(along) : camera_m[a].dot(along) > camera_m[b].dot(along);
+        return forward ? camera_m[a].dot(along) < camera_m[b].dot(along)
+                       : camera_m[a].dot(along) > camera_m[b].dot(along);
       });
       pass.direction = forward ? family.along : Eigen::Vector3d(-family.along);
       for (std::size_t k = 1; k < pass.views.size(); ++k)

@@ -67,7 +67,8 @@ CoveragePlan planCoverage(const environment::Environment& environment, const pla
   for (const CoverageRegion& region : regions) {
     RegionPlan result;
     result.region = region;
-    result.surface = extractRegionSurface(environment.grid(), region.shape, region.faces, "surface region '" + region.name + "'");
+    result.surface =
+        extractRegionSurface(environment.grid(), region.shape, region.faces, "surface region '" + region.name + "'");
     result.heading_deg = regionHeading(result.surface);
     plan.regions.push_back(std::move(result));
   }
@@ -77,13 +78,15 @@ CoveragePlan planCoverage(const environment::Environment& environment, const pla
     RegionPlan& result = plan.regions[r];
     const CoverageRegion& region = result.region;
     ViewGenerationOptions view_options = options.views;
-    if (options.progress) view_options.progress = [&](double share) { options.progress("views of " + region.name, share); };
+    if (options.progress)
+      view_options.progress = [&](double share) { options.progress("views of " + region.name, share); };
     const CandidateViews candidates = generateCandidateViews(environment, camera, region, result.surface, view_options);
     result.reachable = candidates.reachable;
     result.generation = candidates.stats;
     result.candidates = candidates.size();
     for (std::size_t e = 0; e < result.surface.elements.size(); ++e)
-      (result.reachable[e] ? result.reachable_area_m2 : result.unreachable_area_m2) += result.surface.elements[e].area_m2;
+      (result.reachable[e] ? result.reachable_area_m2 : result.unreachable_area_m2) +=
+          result.surface.elements[e].area_m2;
     plan.times.candidates_s += clock.lap_s();
 
     const std::vector<ViewCost> costs = viewCosts(cost_model, camera, candidates, result.surface, options.costs);

@@ -15,7 +15,8 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Ve
   return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
 }
 
-bool segmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, const Eigen::Vector2d& d) {
+bool segmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                   const Eigen::Vector2d& d) {
   const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
 }
@@ -41,9 +42,12 @@ FaceKind faceKindOf(const Eigen::Vector3d& normal) {
 
 const char* faceKindName(FaceKind kind) {
   switch (kind) {
-    case FaceKind::Down: return "down";
-    case FaceKind::Side: return "side";
-    case FaceKind::Up: return "up";
+    case FaceKind::Down:
+      return "down";
+    case FaceKind::Side:
+      return "side";
+    case FaceKind::Up:
+      return "up";
   }
   return "?";
 }
@@ -114,11 +118,12 @@ void RegionShape::validate(const std::string& what) const {
   for (const Eigen::Vector2d& p : polygon_m)
     if (!p.allFinite()) throw ceilplan::InputError(what + ": 'prism.polygon' vertices must be finite");
   if (!std::isfinite(box.min().z()) || !std::isfinite(box.max().z()) || box.max().z() <= box.min().z())
-    throw ceilplan::InputError(what + ": 'prism.z' must be [min, max] with max > min, got [" + formatNumber(box.min().z()) +
-                               ", " + formatNumber(box.max().z()) + "]");
+    throw ceilplan::InputError(what + ": 'prism.z' must be [min, max] with max > min, got [" +
+                               formatNumber(box.min().z()) + ", " + formatNumber(box.max().z()) + "]");
   double twice_area = 0.0;
   const std::size_t n = polygon_m.size();
-  for (std::size_t i = 0; i < n; ++i) twice_area += cross(Eigen::Vector2d::Zero(), polygon_m[i], polygon_m[(i + 1) % n]);
+  for (std::size_t i = 0; i < n; ++i)
+    twice_area += cross(Eigen::Vector2d::Zero(), polygon_m[i], polygon_m[(i + 1) % n]);
   if (std::abs(twice_area) < 1e-9) throw ceilplan::InputError(what + ": 'prism.polygon' encloses no area");
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 2; j < n; ++j) {
@@ -141,7 +146,8 @@ void CoverageRegion::validate() const {
     if (!(std::isfinite(value) && value >= 0.0 && value < 100.0))
       throw ceilplan::InputError(what + ": '" + key + "' must lie in [0, 100) %, got " + formatNumber(value));
   if (!(std::isfinite(max_incidence_deg) && max_incidence_deg > 0.0 && max_incidence_deg <= 89.0))
-    throw ceilplan::InputError(what + ": 'max_incidence_deg' must lie in (0, 89] deg, got " + formatNumber(max_incidence_deg));
+    throw ceilplan::InputError(what + ": 'max_incidence_deg' must lie in (0, 89] deg, got " +
+                               formatNumber(max_incidence_deg));
 }
 
 void ContactGrid::validate() const {
@@ -185,8 +191,9 @@ void checkCameraReaches(const Camera& camera, const CoverageRegion& region) {
         break;
     }
     if (!reachable)
-      throw ceilplan::InputError(what + ": 'faces' includes " + faceKindName(kind) + ", but 'camera.gimbal_pitch_deg' [" +
-                                 formatNumber(camera.gimbal_pitch_min_deg) + ", " + formatNumber(camera.gimbal_pitch_max_deg) +
+      throw ceilplan::InputError(what + ": 'faces' includes " + faceKindName(kind) +
+                                 ", but 'camera.gimbal_pitch_deg' [" + formatNumber(camera.gimbal_pitch_min_deg) +
+                                 ", " + formatNumber(camera.gimbal_pitch_max_deg) +
                                  "] cannot point at them within 'max_incidence_deg' " +
                                  formatNumber(region.max_incidence_deg) + ": they need " + need);
   }

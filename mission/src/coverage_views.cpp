@@ -1,7 +1,7 @@
 #include "ceilplan/mission/coverage_views.hpp"
 
-#include "ceilplan/environment/visibility.hpp"
 #include "ceilplan/core/parallel_for.hpp"
+#include "ceilplan/environment/visibility.hpp"
 
 #include <Eigen/Geometry>
 
@@ -18,13 +18,13 @@ namespace ceilplan::mission {
 namespace {
 
 constexpr double kDegree = M_PI / 180.0;
-constexpr double kIndexCell_m = 0.5;       // cell of the element index
-constexpr int kRepairLevels = 5;           // distances per repair probe
-constexpr int kRepairDirections = 8;       // tilt directions per tilt angle
-constexpr int kRepairViewsPerElement = 4;  // probes kept per element the lattice missed
+constexpr double kIndexCell_m = 0.5;           // cell of the element index
+constexpr int kRepairLevels = 5;               // distances per repair probe
+constexpr int kRepairDirections = 8;           // tilt directions per tilt angle
+constexpr int kRepairViewsPerElement = 4;      // probes kept per element the lattice missed
 constexpr double kClearanceTolerance_m = 0.1;  // free mode: "largest clearance" within this
-constexpr double kOpenShare = 0.95;          // a straight view seeing this share of its covered part is in the open
-constexpr double kPatternLevelShare = 0.5;   // patterns at distance levels this share of the farthest and beyond
+constexpr double kOpenShare = 0.95;            // a straight view seeing this share of its covered part is in the open
+constexpr double kPatternLevelShare = 0.5;     // patterns at distance levels this share of the farthest and beyond
 
 // Elements bucketed on a uniform grid, for "which elements lie in this box".
 class ElementIndex {
@@ -45,7 +45,8 @@ class ElementIndex {
     for (std::size_t cell = 1; cell < offsets_.size(); ++cell) offsets_[cell] += offsets_[cell - 1];
     members_.resize(surface.elements.size());
     std::vector<std::uint32_t> next(offsets_.begin(), offsets_.end() - 1);
-    for (std::size_t e = 0; e < surface.elements.size(); ++e) members_[next[cell_of[e]]++] = static_cast<std::uint32_t>(e);
+    for (std::size_t e = 0; e < surface.elements.size(); ++e)
+      members_[next[cell_of[e]]++] = static_cast<std::uint32_t>(e);
   }
 
   // Calls visit(element) for every element in the cells the box touches (a superset of the box).
@@ -113,9 +114,7 @@ class RegionViewer {
   }
 
   // Area of the covered part of an image on a flat surface seen straight on from `distance_m`.
-  double openArea_m2(double distance_m) const {
-    return 4.0 * distance_m * distance_m * width_tan_ * height_tan_;
-  }
+  double openArea_m2(double distance_m) const { return 4.0 * distance_m * distance_m * width_tan_ * height_tan_; }
 
   bool covers(const CameraPose& pose, std::uint32_t element) const {
     SeenElement seen;
@@ -186,7 +185,8 @@ class PoseMaker {
 
   // The camera at `camera_m` looking at `target_m`: the pose if the gimbal can point there
   // and the body is admissible.
-  std::optional<Pose> looking(const Eigen::Vector3d& camera_m, const Eigen::Vector3d& target_m, std::size_t& tried) const {
+  std::optional<Pose> looking(const Eigen::Vector3d& camera_m, const Eigen::Vector3d& target_m,
+                              std::size_t& tried) const {
     const auto [yaw, pitch] = yawPitchOf(target_m - camera_m, level_yaw_deg_);
     if (!camera_.pitchReachable(pitch)) return std::nullopt;
     const Eigen::Vector3d body_m = camera_m - cameraPosition(camera_, Eigen::Vector3d::Zero(), yaw);
@@ -319,8 +319,8 @@ struct Seed {
 // How far the flat patch of an element's face extends from its centre along `direction` (unit,
 // in the face's plane), up to `limit_m`: faces of the same orientation, in the same plane,
 // exposed and inside the region, one voxel after the other.
-double flatExtent(const environment::VoxelGrid& grid, const RegionShape& shape, const environment::SurfaceElement& element,
-                  const Eigen::Vector3d& direction, double limit_m) {
+double flatExtent(const environment::VoxelGrid& grid, const RegionShape& shape,
+                  const environment::SurfaceElement& element, const Eigen::Vector3d& direction, double limit_m) {
   const environment::GridFrame& frame = grid.frame();
   const double r = frame.resolution_m();
   const Eigen::Vector3d n = element.faceNormal();
@@ -399,10 +399,10 @@ std::vector<std::vector<std::uint32_t>> flatPatches(const environment::VoxelGrid
   return patches;
 }
 
-// The pattern: per flat patch and distance level (those at least half the farthest), a lawnmower tiling of the patch's extent in
-// the straight view's image axes, lanes and stations evenly spaced with the first and last
-// covering parts ending at the patch's edges, as a survey tool lays out passes. Each station
-// aims at its point on the patch's plane; stations over no element of the patch are dropped.
+// The pattern: per flat patch and distance level (those at least half the farthest), a lawnmower tiling of the patch's
+// extent in the straight view's image axes, lanes and stations evenly spaced with the first and last covering parts
+// ending at the patch's edges, as a survey tool lays out passes. Each station aims at its point on the patch's plane;
+// stations over no element of the patch are dropped.
 std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
                                const RegionSurface& surface, const std::vector<double>& levels, double heading_deg) {
   const double r = grid.frame().resolution_m();
@@ -414,7 +414,8 @@ std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera&
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
     std::set<std::pair<long, long>> cells;  // the patch's faces in image-axis voxel units
     for (const std::uint32_t e : patch) {
-      const Eigen::Vector2d at(surface.elements[e].centre_m.dot(straight.right()), surface.elements[e].centre_m.dot(straight.up()));
+      const Eigen::Vector2d at(surface.elements[e].centre_m.dot(straight.right()),
+                               surface.elements[e].centre_m.dot(straight.up()));
       lo = lo.cwiseMin(at);
       hi = hi.cwiseMax(at);
       cells.emplace(std::lround(at.x() / r), std::lround(at.y() / r));
@@ -453,7 +454,8 @@ std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera&
               nearest = e;
             }
           }
-          seeds.push_back({nearest, d, at.x() * straight.right() + at.y() * straight.up() + plane * straight.forward()});
+          seeds.push_back(
+              {nearest, d, at.x() * straight.right() + at.y() * straight.up() + plane * straight.forward()});
         }
     }
   }
@@ -471,9 +473,10 @@ std::vector<Seed> latticeSeeds(const environment::VoxelGrid& grid, const Camera&
                                double heading_deg) {
   // Cells no smaller than two voxels, nor than a quarter of the farthest level's covered part.
   const double far_m = levels.front();
-  const double min_cell_m =
-      std::max(2.0 * grid.frame().resolution_m(),
-               0.25 * 2.0 * far_m * std::min(camera.halfWidthTan() * region.widthShare(), camera.halfHeightTan() * region.heightShare()));
+  const double min_cell_m = std::max(
+      2.0 * grid.frame().resolution_m(),
+      0.25 * 2.0 * far_m *
+          std::min(camera.halfWidthTan() * region.widthShare(), camera.halfHeightTan() * region.heightShare()));
   const std::vector<CameraFrame> frames = straightFrames(camera, heading_deg);
   std::vector<Seed> seeds;
   for (const double d : levels) {
@@ -513,7 +516,8 @@ std::vector<Seed> latticeSeeds(const environment::VoxelGrid& grid, const Camera&
           aim += axis * snapShift(ahead, behind, half);
         }
       }
-      const auto key = std::make_tuple(std::lround(aim.x() * 1e3), std::lround(aim.y() * 1e3), std::lround(aim.z() * 1e3));
+      const auto key =
+          std::make_tuple(std::lround(aim.x() * 1e3), std::lround(aim.y() * 1e3), std::lround(aim.z() * 1e3));
       if (aims.emplace(key, true).second) seeds.push_back({e, d, aim});
     }
   }
@@ -618,7 +622,7 @@ double regionHeading(const RegionSurface& surface) {
   }
   // Major axis of the horizontal scatter (closed form for a symmetric 2 x 2 matrix).
   const double angle = 0.5 * std::atan2(2.0 * scatter(0, 1), scatter(0, 0) - scatter(1, 1));  // from +x
-  double heading = 90.0 - angle / kDegree;  // from north, clockwise
+  double heading = 90.0 - angle / kDegree;                                                    // from north, clockwise
   heading = std::fmod(heading + 360.0, 180.0);
   return std::abs(heading - 180.0) < 1e-9 ? 0.0 : heading;
 }
@@ -671,7 +675,8 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
           seed_covered[s].emplace_back();
           viewer.covered(seed_poses[s][p].pose, seed_covered[s].back());
           if (p == 0)
-            for (const SeenElement& seen : seed_covered[s].back()) straight_area_m2 += surface.elements[seen.element].area_m2;
+            for (const SeenElement& seen : seed_covered[s].back())
+              straight_area_m2 += surface.elements[seen.element].area_m2;
         }
         // Tilted views where the straight one is not admissible or sees less than its whole
         // covered part (an edge, an occluder, a narrow strip): in the open they add nothing.
@@ -721,7 +726,8 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
       // Standoff-keeping probes if any, else those of largest clearance.
       double best = -1.0;
       for (const Pose& p : seeing) best = std::max(best, p.clearance_m);
-      const double floor_m = best >= maker.requiredClearance_m() ? maker.requiredClearance_m() : best - kClearanceTolerance_m;
+      const double floor_m =
+          best >= maker.requiredClearance_m() ? maker.requiredClearance_m() : best - kClearanceTolerance_m;
       seeing.erase(std::remove_if(seeing.begin(), seeing.end(), [&](const Pose& p) { return p.clearance_m < floor_m; }),
                    seeing.end());
     }
@@ -739,9 +745,9 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
     }
   }
 
-  const std::vector<bool> keep = maker.free()
-                                     ? freeModeKeep(poses, covered, surface.elements.size(), maker.requiredClearance_m())
-                                     : std::vector<bool>(poses.size(), true);
+  const std::vector<bool> keep =
+      maker.free() ? freeModeKeep(poses, covered, surface.elements.size(), maker.requiredClearance_m())
+                   : std::vector<bool>(poses.size(), true);
   for (std::size_t v = 0; v < poses.size(); ++v)
     if (keep[v]) views.add(poses[v].pose, covered[v]);
   views.reachable = std::move(reached);

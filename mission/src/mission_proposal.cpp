@@ -81,8 +81,10 @@ std::vector<ProposedRegion> overheadRegions(const environment::Environment& envi
     if (faceKindOf(element.normal) != FaceKind::Down) continue;
     elements.push_back(element);
     proposal.overhead_area_m2 += element.area_m2;
-    if (element.centre_m.z() + 1e-9 >= lowest_m) high.push_back(element);
-    else proposal.too_low_area_m2 += element.area_m2;
+    if (element.centre_m.z() + 1e-9 >= lowest_m)
+      high.push_back(element);
+    else
+      proposal.too_low_area_m2 += element.area_m2;
   }
   const environment::GridFrame& frame = grid.frame();
   std::unordered_map<std::size_t, std::size_t> element_of_voxel;  // one element per voxel is enough to join
@@ -121,8 +123,10 @@ std::vector<ProposedRegion> overheadRegions(const environment::Environment& envi
   }
   std::vector<ProposedRegion> roomy;
   for (std::size_t r = 0; r < regions.size(); ++r) {
-    if (2.0 * roomy_area_m2[r] >= regions[r].area_m2) roomy.push_back(regions[r]);
-    else proposal.too_low_area_m2 += regions[r].area_m2;
+    if (2.0 * roomy_area_m2[r] >= regions[r].area_m2)
+      roomy.push_back(regions[r]);
+    else
+      proposal.too_low_area_m2 += regions[r].area_m2;
   }
   regions = std::move(roomy);
   // Largest first; ties by place, so that the order does not depend on the hash map's.
@@ -287,9 +291,9 @@ MissionProposal proposeMission(const environment::Environment& environment, cons
   if (progress) progress("finding overhead surfaces", 0.0);
   std::vector<ProposedRegion> regions = overheadRegions(environment, box_m, proposal, elements);
   if (progress) progress("finding overhead surfaces", 1.0);
-  const std::string where = options.crop_m ? " inside the crop " + formatPoint(box_m.min()) + " to " +
-                                                 formatPoint(box_m.max())
-                                           : std::string(" in the map");
+  const std::string where = options.crop_m
+                                ? " inside the crop " + formatPoint(box_m.min()) + " to " + formatPoint(box_m.max())
+                                : std::string(" in the map");
   if (elements.empty())
     throw ceilplan::InputError("no down-facing surface with known free space below it" + where +
                                ": a scan without sensor origins may have no known free space (docs/import.md)");

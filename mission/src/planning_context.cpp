@@ -69,8 +69,8 @@ PlanningContext::PlanningContext(environment::OccupancyMap map, Vehicle vehicle,
   options_.speeds.validate(energy_->maxSpeedM_s());  // before the map is indexed
   const std::string stage = "indexing " + map_.name();
   environment_ = std::make_unique<environment::Environment>(
-      map_, vehicle_.geometry, options_.environment, environment::MapIndexOptions{options_.unknown, options_.environment.workers},
-      [&](double f) {
+      map_, vehicle_.geometry, options_.environment,
+      environment::MapIndexOptions{options_.unknown, options_.environment.workers}, [&](double f) {
         if (progress_) progress_(stage, f);
       });
   planner::CostModelOptions full;
@@ -104,7 +104,7 @@ PlanningContext::Mode PlanningContext::mode(FlightMode mode) const {
 }
 
 const planner::ReachableSpace& PlanningContext::reachableFrom(const Eigen::Vector3d& origin_m, double spacing_m,
-                                                            int workers) const {
+                                                              int workers) const {
   const std::lock_guard<std::mutex> lock(reachable_->mutex);
   for (const auto& space : reachable_->spaces)
     if (space->origin_m() == origin_m && space->requestedSpacing_m() == spacing_m) return *space;
@@ -133,8 +133,8 @@ planner::ObjectiveChoice PlanningContext::objective(const Eigen::Vector3d& start
   cruise.speed_m_s = options_.speeds.cruise_m_s;
   cruise.soc = battery_.start_soc;
   const double cruise_current_a = energy_->currentA(energy::kNoSurface, 0.0, cruise);
-  choice.ageing = planner::measureAgeingRates(options_.ageing_model, ageingModelOptions(options_.temperature_c), battery_.pack, battery_.start_soc, dod,
-                                              cruise_current_a);
+  choice.ageing = planner::measureAgeingRates(options_.ageing_model, ageingModelOptions(options_.temperature_c),
+                                              battery_.pack, battery_.start_soc, dod, cruise_current_a);
   return choice;
 }
 

@@ -15,9 +15,9 @@ RegionSurface extractRegionSurface(const environment::VoxelGrid& grid, const Reg
   if (surface.elements.empty())
     throw ceilplan::InputError(what + ": no occupied voxel face facing " + faces.describe() +
                                " onto known free space inside its " +
-                               (shape.kind == RegionShape::Kind::Box ? "'box' " + formatPoint(shape.box.min()) + " to " +
-                                                                           formatPoint(shape.box.max())
-                                                                     : std::string("'prism'")) +
+                               (shape.kind == RegionShape::Kind::Box
+                                    ? "'box' " + formatPoint(shape.box.min()) + " to " + formatPoint(shape.box.max())
+                                    : std::string("'prism'")) +
                                ": check it against the map (ceilplan mapinfo, probe) and its 'faces'");
   return surface;
 }

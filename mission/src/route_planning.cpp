@@ -95,7 +95,9 @@ RouteComparison compareRoutes(const PlanningContext& context, const planner::Pla
                               const DutyOptions& duty) {
   duty.validate();
   RouteComparison comparison;
-  const auto withMode = [](const std::exception& e, FlightMode mode) { return flightModeName(mode) + " mode: " + e.what(); };
+  const auto withMode = [](const std::exception& e, FlightMode mode) {
+    return flightModeName(mode) + " mode: " + e.what();
+  };
   try {
     comparison.free = planRoute(context, FlightMode::Free, request);
   } catch (const NoPathError& e) {

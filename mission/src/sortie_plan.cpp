@@ -41,7 +41,7 @@ class SortieBuilder {
     const LegCost* found = legs_.legs.find(from, to);
     if (!found)
       throw ceilplan::InputError("the tour has no leg from '" + legs_.names[from] + "' to '" + legs_.names[to] +
-                                  "' for a sortie to fly");
+                                 "' for a sortie to fly");
     if (found->load_profile.size() >= 2) {
       flyProfile(flight, found->load_profile, recorder(flight, history));
     } else {
@@ -159,13 +159,13 @@ void TourCosts::validate() const {
   if (n < 1) throw ceilplan::InputError("a tour needs home at index 0");
   if (static_cast<std::size_t>(legs.placeCount()) != n || dwells.size() != n)
     throw ceilplan::InputError("a tour of " + std::to_string(n) + " places needs legs between " + std::to_string(n) +
-                                " places and " + std::to_string(n) + " dwells");
+                               " places and " + std::to_string(n) + " dwells");
   for (std::size_t i = 0; i < n; ++i) {
     for (const auto& [j, leg] : legs.row(static_cast<int>(i))) {
       if (static_cast<std::size_t>(j) == i) continue;  // a place to itself is never flown
       if (j < 0 || static_cast<std::size_t>(j) >= n)
-        throw ceilplan::InputError("a leg from '" + names[i] + "' leads to place " + std::to_string(j) + ", not one of the " +
-                                    std::to_string(n) + " others");
+        throw ceilplan::InputError("a leg from '" + names[i] + "' leads to place " + std::to_string(j) +
+                                   ", not one of the " + std::to_string(n) + " others");
       const std::string what = "leg '" + names[i] + "' -> '" + names[j] + "'";
       requireFiniteNonNegative(leg.charge_ah, what + " charge (Ah)");
       requireFiniteNonNegative(leg.duration_s, what + " duration (s)");
@@ -200,7 +200,8 @@ void offer(Best& best, const Best& before, double wear, int split) {
   const int sorties = before.sorties + 1;
   const bool first = best.split < 0;
   const double tie = first ? 0.0 : 1e-12 * std::max(std::fabs(total), std::fabs(best.wear));
-  if (first || total < best.wear - tie || (total <= best.wear + tie && sorties < best.sorties)) best = {total, sorties, split};
+  if (first || total < best.wear - tie || (total <= best.wear + tie && sorties < best.sorties))
+    best = {total, sorties, split};
 }
 
 // Where the stretches between split points begin, sorted, 0 first (every position when there
@@ -214,7 +215,7 @@ std::vector<int> stretchStarts(const std::vector<int>& split_points, int n) {
   for (int p : split_points) {
     if (p < 0 || p >= std::max(n, 1))
       throw ceilplan::InputError("sortie split point " + std::to_string(p) + " is not a position in the order 0.." +
-                                  std::to_string(n - 1));
+                                 std::to_string(n - 1));
     starts.push_back(p);
   }
   std::sort(starts.begin(), starts.end());
@@ -230,7 +231,7 @@ void checkTour(const TourCosts& legs, const std::vector<int>& order, const Batte
   const int n = static_cast<int>(order.size());
   if (n != legs.targetCount())
     throw ceilplan::InputError("the visiting order lists " + std::to_string(n) + " targets, the tour has " +
-                                std::to_string(legs.targetCount()));
+                               std::to_string(legs.targetCount()));
   std::vector<int> sorted = order;
   std::sort(sorted.begin(), sorted.end());
   for (int k = 0; k < n; ++k)
@@ -270,7 +271,8 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
                        const SortieOptions& options) {
   checkTour(legs, order, battery);
   const int n = static_cast<int>(order.size());
-  const std::unique_ptr<battery::AgeingModel> prototype = battery::makeAgeingModel(options.ageing_model, options.ageing);
+  const std::unique_ptr<battery::AgeingModel> prototype =
+      battery::makeAgeingModel(options.ageing_model, options.ageing);
   const SortieBuilder builder(legs, battery);
   const auto above = [&](double soc) { return aboveReserve(battery, soc); };
   auto feasible = [&](const Sortie& sortie) { return above(sortie.lowest_soc); };
@@ -310,7 +312,8 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
         builder.flyLeg(home, at, 0);
         if (!above(home.lowestSoc())) continue;
         if (std::isfinite(best[b].wear))
-          offer(best[e], best[b], turningPointWear(*prototype, battery, home, builder.rechargeS(home.chargeAh()), soh), b);
+          offer(best[e], best[b], turningPointWear(*prototype, battery, home, builder.rechargeS(home.chargeAh()), soh),
+                b);
       }
     }
   }
@@ -325,11 +328,11 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
   if (!unreachable.empty()) {
     const int first = starts[first_unreachable], last = starts[first_unreachable + 1] - 1;
     const Sortie alone = builder.build(order, first, last);
-    throw ceilplan::InfeasibleError("no single sortie can reach, inspect and return from " + targetList(legs, unreachable) +
-                                " above the " + percent(battery.reserve_soc) + " reserve (home -> '" +
-                                legs.names[order[first]] + (last > first ? "' ... '" + legs.names[order[last]] : "") +
-                                "' -> home lands at " + percent(alone.lowest_soc) +
-                                "); move home closer or use a larger pack");
+    throw ceilplan::InfeasibleError("no single sortie can reach, inspect and return from " +
+                                    targetList(legs, unreachable) + " above the " + percent(battery.reserve_soc) +
+                                    " reserve (home -> '" + legs.names[order[first]] +
+                                    (last > first ? "' ... '" + legs.names[order[last]] : "") + "' -> home lands at " +
+                                    percent(alone.lowest_soc) + "); move home closer or use a larger pack");
   }
 
   std::vector<int> chosen;
@@ -350,8 +353,8 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
       sortie.reason = splitReason(legs, battery, *prototype, sortie, next, merged, feasible(merged));
     } else {
       sortie.reason = std::string(chosen.size() == 2 ? "one sortie flies the whole tour" : "last sortie") +
-                      ": lands at " + percent(sortie.lowest_soc) + " SOC, above the " +
-                      percent(battery.reserve_soc) + " reserve";
+                      ": lands at " + percent(sortie.lowest_soc) + " SOC, above the " + percent(battery.reserve_soc) +
+                      " reserve";
     }
     plan.charge_ah += sortie.charge_ah;
     plan.flight_s += sortie.flight_s;
@@ -381,7 +384,7 @@ Sortie flySortie(const TourCosts& legs, const std::vector<int>& targets, const B
   for (int target : targets)
     if (target < 1 || target > legs.targetCount())
       throw ceilplan::InputError("target index " + std::to_string(target) + " is not in 1.." +
-                                  std::to_string(legs.targetCount()));
+                                 std::to_string(legs.targetCount()));
   return SortieBuilder(legs, battery).build(targets, 0, static_cast<int>(targets.size()) - 1);
 }
 

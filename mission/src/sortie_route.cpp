@@ -34,7 +34,8 @@ void SortieRoute::validate() const {
   for (std::size_t k = 0; k < waypoints.size(); ++k) {
     const RouteWaypoint& w = waypoints[k];
     const std::string what = "route waypoint " + std::to_string(k + 1);
-    if (!w.position_m.allFinite()) throw InputError(what + ": position must be finite, got " + formatPoint(w.position_m));
+    if (!w.position_m.allFinite())
+      throw InputError(what + ": position must be finite, got " + formatPoint(w.position_m));
     if (!(w.hold_s >= 0.0) || !std::isfinite(w.hold_s))
       throw InputError(what + ": hold must be finite and non-negative, got " + formatNumber(w.hold_s) + " s");
     if (w.yaw_deg && !std::isfinite(*w.yaw_deg))

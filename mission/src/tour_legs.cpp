@@ -7,8 +7,8 @@ namespace {
 
 enum class Rework { Route, Refine };
 
-void rework(LegTable& legs, const std::vector<std::pair<int, int>>& which, const LegRework& make, const LegScorer& score,
-            int workers, const FractionCallback& progress, Rework kind) {
+void rework(LegTable& legs, const std::vector<std::pair<int, int>>& which, const LegRework& make,
+            const LegScorer& score, int workers, const FractionCallback& progress, Rework kind) {
   std::vector<TourLeg*> cells;
   for (const auto& [from, to] : which) cells.push_back(&legs(from, to));  // stored before the threads start
   parallelFor(

@@ -1,6 +1,6 @@
 #include "ceilplan/mission/tour_order.hpp"
-#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -114,8 +114,8 @@ class Walk {
           const int a = nodes_[p], b = nodes_[p + 1];
           const double gap = -leg(a, b);
           const double kept = removal + gap + leg(a, first_node) + leg(last_node, b);
-          const double reversed = removal + gap + leg(a, last_node) + leg(first_node, b) +
-                                  against(i, last) - along(i, last);
+          const double reversed =
+              removal + gap + leg(a, last_node) + leg(first_node, b) + against(i, last) - along(i, last);
           const bool reverse = reversed < kept;
           if (std::min(kept, reversed) < -threshold()) {
             std::vector<int> stretch(nodes_.begin() + i, nodes_.begin() + last + 1);
@@ -204,7 +204,6 @@ class NeighbourWalk {
     for (int k = 1; k <= targetCount(); ++k) position_[nodes_[k]] = k;
   }
 
-
   // Where a node stands in the walk: home at both ends.
   std::vector<int> positionsOf(int node) const {
     if (node == 0) return {0, targetCount() + 1};
@@ -265,8 +264,7 @@ class NeighbourWalk {
                 return std::make_pair(base + cost(a, first_node) + cost(last_node, b),
                                       base + cost(a, last_node) + cost(first_node, b) + turn);
               };
-              const auto [kept_bound, reversed_bound] =
-                  price([this](int from, int to) { return lowest(from, to); });
+              const auto [kept_bound, reversed_bound] = price([this](int from, int to) { return lowest(from, to); });
               if (std::min(kept_bound, reversed_bound) >= -threshold()) continue;
               const auto [kept, reversed] = price([this](int from, int to) { return leg(from, to); });
               if (std::min(kept, reversed) >= -threshold()) continue;
@@ -317,12 +315,12 @@ std::vector<int> nearestNeighbour(const CostMatrix& costs) {
 void validateCostMatrix(const CostMatrix& costs) {
   if (costs.rows() < 1 || costs.rows() != costs.cols())
     throw ceilplan::InputError("the tour's cost matrix must be square with home at index 0, got " +
-                                std::to_string(costs.rows()) + " x " + std::to_string(costs.cols()));
+                               std::to_string(costs.rows()) + " x " + std::to_string(costs.cols()));
   for (Eigen::Index i = 0; i < costs.rows(); ++i)
     for (Eigen::Index j = 0; j < costs.cols(); ++j)
       if (!std::isfinite(costs(i, j)) || costs(i, j) < 0.0)
         throw ceilplan::InputError("tour cost from " + std::to_string(i) + " to " + std::to_string(j) +
-                                    " must be finite and non-negative, got " + formatNumber(costs(i, j)));
+                                   " must be finite and non-negative, got " + formatNumber(costs(i, j)));
 }
 
 double tourCost(const CostMatrix& costs, const std::vector<int>& targets) {
@@ -340,7 +338,7 @@ TourOrder heldKarpTour(const CostMatrix& costs) {
   const int n = targetCount(costs);
   if (n > kHeldKarpMaxTargets)
     throw ceilplan::InputError("exact tour ordering (Held-Karp) takes at most " + std::to_string(kHeldKarpMaxTargets) +
-                                " targets, got " + std::to_string(n) + ": use the heuristic");
+                               " targets, got " + std::to_string(n) + ": use the heuristic");
   TourOrder result;
   result.method = "held-karp";
   if (n == 0) {
@@ -394,7 +392,8 @@ TourOrder heldKarpTour(const CostMatrix& costs) {
 
 TourOrder heuristicTour(const CostMatrix& costs, std::uint64_t seed, int restarts) {
   validateCostMatrix(costs);
-  if (restarts < 0) throw ceilplan::InputError("the heuristic's restart count must be >= 0, got " + std::to_string(restarts));
+  if (restarts < 0)
+    throw ceilplan::InputError("the heuristic's restart count must be >= 0, got " + std::to_string(restarts));
   Walk best(costs, nearestNeighbour(costs));
   best.improve();
   std::mt19937_64 random(seed);
@@ -413,16 +412,18 @@ TourOrder heuristicTour(const CostMatrix& costs, std::uint64_t seed, int restart
 }
 
 TourOrder neighbourListTour(int target_count, const PairCost& cost, const PairCost& bound,
-                            const std::vector<std::vector<int>>& neighbours, const std::vector<std::vector<int>>& starts,
-                            int kicks, std::uint64_t seed, int kick_window) {
+                            const std::vector<std::vector<int>>& neighbours,
+                            const std::vector<std::vector<int>>& starts, int kicks, std::uint64_t seed,
+                            int kick_window) {
   if (target_count < 0) throw ceilplan::InputError("a tour cannot have a negative number of targets");
   if (static_cast<int>(neighbours.size()) != target_count + 1)
     throw ceilplan::InputError("neighbour lists for " + std::to_string(neighbours.size()) + " places, the tour has " +
-                                std::to_string(target_count + 1));
+                               std::to_string(target_count + 1));
   for (const std::vector<int>& list : neighbours)
     for (int place : list)
       if (place < 0 || place > target_count)
-        throw ceilplan::InputError("neighbour " + std::to_string(place) + " is not a place 0.." + std::to_string(target_count));
+        throw ceilplan::InputError("neighbour " + std::to_string(place) + " is not a place 0.." +
+                                   std::to_string(target_count));
   if (starts.empty()) throw ceilplan::InputError("the neighbour-list search needs at least one start order");
   TourOrder result;
   result.method = kNeighbourListName;
@@ -432,7 +433,8 @@ TourOrder neighbourListTour(int target_count, const PairCost& cost, const PairCo
     std::sort(sorted.begin(), sorted.end());
     bool listed = static_cast<int>(sorted.size()) == target_count;
     for (int k = 0; listed && k < target_count; ++k) listed = sorted[k] == k + 1;
-    if (!listed) throw ceilplan::InputError("a start order must list every target 1.." + std::to_string(target_count) + " once");
+    if (!listed)
+      throw ceilplan::InputError("a start order must list every target 1.." + std::to_string(target_count) + " once");
     NeighbourWalk walk(cost, bound, neighbours, start);
     walk.improve();
     if (walk.cost() < result.cost) {
@@ -529,7 +531,7 @@ TourOrder orderTour(const CostMatrix& costs, const TourOrderOptions& options) {
   validateCostMatrix(costs);
   if (options.exact_max_targets > kHeldKarpMaxTargets)
     throw ceilplan::InputError("exact tour ordering (Held-Karp) takes at most " + std::to_string(kHeldKarpMaxTargets) +
-                                " targets, asked for up to " + std::to_string(options.exact_max_targets));
+                               " targets, asked for up to " + std::to_string(options.exact_max_targets));
   if (targetCount(costs) <= options.exact_max_targets) return heldKarpTour(costs);
   return heuristicTour(costs, options.seed, options.restarts);
 }

@@ -5,14 +5,14 @@
 #include "ceilplan/mission/route_planning.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/parallel_for.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/lattice_roadmap.hpp"
 #include "ceilplan/planner/path_refinement.hpp"
 #include "ceilplan/planner/reachable_space.hpp"
-#include "ceilplan/core/error.hpp"
-#include "ceilplan/core/format.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -86,7 +86,8 @@ planner::PathSample hoverSample(const PlanningContext& context, const Eigen::Vec
   hover.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
   hover.ground_gap_m = conditions.ground_gap_m;
   hover.clearance_m = context.environment().clearance_m(position_m);
-  hover.propulsion_power_w = model.breakdown(conditions, planner::Velocity{}, context.battery().start_soc).propulsionW();
+  hover.propulsion_power_w =
+      model.breakdown(conditions, planner::Velocity{}, context.battery().start_soc).propulsionW();
   return hover;
 }
 
@@ -144,7 +145,8 @@ std::vector<TourStop> viewpointStops(const std::vector<InspectionTarget>& target
 CoveragePlan planMissionCoverage(const Mission& mission, const PlanningContext& context, FlightMode mode,
                                  const TourOptions& options, const planner::ReachablePredicate& reachable) {
   if (!mission.camera)
-    throw InputError(mission.name() + ": surfaces are photographed: add a 'camera' (docs/coverage.md, \"Mission keys\")");
+    throw InputError(mission.name() +
+                     ": surfaces are photographed: add a 'camera' (docs/coverage.md, \"Mission keys\")");
   CoveragePlanOptions coverage;
   coverage.views.mode = mode;
   coverage.views.free_standoff_m = context.options().standoff_m;
@@ -166,7 +168,8 @@ TourStop photoStop(const CoveragePlan& plan, std::size_t k, const Camera& camera
   const PlannedPhoto& photo = plan.photos[k];
   TourStop stop;
   stop.photo = k;
-  stop.target.name = plan.regions.at(static_cast<std::size_t>(photo.region)).region.name + "_photo" + std::to_string(k + 1);
+  stop.target.name =
+      plan.regions.at(static_cast<std::size_t>(photo.region)).region.name + "_photo" + std::to_string(k + 1);
   const CameraFrame frame(camera, photo.pose);
   stop.target.point_m = frame.position_m() + photo.distance_m * frame.forward();
   stop.target.standoff_min_m = stop.target.standoff_max_m = (stop.target.point_m - photo.pose.body_m).norm();
@@ -203,10 +206,12 @@ std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext&
   // Point targets first in the search, so that free mode marks them only; the stops list contact
   // points before them.
   std::vector<TourStop> viewpoints = viewpointStops(targets, mission.targets.size(), context, mode, options, reachable);
-  std::rotate(viewpoints.begin(), viewpoints.begin() + static_cast<std::ptrdiff_t>(mission.targets.size()), viewpoints.end());
+  std::rotate(viewpoints.begin(), viewpoints.begin() + static_cast<std::ptrdiff_t>(mission.targets.size()),
+              viewpoints.end());
   for (std::size_t k = 0; k + mission.targets.size() < viewpoints.size(); ++k) viewpoints[k].contact = true;
   stops.insert(stops.end(), viewpoints.begin(), viewpoints.end());
-  if (stops.empty()) throw InputError(mission.name() + ": nothing to inspect: no targets, surfaces or contact grid points");
+  if (stops.empty())
+    throw InputError(mission.name() + ": nothing to inspect: no targets, surfaces or contact grid points");
   return stops;
 }
 
@@ -240,9 +245,10 @@ FlightRecord recordFlight(const TourResult& tour, const PlanningContext& context
       sample.t_s = flight.time_s();
       sample.current_a = current_a;
       sample.soc = flight.soc();
-      sample.power_w = sample.propulsion_power_w +
-                       pack.operatingPoint(sample.propulsion_power_w, std::clamp(sample.soc, 0.0, 1.0)).terminal_voltage_v *
-                           pack.avionicsCurrentA();
+      sample.power_w =
+          sample.propulsion_power_w +
+          pack.operatingPoint(sample.propulsion_power_w, std::clamp(sample.soc, 0.0, 1.0)).terminal_voltage_v *
+              pack.avionicsCurrentA();
       sortie_record.samples.push_back(sample);
       sortie_record.phases.push_back(phase);
       sortie_record.steps.push_back(step);
@@ -258,7 +264,9 @@ FlightRecord recordFlight(const TourResult& tour, const PlanningContext& context
       if (leg.to == 0) continue;
       const planner::PathSample& hover_sample = tour.stops[leg.to - 1].hover;
       hover(flight, hover_sample.propulsion_power_w, tour.stops[leg.to - 1].target.dwell_s,
-            [&](std::size_t, double current_a) { add(hover_sample, current_a, FlightPhase::Dwell, static_cast<int>(step)); });
+            [&](std::size_t, double current_a) {
+              add(hover_sample, current_a, FlightPhase::Dwell, static_cast<int>(step));
+            });
     }
     sortie_record.takeoff_s = clock_s;
     sortie_record.turnaround_s = sortie.turnaround_s;
@@ -286,16 +294,17 @@ DutyProjection projectDuty(const TourResult& tour, const BatterySpec& battery, c
   duty.initial_soc = battery.start_soc;
   const double mission_s = duty.mission.periodS();
   const int fit = static_cast<int>(std::floor(duty.day_s / mission_s));
-  projection.missions_per_day = options.missions_per_day ? *options.missions_per_day : std::min(kDefaultToursPerDay, fit);
+  projection.missions_per_day =
+      options.missions_per_day ? *options.missions_per_day : std::min(kDefaultToursPerDay, fit);
   projection.days = options.days;
   projection.mission_min = mission_s / 60.0;
   if (projection.missions_per_day < 1 || projection.missions_per_day > fit) {
-    projection.note = "not projected: the tour takes " + formatFixed(mission_s / 60.0, 1) +
-                      " min with its recharges and idle, so " +
-                      (fit < 1 ? std::string("it does not fit in a day even once")
-                               : "at most " + std::to_string(fit) + " fit in a day, not " +
-                                     std::to_string(projection.missions_per_day)) +
-                      "; set the tours per day (--missions-per-day) or shorten the charge (--charge-max-min)";
+    projection.note =
+        "not projected: the tour takes " + formatFixed(mission_s / 60.0, 1) + " min with its recharges and idle, so " +
+        (fit < 1
+             ? std::string("it does not fit in a day even once")
+             : "at most " + std::to_string(fit) + " fit in a day, not " + std::to_string(projection.missions_per_day)) +
+        "; set the tours per day (--missions-per-day) or shorten the charge (--charge-max-min)";
     return projection;
   }
   duty.missions_per_day = projection.missions_per_day;
@@ -332,16 +341,18 @@ planner::LatticeSettings latticeSettings(const TourOptions& options) {
   return settings;
 }
 
-LegPlanner legPlanner(const PlanningContext& context, FlightMode mode, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+LegPlanner legPlanner(const PlanningContext& context, FlightMode mode, const Eigen::Vector3d& a,
+                      const Eigen::Vector3d& b) {
   LegPlanner leg{context.mode(mode), nullptr};
-  leg.planner = std::make_unique<planner::FlightPlanner>(*leg.planning.rules, *leg.planning.model, context.objective(a, b));
+  leg.planner =
+      std::make_unique<planner::FlightPlanner>(*leg.planning.rules, *leg.planning.model, context.objective(a, b));
   return leg;
 }
 
 // One search between two places with a pairwise planner (OMPL's or the lattice A*), the path
 // post-processed.
-std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner& leg, const TourOptions& options, int from,
-                                       int to) {
+std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner& leg, const TourOptions& options,
+                                       int from, int to) {
   const Eigen::Vector3d &a = tour.places_m[from], &b = tour.places_m[to];
   planner::PlanRequest request;
   request.start_m = a;
@@ -379,7 +390,8 @@ std::vector<Eigen::Vector3d> searchLeg(const TourResult& tour, const LegPlanner&
 class TourRoadmap {
  public:
   TourRoadmap(const TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options)
-      : tour_(tour), planner_(legPlanner(context, mode, tour.places_m.front(), tour.places_m.front())),
+      : tour_(tour),
+        planner_(legPlanner(context, mode, tour.places_m.front(), tour.places_m.front())),
         straight_when_clear_(options.straight_when_clear) {
     planner::LatticeSettings settings = latticeSettings(options);
     settings.progress = stageProgress(options, flightModeName(tour.mode) + " mode: building the roadmap");
@@ -395,9 +407,7 @@ class TourRoadmap {
         goals.empty() ? roadmap_->routesFrom(from) : roadmap_->routesFrom(from, goals);
     const int places = static_cast<int>(tour_.places_m.size());
     std::vector<std::vector<Eigen::Vector3d>> paths(places);
-    const auto leg = [&](int to) {
-      paths[to] = bestLeg(from, to, routes[to] ? &routes[to]->waypoints : nullptr);
-    };
+    const auto leg = [&](int to) { paths[to] = bestLeg(from, to, routes[to] ? &routes[to]->waypoints : nullptr); };
     if (goals.empty()) {
       for (int to = 0; to < places; ++to)
         if (to != from) leg(to);
@@ -431,7 +441,8 @@ class TourRoadmap {
     const Eigen::Vector3d &a = tour_.places_m[from], &b = tour_.places_m[to];
     std::optional<std::vector<Eigen::Vector3d>> best;
     if (route) best = planner::shortcutPath(*route, rules, objective);
-    if (straight_when_clear_ && rules.isMotionValid(a, b) && (!best || objective.motionCost(a, b) < objective.pathCost(*best)))
+    if (straight_when_clear_ && rules.isMotionValid(a, b) &&
+        (!best || objective.motionCost(a, b) < objective.pathCost(*best)))
       best = std::vector<Eigen::Vector3d>{a, b};
     if (!best) {
       const std::optional<planner::Blockage> blockage = roadmap_->blockage(from, to);
@@ -451,8 +462,8 @@ class TourRoadmap {
 
 // Every leg from one roadmap over the map: each place's route to every other. Raw: the legs a
 // plan flies are refined later.
-LegTable roadmapLegs(const TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options,
-                     const LegScorer& score) {
+LegTable roadmapLegs(const TourResult& tour, const PlanningContext& context, FlightMode mode,
+                     const TourOptions& options, const LegScorer& score) {
   const TourRoadmap roadmap(tour, context, mode, options);
   const RoutesFrom routes_from = [&](int from) { return roadmap.legsFrom(from, {}); };
   return planLegsByPlace(static_cast<int>(tour.places_m.size()), routes_from, score, options.workers,
@@ -523,14 +534,20 @@ class SparseLegs {
  public:
   SparseLegs(TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options,
              const LegScorer& score)
-      : tour_(tour), context_(context), mode_(mode), options_(options), score_(score),
-        planning_(context.mode(mode)), neighbours_(nearestPlaces(tour.places_m, std::min<int>(options.neighbours,
-                                                                                         static_cast<int>(tour.places_m.size()) - 1))) {
+      : tour_(tour),
+        context_(context),
+        mode_(mode),
+        options_(options),
+        score_(score),
+        planning_(context.mode(mode)),
+        neighbours_(nearestPlaces(tour.places_m,
+                                  std::min<int>(options.neighbours, static_cast<int>(tour.places_m.size()) - 1))) {
     tour_.legs = LegTable(static_cast<int>(tour.places_m.size()));
     planner::CostWeights charge;
     charge.per_ah = 1.0;
     min_ah_per_m_ = context.fullModel().minCostPerMetre(charge);
-    if (planner::plannerInfo(options.planner).multiQuery()) roadmap_ = std::make_unique<TourRoadmap>(tour, context, mode, options);
+    if (planner::plannerInfo(options.planner).multiQuery())
+      roadmap_ = std::make_unique<TourRoadmap>(tour, context, mode, options);
   }
 
   const std::vector<std::vector<int>>& neighbours() const { return neighbours_; }
@@ -604,8 +621,8 @@ class SparseLegs {
       if (starts.front().empty()) starts.front() = nearestNeighbourOrder(tour_.places_m, neighbours_);
       tour_.order = neighbourListTour(
           targets, [this](int from, int to) { return visitCost(from, to); },
-          [this](int from, int to) { return visitBound(from, to); }, neighbours_, starts, round == 1 ? options_.order_kicks : 0,
-          options_.seed);
+          [this](int from, int to) { return visitBound(from, to); }, neighbours_, starts,
+          round == 1 ? options_.order_kicks : 0, options_.seed);
     }
     const std::vector<int>& order = tour_.order.targets;
     // Split points: evenly spaced, at least --split-points of them, more where a stretch between
@@ -630,13 +647,13 @@ class SparseLegs {
       int position = 0;
       for (const Sortie& sortie : tour_.plan.sorties) {
         if (position > 0)
-          for (int p = std::max(0, position - stride); p <= std::min(targets - 1, position + stride); ++p) split_points.insert(p);
+          for (int p = std::max(0, position - stride); p <= std::min(targets - 1, position + stride); ++p)
+            split_points.insert(p);
         position += static_cast<int>(sortie.targets.size());
       }
       tour_.plan = split(order, split_points);
     }
   }
-
 
   // The legs out of home to, and back from, the ends of every stretch between split points:
   // what a sortie that cannot fly may need refined. None before there is an order (the order
@@ -660,8 +677,8 @@ class SparseLegs {
       if (!tour_.legs.at(from, to).routed) estimates.emplace_back(from, to);
     if (estimates.empty()) return;
     std::sort(estimates.begin(), estimates.end());
-    const FractionCallback progress =
-        stageProgress(options_, flightModeName(tour_.mode) + " mode: routing " + std::to_string(estimates.size()) + " legs");
+    const FractionCallback progress = stageProgress(
+        options_, flightModeName(tour_.mode) + " mode: routing " + std::to_string(estimates.size()) + " legs");
     if (roadmap_) {
       std::map<int, std::vector<int>> goals;
       for (const auto& [from, to] : estimates) goals[from].push_back(to);
@@ -723,7 +740,8 @@ class SparseLegs {
     std::optional<std::vector<Eigen::Vector3d>> best;
     double best_cost = std::numeric_limits<double>::infinity();
     for (const Eigen::Vector3d& turn :
-         {Eigen::Vector3d(b.x(), b.y(), a.z()), Eigen::Vector3d(a.x(), a.y(), b.z()), Eigen::Vector3d(middle + 0.5 * Eigen::Vector3d::UnitZ()),
+         {Eigen::Vector3d(b.x(), b.y(), a.z()), Eigen::Vector3d(a.x(), a.y(), b.z()),
+          Eigen::Vector3d(middle + 0.5 * Eigen::Vector3d::UnitZ()),
           Eigen::Vector3d(middle - 0.5 * Eigen::Vector3d::UnitZ()), Eigen::Vector3d(middle + Eigen::Vector3d::UnitZ()),
           Eigen::Vector3d(middle - Eigen::Vector3d::UnitZ())}) {
       if ((turn - a).norm() < 1e-6 || (turn - b).norm() < 1e-6 || !rules.isStateValid(turn) ||
@@ -793,7 +811,8 @@ class SparseLegs {
 
 // The photos as flown: in flying order, each with its sortie and the time of the shot on the
 // tour's clock (the end of the hold, or the passing), and the re-check of what they cover.
-void recordPhotos(TourResult& tour, const Mission& mission, const PlanningContext& context, const TourOptions& options) {
+void recordPhotos(TourResult& tour, const Mission& mission, const PlanningContext& context,
+                  const TourOptions& options) {
   std::vector<CameraPose> poses;
   for (std::size_t s = 0; s < tour.plan.sorties.size(); ++s) {
     const SortieRecord& record = tour.record.sorties[s];
@@ -816,8 +835,8 @@ void recordPhotos(TourResult& tour, const Mission& mission, const PlanningContex
     surfaces.push_back(region.surface);
     reachable.push_back(region.reachable);
   }
-  tour.coverage_check =
-      checkCoverage(context.map().tree(), *mission.camera, mission.surfaces, surfaces, reachable, poses, options.workers);
+  tour.coverage_check = checkCoverage(context.map().tree(), *mission.camera, mission.surfaces, surfaces, reachable,
+                                      poses, options.workers);
 }
 
 // Releases the samples of the legs the plan does not fly: they served the order search and the
@@ -945,8 +964,8 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
     }
     const Pairs to_refine = unrefined(raw_legs);
     refineLegs(tour.legs, to_refine, refine, score, options.workers,
-               stageProgress(options, flightModeName(tour.mode) + " mode: refining " + std::to_string(to_refine.size()) +
-                                          " legs"));
+               stageProgress(options, flightModeName(tour.mode) + " mode: refining " +
+                                          std::to_string(to_refine.size()) + " legs"));
     tour.times.refining_s += clock.lap_s();
     order_start_s = processCpuS();
   }
@@ -956,18 +975,20 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
     for (const SortieLeg& leg : sortie.legs)
       if (const auto violation = context.baseRules().checkPathDensely(tour.legs[leg.from][leg.to].waypoints))
         throw Error(flightModeName(tour.mode) + " mode: leg " + legName(tour, leg.from, leg.to) +
-                                 " fails the dense re-check: " + *violation);
+                    " fails the dense re-check: " + *violation);
 
   tour.unknown_space = context.environment().index()->unknownSpace();
   tour.unknown_summary = context.environment().index()->unknownSummary();
   for (const Sortie& sortie : tour.plan.sorties)
-    for (const SortieLeg& leg : sortie.legs) tour.assumed_free_m += tour.legs[leg.from][leg.to].evaluation.assumed_free_m;
-  if (mode == FlightMode::Free) tour.standoff = measureTourStandoff(tour, context.environment(), context.options().standoff_m);
+    for (const SortieLeg& leg : sortie.legs)
+      tour.assumed_free_m += tour.legs[leg.from][leg.to].evaluation.assumed_free_m;
+  if (mode == FlightMode::Free)
+    tour.standoff = measureTourStandoff(tour, context.environment(), context.options().standoff_m);
   tour.record = recordFlight(tour, context);
   std::vector<RouteStop> route_stops;
   for (const TourStop& stop : tour.stops)
-    route_stops.push_back(
-        {stop.target.name, stop.target.point_m, stop.target.dwell_s, stop.yaw_deg, stop.gimbal_pitch_deg, stop.contact});
+    route_stops.push_back({stop.target.name, stop.target.point_m, stop.target.dwell_s, stop.yaw_deg,
+                           stop.gimbal_pitch_deg, stop.contact});
   tour.routes = sortieRoutes(tour.plan, tour.legs, route_stops, mission);
   assignTakeoffAndLanding(tour.routes, context.baseRules());
   tour.trajectories = routeTrajectories(tour.routes, mission, context.baseRules());
@@ -987,8 +1008,9 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
 
 void TourOptions::validate() const {
   if (all_pairs_max_places < 2 || neighbours < 1 || split_points < 1 || order_kicks < 0)
-    throw InputError("tour options: all_pairs_max_places must be at least 2, neighbours and split_points at least 1, "
-                     "order_kicks at least 0");
+    throw InputError(
+        "tour options: all_pairs_max_places must be at least 2, neighbours and split_points at least 1, "
+        "order_kicks at least 0");
   planner::checkSeed(seed);
   latticeSettings(*this).validate();
   // Unknown names, a temperature out of the models' range: refused by what will use them.
@@ -1012,8 +1034,8 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
   // Home as the planner would check a start (the same rules in both modes).
   if (!context.baseRules().isStateValid(mission.home_m))
     throw ceilplan::InputError(mission.name() + ": home " + formatPoint(mission.home_m) +
-                                " is not a valid position for the vehicle (inside or too close to a structure, or "
-                                "outside the map); move it into free space");
+                               " is not a valid position for the vehicle (inside or too close to a structure, or "
+                               "outside the map); move it into free space");
   try {
     return planTourWith(mission, context, mode, options, {});
   } catch (const NoPathError&) {
@@ -1021,7 +1043,8 @@ TourResult planTour(const Mission& mission, const PlanningContext& context, Flig
     // from home reaches (the best reachable viewpoint of a target, the reachable photo poses).
     // The flood is sound but sees no passage narrower than its lattice, which the roadmap's
     // refinement finds: hence only now, after the first choice failed.
-    const planner::ReachableSpace& space = context.reachableFrom(mission.home_m, options.lattice_spacing_m, options.workers);
+    const planner::ReachableSpace& space =
+        context.reachableFrom(mission.home_m, options.lattice_spacing_m, options.workers);
     TourResult tour = planTourWith(mission, context, mode, options,
                                    [&space](const Eigen::Vector3d& body_m) { return space.reaches(body_m); });
     tour.stops_rechosen = true;

@@ -76,7 +76,8 @@ namespace {
 
 // The highest of `preferred`, half of it, a quarter, ... (down to 5 cm) for which `path(height)`
 // passes the dense re-check; none if even the lowest fails.
-std::optional<double> highestSafeHeight(double preferred_m, const std::function<std::vector<Eigen::Vector3d>(double)>& path,
+std::optional<double> highestSafeHeight(double preferred_m,
+                                        const std::function<std::vector<Eigen::Vector3d>(double)>& path,
                                         const planner::SafetyRules& rules) {
   constexpr double kLowest_m = 0.05;
   if (!rules.checkPathDensely(path(preferred_m))) return preferred_m;
@@ -91,19 +92,25 @@ void assignTakeoffAndLanding(std::vector<SortieRoute>& routes, const planner::Sa
   for (SortieRoute& route : routes) {
     const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
     const Eigen::Vector3d first = route.waypoints.at(0).position_m;
-    const auto climb = [&](double h) { return std::vector<Eigen::Vector3d>{route.home_m, route.home_m + h * up, first}; };
+    const auto climb = [&](double h) {
+      return std::vector<Eigen::Vector3d>{route.home_m, route.home_m + h * up, first};
+    };
     route.takeoff_height_m.reset();
     route.landing_height_m.reset();
     route.takeoff_height_m = highestSafeHeight(route.takeoffHeight_m(), climb, rules);
     if (!route.takeoff_height_m)
-      throw Error("sortie " + std::to_string(route.sortie) + ": no vertical take-off from home of 5 cm or more reaches " +
+      throw Error("sortie " + std::to_string(route.sortie) +
+                  ": no vertical take-off from home of 5 cm or more reaches " +
                   "the first waypoint without failing the dense re-check");
     if (!route.endsAtHome() || route.waypoints.size() < 2) continue;
     const Eigen::Vector3d last = route.waypoints[route.waypoints.size() - 2].position_m;
-    const auto descent = [&](double h) { return std::vector<Eigen::Vector3d>{last, route.home_m + h * up, route.home_m}; };
+    const auto descent = [&](double h) {
+      return std::vector<Eigen::Vector3d>{last, route.home_m + h * up, route.home_m};
+    };
     route.landing_height_m = highestSafeHeight(route.landingHeight_m(), descent, rules);
     if (!route.landing_height_m)
-      throw Error("sortie " + std::to_string(route.sortie) + ": no vertical landing at home of 5 cm or more is reached " +
+      throw Error("sortie " + std::to_string(route.sortie) +
+                  ": no vertical landing at home of 5 cm or more is reached " +
                   "from the last waypoint but one without failing the dense re-check");
   }
 }

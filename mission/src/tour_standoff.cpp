@@ -5,7 +5,8 @@
 #include <limits>
 
 namespace ceilplan::mission {
-TourStandoff measureTourStandoff(const TourResult& tour, const environment::Environment& environment, double standoff_m) {
+TourStandoff measureTourStandoff(const TourResult& tour, const environment::Environment& environment,
+                                 double standoff_m) {
   TourStandoff result;
   result.standoff_m = standoff_m;
   result.min_standoff_m = std::numeric_limits<double>::infinity();

@@ -37,8 +37,8 @@ double smoothstepSlope(double u) { return 6.0 * u * (1.0 - u); }
 // Duration of a jerk-limited speed change of `delta` (>= 0) under acceleration `a` and jerk `j`:
 // jerk up, constant acceleration (if the change is large enough), jerk down.
 struct SpeedChange {
-  double ramp_s = 0.0;   // each jerk phase
-  double hold_s = 0.0;   // constant acceleration phase
+  double ramp_s = 0.0;  // each jerk phase
+  double hold_s = 0.0;  // constant acceleration phase
   double peak_m_s2 = 0.0;
   double duration_s() const { return 2.0 * ramp_s + hold_s; }
 };
@@ -145,21 +145,21 @@ class Motion1D {
 struct Station {
   Eigen::Vector3d position_m;
   double hold_s = 0.0;
-  double leave_speed_m_s = 0.0;          // route speed towards the next station
-  std::optional<double> yaw_deg;         // last heading given here
+  double leave_speed_m_s = 0.0;   // route speed towards the next station
+  std::optional<double> yaw_deg;  // last heading given here
   std::optional<double> gimbal_pitch_deg;
   bool take_photo = false;
   std::optional<double> trigger_distance_m;
   // Corner handling (interior stations).
   double turn_rad = 0.0;
   bool rest = true;
-  double speed_m_s = 0.0;      // speed through the corner; 0 at a rest
-  double pair_accel = 0.0;     // limits of each segment's own motion during the blend
+  double speed_m_s = 0.0;   // speed through the corner; 0 at a rest
+  double pair_accel = 0.0;  // limits of each segment's own motion during the blend
   double pair_jerk = 0.0;
-  double pause_s = 0.0;        // turn in place on arrival, before the hold
+  double pause_s = 0.0;  // turn in place on arrival, before the hold
   // Timeline.
-  double arrive_s = 0.0;       // comes to rest here, or passes mid-blend
-  double depart_s = 0.0;       // leaves after pause and hold (= arrive_s when blended)
+  double arrive_s = 0.0;  // comes to rest here, or passes mid-blend
+  double depart_s = 0.0;  // leaves after pause and hold (= arrive_s when blended)
 };
 
 struct Segment {
@@ -250,8 +250,7 @@ class Scaler {
         s.pair_accel = limits_.max_acceleration_m_s2 / share;
         s.pair_jerk = limits_.max_jerk_m_s3 / share;
       }
-      s.rest = !interior || !blending || s.hold_s > 0.0 || turns_yaw ||
-               s.turn_rad > options_.stop_turn_deg * kDegree;
+      s.rest = !interior || !blending || s.hold_s > 0.0 || turns_yaw || s.turn_rad > options_.stop_turn_deg * kDegree;
     }
   }
 
@@ -348,9 +347,8 @@ class Scaler {
         Segment& seg = segments_[i];
         const Station &in = stations_[i], &out = stations_[i + 1];
         const double vin = in.speed_m_s, vout = out.speed_m_s;
-        const double peak = largest(std::max(vin, vout), seg.speed_limit_m_s, [&](double v) {
-          return neededDistance(i, vin, vout, v) <= seg.length_m;
-        });
+        const double peak = largest(std::max(vin, vout), seg.speed_limit_m_s,
+                                    [&](double v) { return neededDistance(i, vin, vout, v) <= seg.length_m; });
         seg.motion = Motion1D();
         seg.motion.changeSpeed(0.0, vin, in.pair_accel, in.pair_jerk);
         seg.motion.changeSpeed(vin, peak, a, j);
@@ -396,10 +394,10 @@ class Scaler {
 
   // Position, velocity and acceleration at time t: at most two segments move at once.
   Kinematics at(double t) const {
-    std::size_t k = static_cast<std::size_t>(
-        std::upper_bound(segments_.begin(), segments_.end(), t,
-                         [](double time, const Segment& s) { return time < s.start_s; }) -
-        segments_.begin());
+    std::size_t k =
+        static_cast<std::size_t>(std::upper_bound(segments_.begin(), segments_.end(), t,
+                                                  [](double time, const Segment& s) { return time < s.start_s; }) -
+                                 segments_.begin());
     if (k == 0) return {stations_[0].position_m, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
     --k;  // the last segment started
     Kinematics x{stations_[k].position_m, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
@@ -537,9 +535,7 @@ class Scaler {
     return out;
   }
 
-  long nearestSample(double t) const {
-    return std::clamp(static_cast<long>(std::lround(t / dt_)), 0L, end_sample_);
-  }
+  long nearestSample(double t) const { return std::clamp(static_cast<long>(std::lround(t / dt_)), 0L, end_sample_); }
 
   void markTriggers(Trajectory& out) const {
     for (const Station& s : stations_)

@@ -117,8 +117,9 @@ class LocalImprovement {
 
 }  // namespace
 
-std::vector<ViewCost> viewCosts(const planner::FlightCostModel& model, const Camera& camera, const CandidateViews& views,
-                                const RegionSurface& surface, const ViewCostOptions& options) {
+std::vector<ViewCost> viewCosts(const planner::FlightCostModel& model, const Camera& camera,
+                                const CandidateViews& views, const RegionSurface& surface,
+                                const ViewCostOptions& options) {
   if (!(std::isfinite(options.transit_speed_m_s) && options.transit_speed_m_s > 0.0))
     throw ceilplan::InputError("view costs: the transit speed must be positive");
   std::vector<ViewCost> costs(views.size());
@@ -142,15 +143,17 @@ std::vector<ViewCost> viewCosts(const planner::FlightCostModel& model, const Cam
   return costs;
 }
 
-SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double>& area, const std::vector<double>& cost,
-                           const SetCoverOptions& options) {
+SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double>& area,
+                           const std::vector<double>& cost, const SetCoverOptions& options) {
   if (cost.size() != views.size())
     throw ceilplan::InputError("view selection: " + std::to_string(cost.size()) + " costs for " +
                                std::to_string(views.size()) + " candidates");
   for (const double c : cost)
-    if (!(std::isfinite(c) && c > 0.0)) throw ceilplan::InputError("view selection: every cost must be positive and finite");
+    if (!(std::isfinite(c) && c > 0.0))
+      throw ceilplan::InputError("view selection: every cost must be positive and finite");
   for (const SeenElement& seen : views.seen)
-    if (seen.element >= area.size()) throw ceilplan::InputError("view selection: a candidate covers an unknown element");
+    if (seen.element >= area.size())
+      throw ceilplan::InputError("view selection: a candidate covers an unknown element");
 
   SetCoverResult result;
   std::vector<std::uint8_t> covered(area.size(), 0), chosen(views.size(), 0);
@@ -165,7 +168,9 @@ SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double
   struct Entry {
     double ratio;  // cost per newly covered area
     std::uint32_t view;
-    bool operator>(const Entry& other) const { return ratio > other.ratio || (ratio == other.ratio && view > other.view); }
+    bool operator>(const Entry& other) const {
+      return ratio > other.ratio || (ratio == other.ratio && view > other.view);
+    }
   };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   for (std::uint32_t v = 0; v < views.size(); ++v) {

@@ -1,9 +1,9 @@
 #include "ceilplan/mission/viewpoint.hpp"
 
-#include "ceilplan/planner/flight_cost_model.hpp"
-#include "ceilplan/planner/standoff.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/planner/standoff.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -68,7 +68,8 @@ class ViewpointSearch {
   Eigen::Vector3d ontoShell(const Eigen::Vector3d& body_m, double step_m) const {
     const Eigen::Vector3d offset_m = body_m - target_.point_m;
     const double distance_m = offset_m.norm();
-    if (distance_m == 0.0 || distance_m < target_.standoff_min_m - step_m || distance_m > target_.standoff_max_m + step_m)
+    if (distance_m == 0.0 || distance_m < target_.standoff_min_m - step_m ||
+        distance_m > target_.standoff_max_m + step_m)
       return body_m;
     const double onto_m = std::clamp(distance_m, target_.standoff_min_m, target_.standoff_max_m);
     return target_.point_m + offset_m * (onto_m / distance_m);
@@ -144,11 +145,12 @@ void InspectionTarget::validate() const {
   if (!point_m.allFinite()) throw ceilplan::InputError(what + ": point must be finite, got " + formatPoint(point_m));
   if (!(std::isfinite(standoff_min_m) && std::isfinite(standoff_max_m) && standoff_min_m >= 0.0 &&
         standoff_max_m > 0.0 && standoff_min_m <= standoff_max_m && standoff_max_m <= kMaxStandoff_m))
-    throw ceilplan::InputError(what + ": standoff range must be 0 <= min <= max, 0 < max <= " +
-                                formatNumber(kMaxStandoff_m) + ", got [" +
-                                formatNumber(standoff_min_m) + ", " + formatNumber(standoff_max_m) + "] m");
+    throw ceilplan::InputError(what +
+                               ": standoff range must be 0 <= min <= max, 0 < max <= " + formatNumber(kMaxStandoff_m) +
+                               ", got [" + formatNumber(standoff_min_m) + ", " + formatNumber(standoff_max_m) + "] m");
   if (!std::isfinite(dwell_s) || dwell_s < 0.0)
-    throw ceilplan::InputError(what + ": dwell time must be finite and non-negative, got " + formatNumber(dwell_s) + " s");
+    throw ceilplan::InputError(what + ": dwell time must be finite and non-negative, got " + formatNumber(dwell_s) +
+                               " s");
 }
 
 void requireOnStructure(const InspectionTarget& target, const environment::Environment& environment) {
@@ -171,8 +173,8 @@ void requireOnStructure(const InspectionTarget& target, const environment::Envir
         if ((target.point_m.cwiseMax(lower).cwiseMin(upper) - target.point_m).norm() <= reach_m) return;
       }
   throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
-                              " lies in free air: no structure within its standoff range of " +
-                              formatNumber(reach_m) + " m; put the point on the surface it inspects");
+                             " lies in free air: no structure within its standoff range of " + formatNumber(reach_m) +
+                             " m; put the point on the surface it inspects");
 }
 
 std::optional<Eigen::Vector3d> surfacePoint(const InspectionTarget& target,
@@ -216,10 +218,11 @@ double hoverCurrentA(const environment::Environment& environment, const energy::
                      const Eigen::Vector3d& body_m, double soc) {
   const environment::SurfaceGaps above = environment.ceiling(body_m);
   const environment::SurfaceGaps below = environment.ground(body_m);
-  if (static_cast<int>(above.rotors.size()) != model.rotorCount() || model.rotorCount() > energy::EnergyModel::kMaxRotors)
+  if (static_cast<int>(above.rotors.size()) != model.rotorCount() ||
+      model.rotorCount() > energy::EnergyModel::kMaxRotors)
     throw ceilplan::InputError("the map's vehicle has " + std::to_string(above.rotors.size()) +
-                                " rotors, the energy model " + std::to_string(model.rotorCount()) +
-                                ": use one vehicle file for both");
+                               " rotors, the energy model " + std::to_string(model.rotorCount()) +
+                               ": use one vehicle file for both");
   const planner::PointConditions conditions = planner::surfaceConditions(above, below);
   energy::FlightCondition hover;
   hover.ground_gap_m = conditions.ground_gap_m;
@@ -234,7 +237,8 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
     throw ceilplan::InputError("the conventional standoff must be a finite number >= 0 m, got " +
                                formatNumber(options.standoff_m));
   if (!environment.contains(target.point_m))
-    throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) + " lies outside the map");
+    throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
+                               " lies outside the map");
   ViewpointSearch search(target, environment, model, options);
   const double resolution_m = environment.grid().frame().resolution_m();
   const bool hug = options.mode == FlightMode::Ceiling;
@@ -244,10 +248,10 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
   search.scan(target.point_m, step_m, target.standoff_max_m, hug);
   if (!search.found())
     throw ceilplan::InputError("target '" + target.name + "' at " + formatPoint(target.point_m) +
-                                ": no valid viewpoint within " + formatNumber(target.standoff_min_m) + "-" +
-                                formatNumber(target.standoff_max_m) +
-                                " m that sees it; check the point lies on a surface facing free space, or widen its "
-                                "standoff range");
+                               ": no valid viewpoint within " + formatNumber(target.standoff_min_m) + "-" +
+                               formatNumber(target.standoff_max_m) +
+                               " m that sees it; check the point lies on a surface facing free space, or widen its "
+                               "standoff range");
   // Then finer around the best, a quarter of the step at a time, down to a quarter voxel.
   while (step_m > 0.25 * resolution_m * (1.0 + 1e-9)) {
     const double reach_m = step_m;

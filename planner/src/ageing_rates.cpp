@@ -1,6 +1,6 @@
 #include "ceilplan/planner/ageing_rates.hpp"
-#include "ceilplan/core/format.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +39,7 @@ AgeingRates measureAgeingRates(const std::string& model_name, const battery::Age
   pack.validate();
   if (!(depth_of_discharge > 0.0 && depth_of_discharge <= start_soc - pack.soc_min + 1e-12))
     throw ceilplan::InputError("ageing objective: depth of discharge must lie in (0, start SOC - minimum SOC], got " +
-                                formatNumber(depth_of_discharge));
+                               formatNumber(depth_of_discharge));
   if (!(discharge_current_a > 0.0)) throw ceilplan::InputError("ageing objective: discharge current must be > 0 A");
   const double discharged_ah = depth_of_discharge * pack.usableCapacityAh();
   const double discharge_s = 3600.0 * discharged_ah / discharge_current_a;
@@ -56,11 +56,12 @@ AgeingRates measureAgeingRates(const std::string& model_name, const battery::Age
   AgeingRates rates;
   rates.model = model_name;
   rates.depth_of_discharge = depth_of_discharge;
-  rates.loss_per_ah = std::max(0.0, lossOf(model_name, options, cycle) - lossOf(model_name, options, rest)) / discharged_ah;
+  rates.loss_per_ah =
+      std::max(0.0, lossOf(model_name, options, cycle) - lossOf(model_name, options, rest)) / discharged_ah;
   rates.loss_per_s = lossOf(model_name, options, day) / kCalendarWindowS;
   if (!(rates.loss_per_ah > 0.0 || rates.loss_per_s > 0.0))
     throw ceilplan::Error("ageing model '" + model_name + "' predicts no wear for a " +
-                             formatNumber(depth_of_discharge) + " depth-of-discharge cycle: choose another objective");
+                          formatNumber(depth_of_discharge) + " depth-of-discharge cycle: choose another objective");
   return rates;
 }
 

@@ -19,8 +19,8 @@ constexpr double kFinestDefaultStepM = 0.05;
 void requireAtLeast(double value, double minimum, const char* name) {
   if (!(std::isfinite(value) && value >= minimum && value > 0.0))
     throw ceilplan::InputError(std::string("speeds: ") + name + " must be a finite number " +
-                                (minimum > 0.0 ? ">= " + formatNumber(minimum) : std::string("> 0")) + ", got " +
-                                formatNumber(value));
+                               (minimum > 0.0 ? ">= " + formatNumber(minimum) : std::string("> 0")) + ", got " +
+                               formatNumber(value));
 }
 
 }  // namespace
@@ -33,15 +33,17 @@ void FlightSpeeds::validate(double max_speed_m_s) const {
   requireAtLeast(descent_m_s, kMinSpeed_m_s, "descent_m_s");
   if (cruise_m_s > max_speed_m_s || near_ceiling_m_s > max_speed_m_s)
     throw ceilplan::InputError("speeds: horizontal speeds must not exceed the vehicle's max_speed_m_s (" +
-                                formatNumber(max_speed_m_s) + " m/s)");
+                               formatNumber(max_speed_m_s) + " m/s)");
   // Vertical rates as a mission file allows them (io/): a multirotor climbs far slower than it cruises.
   const double vertical_max_m_s = std::min(kMaxVerticalSpeed_m_s, max_speed_m_s);
   if (climb_m_s > vertical_max_m_s || descent_m_s > vertical_max_m_s)
     throw ceilplan::InputError("speeds: climb_m_s " + formatNumber(climb_m_s) + " and descent_m_s " +
-                                formatNumber(descent_m_s) + " must not exceed " + formatNumber(vertical_max_m_s) + " m/s");
+                               formatNumber(descent_m_s) + " must not exceed " + formatNumber(vertical_max_m_s) +
+                               " m/s");
   if (near_ceiling_gap_radii > kMaxNearCeilingGapRadii)
-    throw ceilplan::InputError("speeds: near_ceiling_gap_radii must be at most " + formatNumber(kMaxNearCeilingGapRadii) +
-                                " rotor radii (the ceiling effect has faded by 2.5), got " + formatNumber(near_ceiling_gap_radii));
+    throw ceilplan::InputError(
+        "speeds: near_ceiling_gap_radii must be at most " + formatNumber(kMaxNearCeilingGapRadii) +
+        " rotor radii (the ceiling effect has faded by 2.5), got " + formatNumber(near_ceiling_gap_radii));
 }
 
 FlightCostModel::FlightCostModel(const environment::Environment& environment, const energy::EnergyModel& energy,
@@ -55,11 +57,12 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
   if (!(std::isfinite(options_.standoff_m) && options_.standoff_m >= 0.0))
     throw ceilplan::InputError("standoff must be a finite number >= 0 m, got " + formatNumber(options_.standoff_m));
   if (!(std::isfinite(options_.standoff_weight) && options_.standoff_weight > 0.0))
-    throw ceilplan::InputError("standoff weight must be a positive number, got " + formatNumber(options_.standoff_weight));
+    throw ceilplan::InputError("standoff weight must be a positive number, got " +
+                               formatNumber(options_.standoff_weight));
   if (static_cast<int>(environment_.vehicle().rotor_positions_m.size()) != energy_.rotorCount())
     throw ceilplan::InputError("the vehicle geometry has " +
-                                std::to_string(environment_.vehicle().rotor_positions_m.size()) +
-                                " rotors but the energy model " + std::to_string(energy_.rotorCount()));
+                               std::to_string(environment_.vehicle().rotor_positions_m.size()) +
+                               " rotors but the energy model " + std::to_string(energy_.rotorCount()));
   if (options_.step_m > 0.0) {
     step_m_ = options_.step_m;
   } else {
@@ -76,8 +79,8 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
   for (const Eigen::Vector2d& rotor : vehicle.rotor_positions_m)
     disc_reach = std::max(disc_reach, rotor.norm() + vehicle.rotor_radius_m);
   const environment::EnvironmentOptions& reach = environment_.options();
-  const double above = vehicle.rotor_plane_height_m +
-                       std::max(reach.ceiling_reach_radii * vehicle.rotor_radius_m, near_ceiling_gap_m_);
+  const double above =
+      vehicle.rotor_plane_height_m + std::max(reach.ceiling_reach_radii * vehicle.rotor_radius_m, near_ceiling_gap_m_);
   const double below = reach.ground_reach_radii * vehicle.rotor_radius_m - vehicle.rotor_plane_height_m;
   free_air_clearance_m_ = std::hypot(disc_reach, std::max(above, below)) + environment_.grid().frame().resolution_m();
   airframe_radius_m_ = airframeRadius_m(vehicle);
@@ -204,8 +207,8 @@ double FlightCostModel::minCostPerMetre(const CostWeights& weights) const {
     for (const double elevation : elevations) {
       const Eigen::Vector3d direction(std::cos(elevation), 0.0, std::sin(elevation));
       const Velocity velocity = velocityAt(best, direction);
-      minimum = std::min(minimum, costPerMetre(weights, currentA(best, velocity, options_.planning_soc),
-                                               velocity.along_m_s));
+      minimum =
+          std::min(minimum, costPerMetre(weights, currentA(best, velocity, options_.planning_soc), velocity.along_m_s));
     }
   }
   // Between fan directions the cost per metre is smooth; 0.5 % covers what the fan can miss.

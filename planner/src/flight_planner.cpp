@@ -1,13 +1,13 @@
 #include "ceilplan/planner/flight_planner.hpp"
 
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/planner/blockage.hpp"
 #include "ceilplan/planner/ceiling_band_sampler.hpp"
 #include "ceilplan/planner/motion_validator.hpp"
 #include "ceilplan/planner/ompl_state.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 #include "ceilplan/planner/state_validity_checker.hpp"
-#include "ceilplan/core/error.hpp"
-#include "ceilplan/core/format.hpp"
 
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/ProblemDefinition.h>
@@ -61,21 +61,21 @@ void FlightPlanner::requireValidEndpoint(const Eigen::Vector3d& p, const std::st
   if (!environment.contains(p)) {
     const Eigen::AlignedBox3d box = environment.grid().frame().bounds();
     throw ceilplan::InputError(what + " " + formatPoint(p) + " lies outside the map " + formatPoint(box.min()) + " - " +
-                                formatPoint(box.max()));
+                               formatPoint(box.max()));
   }
   if (const auto violation = environment.stateViolation(p))
     throw ceilplan::InputError(what + " " + formatPoint(p) + " is not a valid state: " + violation->describe());
   if (!rules_.isStateValid(p))
     throw ceilplan::InputError(what + " " + formatPoint(p) + " is too close to a ceiling (rotor plane within " +
-                                formatNumber(rules_.minCeilingGap_m()) + " m) or violates the standoff");
+                               formatNumber(rules_.minCeilingGap_m()) + " m) or violates the standoff");
 }
 
 void FlightPlanner::installBandSampler(double band_fraction) const {
   // The band sampler serves every planner: directly, or through the objective's informed
   // sampler (RejectionBandSampler).
-  const CeilingBandOptions band{band_fraction, rules_.minCeilingGap_m(),
-                                model_.options().speeds.near_ceiling_gap_radii *
-                                    rules_.environment().vehicle().rotor_radius_m};
+  const CeilingBandOptions band{
+      band_fraction, rules_.minCeilingGap_m(),
+      model_.options().speeds.near_ceiling_gap_radii * rules_.environment().vehicle().rotor_radius_m};
   const environment::Environment& environment = rules_.environment();
   si_->getStateSpace()->setStateSamplerAllocator([&environment, band](const ompl::base::StateSpace* space) {
     return std::make_shared<CeilingBandSampler>(space, environment, band);
@@ -85,13 +85,13 @@ void FlightPlanner::installBandSampler(double band_fraction) const {
 void FlightPlanner::clearBandSampler() const { si_->getStateSpace()->clearStateSamplerAllocator(); }
 
 std::vector<Eigen::Vector3d> FlightPlanner::postProcess(const std::vector<Eigen::Vector3d>& raw,
-                                                       const RefinementOptions& options, bool refine) const {
+                                                        const RefinementOptions& options, bool refine) const {
   std::vector<Eigen::Vector3d> best = raw;
   if (refine) best = refinePath(shortcutPath(best, rules_, *objective_), rules_, *objective_, options);
   if (const auto problem = rules_.checkPathDensely(best)) {
     if (rules_.checkPathDensely(raw))
       throw ceilplan::Error("the planned path fails the dense re-check: " + *problem +
-                               " (a bug: please report it with the map and the command)");
+                            " (a bug: please report it with the map and the command)");
     best = raw;  // post-processing slipped past the motion checks: keep the raw path
   }
   return best;
@@ -101,14 +101,15 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
   const auto started = std::chrono::steady_clock::now();
   if (!(request.time_limit_s > 0.0 && request.time_limit_s <= PlanRequest::kMaxTimeLimit_s))
     throw ceilplan::InputError("time limit must be a number of seconds in (0, " +
-                                formatNumber(PlanRequest::kMaxTimeLimit_s) + "], got " +
-                                formatNumber(request.time_limit_s));
+                               formatNumber(PlanRequest::kMaxTimeLimit_s) + "], got " +
+                               formatNumber(request.time_limit_s));
   if (!(request.band_fraction >= 0.0 && request.band_fraction <= 1.0))
     throw ceilplan::InputError("band fraction must be a share in [0, 1], got " + formatNumber(request.band_fraction));
   request.lattice.validate();  // whichever planner: the same request is refused by every front end
   requireValidEndpoint(request.start_m, "start");
   requireValidEndpoint(request.goal_m, "goal");
-  if ((request.goal_m - request.start_m).norm() < 1e-6) throw ceilplan::InputError("start and goal coincide: nothing to plan");
+  if ((request.goal_m - request.start_m).norm() < 1e-6)
+    throw ceilplan::InputError("start and goal coincide: nothing to plan");
   PlanResult result;
   result.planner = request.planner.empty() ? defaultPlannerName() : request.planner;
   const PlannerInfo& info = plannerInfo(result.planner);  // rejects unknown names early
@@ -155,7 +156,8 @@ PlanResult FlightPlanner::plan(const PlanRequest& request) const {
         (candidate.back() - request.goal_m).norm() > 1e-9)
       throw ceilplan::InputError("a candidate route must run from the start to the goal");
     bool valid = true;
-    for (std::size_t k = 1; k < candidate.size() && valid; ++k) valid = rules_.isMotionValid(candidate[k - 1], candidate[k]);
+    for (std::size_t k = 1; k < candidate.size() && valid; ++k)
+      valid = rules_.isMotionValid(candidate[k - 1], candidate[k]);
     // The motion checks sample; a candidate the dense re-check refuses is no route (not a bug).
     if (!valid || rules_.checkPathDensely(candidate)) continue;
     const std::vector<Eigen::Vector3d> improved = postProcess(candidate, request.refinement, request.refine);

@@ -2,8 +2,8 @@
 
 #include "ceilplan/core/format.hpp"
 
-#include <Eigen/Geometry>
 #include <ompl/datastructures/NearestNeighborsGNAT.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
@@ -60,7 +60,7 @@ constexpr double kShiftStepM = 0.2;       // between the ways measured parallel 
 constexpr double kPairSeparationM = 1.0;  // between the middles of two pairs tried
 constexpr double kReachM = 1.0;           // from the straight way between a pair, at least the vehicle's width
 constexpr std::size_t kMaxFineNodes = 2'000'000;
-constexpr double kOpeningReachM = 3.0;    // beyond it an opening counts as open
+constexpr double kOpeningReachM = 3.0;  // beyond it an opening counts as open
 // The wide search: on the fine lattice, within twice kReachM of the closest pair's way,
 // doubling until the box holds the map or this many nodes (13 bytes each).
 constexpr std::size_t kMaxWideNodes = 8'000'000;
@@ -268,7 +268,8 @@ Run openRun(const environment::Environment& environment, const Eigen::Vector3d& 
   const auto kindAt = [&](double s) {
     const Eigen::Vector3d p = point_m + s * direction;
     if (!frame.contains(p)) return CellKind::Edge;  // the body must stay in the map, whatever the policy
-    const environment::CellState cell = grid.at(frame.indexOf(0, p.x()), frame.indexOf(1, p.y()), frame.indexOf(2, p.z()));
+    const environment::CellState cell =
+        grid.at(frame.indexOf(0, p.x()), frame.indexOf(1, p.y()), frame.indexOf(2, p.z()));
     if (cell == environment::CellState::Occupied) return CellKind::Occupied;
     return unknown_blocks && cell == environment::CellState::Unknown && !index.isAssumedFree(p) ? CellKind::Unknown
                                                                                                 : CellKind::Free;
@@ -353,8 +354,8 @@ Opening constriction(const environment::Environment& environment, const Eigen::V
 // it by up to `reach_m`: its tightest opening (a gap beside the straight way is found there).
 Opening bottleneck(const environment::Environment& environment, const Eigen::Vector3d& from_m,
                    const Eigen::Vector3d& to_m, bool unknown_is_open, double reach_m) {
-  const Eigen::Vector3d way = (to_m - from_m).norm() > 0.0 ? Eigen::Vector3d((to_m - from_m).normalized())
-                                                           : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d way =
+      (to_m - from_m).norm() > 0.0 ? Eigen::Vector3d((to_m - from_m).normalized()) : Eigen::Vector3d::UnitX();
   Eigen::Vector3d side = way.cross(Eigen::Vector3d::UnitZ());
   side = side.norm() > 1e-6 ? Eigen::Vector3d(side.normalized()) : Eigen::Vector3d::UnitY();
   const Eigen::Vector3d up = way.cross(side).normalized();
@@ -413,9 +414,10 @@ Blockage diagnoseBlockage(const SafetyRules& rules, const Eigen::Vector3d& from_
     blockage.rule = BlockingRule::MapEdge;
   } else if (opening.ratio < 1.0) {
     // Unknown space blocks when it bounds the gap, or when counting it open widens the gap.
-    blockage.rule = opening.bound == CellKind::Unknown || openingAt(environment, gap_m, cut_way, true).ratio > opening.ratio
-                        ? BlockingRule::Unknown
-                        : BlockingRule::Clearance;
+    blockage.rule =
+        opening.bound == CellKind::Unknown || openingAt(environment, gap_m, cut_way, true).ratio > opening.ratio
+            ? BlockingRule::Unknown
+            : BlockingRule::Clearance;
   } else {
     // Wide enough along the two directions measured, and still blocked: by something askew
     // (a corner, a lamp), a crooked or short opening, or a ceiling too close to the rotors.
@@ -492,7 +494,8 @@ void nameEnclosedEnd(Blockage& blockage, const environment::VoxelGrid& grid, con
 }
 
 BridgeOutcome findBridge(const SafetyRules& rules, const std::vector<Eigen::Vector3d>& side_a,
-                         const std::vector<Eigen::Vector3d>& side_b, const ompl::base::PlannerTerminationCondition& ptc) {
+                         const std::vector<Eigen::Vector3d>& side_b,
+                         const ompl::base::PlannerTerminationCondition& ptc) {
   BridgeOutcome outcome;
   if (side_a.empty() || side_b.empty()) return outcome;
   // Each point of side a with its nearest of side b, closest pairs first. GNAT measures with
@@ -520,7 +523,8 @@ BridgeOutcome findBridge(const SafetyRules& rules, const std::vector<Eigen::Vect
   // The pairs whose way is most open first (counting unknown space open, so a gap the policy
   // closes is still tried and named), the closest first among equals: the straight ways of all,
   // then the ways near them of the best few, well apart.
-  for (Pair& pair : pairs) pair.openness = constriction(rules.environment(), side_a[pair.a], side_b[pair.b], true).ratio;
+  for (Pair& pair : pairs)
+    pair.openness = constriction(rules.environment(), side_a[pair.a], side_b[pair.b], true).ratio;
   const auto moreOpen = [](const Pair& x, const Pair& y) {
     return x.openness != y.openness ? x.openness > y.openness : x.distance_m < y.distance_m;
   };
@@ -551,7 +555,8 @@ BridgeOutcome findBridge(const SafetyRules& rules, const std::vector<Eigen::Vect
     const Eigen::Vector3d& a = side_a[pair.a];
     const Eigen::Vector3d& b = side_b[pair.b];
     const double radius_m = std::max(kReachM, vehicle_width_m);
-    std::vector<Eigen::Vector3d> path = fineSearch(rules, FineLattice(frame, boxAround(a, b, radius_m)), a, b, radius_m, ptc);
+    std::vector<Eigen::Vector3d> path =
+        fineSearch(rules, FineLattice(frame, boxAround(a, b, radius_m)), a, b, radius_m, ptc);
     if (!path.empty()) {
       join(std::move(path), pair);
       return outcome;

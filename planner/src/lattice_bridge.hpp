@@ -9,8 +9,8 @@
 #include "ceilplan/planner/blockage.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
 
-#include <Eigen/Core>
 #include <ompl/base/PlannerTerminationCondition.h>
+#include <Eigen/Core>
 
 #include <cstddef>
 #include <optional>
@@ -32,7 +32,8 @@ struct BridgeOutcome {
 // holds the map or 8 million nodes. `ptc` may stop it early (then neither a bridge nor a
 // blockage).
 BridgeOutcome findBridge(const SafetyRules& rules, const std::vector<Eigen::Vector3d>& side_a,
-                         const std::vector<Eigen::Vector3d>& side_b, const ompl::base::PlannerTerminationCondition& ptc);
+                         const std::vector<Eigen::Vector3d>& side_b,
+                         const ompl::base::PlannerTerminationCondition& ptc);
 
 // Why the straight way from `from_m` (valid) to `to_m` is blocked: its most open invalid state,
 // the rule it breaks and the opening across the way there.

@@ -62,7 +62,8 @@ class LatticeGrid {
     for (int axis = 0; axis < 3; ++axis) {
       const double origin = frame_.centreOf(axis, 0);
       lo[axis] = std::max(0, static_cast<int>(std::floor((point_m[axis] - radius_m - origin) / spacing_m_)));
-      hi[axis] = std::min(size_[axis] - 1, static_cast<int>(std::ceil((point_m[axis] + radius_m - origin) / spacing_m_)));
+      hi[axis] =
+          std::min(size_[axis] - 1, static_cast<int>(std::ceil((point_m[axis] + radius_m - origin) / spacing_m_)));
     }
     for (int c = lo[2]; c <= hi[2]; ++c)
       for (int b = lo[1]; b <= hi[1]; ++b)

@@ -131,7 +131,8 @@ SearchOutcome CoarseSearch::run(const ompl::base::PlannerTerminationCondition& p
   cost_to[start_id_] = 0.0;
   if (rules_.isMotionValid(start_m_, goal_m_)) relax(start_id_, goal_id_, edgeCost(start_m_, goal_m_));
   lattice_.forEachNodeNear(start_m_, [&](std::size_t id) {
-    if (nodeValid(id) && rules_.isMotionValid(start_m_, nodeAt(id))) relax(start_id_, id, edgeCost(start_m_, nodeAt(id)));
+    if (nodeValid(id) && rules_.isMotionValid(start_m_, nodeAt(id)))
+      relax(start_id_, id, edgeCost(start_m_, nodeAt(id)));
   });
   crossBridge(start_id_, 0.0);
 
@@ -270,7 +271,8 @@ ompl::base::PlannerStatus LatticePlanner::solve(const ompl::base::PlannerTermina
     outcome = search.run(ptc, &bridge);
     expansions_ += outcome.expansions;
     if (outcome.stopped) return ompl::base::PlannerStatus::TIMEOUT;
-    if (outcome.waypoints.empty()) throw ceilplan::Error("the lattice search lost its bridge (a bug: please report it)");
+    if (outcome.waypoints.empty())
+      throw ceilplan::Error("the lattice search lost its bridge (a bug: please report it)");
   }
   best_cost_ = outcome.cost;
   detail::addSolution(*this, outcome.waypoints, outcome.cost);

@@ -17,7 +17,9 @@ void LatticeSettings::validate() const {
 
 LatticePlannerBase::LatticePlannerBase(const ompl::base::SpaceInformationPtr& si, const std::string& name,
                                        LatticeSettings settings)
-    : ompl::base::Planner(si, name), settings_(std::move(settings)), best_cost_(std::numeric_limits<double>::infinity()) {
+    : ompl::base::Planner(si, name),
+      settings_(std::move(settings)),
+      best_cost_(std::numeric_limits<double>::infinity()) {
   settings_.validate();
   specs_.optimizingPaths = true;
   specs_.directed = true;

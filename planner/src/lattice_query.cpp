@@ -12,7 +12,8 @@ namespace ceilplan::planner::detail {
 const SafetyRules& rulesOf(const ompl::base::SpaceInformation& si, const std::string& planner_name) {
   const auto* checker = dynamic_cast<const FlightStateValidityChecker*>(si.getStateValidityChecker().get());
   if (!checker)
-    throw ceilplan::Error(planner_name + " plans under ceilplan's safety rules: give the space a FlightStateValidityChecker");
+    throw ceilplan::Error(planner_name +
+                          " plans under ceilplan's safety rules: give the space a FlightStateValidityChecker");
   return checker->rules();
 }
 

@@ -5,8 +5,8 @@
 #include "ceilplan/planner/flight_objective.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
 
-#include <Eigen/Core>
 #include <ompl/base/Planner.h>
+#include <Eigen/Core>
 
 #include <optional>
 #include <vector>

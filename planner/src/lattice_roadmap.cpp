@@ -173,7 +173,8 @@ std::uint32_t LatticeRoadmap::addVertex(const Eigen::Vector3d& position_m) {
 }
 
 Eigen::Vector3d LatticeRoadmap::statePosition(std::uint32_t state) const {
-  if (state < node_count_) return detail::LatticeGrid(rules_->environment().grid().frame(), settings_.spacing_m).position(state);
+  if (state < node_count_)
+    return detail::LatticeGrid(rules_->environment().grid().frame(), settings_.spacing_m).position(state);
   return bridge_positions_m_[state - node_count_];
 }
 
@@ -181,8 +182,10 @@ void LatticeRoadmap::addBridge(const std::vector<Eigen::Vector3d>& waypoints, st
                                std::optional<std::uint32_t> to_state, Place* from_place, Place* to_place) {
   const auto addArc = [&](std::uint32_t from, std::uint32_t to, double cost) {
     const Arc arc{to, static_cast<float>(cost)};
-    if (from < node_count_) node_arcs_.emplace_back(from, arc);
-    else bridge_arcs_[from - node_count_].push_back(arc);
+    if (from < node_count_)
+      node_arcs_.emplace_back(from, arc);
+    else
+      bridge_arcs_[from - node_count_].push_back(arc);
   };
   // A place at an end gets a vertex on it, joined at no cost. A search ends at a place, so the
   // vertex also takes the place's joins: routes between other places pass through it.
@@ -272,13 +275,17 @@ std::vector<std::optional<Blockage>> LatticeRoadmap::connect(const std::vector<E
     std::vector<std::pair<bool, std::uint32_t>> what_a, what_b;  // (place?, index or node)
     for (std::size_t p = 0; p < place_count; ++p) {
       const std::uint32_t r = root(placeElement(p));
-      if (r == part) side_a.push_back(places_m[p]), what_a.emplace_back(true, p);
-      else if (other_part[r]) side_b.push_back(places_m[p]), what_b.emplace_back(true, p);
+      if (r == part)
+        side_a.push_back(places_m[p]), what_a.emplace_back(true, p);
+      else if (other_part[r])
+        side_b.push_back(places_m[p]), what_b.emplace_back(true, p);
     }
     for (const std::uint32_t node : rim) {
       const std::uint32_t r = root(node);
-      if (r == part) side_a.push_back(lattice.position(node)), what_a.emplace_back(false, node);
-      else if (other_part[r]) side_b.push_back(lattice.position(node)), what_b.emplace_back(false, node);
+      if (r == part)
+        side_a.push_back(lattice.position(node)), what_a.emplace_back(false, node);
+      else if (other_part[r])
+        side_b.push_back(lattice.position(node)), what_b.emplace_back(false, node);
     }
     const detail::BridgeOutcome found = detail::findBridge(*rules_, side_a, side_b, ptc);
     if (found.waypoints.empty()) {
@@ -300,7 +307,8 @@ std::vector<std::optional<Blockage>> LatticeRoadmap::connect(const std::vector<E
 
 std::optional<Blockage> LatticeRoadmap::blockage(int from, int to) const {
   const int places = static_cast<int>(places_m_.size());
-  if (from < 0 || from >= places || to < 0 || to >= places) throw ceilplan::InputError("roadmap place index out of range");
+  if (from < 0 || from >= places || to < 0 || to >= places)
+    throw ceilplan::InputError("roadmap place index out of range");
   if (from == to) return std::nullopt;
   // Joined places have no blockage; of two apart, one has (the one apart from the first place).
   if (!place_blockages_[from] && !place_blockages_[to]) return std::nullopt;
@@ -401,7 +409,8 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
   const auto relax = [&](std::size_t state, std::uint32_t from_state, double g) {
     if (g < cost_to[state]) {
-      if (cost_to[state] == std::numeric_limits<double>::infinity()) buffers.touched.push_back(static_cast<std::uint32_t>(state));
+      if (cost_to[state] == std::numeric_limits<double>::infinity())
+        buffers.touched.push_back(static_cast<std::uint32_t>(state));
       cost_to[state] = g;
       parent[state] = from_state;
       open.emplace(g + heuristic(state), static_cast<std::uint32_t>(state));

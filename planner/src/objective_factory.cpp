@@ -1,11 +1,11 @@
 #include "ceilplan/planner/objective_factory.hpp"
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/planner/ageing_objective.hpp"
 #include "ceilplan/planner/charge_objective.hpp"
 #include "ceilplan/planner/fec_objective.hpp"
 #include "ceilplan/planner/length_objective.hpp"
 #include "ceilplan/planner/time_objective.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <stdexcept>
 

@@ -52,8 +52,10 @@ FlightMotionValidator::FlightMotionValidator(const ompl::base::SpaceInformationP
 
 bool FlightMotionValidator::checkMotion(const ompl::base::State* from, const ompl::base::State* to) const {
   const bool valid = rules_.isMotionValid(toPosition(from), toPosition(to));
-  if (valid) ++valid_;
-  else ++invalid_;
+  if (valid)
+    ++valid_;
+  else
+    ++invalid_;
   return valid;
 }
 

@@ -54,8 +54,9 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     for (int k = 0; k <= intervals; ++k) {
       PointConditions conditions;
       Velocity velocity;
-      PathSample sample = sampleAt(k == intervals ? waypoints_m[s + 1] : Eigen::Vector3d(from + delta * (double(k) / intervals)),
-                                   direction, conditions, velocity);
+      PathSample sample =
+          sampleAt(k == intervals ? waypoints_m[s + 1] : Eigen::Vector3d(from + delta * (double(k) / intervals)),
+                   direction, conditions, velocity);
       if (k > 0) {
         // Trapezoid in distance for time; the interval draws the mean of its ends' currents.
         const double dt = 0.5 * (1.0 / previous.speed_m_s + 1.0 / sample.speed_m_s) * (length / intervals);

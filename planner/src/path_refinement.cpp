@@ -11,7 +11,8 @@ namespace ceilplan::planner {
 Waypoints shortcutPath(const Waypoints& path, const SafetyRules& rules, const FlightObjective& objective) {
   if (path.size() < 3) return path;
   std::vector<double> cost_to(path.size(), 0.0);  // cumulative cost along the input
-  for (std::size_t k = 1; k < path.size(); ++k) cost_to[k] = cost_to[k - 1] + objective.motionCost(path[k - 1], path[k]);
+  for (std::size_t k = 1; k < path.size(); ++k)
+    cost_to[k] = cost_to[k - 1] + objective.motionCost(path[k - 1], path[k]);
   Waypoints result{path.front()};
   std::size_t i = 0;
   while (i + 1 < path.size()) {
@@ -80,7 +81,8 @@ Waypoints refinePath(const Waypoints& path, const SafetyRules& rules, const Flig
     }
   const auto toPath = [&](const double* values) {
     Waypoints candidate = start;
-    for (std::size_t w = 0; w < inner; ++w) candidate[w + 1] = Eigen::Vector3d(values[3 * w], values[3 * w + 1], values[3 * w + 2]);
+    for (std::size_t w = 0; w < inner; ++w)
+      candidate[w + 1] = Eigen::Vector3d(values[3 * w], values[3 * w + 1], values[3 * w + 2]);
     return candidate;
   };
   const auto penalised = [&](const Waypoints& candidate) {

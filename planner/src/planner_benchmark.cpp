@@ -39,7 +39,8 @@ double number(const std::map<std::string, std::string>& run, const std::string& 
   }
 }
 
-PlannerBenchmarkRow summarise(const ompl::tools::Benchmark::PlannerExperiment& experiment, const PlanResult& reference) {
+PlannerBenchmarkRow summarise(const ompl::tools::Benchmark::PlannerExperiment& experiment,
+                              const PlanResult& reference) {
   std::vector<double> raw_ratio, final_ratio, first_s, reach_s;
   PlannerBenchmarkRow row;
   std::string best_key;

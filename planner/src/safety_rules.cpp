@@ -69,8 +69,10 @@ std::optional<std::string> SafetyRules::checkPathDensely(const std::vector<Eigen
       const double gap = environment_.ceiling(p).nearest_gap_m;
       if (gap < min_ceiling_gap_m_) {
         char line[200];
-        std::snprintf(line, sizeof line, "segment %zu at (%.2f, %.2f, %.2f): rotor plane %.3f m from the ceiling, under the minimum %.3f m",
-                      s, p.x(), p.y(), p.z(), gap, min_ceiling_gap_m_);
+        std::snprintf(
+            line, sizeof line,
+            "segment %zu at (%.2f, %.2f, %.2f): rotor plane %.3f m from the ceiling, under the minimum %.3f m", s,
+            p.x(), p.y(), p.z(), gap, min_ceiling_gap_m_);
         return std::string(line);
       }
     }

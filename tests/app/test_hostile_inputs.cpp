@@ -224,7 +224,11 @@ std::vector<Case> mapCases() {
                                   : b.name == "device"    ? "'map' names /dev/zero: is a device, not a file"
                                   : b.name == "fifo"      ? "map.bt: is a FIFO (named pipe), not a file"
                                                           : b.says;
-    rows.push_back({"map_" + b.name + "_tour", kTour, 2, tour_says, Out::Absent,
+    rows.push_back({"map_" + b.name + "_tour",
+                    kTour,
+                    2,
+                    tour_says,
+                    Out::Absent,
                     {{"mission.yaml", replaced(kMission, "{fx}/room.bt", b.file)}}});
   }
   // A ColorOcTree carries occupancy like an OcTree: it loads.
@@ -252,12 +256,16 @@ std::vector<Case> flagCases() {
        "got inf"},
       {"plan_time_limit_negative", "plan --map {fx}/room.bt --start -2,0,1 --goal 2,0,1 --time-limit-s -1 --out {out}",
        2, "--time-limit-s"},
-      {"plan_time_limit_text", "plan --map {fx}/room.bt --start -2,0,1 --goal 2,0,1 --time-limit-s soon --out {out}",
-       2, "'soon' is not a number"},
-      {"plan_band_fraction_nan", kPlan + " --band-fraction nan --out {out}", 2, "--band-fraction: must be a finite number in [0, 1], got nan"},
-      {"plan_band_fraction_range", kPlan + " --band-fraction 5 --out {out}", 2, "must be a finite number in [0, 1], got 5"},
-      {"plan_lattice_spacing_nan", kPlan + " --lattice-spacing-m nan --out {out}", 2, "--lattice-spacing-m: must be a finite number in [0.01, 2]"},
-      {"plan_temperature_huge", kPlan + " --temperature-c 1e300 --out {out}", 2, "--temperature-c: must be a finite number in [-40, 80]"},
+      {"plan_time_limit_text", "plan --map {fx}/room.bt --start -2,0,1 --goal 2,0,1 --time-limit-s soon --out {out}", 2,
+       "'soon' is not a number"},
+      {"plan_band_fraction_nan", kPlan + " --band-fraction nan --out {out}", 2,
+       "--band-fraction: must be a finite number in [0, 1], got nan"},
+      {"plan_band_fraction_range", kPlan + " --band-fraction 5 --out {out}", 2,
+       "must be a finite number in [0, 1], got 5"},
+      {"plan_lattice_spacing_nan", kPlan + " --lattice-spacing-m nan --out {out}", 2,
+       "--lattice-spacing-m: must be a finite number in [0.01, 2]"},
+      {"plan_temperature_huge", kPlan + " --temperature-c 1e300 --out {out}", 2,
+       "--temperature-c: must be a finite number in [-40, 80]"},
       {"plan_climb_beyond_a_multirotor", kPlan + " --climb-m-s 100 --out {out}", 2, "climb_m_s 100"},
       {"plan_descent_huge", kPlan + " --descent-m-s 1e300 --out {out}", 2, "descent_m_s 1e+300"},
       {"plan_cruise_beyond_the_vehicle", kPlan + " --cruise-speed-m-s 1e9 --out {out}", 2, "max_speed_m_s (15 m/s)"},
@@ -285,28 +293,57 @@ std::vector<Case> flagCases() {
       {"compare_idle_min_huge", kCompare + " --idle-min 1e308 --out {out}", 2, "--idle-min: must be at most 1440"},
       {"compare_charge_min_huge", kCompare + " --charge-max-min 1e308 --out {out}", 2,
        "--charge-max-min: must be at most 1440"},
-      {"compare_flight_min_repeats_a_short_route", "compare --map {fx}/room.bt --start -2,0,1 --goal -1.5,0,1 "
-       "--planner lattice --flight-min 1440 --out {out}", 2, "times, more than 10000; give a shorter flight time"},
+      {"compare_flight_min_repeats_a_short_route",
+       "compare --map {fx}/room.bt --start -2,0,1 --goal -1.5,0,1 "
+       "--planner lattice --flight-min 1440 --out {out}",
+       2, "times, more than 10000; give a shorter flight time"},
       {"plan_time_limit_huge", kPlan + " --time-limit-s 1e308 --out {out}", 2, "--time-limit-s: must be at most 86400"},
       {"bench_time_limit_huge", replaced(kBench, "--time-limit-s 0.2", "--time-limit-s 1e308") + " --json {out}", 2,
        "--time-limit-s: must be at most 86400, got 1e308"},
-      {"tour_time_limit_huge", kTour + " --time-limit-s 1e308", 2, "--time-limit-s: must be at most 86400", Out::Absent,
+      {"tour_time_limit_huge",
+       kTour + " --time-limit-s 1e308",
+       2,
+       "--time-limit-s: must be at most 86400",
+       Out::Absent,
        {{"mission.yaml", kMission}}},
-      {"plan_cruise_tiny", kPlan + " --cruise-speed-m-s 1e-300 --out {out}", 2, "--cruise-speed-m-s: must be a finite number >= 0.01"},
+      {"plan_cruise_tiny", kPlan + " --cruise-speed-m-s 1e-300 --out {out}", 2,
+       "--cruise-speed-m-s: must be a finite number >= 0.01"},
       {"plan_climb_tiny", kPlan + " --climb-m-s 1e-300 --out {out}", 2, "--climb-m-s: must be a finite number >= 0.01"},
       {"compare_days_zero", kCompare + " --days 0 --out {out}", 2, "--days"},
       {"compare_missions_negative", kCompare + " --missions-per-day -1 --out {out}", 2, "--missions-per-day"},
       {"tour_seed_negative", kTour + " --seed -1", 2, "--seed", Out::Absent, {{"mission.yaml", kMission}}},
-      {"tour_lattice_spacing_nan", kTour + " --lattice-spacing-m nan", 2, "--lattice-spacing-m: must be a finite number",
-       Out::Absent, {{"mission.yaml", kMission}}},
+      {"tour_lattice_spacing_nan",
+       kTour + " --lattice-spacing-m nan",
+       2,
+       "--lattice-spacing-m: must be a finite number",
+       Out::Absent,
+       {{"mission.yaml", kMission}}},
       {"tour_workers_zero", kTour + " --workers 0", 2, "--workers", Out::Absent, {{"mission.yaml", kMission}}},
       {"tour_idle_nan", kTour + " --idle-min nan", 2, "--idle-min", Out::Absent, {{"mission.yaml", kMission}}},
-      {"tour_idle_huge", kTour + " --idle-min 1e308", 2, "--idle-min: must be at most 1440", Out::Absent, {{"mission.yaml", kMission}}},
-      {"tour_charge_huge", kTour + " --charge-max-min 1e308", 2, "--charge-max-min: must be at most 1440", Out::Absent,
+      {"tour_idle_huge",
+       kTour + " --idle-min 1e308",
+       2,
+       "--idle-min: must be at most 1440",
+       Out::Absent,
        {{"mission.yaml", kMission}}},
-      {"tour_free_standoff_huge", kTour + " --free-standoff-max-m 1e308", 2, "--free-standoff-max-m: must be at most 50",
-       Out::Absent, {{"mission.yaml", kMission}}},
-      {"tour_standoff_negative", kTour + " --standoff-m -1", 2, "--standoff-m", Out::Absent, {{"mission.yaml", kMission}}},
+      {"tour_charge_huge",
+       kTour + " --charge-max-min 1e308",
+       2,
+       "--charge-max-min: must be at most 1440",
+       Out::Absent,
+       {{"mission.yaml", kMission}}},
+      {"tour_free_standoff_huge",
+       kTour + " --free-standoff-max-m 1e308",
+       2,
+       "--free-standoff-max-m: must be at most 50",
+       Out::Absent,
+       {{"mission.yaml", kMission}}},
+      {"tour_standoff_negative",
+       kTour + " --standoff-m -1",
+       2,
+       "--standoff-m",
+       Out::Absent,
+       {{"mission.yaml", kMission}}},
       {"tour_days_huge", kTour + " --days 1e9", 2, "--days", Out::Absent, {{"mission.yaml", kMission}}},
       {"current_gap_nan", "current --gap-m nan --json {out}", 2, "ceiling gap nan"},
       {"current_gap_negative", "current --gap-m -1 --json {out}", 2, "negative"},
@@ -314,17 +351,52 @@ std::vector<Case> flagCases() {
       {"current_coverage_range", "current --coverage 2 --json {out}", 2, "coverage 2 is outside [0, 1]"},
       {"current_soc_nan", "current --soc nan --json {out}", 2, "state of charge nan"},
       {"current_speed_huge", "current --speed-m-s 1e9 --json {out}", 2, "beyond the vehicle's max_speed_m_s (15 m/s)"},
-      {"current_climb_huge", "current --climb-m-s 1e30 --json {out}", 2, "--climb-m-s: must be a finite number in [-10, 10], got 1e30"},
-      {"current_descent_huge", "current --climb-m-s -1e9 --json {out}", 2, "--climb-m-s: must be a finite number in [-10, 10]"},
-      {"mapgen_resolution_nan", "mapgen --scene open --resolution nan --out {out}", 2, "resolution", Out::Absent, {}, "out.bt"},
-      {"mapgen_resolution_tiny", "mapgen --scene open --resolution 1e-9 --out {out}", 2, "resolution", Out::Absent, {}, "out.bt"},
-      {"mapgen_seed_negative", "mapgen --scene open --resolution 0.5 --seed -1 --out {out}", 2,
-       "--seed: must be a whole number >= 0, got '-1'", Out::Absent, {}, "out.bt"},
-      {"mapgen_seed_2_to_the_64", "mapgen --scene open --resolution 0.5 --seed 18446744073709551616 --out {out}", 2,
-       "--seed: must be a whole number in [0, 18446744073709551615], got 18446744073709551616", Out::Absent, {}, "out.bt"},
-      {"mapgen_scene_unknown", "mapgen --scene bridg --out {out}", 2, "unknown scene 'bridg'", Out::Absent, {}, "out.bt"},
-      {"mapgen_bridge_length_inf", "mapgen --scene bridge --bridge-length-m inf --out {out}", 2, "bridge length",
-       Out::Absent, {}, "out.bt"},
+      {"current_climb_huge", "current --climb-m-s 1e30 --json {out}", 2,
+       "--climb-m-s: must be a finite number in [-10, 10], got 1e30"},
+      {"current_descent_huge", "current --climb-m-s -1e9 --json {out}", 2,
+       "--climb-m-s: must be a finite number in [-10, 10]"},
+      {"mapgen_resolution_nan",
+       "mapgen --scene open --resolution nan --out {out}",
+       2,
+       "resolution",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"mapgen_resolution_tiny",
+       "mapgen --scene open --resolution 1e-9 --out {out}",
+       2,
+       "resolution",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"mapgen_seed_negative",
+       "mapgen --scene open --resolution 0.5 --seed -1 --out {out}",
+       2,
+       "--seed: must be a whole number >= 0, got '-1'",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"mapgen_seed_2_to_the_64",
+       "mapgen --scene open --resolution 0.5 --seed 18446744073709551616 --out {out}",
+       2,
+       "--seed: must be a whole number in [0, 18446744073709551615], got 18446744073709551616",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"mapgen_scene_unknown",
+       "mapgen --scene bridg --out {out}",
+       2,
+       "unknown scene 'bridg'",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"mapgen_bridge_length_inf",
+       "mapgen --scene bridge --bridge-length-m inf --out {out}",
+       2,
+       "bridge length",
+       Out::Absent,
+       {},
+       "out.bt"},
       {"duty_current_nan", "duty --flight-current-a nan --json {out}", 2, "--flight-current-a"},
       {"duty_current_huge", "duty --flight-current-a 1e300 --json {out}", 2, "--flight-current-a"},
       {"duty_step_tiny", "duty --dt-s 1e-9 --json {out}", 2, "--dt-s"},
@@ -333,16 +405,27 @@ std::vector<Case> flagCases() {
       // A capacity so small that SOC figures would be meaningless (-6e297 %) is refused up front.
       {"duty_capacity_tiny", "duty --capacity-ah 1e-300 --json {out}", 2,
        "--capacity-ah: must be a finite number in [0.01, 1000], got 1e-300"},
-      {"mapinfo_fill_nan", kMapinfo + " --unknown fill --unknown-fill-max-m nan --json {out}", 2, "--unknown-fill-max-m"},
+      {"mapinfo_fill_nan", kMapinfo + " --unknown fill --unknown-fill-max-m nan --json {out}", 2,
+       "--unknown-fill-max-m"},
       {"mapinfo_slice_outside", kMapinfo + " --slice-z 100 --slice-csv {out}", 2, "--slice-z 100 lies outside the map"},
       {"probe_at_nan", "probe --map {fx}/room.bt --at nan,0,1 --json {out}", 2, "--at 'nan,0,1'"},
       {"probe_at_huge", "probe --map {fx}/room.bt --at 1e300,0,1 --json {out}", 2, "each within +-1e6 m"},
       {"bench_runs_zero", replaced(kBench, "--runs 1", "--runs 0") + " --json {out}", 2, "--runs"},
       {"bench_planner_unknown", replaced(kBench, "RRTstar", "RRTstr") + " --json {out}", 2, "RRTstr"},
-      {"import_resolution_nan", "import --points {fx}/points.xyz --resolution nan --out {out}", 2, "--resolution nan",
-       Out::Absent, {}, "out.bt"},
-      {"import_max_range_negative", "import --points {fx}/points.xyz --resolution 0.1 --max-range -1 --out {out}", 2,
-       "--max-range", Out::Absent, {}, "out.bt"},
+      {"import_resolution_nan",
+       "import --points {fx}/points.xyz --resolution nan --out {out}",
+       2,
+       "--resolution nan",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"import_max_range_negative",
+       "import --points {fx}/points.xyz --resolution 0.1 --max-range -1 --out {out}",
+       2,
+       "--max-range",
+       Out::Absent,
+       {},
+       "out.bt"},
       {"calibrate_fit_unknown", kCalibrate + " --fit k3 --out {out}", 2, "k3"},
   };
 }
@@ -370,17 +453,20 @@ std::vector<Case> yamlCases() {
       {"mission_capacity_inf", kTour, 2, "got inf", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: .inf")},
       {"mission_capacity_negative", kTour, 2, "got -5", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: -5")},
       {"mission_capacity_huge", kTour, 2, "got 1e+300", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: 1e300")},
-      {"mission_capacity_tiny", kTour, 2, "'battery.capacity_ah' must be in [0.01, 1000] Ah, got 1e-300",
-       Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: 1e-300")},
+      {"mission_capacity_tiny", kTour, 2, "'battery.capacity_ah' must be in [0.01, 1000] Ah, got 1e-300", Out::Absent,
+       mission("capacity_ah: 5.2", "capacity_ah: 1e-300")},
       {"mission_capacity_text", kTour, 2, "got 'lots'", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: lots")},
-      {"mission_capacity_list", kTour, 2, "got a list", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: [1, 2]")},
+      {"mission_capacity_list", kTour, 2, "got a list", Out::Absent,
+       mission("capacity_ah: 5.2", "capacity_ah: [1, 2]")},
       {"mission_key_misspelt", kTour, 2, "unknown key 'battery.capacity_a'; did you mean 'capacity_ah'?", Out::Absent,
        mission("capacity_ah: 5.2", "capacity_a: 5.2")},
-      {"mission_key_unknown", kTour, 2, "unknown key 'sede'; did you mean 'seed'?", Out::Absent, mission("seed: 1", "sede: 1")},
+      {"mission_key_unknown", kTour, 2, "unknown key 'sede'; did you mean 'seed'?", Out::Absent,
+       mission("seed: 1", "sede: 1")},
       {"mission_key_twice", kTour, 2, "key 'seed' is given twice", Out::Absent, mission("seed: 1", "seed: 1\nseed: 2")},
       {"mission_map_missing", kTour, 2, "missing key 'map'", Out::Absent, mission("map: {fx}/room.bt\n", "")},
       {"mission_targets_missing", kTour, 2, "missing key 'targets'", Out::Absent,
-       mission("targets:\n  - {name: ceiling_east, point: [1.5, 0.0, 4.0], dwell_s: 10, standoff_m: [0.3, 1.5]}\n", "")},
+       mission("targets:\n  - {name: ceiling_east, point: [1.5, 0.0, 4.0], dwell_s: 10, standoff_m: [0.3, 1.5]}\n",
+               "")},
       {"mission_dwell_nan", kTour, 2, "'targets[0].dwell_s' must be a finite number", Out::Absent,
        mission("dwell_s: 10", "dwell_s: .nan")},
       {"mission_point_text", kTour, 2, "'targets[0].point[1]' must be a number", Out::Absent,
@@ -388,15 +474,17 @@ std::vector<Case> yamlCases() {
       {"mission_point_two_numbers", kTour, 2, "'targets[0].point' must be [x, y, z]", Out::Absent,
        mission("point: [1.5, 0.0, 4.0]", "point: [1.5, 4.0]")},
       {"mission_seed_negative", kTour, 2, "'seed' must be a whole number", Out::Absent, mission("seed: 1", "seed: -1")},
-      {"mission_seed_fraction", kTour, 2, "'seed' must be a whole number", Out::Absent, mission("seed: 1", "seed: 1.5")},
+      {"mission_seed_fraction", kTour, 2, "'seed' must be a whole number", Out::Absent,
+       mission("seed: 1", "seed: 1.5")},
       {"mission_cruise_beyond_the_vehicle", kTour, 2, "'speeds.cruise_m_s' must be in [0.01, 15]", Out::Absent,
        mission("cruise_m_s: 2.0", "cruise_m_s: 100")},
       {"mission_climb_beyond_a_multirotor", kTour, 2, "'speeds.climb_m_s' must be in [0.01, 10]", Out::Absent,
        mission("climb_m_s: 1.0", "climb_m_s: 100")},
       {"mission_inspection_speed_tiny", kTour, 2, "'speeds.inspection_m_s' must be in [0.01, 15] m/s", Out::Absent,
        mission("inspection_m_s: 0.5", "inspection_m_s: 1e-300")},
-      {"mission_second_document", kTour, 2, "mission.yaml: holds 2 YAML documents (split by '---'); a mission file is one document",
-       Out::Absent, mission("seed: 1\n", "seed: 1\n---\nseed: 2\n")},
+      {"mission_second_document", kTour, 2,
+       "mission.yaml: holds 2 YAML documents (split by '---'); a mission file is one document", Out::Absent,
+       mission("seed: 1\n", "seed: 1\n---\nseed: 2\n")},
       {"mission_key_twice_in_a_section", kTour, 2, "key 'speeds.cruise_m_s' is given twice", Out::Absent,
        mission("cruise_m_s: 2.0", "cruise_m_s: 2.0, cruise_m_s: 3.0")},
       {"mission_map_is_a_fifo", kTour, 2, "'map' names {fifo}/map.bt: is a FIFO (named pipe), not a file", Out::Absent,
@@ -406,14 +494,17 @@ std::vector<Case> yamlCases() {
       {"mission_is_a_fifo", "tour --mission {fifo}/mission.yaml --out {out}", 2,
        "mission.yaml: is a FIFO (named pipe), not a mission file; give a regular file"},
       {"mission_is_a_device", "tour --mission /dev/zero --out {out}", 2, "/dev/zero: is a device, not a mission file"},
-      {"mission_mode_misspelt", kTour, 2, "did you mean 'ceiling'?", Out::Absent, mission("seed: 1", "seed: 1\nmode: ceilling")},
+      {"mission_mode_misspelt", kTour, 2, "did you mean 'ceiling'?", Out::Absent,
+       mission("seed: 1", "seed: 1\nmode: ceilling")},
       {"mission_tab", kTour, 2, "malformed YAML at line", Out::Absent, mission("seed: 1", "\tseed: 1")},
       {"mission_vehicle_is_a_map", kTour, 2, "holds binary data, not YAML text; is it a vehicle file?", Out::Absent,
        mission("vehicle: {fx}/vehicle.yaml", "vehicle: {fx}/room.bt")},
       {"mission_vehicle_is_a_directory", kTour, 2, "which is a directory, not a file", Out::Absent,
        mission("vehicle: {fx}/vehicle.yaml", "vehicle: {fx}/adir")},
-      {"mission_escape_in_a_key", kTour, 2, "unknown key 'se\\x1B[2Jed'", Out::Absent, mission("seed: 1", "se\x1b[2Jed: 1")},
-      {"mission_is_a_vehicle_file", "tour --mission {fx}/vehicle.yaml --out {out}", 2, "this is a vehicle file, not a mission file"},
+      {"mission_escape_in_a_key", kTour, 2, "unknown key 'se\\x1B[2Jed'", Out::Absent,
+       mission("seed: 1", "se\x1b[2Jed: 1")},
+      {"mission_is_a_vehicle_file", "tour --mission {fx}/vehicle.yaml --out {out}", 2,
+       "this is a vehicle file, not a mission file"},
       {"mission_empty", "tour --mission {fx}/empty.bt --out {out}", 2, "must be a YAML map of keys"},
       {"mission_is_a_directory", "tour --mission {fx}/adir --out {out}", 2, "File is actually a directory"},
       {"mission_target_in_free_air", kTour, 2,
@@ -430,7 +521,8 @@ std::vector<Case> yamlCases() {
       // vehicle files
       {"vehicle_collision_radius_huge", with_vehicle, 2, "'airframe.collision_radius_m' must be in (0, 3] m, got 36",
        Out::Absent, vehicle("collision_radius_m: 0.36", "collision_radius_m: 36")},
-      {"vehicle_mass_nan", with_vehicle, 2, "'mass_kg' must be a finite number", Out::Absent, vehicle("mass_kg: 1.4", "mass_kg: .nan")},
+      {"vehicle_mass_nan", with_vehicle, 2, "'mass_kg' must be a finite number", Out::Absent,
+       vehicle("mass_kg: 1.4", "mass_kg: .nan")},
       {"vehicle_rotor_count_text", with_vehicle, 2, "'rotors.count' must be a whole number in [1, 16], got 'four'",
        Out::Absent, vehicle("count: 4", "count: four")},
       {"vehicle_key_misspelt", with_vehicle, 2, "unknown key 'mas_kg'; did you mean 'mass_kg'?", Out::Absent,
@@ -438,41 +530,48 @@ std::vector<Case> yamlCases() {
       {"vehicle_mass_missing", with_vehicle, 2, "missing key 'mass_kg'", Out::Absent, vehicle("mass_kg: 1.4\n", "")},
       {"vehicle_hover_current_too_low", with_vehicle, 2, "hover current 0.4 A leaves no propulsion power", Out::Absent,
        vehicle("hover_current_a: 9.5", "hover_current_a: 0.4")},
-      {"vehicle_is_a_battery_file", kPlan + " --vehicle {fx}/battery.yaml --out {out}", 2, "this is a battery file, not a vehicle file"},
+      {"vehicle_is_a_battery_file", kPlan + " --vehicle {fx}/battery.yaml --out {out}", 2,
+       "this is a battery file, not a vehicle file"},
       {"vehicle_is_a_directory", kPlan + " --vehicle {fx}/adir --out {out}", 2, "is a directory, not a vehicle file"},
       {"vehicle_missing", kPlan + " --vehicle {fx}/none.yaml --out {out}", 2, "no such vehicle file"},
       {"vehicle_empty", kPlan + " --vehicle {fx}/empty.bt --out {out}", 2, "must be a YAML map of keys"},
       {"vehicle_key_twice", with_vehicle, 2, "v.yaml: key 'mass_kg' is given twice", Out::Absent,
        vehicle("mass_kg: 1.4", "mass_kg: 1.4\nmass_kg: 2.0")},
-      {"vehicle_second_document", with_vehicle, 2, "v.yaml: holds 2 YAML documents (split by '---'); a vehicle file is one document",
-       Out::Absent, vehicle("mass_kg: 1.4", "mass_kg: 1.4\n---\nmass_kg: 2.0")},
+      {"vehicle_second_document", with_vehicle, 2,
+       "v.yaml: holds 2 YAML documents (split by '---'); a vehicle file is one document", Out::Absent,
+       vehicle("mass_kg: 1.4", "mass_kg: 1.4\n---\nmass_kg: 2.0")},
       {"vehicle_is_a_fifo", kPlan + " --vehicle {fifo}/vehicle.yaml --out {out}", 2,
        "vehicle.yaml: is a FIFO (named pipe), not a vehicle file"},
       // battery files
       {"battery_key_misspelt", with_battery, 2, "unknown key 'capacity_a'; did you mean 'capacity_ah'?", Out::Absent,
        battery("capacity_a: 5.2\n")},
-      {"battery_capacity_nan", with_battery, 2, "'capacity_ah' must be a finite number", Out::Absent, battery("capacity_ah: .nan\n")},
-      {"battery_capacity_tiny", with_battery, 2, "'capacity_ah' must be in [0.01, 1000] Ah, got 1e-300",
-       Out::Absent, battery("capacity_ah: 1e-300\n")},
-      {"battery_is_a_vehicle_file", kPlan + " --battery {fx}/vehicle.yaml --out {out}", 2, "this is a vehicle file, not a battery file"},
+      {"battery_capacity_nan", with_battery, 2, "'capacity_ah' must be a finite number", Out::Absent,
+       battery("capacity_ah: .nan\n")},
+      {"battery_capacity_tiny", with_battery, 2, "'capacity_ah' must be in [0.01, 1000] Ah, got 1e-300", Out::Absent,
+       battery("capacity_ah: 1e-300\n")},
+      {"battery_is_a_vehicle_file", kPlan + " --battery {fx}/vehicle.yaml --out {out}", 2,
+       "this is a vehicle file, not a battery file"},
       {"battery_list", with_battery, 2, "must be a YAML map of keys", Out::Absent, battery("- 1\n- 2\n")},
       {"battery_key_twice", with_battery, 2, "b.yaml: key 'capacity_ah' is given twice", Out::Absent,
        battery("capacity_ah: 5.2\ncapacity_ah: 6.0\n")},
-      {"battery_second_document", with_battery, 2, "b.yaml: holds 2 YAML documents (split by '---'); a battery file is one document",
-       Out::Absent, battery("capacity_ah: 5.2\n---\ncapacity_ah: 6.0\n")},
+      {"battery_second_document", with_battery, 2,
+       "b.yaml: holds 2 YAML documents (split by '---'); a battery file is one document", Out::Absent,
+       battery("capacity_ah: 5.2\n---\ncapacity_ah: 6.0\n")},
       {"battery_is_a_fifo", kPlan + " --battery {fifo}/battery.yaml --out {out}", 2,
        "battery.yaml: is a FIFO (named pipe), not a battery file"},
-      {"battery_reserve_above_start", with_battery, 2, "is not below", Out::Absent, battery("start_soc: 0.3\nreserve_soc: 0.5\n")},
+      {"battery_reserve_above_start", with_battery, 2, "is not below", Out::Absent,
+       battery("start_soc: 0.3\nreserve_soc: 0.5\n")},
       // --config files
       {"config_key_misspelt", "plan --config {dir}/c.yaml --out {out}", 2,
        "config file line 5: unknown key 'planer' for 'plan'; did you mean 'planner'?", Out::Absent,
        config(base_config + "planer: roadmap\n")},
-      {"config_key_unknown_map", "plan --config {dir}/c.yaml --out {out}", 2, "unknown key 'limits' for 'plan'", Out::Absent,
-       config(base_config + "limits: {a: 1}\n")},
-      {"config_key_unknown_duty", "duty --config {dir}/c.yaml --json {out}", 2, "unknown key 'rainflw' for 'duty'", Out::Absent,
-       config("days: 2\nrainflw: 1\n")},
-      {"config_value_nan", "plan --config {dir}/c.yaml --out {out}", 2, "--time-limit-s: must be a finite number > 0, got nan",
-       Out::Absent, config(base_config + "time_limit_s: nan\n")},
+      {"config_key_unknown_map", "plan --config {dir}/c.yaml --out {out}", 2, "unknown key 'limits' for 'plan'",
+       Out::Absent, config(base_config + "limits: {a: 1}\n")},
+      {"config_key_unknown_duty", "duty --config {dir}/c.yaml --json {out}", 2, "unknown key 'rainflw' for 'duty'",
+       Out::Absent, config("days: 2\nrainflw: 1\n")},
+      {"config_value_nan", "plan --config {dir}/c.yaml --out {out}", 2,
+       "--time-limit-s: must be a finite number > 0, got nan", Out::Absent,
+       config(base_config + "time_limit_s: nan\n")},
       {"config_list_for_one_value", "plan --config {dir}/c.yaml --out {out}", 2, "--start", Out::Absent,
        config("map: {fx}/room.bt\nstart: [-2, 0, 1]\ngoal: 2,0,1\n")},
       {"config_missing_key", "plan --config {dir}/c.yaml --out {out}", 2, "--goal is required", Out::Absent,
@@ -492,7 +591,8 @@ std::vector<Case> yamlCases() {
        "config file line 6: 'planner' gives flag 'planner' again (first on line 4)", Out::Absent,
        config(base_config + "plan:\n  planner: roadmap\n")},
       {"config_second_document", "plan --config {dir}/c.yaml --out {out}", 2,
-       "config file holds 2 YAML documents (split by '---')", Out::Absent, config(base_config + "---\nplanner: roadmap\n")},
+       "config file holds 2 YAML documents (split by '---')", Out::Absent,
+       config(base_config + "---\nplanner: roadmap\n")},
       {"config_is_a_fifo", "plan --config {fifo}/config.yaml --out {out}", 2,
        "config.yaml: is a FIFO (named pipe), not a config file; give a regular file"},
       {"config_is_a_device", "plan --config /dev/zero --out {out}", 2, "/dev/zero: is a device, not a config file"},
@@ -532,20 +632,24 @@ std::vector<Case> outputCases() {
       rows.push_back({"output_" + c.name + "_is_a_file", c.args, 2, "exists and is not a directory", Out::ExistingFile,
                       c.files, c.out_name});
     } else {
-      rows.push_back({"output_" + c.name + "_is_a_directory", c.args, 2, "is a directory", Out::ExistingDir, c.files,
-                      c.out_name});
+      rows.push_back(
+          {"output_" + c.name + "_is_a_directory", c.args, 2, "is a directory", Out::ExistingDir, c.files, c.out_name});
     }
     rows.push_back({"output_" + c.name + "_read_only", c.args, 2, "read-only", Out::ReadOnlyDir, c.files, c.out_name});
-    rows.push_back({"output_" + c.name + "_under_a_file", c.args, 2, "is a file, not a directory", Out::UnderFile, c.files,
-                    c.out_name});
+    rows.push_back({"output_" + c.name + "_under_a_file", c.args, 2, "is a file, not a directory", Out::UnderFile,
+                    c.files, c.out_name});
     rows.push_back({"output_" + c.name + "_missing_parent", c.args, 0, "", Out::MissingParent, c.files, c.out_name});
   }
   // A run that fails leaves no parent directory it created.
   rows.push_back({"output_missing_parent_left_absent_plan", replaced(kPlan, "room.bt", "empty.bt") + " --out {out}", 2,
                   "it is empty", Out::MissingParent});
-  rows.push_back({"output_missing_parent_left_absent_rainflow", "rainflow --csv {fx}/empty.bt --column soc --json {out}", 2,
-                  "is empty", Out::MissingParent});
-  rows.push_back({"output_missing_parent_left_absent_tour", kTour, 2, "lies in free air", Out::MissingParent,
+  rows.push_back({"output_missing_parent_left_absent_rainflow",
+                  "rainflow --csv {fx}/empty.bt --column soc --json {out}", 2, "is empty", Out::MissingParent});
+  rows.push_back({"output_missing_parent_left_absent_tour",
+                  kTour,
+                  2,
+                  "lies in free air",
+                  Out::MissingParent,
                   {{"mission.yaml", replaced(kMission, "point: [1.5, 0.0, 4.0]", "point: [0.0, 0.0, 2.1]")}}});
   return rows;
 }
@@ -560,31 +664,50 @@ std::vector<Case> csvCases() {
   };
   const std::vector<Bad> bad = {
       {"garbage_row", "x,y,z,soc,t_s\n-2,0,1,0.9,0\n2,0,1,0.3,1,7,?\n", "gap_m,current_a\n0.1,8\n0.2,8.5,7,?\n", 2,
-       "line 3: 7 fields, but the header names 5 columns", "line 3: 7 fields", "line 3: 4 fields, but the header names 2 columns"},
+       "line 3: 7 fields, but the header names 5 columns", "line 3: 7 fields",
+       "line 3: 4 fields, but the header names 2 columns"},
       {"nan_row", "x,y,z,soc,t_s\n-2,0,1,0.9,0\nnan,0,1,NaN,1\n", "gap_m,current_a\n0.1,8\n0.2,NaN\n", 2,
        "'NaN' is not a finite number", "'nan' is not a finite number", "'NaN' is not a finite number"},
       {"one_row", "x,y,z,soc,t_s\n-2,0,1,0.9,0\n", "gap_m,current_a\n0.1,8\n", 2, "has 1 data row",
        "a path needs at least 2 distinct points", "1 samples cannot identify"},
-      {"header_only", "x,y,z,soc,t_s\n", "gap_m,current_a\n", 2, "has 0 data rows", "a path needs at least 2 distinct points",
-       "holds no samples"},
+      {"header_only", "x,y,z,soc,t_s\n", "gap_m,current_a\n", 2, "has 0 data rows",
+       "a path needs at least 2 distinct points", "holds no samples"},
       {"terminal_escape", "x,y,z,soc,t_s\n-2,0,1,0.9,0\n2,0,\x1b[31m1\x07,\x1b[31m0.3\x07,1\n",
        "gap_m,current_a\n0.1,8\n0.2,\x1b]0;x\x07\n", 2, "'\\x1B[31m0.3\\x07' is not a number",
        "'\\x1B[31m1\\x07' is not a number", "'\\x1B]0;x\\x07' is not a number"},
-      {"binary", std::string("\x7f" "ELF\x02\x01\x01\x00\x03,\x04\n\x05", 14),
-       std::string("\x7f" "ELF\x02\x01\x01\x00\x03,\x04\n\x05", 14), 2, "the header holds control characters",
-       "the header holds control characters", "the header holds control characters ('\\x7FELF"},
+      {"binary",
+       std::string("\x7f"
+                   "ELF\x02\x01\x01\x00\x03,\x04\n\x05",
+                   14),
+       std::string("\x7f"
+                   "ELF\x02\x01\x01\x00\x03,\x04\n\x05",
+                   14),
+       2, "the header holds control characters", "the header holds control characters",
+       "the header holds control characters ('\\x7FELF"},
       {"bom_and_crlf", "\xEF\xBB\xBFx,y,z,soc,t_s\r\n-2,0,1,0.9,0\r\n0,0,1,0.3,1\r\n2,0,1,0.8,2\r\n",
        "\xEF\xBB\xBFgap_m,current_a\r\nnone,9.5\r\n0.10,8.0\r\n0.05,8.0\r\n0.01,8.2994\r\n", 0, "cycles in all",
        "valid: true", "rmse_a"},
   };
   std::vector<Case> rows;
   for (const Bad& b : bad) {
-    rows.push_back({"csv_" + b.name + "_rainflow", "rainflow --csv {dir}/in.csv --column soc --json {out}", b.exit_code,
-                    b.rainflow_says, Out::Absent, {{"in.csv", b.csv}}});
-    rows.push_back({"csv_" + b.name + "_evaluate", "evaluate --map {fx}/room.bt --path {dir}/in.csv --json {out}",
-                    b.exit_code, b.evaluate_says, Out::Absent, {{"in.csv", b.csv}}});
-    rows.push_back({"csv_" + b.name + "_calibrate", "calibrate --data {dir}/in.csv --fit k1 --out {out}", b.exit_code,
-                    b.calibrate_says, Out::Absent, {{"in.csv", b.calibrate_csv}}});
+    rows.push_back({"csv_" + b.name + "_rainflow",
+                    "rainflow --csv {dir}/in.csv --column soc --json {out}",
+                    b.exit_code,
+                    b.rainflow_says,
+                    Out::Absent,
+                    {{"in.csv", b.csv}}});
+    rows.push_back({"csv_" + b.name + "_evaluate",
+                    "evaluate --map {fx}/room.bt --path {dir}/in.csv --json {out}",
+                    b.exit_code,
+                    b.evaluate_says,
+                    Out::Absent,
+                    {{"in.csv", b.csv}}});
+    rows.push_back({"csv_" + b.name + "_calibrate",
+                    "calibrate --data {dir}/in.csv --fit k1 --out {out}",
+                    b.exit_code,
+                    b.calibrate_says,
+                    Out::Absent,
+                    {{"in.csv", b.calibrate_csv}}});
   }
   // Inputs that are directories or missing: never a raw stream error.
   for (const std::string flag : {"rainflow --csv", "calibrate --data"}) {
@@ -593,21 +716,27 @@ std::vector<Case> csvCases() {
     rows.push_back({"csv_directory_" + name, flag + " {fx}/adir" + tail, 2, "directory"});
     rows.push_back({"csv_missing_" + name, flag + " {fx}/none.csv" + tail, 2, "none.csv"});
   }
-  rows.push_back({"csv_directory_evaluate", "evaluate --map {fx}/room.bt --path {fx}/adir --json {out}", 2, "directory"});
+  rows.push_back(
+      {"csv_directory_evaluate", "evaluate --map {fx}/room.bt --path {fx}/adir --json {out}", 2, "directory"});
   // A FIFO or a device would block the reader or never end.
   for (const std::string& file : {std::string("{fifo}/in.csv"), std::string("/dev/zero")}) {
     const std::string kind = file == "/dev/zero" ? "device" : "fifo";
-    const std::string says = file == "/dev/zero" ? "/dev/zero: is a device, not a CSV file"
-                                                 : "in.csv: is a FIFO (named pipe), not a CSV file; give a regular file";
+    const std::string says = file == "/dev/zero"
+                                 ? "/dev/zero: is a device, not a CSV file"
+                                 : "in.csv: is a FIFO (named pipe), not a CSV file; give a regular file";
     rows.push_back({"csv_" + kind + "_rainflow", "rainflow --csv " + file + " --column soc --json {out}", 2, says});
     rows.push_back({"csv_" + kind + "_calibrate", "calibrate --data " + file + " --out {out}", 2, says});
-    rows.push_back({"csv_" + kind + "_evaluate", "evaluate --map {fx}/room.bt --path " + file + " --json {out}", 2, says});
+    rows.push_back(
+        {"csv_" + kind + "_evaluate", "evaluate --map {fx}/room.bt --path " + file + " --json {out}", 2, says});
   }
   rows.push_back({"csv_missing_columns_evaluate", "evaluate --map {fx}/room.bt --path {fx}/soc.csv --json {out}", 2,
                   "has neither x, y, z (path.csv) nor x_m, y_m, z_m"});
   // A fit that fails says why in words: NLopt alone says "nlopt failure". A runtime failure: 1.
-  rows.push_back({"csv_overflow_calibrate", "calibrate --data {dir}/in.csv --out {out}", 1,
-                  "the least-squares fit failed: NLopt's L-BFGS gave up", Out::Absent,
+  rows.push_back({"csv_overflow_calibrate",
+                  "calibrate --data {dir}/in.csv --out {out}",
+                  1,
+                  "the least-squares fit failed: NLopt's L-BFGS gave up",
+                  Out::Absent,
                   {{"in.csv", "gap_m,current_a\n0.05,1e200\n0.1,8\n0.2,8.5\nnone,9.5\n"}}});
   return rows;
 }
@@ -617,8 +746,9 @@ std::vector<Case> importCases() {
     return "import " + flag + " " + file + " --resolution 0.1 --out {out}";
   };
   const std::string pcd_header = "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
-  const std::string ply_header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-                                 "property float z\nend_header\n";
+  const std::string ply_header =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n";
   const std::string points = "0 0 0\n1 0 0\n0 1 0\n1 1 1\n";
   const auto in = [](const std::string& name, const std::string& text) {
     return std::vector<std::pair<std::string, std::string>>{{name, text}};
@@ -626,46 +756,89 @@ std::vector<Case> importCases() {
   return {
       {"import_pcd_width_height_not_points", import("--points", "{dir}/in.pcd"), 2,
        "in.pcd: not a readable point cloud (the PCD header's POINTS 4 is not WIDTH x HEIGHT (2 x 1))", Out::Absent,
-       in("in.pcd", pcd_header + "WIDTH 2\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n" + points), "out.bt"},
+       in("in.pcd", pcd_header + "WIDTH 2\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n" + points),
+       "out.bt"},
       {"import_pcd_fewer_rows_than_points", import("--points", "{dir}/in.pcd"), 2,
        "in.pcd: not a readable point cloud (the ascii PCD announces 5 points but holds 4 rows)", Out::Absent,
-       in("in.pcd", pcd_header + "WIDTH 5\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 5\nDATA ascii\n" + points), "out.bt"},
+       in("in.pcd", pcd_header + "WIDTH 5\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 5\nDATA ascii\n" + points),
+       "out.bt"},
       {"import_ply_more_rows_than_vertices", import("--points", "{dir}/in.ply"), 2,
        "in.ply: not a readable point cloud (data after the last element its header announces", Out::Absent,
        in("in.ply", ply_header + points + "2 2 2\n"), "out.bt"},
       {"import_ply_binary_short", import("--points", "{dir}/in.ply"), 2,
-       "in.ply: not a readable point cloud (the PLY's vertex element announces 4 records of 12 bytes, more than the file's remaining 12 bytes hold)", Out::Absent,
-       in("in.ply", replaced(ply_header, "ascii", "binary_little_endian") + std::string(12, '\0')), "out.bt"},
+       "in.ply: not a readable point cloud (the PLY's vertex element announces 4 records of 12 bytes, more than the "
+       "file's remaining 12 bytes hold)",
+       Out::Absent, in("in.ply", replaced(ply_header, "ascii", "binary_little_endian") + std::string(12, '\0')),
+       "out.bt"},
       {"import_xyz_bad_line", import("--points", "{dir}/in.xyz"), 2,
        "in.xyz: not a readable point cloud (line 3: '0 one 0' is not 3 numbers; fix or delete the line)", Out::Absent,
        in("in.xyz", "0 0 0\n1 0 0\n0 one 0\n1 1 1\n"), "out.bt"},
       {"import_mesh_of_zero_area_faces", import("--mesh", "{dir}/in.obj"), 2,
        "in.obj: all 2 triangles of the mesh have zero area", Out::Absent,
        in("in.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 4 4 4\n"), "out.bt"},
-      {"import_points_fifo", import("--points", "{fifo}/points.xyz"), 2,
-       "points.xyz: is a FIFO (named pipe), not a point cloud file", Out::Absent, {}, "out.bt"},
-      {"import_pcd_fifo", import("--points", "{fifo}/points.pcd"), 2, "points.pcd: is a FIFO (named pipe)", Out::Absent, {},
+      {"import_points_fifo",
+       import("--points", "{fifo}/points.xyz"),
+       2,
+       "points.xyz: is a FIFO (named pipe), not a point cloud file",
+       Out::Absent,
+       {},
        "out.bt"},
-      {"import_mesh_fifo", import("--mesh", "{fifo}/mesh.stl"), 2, "mesh.stl: is a FIFO (named pipe), not a mesh file",
-       Out::Absent, {}, "out.bt"},
-      {"import_origins_fifo", import("--points", "{fx}/points.xyz") + " --origins {fifo}/origins.csv", 2,
-       "origins.csv: is a FIFO (named pipe), not a CSV file", Out::Absent, {}, "out.bt"},
-      {"import_points_directory", import("--points", "{dir}/scan.xyz"), 2, "scan.xyz: is a directory, not a point cloud file",
-       Out::Absent, in("scan.xyz/keep", "0 0 0\n"), "out.bt"},
-      {"import_crop_nan", import("--points", "{fx}/points.xyz") + " --crop nan,0,0,1,1,1", 2,
-       "--crop 'nan,0,0,1,1,1': expected six finite numbers xmin,ymin,zmin,xmax,ymax,zmax", Out::Absent, {}, "out.bt"},
-      {"import_crop_five_numbers", import("--points", "{fx}/points.xyz") + " --crop 0,0,0,1,1", 2,
-       "--crop '0,0,0,1,1': expected six finite numbers", Out::Absent, {}, "out.bt"},
+      {"import_pcd_fifo",
+       import("--points", "{fifo}/points.pcd"),
+       2,
+       "points.pcd: is a FIFO (named pipe)",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"import_mesh_fifo",
+       import("--mesh", "{fifo}/mesh.stl"),
+       2,
+       "mesh.stl: is a FIFO (named pipe), not a mesh file",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"import_origins_fifo",
+       import("--points", "{fx}/points.xyz") + " --origins {fifo}/origins.csv",
+       2,
+       "origins.csv: is a FIFO (named pipe), not a CSV file",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"import_points_directory", import("--points", "{dir}/scan.xyz"), 2,
+       "scan.xyz: is a directory, not a point cloud file", Out::Absent, in("scan.xyz/keep", "0 0 0\n"), "out.bt"},
+      {"import_crop_nan",
+       import("--points", "{fx}/points.xyz") + " --crop nan,0,0,1,1,1",
+       2,
+       "--crop 'nan,0,0,1,1,1': expected six finite numbers xmin,ymin,zmin,xmax,ymax,zmax",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"import_crop_five_numbers",
+       import("--points", "{fx}/points.xyz") + " --crop 0,0,0,1,1",
+       2,
+       "--crop '0,0,0,1,1': expected six finite numbers",
+       Out::Absent,
+       {},
+       "out.bt"},
       {"import_crop_min_not_below_max", import("--mesh", "{dir}/in.obj") + " --crop 0,0,2,1,1,1", 2,
        "--crop '0,0,2,1,1,1': a crop box's z minimum (2) must be below its maximum (1)", Out::Absent,
        in("in.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "out.bt"},
-      {"import_crop_huge", import("--points", "{fx}/points.xyz") + " --crop 0,0,0,1,1,1e300", 2,
-       "each within +-1e6 m", Out::Absent, {}, "out.bt"},
-      {"import_crop_misses_the_data", import("--points", "{fx}/points.xyz") + " --crop 5,5,5,6,6,6", 2,
-       "no point lies in the crop box (5.00, 5.00, 5.00) to (6.00, 6.00, 6.00)", Out::Absent, {}, "out.bt"},
-      {"import_max_range_nan",
-       import("--points", "{fx}/points.xyz") + " --origins {dir}/origins.csv --max-range nan", 2,
-       "--max-range nan: a finite number of metres >= 0", Out::Absent, in("origins.csv", "x,y,z\n0.5,0.5,0.5\n"),
+      {"import_crop_huge",
+       import("--points", "{fx}/points.xyz") + " --crop 0,0,0,1,1,1e300",
+       2,
+       "each within +-1e6 m",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"import_crop_misses_the_data",
+       import("--points", "{fx}/points.xyz") + " --crop 5,5,5,6,6,6",
+       2,
+       "no point lies in the crop box (5.00, 5.00, 5.00) to (6.00, 6.00, 6.00)",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"import_max_range_nan", import("--points", "{fx}/points.xyz") + " --origins {dir}/origins.csv --max-range nan",
+       2, "--max-range nan: a finite number of metres >= 0", Out::Absent, in("origins.csv", "x,y,z\n0.5,0.5,0.5\n"),
        "out.bt"},
       {"import_max_range_negative_with_origins",
        import("--points", "{fx}/points.xyz") + " --origins {dir}/origins.csv --max-range -2", 2,
@@ -689,9 +862,20 @@ std::vector<Case> successCases() {
       {"ok_duty", "duty --days 1 --json {out}", 0, "1 day"},
       {"ok_rainflow", kRainflow + " --json {out}", 0, "cycles in all"},
       {"ok_calibrate", kCalibrate + " --out {out}", 0, "rmse_a"},
-      {"ok_import", "import --points {fx}/points.xyz --resolution 0.1 --out {out}", 0, "import:", Out::Absent, {}, "out.bt"},
-      {"ok_import_crop", "import --points {fx}/points.xyz --resolution 0.1 --crop -1,-1,-1,0.5,2,2 --out {out}", 0,
-       "(cropped to (-1.00, -1.00, -1.00) to (0.50, 2.00, 2.00))", Out::Absent, {}, "out.bt"},
+      {"ok_import",
+       "import --points {fx}/points.xyz --resolution 0.1 --out {out}",
+       0,
+       "import:",
+       Out::Absent,
+       {},
+       "out.bt"},
+      {"ok_import_crop",
+       "import --points {fx}/points.xyz --resolution 0.1 --crop -1,-1,-1,0.5,2,2 --out {out}",
+       0,
+       "(cropped to (-1.00, -1.00, -1.00) to (0.50, 2.00, 2.00))",
+       Out::Absent,
+       {},
+       "out.bt"},
       {"ok_probe", kProbe + " --json {out}", 0, "valid"},
       {"ok_bench_planners", kBench + " --json {out}", 0, "RRTstar"},
   };
@@ -756,16 +940,23 @@ TEST_P(HostileInput, GivesTheDocumentedExitAndLeavesNothingBehind) {
 
   fs::path out = dir / c.out_name;
   switch (c.out) {
-    case Out::Absent: break;
-    case Out::ExistingFile: writeFile(out, "keep"); break;
-    case Out::ExistingDir: fs::create_directories(out); break;
+    case Out::Absent:
+      break;
+    case Out::ExistingFile:
+      writeFile(out, "keep");
+      break;
+    case Out::ExistingDir:
+      fs::create_directories(out);
+      break;
     case Out::ReadOnlyDir:
       fs::create_directories(dir / "ro");
       fs::permissions(dir / "ro", fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
                                       fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
       out = dir / "ro" / c.out_name;
       break;
-    case Out::MissingParent: out = dir / "missing" / "deeper" / c.out_name; break;
+    case Out::MissingParent:
+      out = dir / "missing" / "deeper" / c.out_name;
+      break;
     case Out::UnderFile:
       writeFile(dir / "afile", "keep");
       out = dir / "afile" / c.out_name;
@@ -780,8 +971,9 @@ TEST_P(HostileInput, GivesTheDocumentedExitAndLeavesNothingBehind) {
   // A reader that opens a FIFO blocks, one that reads a device never ends: the timeout (exit 124)
   // makes either a failure, not a hang.
   const auto mentions = [&](const std::string& what) {
-    return c.args.find(what) != std::string::npos ||
-           std::any_of(c.files.begin(), c.files.end(), [&](const auto& file) { return file.second.find(what) != std::string::npos; });
+    return c.args.find(what) != std::string::npos || std::any_of(c.files.begin(), c.files.end(), [&](const auto& file) {
+             return file.second.find(what) != std::string::npos;
+           });
   };
   const bool may_block = mentions("{fifo}") || mentions("/dev/");
   const CommandResult r = runCeilplan(substituted(c.args, all), may_block ? "timeout 60" : "");
@@ -790,8 +982,8 @@ TEST_P(HostileInput, GivesTheDocumentedExitAndLeavesNothingBehind) {
 
   EXPECT_EQ(r.exit_code, c.exit_code) << "stderr: " << r.err << "\nstdout: " << r.out;
   const std::string says = substituted(c.says, paths);
-  EXPECT_NE((c.exit_code == 0 ? r.out : r.err).find(says), std::string::npos)
-      << "expected '" << says << "' in:\n" << (c.exit_code == 0 ? r.out : r.err);
+  EXPECT_NE((c.exit_code == 0 ? r.out : r.err).find(says), std::string::npos) << "expected '" << says << "' in:\n"
+                                                                              << (c.exit_code == 0 ? r.out : r.err);
   EXPECT_TRUE(temporariesUnder(dir).empty()) << temporariesUnder(dir).front();
   EXPECT_EQ(snapshot(fx), fixtures_before) << "a run wrote into the fixtures";
   if (c.exit_code != 0) {
@@ -952,8 +1144,9 @@ TEST(HostileInputMessages, ProgressLinesAreClearedWhenWorkEnds) {
                                                {{"{fx}", fixtures().string()}}));
   const std::string bridge = std::string(CEILPLAN_SOURCE_DIR) + "/maps/bridge.bt";
   const std::vector<std::pair<int, std::vector<std::string>>> runs = {
-      {0, {"plan", "--map", bridge, "--start", "-4,0,0.5", "--goal", "-4,2,0.5", "--planner", "lattice", "--out",
-           (dir / "plan").string()}},
+      {0,
+       {"plan", "--map", bridge, "--start", "-4,0,0.5", "--goal", "-4,2,0.5", "--planner", "lattice", "--out",
+        (dir / "plan").string()}},
       {0, {"mapinfo", "--map", bridge}},
       {2, {"tour", "--mission", (dir / "free_air.yaml").string(), "--out", (dir / "tour").string()}},
   };
@@ -1033,7 +1226,8 @@ TEST_P(InterruptedRun, LeavesNothingBehind) {
   int status = 0;
   bool ready = false;
   while (!ready && std::chrono::steady_clock::now() < deadline) {
-    if (::waitpid(pid, &status, WNOHANG) == pid) FAIL() << "finished before it was interrupted: " << readWholeFile(stdout_path);
+    if (::waitpid(pid, &status, WNOHANG) == pid)
+      FAIL() << "finished before it was interrupted: " << readWholeFile(stdout_path);
     ready = readWholeFile(stdout_path).find(c.started) != std::string::npos && staged();
     if (!ready) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }

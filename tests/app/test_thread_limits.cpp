@@ -21,9 +21,9 @@ const std::string kBridge = std::string(CEILPLAN_SOURCE_DIR) + "/maps/bridge.bt"
 // them; refusals are counted in `refusals`. A sanitizer's runtime must come first among the
 // libraries, and the preloaded one comes before it: the order check is waived.
 std::string threadLimit(int allowed, const std::filesystem::path& refusals) {
-  return "CEILPLAN_TEST_THREADS_ALLOWED=" + std::to_string(allowed) + " CEILPLAN_TEST_REFUSALS_FILE=" +
-         refusals.string() + " ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0 LD_PRELOAD=" +
-         CEILPLAN_REFUSE_THREADS;
+  return "CEILPLAN_TEST_THREADS_ALLOWED=" + std::to_string(allowed) +
+         " CEILPLAN_TEST_REFUSALS_FILE=" + refusals.string() +
+         " ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0 LD_PRELOAD=" + CEILPLAN_REFUSE_THREADS;
 }
 
 nlohmann::json planJson(const std::filesystem::path& dir) {
@@ -50,8 +50,8 @@ TEST_P(PlanWithoutThreads, PlansWithWhatItGetsAndNeverAborts) {
   const std::string flags = " --map " + kBridge + " " + c.flags + " --out ";
   const CommandResult free = runCeilplan("plan" + flags + (dir / "free").string());
   ASSERT_EQ(free.exit_code, 0) << free.err;
-  const CommandResult limited = runCeilplan("plan" + flags + (dir / "limited").string(),
-                                            threadLimit(c.threads_allowed, dir / "refusals"));
+  const CommandResult limited =
+      runCeilplan("plan" + flags + (dir / "limited").string(), threadLimit(c.threads_allowed, dir / "refusals"));
   if (refusalsIn(dir / "refusals") == 0)
     GTEST_SKIP() << "no thread was refused: pthread_create could not be interposed (a sanitizer's own?)";
   ASSERT_EQ(limited.exit_code, 0) << limited.err;

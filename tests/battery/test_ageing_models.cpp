@@ -114,8 +114,7 @@ TEST(XuModel, CalendarTermUsesTimeAveragedSocAndTemperature) {
   const auto conditions = cb::OperatingConditions::fromCelsius(35.0);
   cb::XuAgeingModel model(conditions);
   model.addSamples(restingDays(365, 0.8));
-  const double f_t = 4.14e-10 * 365 * kDay_s * std::exp(1.04 * 0.3) *
-                     cb::xuTemperatureStress(conditions.temperature_k);
+  const double f_t = 4.14e-10 * 365 * kDay_s * std::exp(1.04 * 0.3) * cb::xuTemperatureStress(conditions.temperature_k);
   EXPECT_NEAR(model.calendarDamage(), f_t, 1e-15);
   EXPECT_DOUBLE_EQ(model.cycleDamage(), 0.0);
   EXPECT_NEAR(model.capacityLoss(), cb::xuCapacityLoss(f_t), 1e-15);
@@ -137,8 +136,7 @@ TEST(SchmalstiegModel, RatesMatchThePublishedForms) {
                    (7.543 * 3.7 - 23.75) * 1e6 * std::exp(-6976.0 / 308.15));
   EXPECT_NEAR(cb::schmalstiegCalendarCapacityRate(3.7, 308.15), 6.1277e-4, 1e-8);
   EXPECT_DOUBLE_EQ(cb::schmalstiegCalendarCapacityRate(3.0, 308.15), 0.0);  // clamped
-  EXPECT_DOUBLE_EQ(cb::schmalstiegCycleCapacityRate(3.8, 0.6),
-                   7.348e-3 * 0.133 * 0.133 + 7.60e-4 + 4.081e-3 * 0.6);
+  EXPECT_DOUBLE_EQ(cb::schmalstiegCycleCapacityRate(3.8, 0.6), 7.348e-3 * 0.133 * 0.133 + 7.60e-4 + 4.081e-3 * 0.6);
   EXPECT_DOUBLE_EQ(cb::schmalstiegCalendarResistanceRate(3.7, 308.15),
                    (5.270 * 3.7 - 16.32) * 1e5 * std::exp(-5986.0 / 308.15));
   EXPECT_DOUBLE_EQ(cb::schmalstiegCycleResistanceRate(3.725, 0.0), -1.521e-5);
@@ -341,8 +339,7 @@ TEST(AgeingModels, CloneContinuesIndependently) {
 }
 
 TEST(AgeingModels, FactoryKnowsEachModelByName) {
-  for (const auto& name : cb::ageingModelNames())
-    EXPECT_EQ(cb::makeAgeingModel(name, defaultOptions())->name(), name);
+  for (const auto& name : cb::ageingModelNames()) EXPECT_EQ(cb::makeAgeingModel(name, defaultOptions())->name(), name);
   try {
     cb::makeAgeingModel("wang", defaultOptions());
     FAIL() << "unknown model accepted";
@@ -392,6 +389,6 @@ TEST(AgeingModels, CapacityLossStopsAtTheWholeCapacity) {
   p.cycles_at_full_depth = 10.0;
   cb::WoehlerAgeingModel model(p);
   model.addSamples(cyclesAtTimeZero(100, 0.0, 1.0));
-  EXPECT_DOUBLE_EQ(model.damage(), 10.0);  // Miner's sum goes on...
+  EXPECT_DOUBLE_EQ(model.damage(), 10.0);       // Miner's sum goes on...
   EXPECT_DOUBLE_EQ(model.capacityLoss(), 1.0);  // ...the capacity lost cannot exceed it all
 }

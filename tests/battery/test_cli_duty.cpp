@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <ostream>
 #include <fstream>
+#include <ostream>
 
 namespace ceilplan::testing {
 namespace {
@@ -25,7 +25,7 @@ struct ExpectedExit {
 
 const ExpectedExit kDutyExitCodes[] = {
     {"--days 1", 0, ""},
-    {"--dt-s 1e-9", 2, "--dt-s"},             // allocated without bound until bad_alloc
+    {"--dt-s 1e-9", 2, "--dt-s"},  // allocated without bound until bad_alloc
     {"--dt-s -30", 2, "--dt-s"},
     {"--years 1e6", 2, "--years: must be at most 100, got 1e6"},  // 365 million days
     {"--years 0", 2, "--years"},
@@ -38,8 +38,7 @@ const ExpectedExit kDutyExitCodes[] = {
     {"--unknown-flag 3", 2, "--unknown-flag"},
     {"--dt-s 0.1", 2, "--dt-s 0.1 cuts each 45-min mission into 27000 steps"},
     {"--missions-per-day 40", 2, "--missions-per-day 40 missions of 45 min"},
-    {"--missions-per-day 100 --flight-min 10 --idle-min 1 --charge-max-min 1 --years 100", 2,
-     "a study may hold"},
+    {"--missions-per-day 100 --flight-min 10 --idle-min 1 --charge-max-min 1 --years 100", 2, "a study may hold"},
     {"--days 7000 --csv-dir /nonexistent/never-written", 2, "--csv-dir would record"},
     {"--temperature-c 298", 2, "kelvin"},
     {"--charge-max-min 10", 3, "mission 3 of day 1"},
@@ -128,7 +127,8 @@ TEST(CliDuty, ReportsEachAgeingModelPerCaseWithReductionsAndEndOfLife) {
   const auto dir = scratchDirectory("duty_ageing");
   const CommandResult r = runCeilplan("duty --dt-s 0 --json " + (dir / "duty.json").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* model : {"fec:", "xu:", "schmalstieg:", "woehler:"}) EXPECT_NE(r.out.find(model), std::string::npos) << model;
+  for (const char* model : {"fec:", "xu:", "schmalstieg:", "woehler:"})
+    EXPECT_NE(r.out.find(model), std::string::npos) << model;
   const auto j = nlohmann::json::parse(readWholeFile(dir / "duty.json"));
   const auto& ceiling_models = j["cases"][1]["ageing"];
   ASSERT_EQ(ceiling_models.size(), 4u);
@@ -215,9 +215,8 @@ TEST(CliDuty, ReductionsCompareCasesOverTheDaysBothFlew) {
 
 TEST(CliDuty, OneModelOverYearsWritesTheStateOfHealthSeries) {
   const auto dir = scratchDirectory("duty_years");
-  const CommandResult r =
-      runCeilplan("duty --model xu --years 2 --temperature-c 35 --dt-s 0 --json " + (dir / "d.json").string() +
-                  " --csv-dir " + (dir / "csv").string());
+  const CommandResult r = runCeilplan("duty --model xu --years 2 --temperature-c 35 --dt-s 0 --json " +
+                                      (dir / "d.json").string() + " --csv-dir " + (dir / "csv").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(readWholeFile(dir / "d.json"));
   EXPECT_EQ(j["scenario"]["study_days"].get<int>(), 730);
@@ -251,16 +250,16 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--soc-start 1.5", "--soc-start"}, BadInput{"--soc-start 0", "--soc-start"},
                       BadInput{"--charge-current-a 0", "--charge-current-a"},
                       BadInput{"--charge-max-min 10", "mission 3 of day 1"},
-                      BadInput{"--unknown-flag 3", "--unknown-flag"},
-                      BadInput{"--temperature-c 298", "kelvin"}, BadInput{"--model rainbow", "--model"},
-                      BadInput{"--eol-soh 1.2", "--eol-soh"},
+                      BadInput{"--unknown-flag 3", "--unknown-flag"}, BadInput{"--temperature-c 298", "kelvin"},
+                      BadInput{"--model rainbow", "--model"}, BadInput{"--eol-soh 1.2", "--eol-soh"},
                       BadInput{"--config /nonexistent/study.yaml", "/nonexistent/study.yaml"},
                       BadInput{"--dt-s 1e-9", "--dt-s"}, BadInput{"--dt-s 0.1", "--dt-s"},
                       BadInput{"--years 1e6", "--years"}, BadInput{"--missions-per-day 40", "--missions-per-day"},
                       BadInput{"--chemistry \"$(printf '\\033[31mLiPo')\"", "--chemistry"}),
     [](const auto& info) {
       std::string name;
-      for (const char c : std::string(info.param.arguments)) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      for (const char c : std::string(info.param.arguments))
+        name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
       return name;
     });
 
@@ -276,8 +275,8 @@ TEST(CliDuty, MalformedYamlIsRefusedWithItsLine) {
 
 TEST(CliDuty, FailedRunLeavesNoPartialOutput) {
   const auto dir = scratchDirectory("duty_no_partial");
-  const CommandResult r =
-      runCeilplan("duty --charge-max-min 10 --json " + (dir / "out.json").string() + " --csv-dir " + (dir / "csv").string());
+  const CommandResult r = runCeilplan("duty --charge-max-min 10 --json " + (dir / "out.json").string() + " --csv-dir " +
+                                      (dir / "csv").string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_TRUE(std::filesystem::is_empty(dir));
 }

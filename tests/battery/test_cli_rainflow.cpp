@@ -13,9 +13,9 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <ostream>
 #include <fstream>
 #include <map>
+#include <ostream>
 #include <random>
 #include <string>
 #include <thread>
@@ -27,16 +27,14 @@ using ceilplan::testing::scratchDirectory;
 
 namespace {
 
-std::filesystem::path writeFile(const std::filesystem::path& dir, const std::string& name,
-                                const std::string& text) {
+std::filesystem::path writeFile(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
   const auto path = dir / name;
   std::ofstream(path, std::ios::binary) << text;
   return path;
 }
 
 // ASTM E1049-85's example [-2, 1, -3, 5, -1, 3, -4, 4, -2] mapped to SOC by (x + 4) / 10.
-const std::string kAstmSoc =
-    "t_s,soc\n0,0.2\n10,0.5\n20,0.1\n30,0.9\n40,0.3\n50,0.7\n60,0.0\n70,0.8\n80,0.2\n";
+const std::string kAstmSoc = "t_s,soc\n0,0.2\n10,0.5\n20,0.1\n30,0.9\n40,0.3\n50,0.7\n60,0.0\n70,0.8\n80,0.2\n";
 
 // ---- Exit codes (docs/cli.md): 0 success, 1 runtime failure, 2 bad input or usage. ----------
 struct ExpectedExit {
@@ -53,8 +51,14 @@ const ExpectedExit kRainflowExitCodes[] = {
     {"missing_column", "t_s,SOC\n0,0.9\n1,0.3\n", 2, "no column 'soc'; columns: t_s, SOC"},
     {"garbage_row", "t_s,soc\n0,0.9\n1,0.3,7,?\n", 2, "line 3: 4 fields, but the header names 2 columns"},
     {"garbage_value", "t_s,soc\n0,0.9\n1,0.3x\n", 2, "line 3, column 'soc': '0.3x' is not a number"},
-    {"terminal_escape", "t_s,soc\n0,0.9\n1,\x1b[31m\x07\x9b" "2J\n", 2, "'\\x1B[31m\\x07\\x9B2J' is not a number"},
-    {"binary", "\x7f" "ELF\x02\x01\x01\x03,\x04\n\x05", 2, "line 1: the header holds control characters ('\\x7FELF"},
+    {"terminal_escape",
+     "t_s,soc\n0,0.9\n1,\x1b[31m\x07\x9b"
+     "2J\n",
+     2, "'\\x1B[31m\\x07\\x9B2J' is not a number"},
+    {"binary",
+     "\x7f"
+     "ELF\x02\x01\x01\x03,\x04\n\x05",
+     2, "line 1: the header holds control characters ('\\x7FELF"},
     {"one_row", "t_s,soc\n0,0.9\n", 2, "has 1 data row; a rainflow count needs at least 2 samples"},
     {"header_only", "t_s,soc\n", 2, "has 0 data rows"},
     {"nan_row", "t_s,soc\n0,0.9\n1,NaN\n2,0.5\n", 2, "line 3, column 'soc': 'NaN' is not a finite number"},
@@ -79,9 +83,9 @@ TEST_P(CliRainflowExitCode, FollowsTheTableWithOneEscapedLineAndNoOutput) {
     return;
   }
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_TRUE(std::none_of(r.err.begin(), r.err.end(),
-                           [](char c) { return (c >= 0 && c < 0x20 && c != '\n') || c == 0x7f || c == '\x9b'; }))
-      << "raw control bytes echoed";
+  EXPECT_TRUE(std::none_of(r.err.begin(), r.err.end(), [](char c) {
+    return (c >= 0 && c < 0x20 && c != '\n') || c == 0x7f || c == '\x9b';
+  })) << "raw control bytes echoed";
   EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "output written for bad input";
 }
 
@@ -102,8 +106,7 @@ TEST(CliRainflow, ReadsTheSeriesThatDutyWrites) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("30 rows: 0 full and 30 half cycles, 15 cycles in all"), std::string::npos) << r.out;
   const nlohmann::json cycles = nlohmann::json::parse(readWholeFile(dir / "c.json"));
-  for (const auto& c : cycles.at("cycles"))
-    EXPECT_NEAR(c.at("range").get<double>(), 9.5 / 3.0 / 5.2, 1e-9);
+  for (const auto& c : cycles.at("cycles")) EXPECT_NEAR(c.at("range").get<double>(), 9.5 / 3.0 / 5.2, 1e-9);
 }
 
 // Starts `ceilplan rainflow` on a large file, sends `signal_number` once its temporary JSON file
@@ -152,7 +155,8 @@ TEST(CliRainflow, AnInterruptionLeavesNoTemporaryFileAndNoPartialOutput) {
     // The run created out/: it is gone (removed with the temporary), or holds the whole JSON.
     std::vector<std::string> left;
     std::error_code absent;
-    for (const auto& entry : std::filesystem::directory_iterator(dir / "out", absent)) left.push_back(entry.path().filename());
+    for (const auto& entry : std::filesystem::directory_iterator(dir / "out", absent))
+      left.push_back(entry.path().filename());
     // All or nothing: no temporary; the JSON only if it was renamed into place, whole, first.
     for (const std::string& name : left) {
       EXPECT_EQ(name.find(".tmp"), std::string::npos) << name << " left behind";
@@ -167,8 +171,7 @@ TEST(CliRainflow, PrintsAndWritesTheAstmExample) {
   const auto dir = scratchDirectory("astm");
   const auto csv = writeFile(dir, "soc.csv", kAstmSoc);
   const auto json_path = dir / "out" / "cycles.json";
-  const auto result =
-      runCeilplan("rainflow --csv " + csv.string() + " --column soc --json " + json_path.string());
+  const auto result = runCeilplan("rainflow --csv " + csv.string() + " --column soc --json " + json_path.string());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("4 cycles in all"), std::string::npos) << result.out;
   const auto json = nlohmann::json::parse(readWholeFile(json_path));
@@ -205,8 +208,7 @@ TEST(CliRainflow, BadValuesGiveOneClearLineAndNoOutputFile) {
     const auto dir = scratchDirectory("bad_" + name);
     const auto csv = writeFile(dir, "soc.csv", input.first);
     const auto json_path = dir / "cycles.json";
-    const auto result =
-        runCeilplan("rainflow --csv " + csv.string() + " --column soc --json " + json_path.string());
+    const auto result = runCeilplan("rainflow --csv " + csv.string() + " --column soc --json " + json_path.string());
     EXPECT_NE(result.exit_code, 0) << name;  // 2 per docs/cli.md: kRainflowExitCodes
     EXPECT_NE(result.err.find(input.second), std::string::npos) << name << ": " << result.err;
     EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << name << ": more than one line";

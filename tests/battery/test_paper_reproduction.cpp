@@ -14,8 +14,8 @@ constexpr double kMinute = 60.0;
 DutyResult paperCase(double flight_current_a, double step_s) {
   const Pack pack;  // 5.2 Ah, charged at 10.4 A
   DutyCycle duty;   // 15 missions a day, 30 days, from 95 % SOC
-  duty.mission = flyIdleChargeMission(flight_current_a, 20 * kMinute, 5 * kMinute, pack.charge_current_a,
-                                      20 * kMinute, 0.95);
+  duty.mission =
+      flyIdleChargeMission(flight_current_a, 20 * kMinute, 5 * kMinute, pack.charge_current_a, 20 * kMinute, 0.95);
   DutyOptions options;
   options.step_s = step_s;
   return simulateDuty(pack, duty, options);
@@ -23,12 +23,12 @@ DutyResult paperCase(double flight_current_a, double step_s) {
 
 struct PaperCase {
   double flight_current_a;
-  double min_soc_pct;            // paper, one decimal
-  double charge_end_30s_min;     // paper, 30 s steps
-  double charge_end_exact_min;   // derived from the paper's equations, exact
-  double fec_per_mission;        // derived, four decimals
-  double fec_per_day;            // paper, two decimals
-  double fec_30_days;            // paper, one decimal
+  double min_soc_pct;           // paper, one decimal
+  double charge_end_30s_min;    // paper, 30 s steps
+  double charge_end_exact_min;  // derived from the paper's equations, exact
+  double fec_per_mission;       // derived, four decimals
+  double fec_per_day;           // paper, two decimals
+  double fec_30_days;           // paper, one decimal
 };
 
 const PaperCase kFreeFlight{9.5, 34.1, 43.5, 43.27, 0.6090, 9.14, 274.0};
@@ -72,7 +72,9 @@ TEST_P(PaperReproduction, FecMatchesThePaper) {
 }
 
 INSTANTIATE_TEST_SUITE_P(FoundingPaper, PaperReproduction, ::testing::Values(kFreeFlight, kCeilingEffect),
-                         [](const auto& info) { return info.param.flight_current_a > 9 ? "FreeFlight" : "CeilingEffect"; });
+                         [](const auto& info) {
+                           return info.param.flight_current_a > 9 ? "FreeFlight" : "CeilingEffect";
+                         });
 
 TEST(FoundingPaper, CeilingEffectReducesFecBy15Point8Percent) {
   const double free_fec = paperCase(9.5, 30.0).fecTotal();

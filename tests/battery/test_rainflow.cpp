@@ -32,8 +32,8 @@ double totalCount(const std::vector<RainflowCycle>& cycles) {
 bool sameCycles(const std::vector<RainflowCycle>& a, const std::vector<RainflowCycle>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (a[i].range != b[i].range || a[i].mean != b[i].mean || a[i].count != b[i].count ||
-        a[i].start != b[i].start || a[i].end != b[i].end)
+    if (a[i].range != b[i].range || a[i].mean != b[i].mean || a[i].count != b[i].count || a[i].start != b[i].start ||
+        a[i].end != b[i].end)
       return false;
   }
   return true;

@@ -116,13 +116,15 @@ TEST(CoverageKeys, EveryShippedCoverageMissionReads) {
 
 TEST(CoverageKeys, DocumentedBadInputsNameTheKey) {
   // A camera that cannot reach the GSD beyond its minimum focus: 0.2 mm/px needs 0.73 m.
-  EXPECT_NE(errorOf(with("gsd_mm_px: 1.5", "gsd_mm_px: 0.2")).find("'surfaces[0]': surface region 'soffit': 'gsd_mm_px' 0.2"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(with("gsd_mm_px: 1.5", "gsd_mm_px: 0.2")).find("'surfaces[0]': surface region 'soffit': 'gsd_mm_px' 0.2"),
+      std::string::npos);
   EXPECT_NE(errorOf(with("gsd_mm_px: 1.5", "gsd_mm_px: 0.2")).find("'camera.min_focus_m' 1 m"), std::string::npos);
   // A region with no surface in it is found with the map: mission::planCoverage (test_coverage_plan).
   // Overlap of 100 % or more.
-  EXPECT_NE(errorOf(with("front: 75", "front: 100")).find("'surfaces[0].overlap.front' must lie in [0, 100) %, got 100"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(with("front: 75", "front: 100")).find("'surfaces[0].overlap.front' must lie in [0, 100) %, got 100"),
+      std::string::npos);
   EXPECT_NE(errorOf(with("side: 65", "side: 0.65")).find("'surfaces[0].overlap.side' is 0.65: overlap is in percent"),
             std::string::npos);
   // GSD <= 0.
@@ -137,14 +139,18 @@ TEST(CoverageKeys, DocumentedBadInputsNameTheKey) {
 }
 
 TEST(CoverageKeys, UnknownKeysNameTheNearestValidOne) {
-  EXPECT_NE(errorOf(with("gsd_mm_px: 1.5", "gsd_mm: 1.5")).find("unknown key 'surfaces[0].gsd_mm' (did you mean 'surfaces[0].gsd_mm_px'?)"),
+  EXPECT_NE(errorOf(with("gsd_mm_px: 1.5", "gsd_mm: 1.5"))
+                .find("unknown key 'surfaces[0].gsd_mm' (did you mean 'surfaces[0].gsd_mm_px'?)"),
             std::string::npos);
-  EXPECT_NE(errorOf(with("min_focus_m", "min_focus")).find("unknown key 'camera.min_focus' (did you mean 'camera.min_focus_m'?)"),
+  EXPECT_NE(errorOf(with("min_focus_m", "min_focus"))
+                .find("unknown key 'camera.min_focus' (did you mean 'camera.min_focus_m'?)"),
             std::string::npos);
   EXPECT_NE(errorOf(with("overlap: {front", "overlap: {frnot")).find("(did you mean 'surfaces[0].overlap.front'?)"),
             std::string::npos);
-  EXPECT_NE(errorOf(with("spacing_m", "spaceing_m")).find("did you mean 'contact_grid[0].spacing_m'"), std::string::npos);
-  EXPECT_NE(errorOf(with("faces: [down, side]", "faces: [dwn, side]")).find("'surfaces[0].faces[0]' is 'dwn', not a face kind (did you mean 'down'?)"),
+  EXPECT_NE(errorOf(with("spacing_m", "spaceing_m")).find("did you mean 'contact_grid[0].spacing_m'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(with("faces: [down, side]", "faces: [dwn, side]"))
+                .find("'surfaces[0].faces[0]' is 'dwn', not a face kind (did you mean 'down'?)"),
             std::string::npos);
   EXPECT_NE(errorOf(with("style: move", "style: hoover")).find("did you mean 'hover'"), std::string::npos);
   EXPECT_NE(errorOf("camera: {preset: phantom4}").find("did you mean 'phantom4rtk'"), std::string::npos);
@@ -153,29 +159,38 @@ TEST(CoverageKeys, UnknownKeysNameTheNearestValidOne) {
 }
 
 TEST(CoverageKeys, NumbersAreCheckedWithTheirRanges) {
-  EXPECT_NE(errorOf(with("sensor_width_mm: 13.2", "sensor_width_mm: .nan")).find("'camera.sensor_width_mm' must be a finite number"),
+  EXPECT_NE(errorOf(with("sensor_width_mm: 13.2", "sensor_width_mm: .nan"))
+                .find("'camera.sensor_width_mm' must be a finite number"),
             std::string::npos);
-  EXPECT_NE(errorOf(with("sensor_width_mm: 13.2", "sensor_width_mm: wide")).find("'camera.sensor_width_mm' must be a number"),
+  EXPECT_NE(
+      errorOf(with("sensor_width_mm: 13.2", "sensor_width_mm: wide")).find("'camera.sensor_width_mm' must be a number"),
+      std::string::npos);
+  EXPECT_NE(errorOf(with("sensor_width_mm: 13.2", "sensor_width_mm: 0"))
+                .find("camera 'sensor_width_mm' must lie in [1, 100] mm"),
             std::string::npos);
-  EXPECT_NE(errorOf(with("sensor_width_mm: 13.2", "sensor_width_mm: 0")).find("camera 'sensor_width_mm' must lie in [1, 100] mm"),
+  EXPECT_NE(errorOf(with("image_width_px: 5472", "image_width_px: 54.5"))
+                .find("'camera.image_width_px' must be a whole number"),
             std::string::npos);
-  EXPECT_NE(errorOf(with("image_width_px: 5472", "image_width_px: 54.5")).find("'camera.image_width_px' must be a whole number"),
+  EXPECT_NE(
+      errorOf(with("max_incidence_deg: 40", "max_incidence_deg: 95")).find("'max_incidence_deg' must lie in (0, 89]"),
+      std::string::npos);
+  EXPECT_NE(errorOf(with("mount_offset_m: [0.1, 0.0, 0.05]", "mount_offset_m: [0.1, 0.0]"))
+                .find("'camera.mount_offset_m' must be a list of 3 numbers"),
             std::string::npos);
-  EXPECT_NE(errorOf(with("max_incidence_deg: 40", "max_incidence_deg: 95")).find("'max_incidence_deg' must lie in (0, 89]"),
-            std::string::npos);
-  EXPECT_NE(errorOf(with("mount_offset_m: [0.1, 0.0, 0.05]", "mount_offset_m: [0.1, 0.0]")).find("'camera.mount_offset_m' must be a list of 3 numbers"),
-            std::string::npos);
-  EXPECT_NE(errorOf(with("dwell_s: 10", "dwell_s: -1")).find("'contact_grid[0]': contact grid 'deck_thickness': 'dwell_s'"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(with("dwell_s: 10", "dwell_s: -1")).find("'contact_grid[0]': contact grid 'deck_thickness': 'dwell_s'"),
+      std::string::npos);
   EXPECT_NE(errorOf(with("[15, 5]], z: [0, 4.2]", "[15, 5]], z: [4.2, 0]")).find("'prism.z' must be [min, max]"),
             std::string::npos);
-  EXPECT_NE(errorOf(with("box: {min: [0, -4, 5.95], max: [48, 4, 6.05]}", "")).find("'surfaces[0]' needs exactly one of 'box'"),
+  EXPECT_NE(errorOf(with("box: {min: [0, -4, 5.95], max: [48, 4, 6.05]}", ""))
+                .find("'surfaces[0]' needs exactly one of 'box'"),
             std::string::npos);
 }
 
 TEST(CoverageKeys, MissingAndRepeatedKeys) {
-  EXPECT_NE(errorOf(with("  focal_length_mm: 8.8\n", "")).find("missing key 'camera.focal_length_mm' (or give 'preset')"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(with("  focal_length_mm: 8.8\n", "")).find("missing key 'camera.focal_length_mm' (or give 'preset')"),
+      std::string::npos);
   EXPECT_NE(errorOf(with("- name: pier_face", "- name: soffit")).find("'surfaces[1].name' repeats 'soffit'"),
             std::string::npos);
   EXPECT_NE(errorOf("surfaces:\n  - {name: a, box: {min: [0, 0, 0], max: [1, 1, 1]}, faces: [down], gsd_mm_px: 1}")

@@ -47,8 +47,8 @@ TEST(CoverageJson, EveryFieldFromThePlanAndItsCheck) {
   const mission::CoveragePlan plan = mission::planCoverage(room.environment, room.ceiling_model, camera, {region});
   std::vector<mission::CameraPose> poses;
   for (const auto& photo : plan.photos) poses.push_back(photo.pose);
-  const mission::CoverageCheck check =
-      mission::checkCoverage(room.map.tree(), camera, {region}, {plan.regions[0].surface}, {plan.regions[0].reachable}, poses);
+  const mission::CoverageCheck check = mission::checkCoverage(
+      room.map.tree(), camera, {region}, {plan.regions[0].surface}, {plan.regions[0].reachable}, poses);
 
   const std::vector<PhotoRow> rows = photoRows(plan);
   ASSERT_EQ(rows.size(), plan.photos.size());
@@ -69,8 +69,10 @@ TEST(CoverageJson, EveryFieldFromThePlanAndItsCheck) {
   EXPECT_DOUBLE_EQ(r["max_incidence_deg"], 45.0);
   EXPECT_DOUBLE_EQ(r["area_m2"], check.regions[0].area_m2);
   EXPECT_NEAR(r["unreachable_area_m2"].get<double>(), 0.81, 1e-9);  // the closet
-  EXPECT_NEAR(r["reachable_area_m2"].get<double>() + r["unreachable_area_m2"].get<double>(), r["area_m2"].get<double>(), 1e-9);
-  EXPECT_NEAR(r["covered_pct"].get<double>(), 100.0 * check.regions[0].covered_area_m2 / check.regions[0].area_m2, 1e-9);
+  EXPECT_NEAR(r["reachable_area_m2"].get<double>() + r["unreachable_area_m2"].get<double>(), r["area_m2"].get<double>(),
+              1e-9);
+  EXPECT_NEAR(r["covered_pct"].get<double>(), 100.0 * check.regions[0].covered_area_m2 / check.regions[0].area_m2,
+              1e-9);
   EXPECT_GE(r["covered_reachable_pct"].get<double>(), 99.0);
   EXPECT_EQ(r["gsd_histogram"]["edges_mm_px"].size(), r["gsd_histogram"]["area_m2"].size());
   EXPECT_EQ(r["unreachable_centres"].size(), 81u);

@@ -5,9 +5,9 @@
 
 #include "coverage_fixtures.hpp"
 
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/mission/coverage_check.hpp"
 #include "ceilplan/mission/coverage_plan.hpp"
-#include "ceilplan/core/format.hpp"
 
 #include <gtest/gtest.h>
 
@@ -78,7 +78,8 @@ TEST(CoveragePlan, CoversTheReachableCeilingAndReportsTheCloset) {
 
     const CoverageCheck check = recheck(planned);
     const RegionCoverageCheck& checked = check.regions.at(0);
-    EXPECT_GE(checked.coveredReachableShare(), 0.99) << checked.covered_reachable_area_m2 << " of " << checked.reachable_area_m2;
+    EXPECT_GE(checked.coveredReachableShare(), 0.99)
+        << checked.covered_reachable_area_m2 << " of " << checked.reachable_area_m2;
     EXPECT_NEAR(checked.reachable_area_m2, region.reachable_area_m2, 1e-9);
     EXPECT_EQ(checked.covered_area_m2, checked.covered_reachable_area_m2);  // nothing in the closet
     EXPECT_LE(checked.mean_gsd_mm_px, 1.0);
@@ -137,8 +138,8 @@ TEST(CoveragePlan, ACoarseGsdUnderALowCeilingKeepsLevelsWithinTheRoom) {
   }
   EXPECT_GT(farthest_m, 0.9 * room_m);
   EXPECT_GE(recheck(coarse_plan).regions.at(0).coveredReachableShare(), 0.99);
-  std::cout << "3 mm/px: " << coarse_plan.photos.size() << " photos (2 mm/px: " << fine_plan.photos.size()
-            << "), room " << formatNumber(room_m, 3) << " m, farthest " << formatNumber(farthest_m, 3) << " m\n";
+  std::cout << "3 mm/px: " << coarse_plan.photos.size() << " photos (2 mm/px: " << fine_plan.photos.size() << "), room "
+            << formatNumber(room_m, 3) << " m, farthest " << formatNumber(farthest_m, 3) << " m\n";
 }
 
 TEST(CoveragePlan, CeilingModeHugsTheCeilingToPhotographTheBeam) {

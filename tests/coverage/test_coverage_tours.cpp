@@ -7,9 +7,9 @@
 //   every photo pose through the OctoMap tree), re-run here on the poses the sorties fly;
 // - each photo's row says when and in which sortie it is taken, as the flight record shows it.
 
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/io/mission_file.hpp"
 #include "ceilplan/mission/tour_planner.hpp"
-#include "ceilplan/core/format.hpp"
 
 #include <gtest/gtest.h>
 
@@ -91,9 +91,10 @@ void expectCovered(const PlannedTour& planned) {
     const RegionCoverageCheck& region = check.regions[r];
     std::cout << planned.mission.file.filename().string() << " " << flightModeName(tour.mode) << " '" << region.name
               << "': " << flown.size() << " photos in " << tour.plan.sorties.size() << " sortie(s), "
-              << formatNumber(100.0 * region.coveredReachableShare(), 5) << " % of " << formatNumber(region.reachable_area_m2, 5)
-              << " m2 reachable covered, mean GSD " << formatNumber(region.mean_gsd_mm_px, 3) << " mm/px, "
-              << formatNumber(tour.plan.charge_ah, 4) << " Ah\n";
+              << formatNumber(100.0 * region.coveredReachableShare(), 5) << " % of "
+              << formatNumber(region.reachable_area_m2, 5) << " m2 reachable covered, mean GSD "
+              << formatNumber(region.mean_gsd_mm_px, 3) << " mm/px, " << formatNumber(tour.plan.charge_ah, 4)
+              << " Ah\n";
     EXPECT_GE(region.coveredReachableShare(), 0.99) << region.name;
     EXPECT_DOUBLE_EQ(region.covered_area_m2, tour.coverage_check->regions[r].covered_area_m2);
     EXPECT_LE(region.unreachable_area_m2, 0.01 * region.area_m2);
@@ -157,8 +158,8 @@ TEST(CoverageTours, ContactGridUnderTheDeckIsHugged) {
   ASSERT_EQ(tour.stops.size(), 36u);
   for (const TourStop& stop : tour.stops) {
     EXPECT_EQ(stop.target.name.rfind("deck_thickness_", 0), 0u) << stop.target.name;
-    EXPECT_LE(stop.viewpoint.distance_m, 0.5) << stop.target.name;       // the probe's reach
-    EXPECT_LE(stop.viewpoint.ceiling_gap_m, 0.1) << stop.target.name;    // hugging the deck or a girder
+    EXPECT_LE(stop.viewpoint.distance_m, 0.5) << stop.target.name;     // the probe's reach
+    EXPECT_LE(stop.viewpoint.ceiling_gap_m, 0.1) << stop.target.name;  // hugging the deck or a girder
     EXPECT_DOUBLE_EQ(stop.target.dwell_s, 10.0);
   }
   std::cout << "bridge_contact_grid ceiling: " << tour.stops.size() << " points, " << tour.plan.sorties.size()

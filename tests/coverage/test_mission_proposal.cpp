@@ -49,8 +49,8 @@ TEST(MissionProposal, FindsTheRoomsOverheadSurfacesLargestFirstAndDropsTheSmallO
   for (const ProposedRegion& region : proposal.regions) {
     FaceSet down;
     down.down = true;
-    const RegionSurface surface =
-        extractRegionSurface(room().grid(), RegionShape::makeBox(region.box_m.min(), region.box_m.max()), down, region.name);
+    const RegionSurface surface = extractRegionSurface(
+        room().grid(), RegionShape::makeBox(region.box_m.min(), region.box_m.max()), down, region.name);
     EXPECT_NEAR(surface.area_m2, region.box_area_m2, 1e-9) << region.name;
     EXPECT_NEAR(region.box_area_m2 - region.area_m2, &region == &right ? 0.81 : 0.0, 1e-9) << region.name;
   }
@@ -82,12 +82,14 @@ TEST(MissionProposal, TakesAGivenHomeAndRefusesOneThatCannotBe) {
   EXPECT_NEAR(proposal.home_height_m, 0.8, 1e-9);
 
   options.home_m = Eigen::Vector3d(-1.0, -1.0, 0.1);
-  EXPECT_NE(testing::inputErrorOf([&] { proposeMission(room(), options); })
-                .find("the given home (-1.00, -1.00, 0.10) is no valid position: "),
+  EXPECT_NE(testing::inputErrorOf([&] {
+              proposeMission(room(), options);
+            }).find("the given home (-1.00, -1.00, 0.10) is no valid position: "),
             std::string::npos);
   options.home_m = Eigen::Vector3d(50.0, 0.0, 1.0);
-  EXPECT_NE(testing::inputErrorOf([&] { proposeMission(room(), options); })
-                .find("the given home (50.00, 0.00, 1.00) lies outside the map"),
+  EXPECT_NE(testing::inputErrorOf([&] {
+              proposeMission(room(), options);
+            }).find("the given home (50.00, 0.00, 1.00) lies outside the map"),
             std::string::npos);
 }
 
@@ -124,9 +126,9 @@ TEST(MissionProposal, TheCropTheLeastAreaAndTheMostRegionsSayWhatTheyLeft) {
 
 // A yard under a roof, with what a real scan or an open mesh holds besides the roof: 8 x 4 m, the
 // ground's top at 0.2 m with a hollow under it at x < -2 (free from -1.8 to 0 m: the ground's
-// underside faces free space, as an open mesh's thin ground or a scan's rays under it make it), a table (underside at 0.9 m) at x in [-1.5, -0.5),
-// y in [-1, 1), and a roof whose underside is at 3.4 m over x < 2.5; beyond x = 2, a ledge up to
-// 2.2 m, 1.2 m below the roof's edge.
+// underside faces free space, as an open mesh's thin ground or a scan's rays under it make it), a table (underside at
+// 0.9 m) at x in [-1.5, -0.5), y in [-1, 1), and a roof whose underside is at 3.4 m over x < 2.5; beyond x = 2, a ledge
+// up to 2.2 m, 1.2 m below the roof's edge.
 environment::OccupancyMap yardWithTableAndLedge() {
   using environment::CellState;
   return testing::analyticMap({-4, -2, -2.0}, {4, 2, 4.0}, 0.1, [](const Eigen::Vector3d& c) {
@@ -213,8 +215,7 @@ TEST(MissionProposal, TheMissionFileReadsBackAsTheProposal) {
   settings.overlap_side_pct = 50.0;
   settings.unknown.policy = environment::UnknownPolicy::Fill;
   settings.unknown.fill_max_m = 1.5;
-  std::ofstream(mission_file) << io::proposedMissionYaml(proposal, settings, mission_file,
-                                                          io::Provenance::of("test"));
+  std::ofstream(mission_file) << io::proposedMissionYaml(proposal, settings, mission_file, io::Provenance::of("test"));
   const Mission mission = io::readMission(mission_file);
   EXPECT_EQ(std::filesystem::weakly_canonical(mission.map_file), std::filesystem::weakly_canonical(settings.map_file));
   EXPECT_LT((mission.home_m - proposal.home_m).norm(), 1e-3);
@@ -244,7 +245,8 @@ TEST(MissionProposal, ThePictureIsWellFormedAndShowsEveryRegionAndTheHome) {
   const std::string svg = io::proposalPictureSvg(room().grid(), proposal, "room <&> map");
   EXPECT_EQ(svg.rfind("<svg ", 0), 0u);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
-  for (const ProposedRegion& region : proposal.regions) EXPECT_NE(svg.find(">" + region.name + "</text>"), std::string::npos);
+  for (const ProposedRegion& region : proposal.regions)
+    EXPECT_NE(svg.find(">" + region.name + "</text>"), std::string::npos);
   EXPECT_NE(svg.find(">home</text>"), std::string::npos);
   EXPECT_NE(svg.find("room &lt;&amp;&gt; map"), std::string::npos);
   EXPECT_EQ(svg.find("<&>"), std::string::npos);

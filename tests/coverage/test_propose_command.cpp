@@ -32,8 +32,8 @@ void proposeAndTour(const std::filesystem::path& dir, const std::string& propose
   EXPECT_EQ(yaml.rfind("# ceilplan ", 0), 0u) << "the provenance comes first";
 
   // No origin in a proposed mission: the tour writes its local-frame files and says what it skipped.
-  const auto tour = testing::runCeilplan("tour --mission " + (dir / "proposed.yaml").string() +
-                                         " --mode both --out " + (dir / "tour").string());
+  const auto tour = testing::runCeilplan("tour --mission " + (dir / "proposed.yaml").string() + " --mode both --out " +
+                                         (dir / "tour").string());
   ASSERT_EQ(tour.exit_code, 0) << tour.err << tour.out;
   EXPECT_NE(tour.out.find("geodetic exports skipped (mission.plan, mission.waypoints, mission.kmz, routes.kml, "
                           "routes.geojson)"),
@@ -71,9 +71,11 @@ TEST(ProposeCommand, BadInputIsRefusedBeforeAnyWorkAndLeavesNoFile) {
     std::string arguments, says;
   } rows[] = {
       {"--map " + (dir / "none.bt").string() + " --vehicle " + kVehicle + " --out {out}", "none.bt"},
-      {map + " --out " + (dir / "m.txt").string(), "--out " + (dir / "m.txt").string() + ": the mission file must end in .yaml or .yml"},
+      {map + " --out " + (dir / "m.txt").string(),
+       "--out " + (dir / "m.txt").string() + ": the mission file must end in .yaml or .yml"},
       {map + " --out {out} --crop 0,0,0,1,1", "--crop '0,0,0,1,1': expected six finite numbers"},
-      {map + " --out {out} --crop 0,0,0,1,-1,1", "--crop '0,0,0,1,-1,1': a crop box's y minimum (0) must be below its maximum (-1)"},
+      {map + " --out {out} --crop 0,0,0,1,-1,1",
+       "--crop '0,0,0,1,-1,1': a crop box's y minimum (0) must be below its maximum (-1)"},
       {map + " --out {out} --home nan,0,1", "--home 'nan,0,1': expected three finite numbers"},
       {map + " --out {out} --home 1.5,8,0", "the given home (1.50, 8.00, 0.00) is no valid position"},
       {map + " --out {out} --camera phantom5", "phantom5"},
@@ -82,7 +84,8 @@ TEST(ProposeCommand, BadInputIsRefusedBeforeAnyWorkAndLeavesNoFile) {
       {map + " --out {out} --min-area-m2 100000", "no overhead region of at least 100000 m2"},
   };
   for (const auto& row : rows) {
-    const auto result = testing::runCeilplan("propose " + testing::substituted(row.arguments, {{"{out}", (dir / "m.yaml").string()}}));
+    const auto result =
+        testing::runCeilplan("propose " + testing::substituted(row.arguments, {{"{out}", (dir / "m.yaml").string()}}));
     EXPECT_EQ(result.exit_code, 2) << row.arguments << "\n" << result.err;
     EXPECT_NE(result.err.find(row.says), std::string::npos) << row.arguments << "\n" << result.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "m.yaml")) << row.arguments;

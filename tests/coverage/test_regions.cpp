@@ -23,7 +23,8 @@ std::string errorOf(const std::function<void()>& action) {
 
 ::testing::AssertionResult mentions(const std::string& message, const std::vector<std::string>& words) {
   for (const std::string& word : words)
-    if (message.find(word) == std::string::npos) return ::testing::AssertionFailure() << "'" << word << "' not in: " << message;
+    if (message.find(word) == std::string::npos)
+      return ::testing::AssertionFailure() << "'" << word << "' not in: " << message;
   return ::testing::AssertionSuccess();
 }
 
@@ -49,14 +50,22 @@ TEST(Regions, PrismsHoldWhatTheirPolygonHolds) {
   const RegionShape l = RegionShape::makePrism({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 1.0, 2.0);
   EXPECT_NO_THROW(l.validate("l"));
   EXPECT_TRUE(l.contains({0.5, 1.5, 1.5}));
-  EXPECT_TRUE(l.contains({1.5, 0.5, 1.0}));  // on the bottom face
-  EXPECT_TRUE(l.contains({2.0, 0.5, 1.5}));  // on an edge
+  EXPECT_TRUE(l.contains({1.5, 0.5, 1.0}));   // on the bottom face
+  EXPECT_TRUE(l.contains({2.0, 0.5, 1.5}));   // on an edge
   EXPECT_FALSE(l.contains({1.5, 1.5, 1.5}));  // the notch
   EXPECT_FALSE(l.contains({0.5, 0.5, 2.5}));
-  EXPECT_TRUE(mentions(errorOf([] { RegionShape::makePrism({{0, 0}, {1, 0}}, 0, 1).validate("p"); }), {"p", "3 vertices"}));
-  EXPECT_TRUE(mentions(errorOf([] { RegionShape::makePrism({{0, 0}, {2, 2}, {2, 0}, {0, 1}}, 0, 1).validate("p"); }),
+  EXPECT_TRUE(mentions(errorOf([] {
+                         RegionShape::makePrism({{0, 0}, {1, 0}}, 0, 1).validate("p");
+                       }),
+                       {"p", "3 vertices"}));
+  EXPECT_TRUE(mentions(errorOf([] {
+                         RegionShape::makePrism({{0, 0}, {2, 2}, {2, 0}, {0, 1}}, 0, 1).validate("p");
+                       }),
                        {"crosses itself"}));
-  EXPECT_TRUE(mentions(errorOf([] { RegionShape::makePrism({{0, 0}, {1, 0}, {0, 1}}, 1, 1).validate("p"); }), {"prism.z"}));
+  EXPECT_TRUE(mentions(errorOf([] {
+                         RegionShape::makePrism({{0, 0}, {1, 0}, {0, 1}}, 1, 1).validate("p");
+                       }),
+                       {"prism.z"}));
   EXPECT_TRUE(mentions(errorOf([] { RegionShape::makeBox({0, 0, 0}, {1, 0, 1}).validate("b"); }), {"box"}));
 }
 
@@ -109,15 +118,16 @@ TEST(Regions, ARegionWithNoSurfaceIsAnError) {
   const auto grid = environment::VoxelGrid::fromTree(map.tree());
   // Mid-air: no face at all.
   EXPECT_TRUE(mentions(errorOf([&] {
-                         extractRegionSurface(grid, RegionShape::makeBox({-1, -1, 1}, {1, 1, 2}), FaceSet{true, true, true},
-                                              "surface region 'air'");
+                         extractRegionSurface(grid, RegionShape::makeBox({-1, -1, 1}, {1, 1, 2}),
+                                              FaceSet{true, true, true}, "surface region 'air'");
                        }),
                        {"surface region 'air'", "no occupied voxel face facing [down, side, up]", "'box'"}));
   // The ceiling faces down, not up.
-  EXPECT_TRUE(mentions(errorOf([&] {
-                         extractRegionSurface(grid, ceilingRegion().shape, FaceSet{false, false, true}, "surface region 'c'");
-                       }),
-                       {"facing [up]"}));
+  EXPECT_TRUE(
+      mentions(errorOf([&] {
+                 extractRegionSurface(grid, ceilingRegion().shape, FaceSet{false, false, true}, "surface region 'c'");
+               }),
+               {"facing [up]"}));
   const RegionSurface ceiling = extractRegionSurface(grid, ceilingRegion().shape, FaceSet{true, false, false}, "c");
   EXPECT_EQ(ceiling.elements.size(), 40u * 40u);
   EXPECT_NEAR(ceiling.area_m2, 16.0, 1e-9);
@@ -150,7 +160,7 @@ TEST(Regions, ContactGridsBecomeTargetsOnTheSurface) {
   EXPECT_EQ(targets.back().name, "thickness_6");
   for (const InspectionTarget& target : targets) {
     EXPECT_NO_THROW(target.validate());
-    EXPECT_DOUBLE_EQ(target.point_m.z(), 3.0);  // on the ceiling's faces
+    EXPECT_DOUBLE_EQ(target.point_m.z(), 3.0);               // on the ceiling's faces
     EXPECT_NEAR(std::abs(target.point_m.y()), 0.45, 0.051);  // nearest face centre to +-0.45
     EXPECT_DOUBLE_EQ(target.dwell_s, 12.0);
     EXPECT_DOUBLE_EQ(target.standoff_max_m, 0.5);

@@ -5,11 +5,11 @@
 
 #include "coverage_fixtures.hpp"
 
+#include "ceilplan/core/format.hpp"
 #include "ceilplan/io/coverage_keys.hpp"
 #include "ceilplan/mission/contact_points.hpp"
 #include "ceilplan/mission/coverage_check.hpp"
 #include "ceilplan/mission/coverage_plan.hpp"
-#include "ceilplan/core/format.hpp"
 
 #include <gtest/gtest.h>
 
@@ -36,8 +36,9 @@ void expectCovered(const ShippedMission& mission, FlightMode mode, double max_un
   const testing::CoverageScene& scene = mission.scene;
   CoveragePlanOptions options;
   options.views.mode = mode;
-  const CoveragePlan plan = planCoverage(scene.environment, mode == FlightMode::Ceiling ? scene.ceiling_model : scene.free_model,
-                                         *mission.keys.camera, mission.keys.surfaces, options);
+  const CoveragePlan plan =
+      planCoverage(scene.environment, mode == FlightMode::Ceiling ? scene.ceiling_model : scene.free_model,
+                   *mission.keys.camera, mission.keys.surfaces, options);
   std::vector<RegionSurface> surfaces;
   std::vector<std::vector<std::uint8_t>> reachable;
   for (const RegionPlan& region : plan.regions) {
@@ -46,15 +47,18 @@ void expectCovered(const ShippedMission& mission, FlightMode mode, double max_un
   }
   std::vector<CameraPose> poses;
   for (const PlannedPhoto& photo : plan.photos) poses.push_back(photo.pose);
-  const CoverageCheck check = checkCoverage(scene.map.tree(), *mission.keys.camera, mission.keys.surfaces, surfaces, reachable, poses);
+  const CoverageCheck check =
+      checkCoverage(scene.map.tree(), *mission.keys.camera, mission.keys.surfaces, surfaces, reachable, poses);
 
   const char* mode_name = mode == FlightMode::Ceiling ? "ceiling" : "free";
   for (std::size_t r = 0; r < plan.regions.size(); ++r) {
     const RegionCoverageCheck& checked = check.regions[r];
-    std::cout << mission.file.filename().string() << " " << mode_name << " '" << checked.name << "': "
-              << formatNumber(checked.area_m2, 4) << " m2, reachable " << formatNumber(checked.reachable_area_m2, 4)
-              << ", covered " << formatNumber(100.0 * checked.coveredReachableShare(), 4) << " % of reachable, "
-              << plan.regions[r].photos.size() << " photos, mean GSD " << formatNumber(checked.mean_gsd_mm_px, 3) << " mm/px\n";
+    std::cout << mission.file.filename().string() << " " << mode_name << " '" << checked.name
+              << "': " << formatNumber(checked.area_m2, 4) << " m2, reachable "
+              << formatNumber(checked.reachable_area_m2, 4) << ", covered "
+              << formatNumber(100.0 * checked.coveredReachableShare(), 4) << " % of reachable, "
+              << plan.regions[r].photos.size() << " photos, mean GSD " << formatNumber(checked.mean_gsd_mm_px, 3)
+              << " mm/px\n";
     EXPECT_GE(checked.coveredReachableShare(), 0.99) << checked.name << " " << mode_name;
     EXPECT_LE(checked.unreachable_area_m2, max_unreachable_share * checked.area_m2) << checked.name << " " << mode_name;
     EXPECT_NEAR(checked.reachable_area_m2, plan.regions[r].reachable_area_m2, 1e-6);
@@ -76,12 +80,15 @@ TEST(ShippedCoverage, BridgeSoffitInBothModes) {
 
 TEST(ShippedCoverage, TunnelCrown) { expectCovered(ShippedMission("tunnel_crown"), FlightMode::Ceiling, 0.01); }
 
-TEST(ShippedCoverage, WarehouseCeiling) { expectCovered(ShippedMission("warehouse_ceiling"), FlightMode::Ceiling, 0.01); }
+TEST(ShippedCoverage, WarehouseCeiling) {
+  expectCovered(ShippedMission("warehouse_ceiling"), FlightMode::Ceiling, 0.01);
+}
 
 TEST(ShippedCoverage, ContactGridPointsAreHuggedUnderTheDeck) {
   const ShippedMission mission("bridge_contact_grid");
   ASSERT_EQ(mission.keys.contact_grids.size(), 1u);
-  const std::vector<InspectionTarget> targets = contactTargets(mission.scene.environment.grid(), mission.keys.contact_grids[0]);
+  const std::vector<InspectionTarget> targets =
+      contactTargets(mission.scene.environment.grid(), mission.keys.contact_grids[0]);
   // Faces from x = 2 to 14 m (11.9 m: 12 points) and y = -1.2 to 1.2 m (2.3 m: 3 points).
   ASSERT_EQ(targets.size(), 36u);
   for (const InspectionTarget& target : targets) {
@@ -95,7 +102,8 @@ TEST(ShippedCoverage, ContactGridPointsAreHuggedUnderTheDeck) {
 
 TEST(ShippedCoverage, ARealScanNobodyHereMade) {
   // geb079.bt (liboctomap-dev): an office corridor, 0.08 m voxels, its ceiling about 2.64 m up.
-  const testing::CoverageScene scene(environment::OccupancyMap::load("/usr/share/doc/liboctomap-dev/examples/data/geb079.bt"));
+  const testing::CoverageScene scene(
+      environment::OccupancyMap::load("/usr/share/doc/liboctomap-dev/examples/data/geb079.bt"));
   CoverageRegion region = testing::bridgeSoffit();
   region.name = "corridor_ceiling";
   region.shape = RegionShape::makeBox({0.0, -1.5, 2.3}, {8.0, 1.5, 2.9});
@@ -104,12 +112,13 @@ TEST(ShippedCoverage, ARealScanNobodyHereMade) {
   const RegionPlan& planned = plan.regions.at(0);
   std::vector<CameraPose> poses;
   for (const PlannedPhoto& photo : plan.photos) poses.push_back(photo.pose);
-  const CoverageCheck check = checkCoverage(scene.map.tree(), camera, {region}, {planned.surface}, {planned.reachable}, poses);
+  const CoverageCheck check =
+      checkCoverage(scene.map.tree(), camera, {region}, {planned.surface}, {planned.reachable}, poses);
   const RegionCoverageCheck& checked = check.regions.at(0);
-  std::cout << "geb079 ceiling: " << planned.surface.elements.size() << " elements, " << formatNumber(checked.area_m2, 4)
-            << " m2, reachable " << formatNumber(checked.reachable_area_m2, 4) << " m2, covered "
-            << formatNumber(100.0 * checked.coveredReachableShare(), 4) << " % of reachable with " << plan.photos.size()
-            << " photos\n";
+  std::cout << "geb079 ceiling: " << planned.surface.elements.size() << " elements, "
+            << formatNumber(checked.area_m2, 4) << " m2, reachable " << formatNumber(checked.reachable_area_m2, 4)
+            << " m2, covered " << formatNumber(100.0 * checked.coveredReachableShare(), 4) << " % of reachable with "
+            << plan.photos.size() << " photos\n";
   EXPECT_GT(checked.reachable_area_m2, 0.5 * checked.area_m2);
   EXPECT_GE(checked.coveredReachableShare(), 0.99);
   for (const PlannedPhoto& photo : plan.photos) EXPECT_TRUE(scene.environment.isStateValid(photo.pose.body_m));

@@ -25,7 +25,8 @@ TEST(SurfaceElements, FacesOntoKnownFreeSpaceOnly) {
     if (c.z() < 2.0 && c.x() > 0.0) return CellState::Free;
     return CellState::Unknown;
   });
-  const std::vector<SurfaceElement> elements = exposedSurface(gridOf(map), Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(1, 1, 3)));
+  const std::vector<SurfaceElement> elements =
+      exposedSurface(gridOf(map), Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(1, 1, 3)));
   ASSERT_EQ(elements.size(), 10u * 20u);  // the underside over the known half only
   for (const SurfaceElement& element : elements) {
     EXPECT_EQ(element.face, 5);
@@ -44,8 +45,8 @@ TEST(SurfaceElements, BoxEdgesKeepTheirAxisNormals) {
     if (std::abs(c.x()) < 0.2 && c.z() >= 2.1) return CellState::Occupied;
     return CellState::Free;
   });
-  const std::vector<SurfaceElement> elements =
-      exposedSurface(gridOf(map), Eigen::AlignedBox3d(Eigen::Vector3d(-0.3, -0.5, 2.05), Eigen::Vector3d(0.3, 0.5, 2.45)));
+  const std::vector<SurfaceElement> elements = exposedSurface(
+      gridOf(map), Eigen::AlignedBox3d(Eigen::Vector3d(-0.3, -0.5, 2.05), Eigen::Vector3d(0.3, 0.5, 2.45)));
   double bottom = 0.0, sides = 0.0;
   for (const SurfaceElement& element : elements) {
     EXPECT_TRUE(element.normal.isApprox(element.faceNormal())) << element.centre_m.transpose();
@@ -61,8 +62,8 @@ TEST(SurfaceElements, AStaircaseTakesTheInclinedSurfacesNormal) {
     return c.z() < 2.0 + c.y() ? CellState::Free : CellState::Occupied;
   });
   const Eigen::Vector3d expected = Eigen::Vector3d(0, 1, -1).normalized();
-  const std::vector<SurfaceElement> elements =
-      exposedSurface(gridOf(map), Eigen::AlignedBox3d(Eigen::Vector3d(-0.5, -0.5, 1.3), Eigen::Vector3d(0.5, 0.49, 2.7)));
+  const std::vector<SurfaceElement> elements = exposedSurface(
+      gridOf(map), Eigen::AlignedBox3d(Eigen::Vector3d(-0.5, -0.5, 1.3), Eigen::Vector3d(0.5, 0.49, 2.7)));
   ASSERT_FALSE(elements.empty());
   double area = 0.0;
   for (const SurfaceElement& element : elements) {
@@ -92,7 +93,8 @@ TEST(Visibility, BlockedByOccupiedAndUnknownVoxels) {
   EXPECT_TRUE(lineOfSight(grid, {0.55, 0.05, 0.5}, {0.55, 0.45, 0.5}));
   EXPECT_FALSE(lineOfSight(grid, {0.55, 0.05, 0.5}, {0.55, -0.05, 0.5}));
   // A diagonal through a corner between two blocked voxels' neighbours stays exact both ways.
-  EXPECT_EQ(lineOfSight(grid, {0.2, -0.35, 0.5}, {0.9, 0.35, 0.5}), lineOfSight(grid, {0.9, 0.35, 0.5}, {0.2, -0.35, 0.5}));
+  EXPECT_EQ(lineOfSight(grid, {0.2, -0.35, 0.5}, {0.9, 0.35, 0.5}),
+            lineOfSight(grid, {0.9, 0.35, 0.5}, {0.2, -0.35, 0.5}));
 }
 
 }  // namespace

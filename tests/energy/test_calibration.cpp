@@ -1,6 +1,6 @@
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/energy/calibration.hpp"
 #include "ceilplan/energy/paper_quad.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,8 +33,10 @@ std::vector<CalibrationSample> synthetic(const EnergyParameters& p, bool vary_mo
   const double speeds[] = {0.0, 4.0, 9.0};
   const double socs[] = {0.9, 0.6};
   for (double gap : gaps)
-    for (double climb : vary_motion ? std::vector<double>(std::begin(climbs), std::end(climbs)) : std::vector<double>{0.0})
-      for (double speed : vary_motion ? std::vector<double>(std::begin(speeds), std::end(speeds)) : std::vector<double>{0.0})
+    for (double climb :
+         vary_motion ? std::vector<double>(std::begin(climbs), std::end(climbs)) : std::vector<double>{0.0})
+      for (double speed :
+           vary_motion ? std::vector<double>(std::begin(speeds), std::end(speeds)) : std::vector<double>{0.0})
         for (double soc : socs) {
           CalibrationSample s;
           s.ceiling_gap_m = gap;
@@ -137,8 +139,7 @@ TEST(Calibration, RefusesAFlatDirectionNamingTheParameter) {
     two_gaps[i].ceiling_gap_m = i % 2 ? 0.05 : kNoSurface;
     two_gaps[i].current_a = i % 2 ? 8.0 : 9.5;
   }
-  const std::string message =
-      refusal(two_gaps, {FreeParameter::kHoverPowerW, FreeParameter::kK1, FreeParameter::kK2M});
+  const std::string message = refusal(two_gaps, {FreeParameter::kHoverPowerW, FreeParameter::kK1, FreeParameter::kK2M});
   EXPECT_TRUE(message.find("cannot identify k1") != std::string::npos ||
               message.find("cannot identify k2_m") != std::string::npos)
       << message;

@@ -29,9 +29,7 @@ nlohmann::json currentJson(const std::string& arguments, const std::string& test
   return nlohmann::json::parse(readWholeFile(json_path));
 }
 
-void writeFile(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
+void writeFile(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
 
 // Exit `exit_code` (2: bad input; docs/cli.md) with one line on stderr that contains `needle`.
 void expectOneLineError(const std::string& arguments, const std::string& needle, int exit_code = 2) {
@@ -90,8 +88,10 @@ TEST_F(CurrentCommand, RefusesVehicleFilesWithoutRotorsOrWithNegativeMass) {
   writeFile(dir / "typo.yaml", readWholeFile(kQuad) + "  hover_curent_a: 9\n");
   expectOneLineError("current --vehicle " + (dir / "no_rotors.yaml").string(), "missing key 'rotors'");
   expectOneLineError("current --vehicle " + (dir / "zero_rotors.yaml").string(), "rotors.count");
-  expectOneLineError("current --vehicle " + (dir / "negative_mass.yaml").string(), "'mass_kg' must be in (0, 200] kg, got -1");
-  expectOneLineError("current --vehicle " + (dir / "typo.yaml").string(), "unknown key 'power.hover_curent_a'; did you mean 'hover_current_a'?");
+  expectOneLineError("current --vehicle " + (dir / "negative_mass.yaml").string(),
+                     "'mass_kg' must be in (0, 200] kg, got -1");
+  expectOneLineError("current --vehicle " + (dir / "typo.yaml").string(),
+                     "unknown key 'power.hover_curent_a'; did you mean 'hover_current_a'?");
 }
 
 TEST_F(CalibrateCommand, FitsThePublishedDataAndWritesAVehicleFileThatCurrentReads) {
@@ -119,8 +119,9 @@ TEST_F(CalibrateCommand, RecoversTheShippedVehicleFromItsOwnPredictions) {
   for (double gap : {-1.0, 0.0, 0.01, 0.03, 0.05, 0.08, 0.12, 0.2})
     for (double soc : {0.9, 0.5}) {
       const std::string gap_flag = gap < 0 ? "" : " --gap-m " + std::to_string(gap);
-      const double current = currentJson("--vehicle " + kQuad + gap_flag + " --soc " + std::to_string(soc),
-                                         "roundtrip_point")["current_a"].get<double>();
+      const double current =
+          currentJson("--vehicle " + kQuad + gap_flag + " --soc " + std::to_string(soc), "roundtrip_point")["current_a"]
+              .get<double>();
       char row[96];
       std::snprintf(row, sizeof row, "%s,%.3f,%.12f\n", gap < 0 ? "none" : std::to_string(gap).c_str(), soc, current);
       csv += row;
@@ -142,8 +143,9 @@ TEST_F(CalibrateCommand, RefusesWhatTheDataCannotIdentifyAndWritesNothing) {
   const auto dir = scratchDirectory("calibrate_refusals");
   writeFile(dir / "hover.csv", "gap_m,current_a\nnone,9.5\nnone,9.6\n0.05,8.0\n0.02,7.0\n");
   const auto out = dir / "v.yaml";
-  expectOneLineError("calibrate --data " + (dir / "hover.csv").string() + " --fit motor_efficiency --out " + out.string(),
-                     "cannot identify motor_efficiency");
+  expectOneLineError(
+      "calibrate --data " + (dir / "hover.csv").string() + " --fit motor_efficiency --out " + out.string(),
+      "cannot identify motor_efficiency");
   writeFile(dir / "bad.csv", "gap_m,current_a\nnone,9.5\n0.05,eight\n");
   expectOneLineError("calibrate --data " + (dir / "bad.csv").string() + " --out " + out.string(), "line 3");
   writeFile(dir / "unknown.csv", "gap,current_a\n0.05,8\n");
@@ -167,7 +169,8 @@ TEST_F(CalibrateCommand, AFailedFitSaysWhatFailedAndWhatToDo) {
 TEST_F(CalibrateCommand, EchoesNoRawBytesFromABadFile) {
   const auto dir = scratchDirectory("calibrate_escapes");
   writeFile(dir / "evil.csv", "gap_m,current_a\nnone,\x1b]0;owned\x07\n");
-  const auto result = runCeilplan("calibrate --data " + (dir / "evil.csv").string() + " --out " + (dir / "v.yaml").string());
+  const auto result =
+      runCeilplan("calibrate --data " + (dir / "evil.csv").string() + " --out " + (dir / "v.yaml").string());
   EXPECT_NE(result.exit_code, 0);
   EXPECT_NE(result.err.find("'\\x1B]0;owned\\x07' is not a number"), std::string::npos) << result.err;
   EXPECT_EQ(result.err.find('\x1b'), std::string::npos) << "raw escape echoed";

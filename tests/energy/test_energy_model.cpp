@@ -1,6 +1,6 @@
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/energy/paper_quad.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "ceilplan/energy/ground_effect.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/energy/ground_effect.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ constexpr double kR = 0.127;
 
 TEST(GroundEffect, CheesemanBennettMatchesReferenceSection3Values) {
   const GroundEffect ground(GroundEffectParameters{}, kQuad);
-  EXPECT_NEAR(ground.thrustRatio(0.5 * kR), 4.0 / 3.0, 1e-12);  // 1.333
+  EXPECT_NEAR(ground.thrustRatio(0.5 * kR), 4.0 / 3.0, 1e-12);    // 1.333
   EXPECT_NEAR(ground.thrustRatio(1.0 * kR), 16.0 / 15.0, 1e-12);  // 1.067
   EXPECT_NEAR(ground.thrustRatio(2.0 * kR), 64.0 / 63.0, 1e-12);  // 1.016
 }

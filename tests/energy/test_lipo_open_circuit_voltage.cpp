@@ -1,5 +1,5 @@
-#include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "ceilplan/energy/rotary_wing_power.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/energy/rotary_wing_power.hpp"
 
 #include <gtest/gtest.h>
 

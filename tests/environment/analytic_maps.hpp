@@ -26,9 +26,9 @@ inline environment::OccupancyMap analyticMap(const Eigen::Vector3d& min, const E
       for (double x = min.x() + resolution / 2; x < max.x(); x += resolution) {
         const CellState state = classify(Eigen::Vector3d(x, y, z));
         if (state == CellState::Unknown) continue;
-        tree->setNodeValue(octomap::point3d(x, y, z), state == CellState::Occupied ? tree->getClampingThresMaxLog()
-                                                                                    : tree->getClampingThresMinLog(),
-                           true);
+        tree->setNodeValue(
+            octomap::point3d(x, y, z),
+            state == CellState::Occupied ? tree->getClampingThresMaxLog() : tree->getClampingThresMinLog(), true);
       }
   tree->updateInnerOccupancy();
   tree->prune();
@@ -87,7 +87,8 @@ inline environment::VehicleGeometry quad() {
 template <class Visit>
 bool anyVoxelInCylinder(const environment::GridFrame& frame, const environment::VehicleGeometry& vehicle,
                         const Eigen::Vector3d& p, Visit&& visit) {
-  const double r = vehicle.inflatedRadius_m(), bottom = p.z() + vehicle.inflatedBottom_m(), top = p.z() + vehicle.inflatedTop_m();
+  const double r = vehicle.inflatedRadius_m(), bottom = p.z() + vehicle.inflatedBottom_m(),
+               top = p.z() + vehicle.inflatedTop_m();
   for (int j = frame.indexOf(1, p.y() - r); j <= frame.indexOf(1, p.y() + r); ++j)
     for (int i = frame.indexOf(0, p.x() - r); i <= frame.indexOf(0, p.x() + r); ++i) {
       const double dx = std::max({frame.faceOf(0, i) - p.x(), 0.0, p.x() - frame.faceOf(0, i + 1)});

@@ -1,9 +1,9 @@
 // libFuzzer target: any bytes given to the map loader give a map or a ceilplan::InputError,
 // never a crash, a hang or a leak. Build and run: scripts/fuzz-map-loader (docs/environment.md).
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <cstddef>
 #include <cstdint>

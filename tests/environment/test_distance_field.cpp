@@ -35,8 +35,9 @@ double bruteForce(const VoxelGrid& grid, const Eigen::Vector3d& p, bool unknown_
       for (int i = 0; i < frame.size()[0]; ++i) {
         const CellState state = grid.at(i, j, k);
         if (state == CellState::Free || (state == CellState::Unknown && !unknown_is_blocked)) continue;
-        const Eigen::AlignedBox3d voxel(Eigen::Vector3d(frame.faceOf(0, i), frame.faceOf(1, j), frame.faceOf(2, k)),
-                                        Eigen::Vector3d(frame.faceOf(0, i + 1), frame.faceOf(1, j + 1), frame.faceOf(2, k + 1)));
+        const Eigen::AlignedBox3d voxel(
+            Eigen::Vector3d(frame.faceOf(0, i), frame.faceOf(1, j), frame.faceOf(2, k)),
+            Eigen::Vector3d(frame.faceOf(0, i + 1), frame.faceOf(1, j + 1), frame.faceOf(2, k + 1)));
         best = std::min(best, voxel.exteriorDistance(p));
       }
   return best;

@@ -3,8 +3,8 @@
 
 #include "analytic_maps.hpp"
 
-#include "ceilplan/environment/environment.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/environment/environment.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 #include "analytic_maps.hpp"
 #include "run_command.hpp"
 
-#include "ceilplan/environment/environment.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/environment/environment.hpp"
 
 #include <octomap/ColorOcTree.h>
 #include <octomap/OcTreeStamped.h>
@@ -70,7 +70,8 @@ TEST(MapLoading, BadFilesGiveOneLineNamingTheFileAndTheProblem) {
   expectOneLineNaming(loadError(dir / "semantic.ot"), dir / "semantic.ot", "SemanticOcTree");
 
   // A node stream deeper than OctoMap's 16 levels: OctoMap alone would recurse until the data ran out.
-  writeBytes(dir / "deep.bt", "# Octomap OcTree binary file\nid OcTree\nsize 100\nres 0.1\ndata\n" + std::string(200, '\xff'));
+  writeBytes(dir / "deep.bt",
+             "# Octomap OcTree binary file\nid OcTree\nsize 100\nres 0.1\ndata\n" + std::string(200, '\xff'));
   expectOneLineNaming(loadError(dir / "deep.bt"), dir / "deep.bt", "corrupt");
 }
 
@@ -94,7 +95,8 @@ TEST(MapLoading, ATreeMustBeTheWholeFileAndTheFileARegularOne) {
   const struct {
     std::string file, says;
   } rows[] = {
-      {"trailing.bt", "corrupt OctoMap file: 4 bytes follow the end of the tree; is the file damaged, or two files joined?"},
+      {"trailing.bt",
+       "corrupt OctoMap file: 4 bytes follow the end of the tree; is the file damaged, or two files joined?"},
       {"newline.bt", "corrupt OctoMap file: 1 byte follows the end of the tree"},
       {"two.bt", "holds a second OctoMap tree after the first; a map file holds one tree, so split the file"},
       {"trailing.ot", "corrupt OctoMap file: 4 bytes follow the end of the tree"},
@@ -114,8 +116,9 @@ TEST(MapLoading, ATreeMustBeTheWholeFileAndTheFileARegularOne) {
     huge.seekp(static_cast<std::streamoff>(OccupancyMap::kMaxFileBytes));
     huge << 'x';
   }
-  expectOneLineNaming(loadError(dir / "huge.bt"), dir / "huge.bt",
-                      "holds " + std::to_string(OccupancyMap::kMaxFileBytes + 1) + " bytes, more than ceilplan reads for a map file");
+  expectOneLineNaming(
+      loadError(dir / "huge.bt"), dir / "huge.bt",
+      "holds " + std::to_string(OccupancyMap::kMaxFileBytes + 1) + " bytes, more than ceilplan reads for a map file");
 }
 
 // Two voxels 1.5 km apart at 5 cm: the map loads, but its box holds more voxels than ceilplan

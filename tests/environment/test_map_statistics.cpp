@@ -24,26 +24,22 @@ bool inBox(const Eigen::Vector3d& c, double x0, double x1, double y0, double y1,
 // unknown above. With `ceiling`, a slab closes the room at 2.6 m.
 OccupancyMap office(bool ceiling) {
   return analyticMap({-4.2, -3.2, 0}, {4.2, 3.2, 3.4}, 0.1, [ceiling](const Eigen::Vector3d& c) {
-    if (c.z() < 0.2) return CellState::Occupied;                                               // floor
+    if (c.z() < 0.2) return CellState::Occupied;                                                      // floor
     if ((std::abs(c.x()) > 4.0 || std::abs(c.y()) > 3.0) && c.z() < 2.6) return CellState::Occupied;  // walls
     if (ceiling && c.z() >= 2.6) return c.z() < 2.8 ? CellState::Occupied : CellState::Unknown;
     if (c.z() >= 3.0) return CellState::Unknown;
-    if (inBox(c, -1.6, 1.6, -0.8, 0.8, 0.7, 0.8)) return CellState::Occupied;       // desk tops
-    if (inBox(c, -3.9, -1.9, 2.5, 2.9, 1.8, 1.9)) return CellState::Occupied;       // shelf
-    if (inBox(c, 2.0, 2.4, -0.2, 0.2, 2.3, 2.4)) return CellState::Occupied;        // lamp
+    if (inBox(c, -1.6, 1.6, -0.8, 0.8, 0.7, 0.8)) return CellState::Occupied;  // desk tops
+    if (inBox(c, -3.9, -1.9, 2.5, 2.9, 1.8, 1.9)) return CellState::Occupied;  // shelf
+    if (inBox(c, 2.0, 2.4, -0.2, 0.2, 2.3, 2.4)) return CellState::Occupied;   // lamp
     return CellState::Free;
   });
 }
 
 double ceilingShare(const OccupancyMap& map) { return computeStatistics(map, MapIndex(map)).ceiling_area_share; }
 
-TEST(CeilingShare, ARoomWithDesksAndShelvesButNoCeilingHasNone) {
-  EXPECT_LT(ceilingShare(office(false)), 0.005);
-}
+TEST(CeilingShare, ARoomWithDesksAndShelvesButNoCeilingHasNone) { EXPECT_LT(ceilingShare(office(false)), 0.005); }
 
-TEST(CeilingShare, TheSameRoomWithACeilingIsAllUnderIt) {
-  EXPECT_GT(ceilingShare(office(true)), 0.99);
-}
+TEST(CeilingShare, TheSameRoomWithACeilingIsAllUnderIt) { EXPECT_GT(ceilingShare(office(true)), 0.99); }
 
 TEST(CeilingShare, HeadroomAndAreaAreTheCriteria) {
   const OccupancyMap map = office(false);
@@ -66,10 +62,10 @@ TEST(CeilingShare, TheShippedScenesKeepSensibleShares) {
   const auto share = [](const std::string& name) {
     return ceilingShare(OccupancyMap::load(CEILPLAN_SOURCE_DIR "/maps/" + name + ".bt"));
   };
-  EXPECT_NEAR(share("bridge"), 0.457, 0.05);     // the deck and the pier caps over 60 x 20 m
-  EXPECT_NEAR(share("tunnel"), 0.625, 0.05);     // the bore, not the approaches
-  EXPECT_GT(share("warehouse"), 0.99);           // the roof
-  EXPECT_LT(share("open"), 0.001);               // nothing overhead
+  EXPECT_NEAR(share("bridge"), 0.457, 0.05);  // the deck and the pier caps over 60 x 20 m
+  EXPECT_NEAR(share("tunnel"), 0.625, 0.05);  // the bore, not the approaches
+  EXPECT_GT(share("warehouse"), 0.99);        // the roof
+  EXPECT_LT(share("open"), 0.001);            // nothing overhead
 }
 
 }  // namespace

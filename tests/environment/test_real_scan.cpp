@@ -70,7 +70,8 @@ TEST(Geb079, OnlyTheCorridorHasAScannedCeiling) {
 }
 
 TEST(Geb079, ProbeSucceedsInTheCorridorUnderEitherPolicy) {
-  const auto fill = testing::runCeilplan("probe --map " + kGeb079 + " --at 9,0,1 --vehicle " + kVehicle + " --unknown fill");
+  const auto fill =
+      testing::runCeilplan("probe --map " + kGeb079 + " --at 9,0,1 --vehicle " + kVehicle + " --unknown fill");
   ASSERT_EQ(fill.exit_code, 0) << fill.err;
   EXPECT_NE(fill.out.find("valid: true"), std::string::npos) << fill.out;
   EXPECT_NE(fill.out.find("assumed_free: true"), std::string::npos) << fill.out;

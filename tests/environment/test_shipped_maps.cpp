@@ -1,12 +1,12 @@
 // The shipped scenes are up to date, small, and their missions' targets are reachable.
 
 #include "analytic_maps.hpp"
-#include "run_command.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
+#include "run_command.hpp"
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/scenes.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -28,8 +28,8 @@ TEST_P(ShippedScene, RegeneratingItGivesTheCommittedFileByteForByte) {
   const std::string committed = testing::readWholeFile(kMaps / (GetParam() + ".bt"));
   EXPECT_LT(committed.size(), 5u * 1024 * 1024);
   EXPECT_TRUE(committed == testing::readWholeFile(dir / "scene.bt"))
-      << "maps/" << GetParam() << ".bt is out of date: run ceilplan mapgen --scene " << GetParam()
-      << " --out maps/" << GetParam() << ".bt";
+      << "maps/" << GetParam() << ".bt is out of date: run ceilplan mapgen --scene " << GetParam() << " --out maps/"
+      << GetParam() << ".bt";
 }
 
 // Viewpoints at the ends and middle of the standoff range, straight away from the surface

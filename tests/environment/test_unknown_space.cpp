@@ -3,9 +3,9 @@
 
 #include "analytic_maps.hpp"
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/map_index.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -35,18 +35,18 @@ bool inBox(const Eigen::Vector3d& c, double x0, double x1, double y0, double y1,
 //   opening:  a 0.6 m hole through the west wall, open to the unmapped outside.
 OccupancyMap hall(double resolution) {
   return analyticMap({-3, -2, 0}, {3, 2, 3.2}, resolution, [](const Eigen::Vector3d& c) {
-    if (inBox(c, -1.5, -1.1, -0.2, 0.2, 1.4, 1.8)) return CellState::Unknown;   // small
-    if (inBox(c, 0.5, 2.0, -0.6, 0.6, 1.0, 2.0)) return CellState::Unknown;     // large
-    if (inBox(c, -2.5, -2.0, 0.8, 1.2, 2.7, 3.0)) return CellState::Unknown;    // ceiling
-    if (inBox(c, 2.7, 2.9, 0.0, 0.2, 1.0, 1.2)) return CellState::Unknown;      // wall
-    if (inBox(c, -3.0, -2.4, -0.2, 0.2, 1.0, 1.4)) return CellState::Unknown;   // opening
+    if (inBox(c, -1.5, -1.1, -0.2, 0.2, 1.4, 1.8)) return CellState::Unknown;  // small
+    if (inBox(c, 0.5, 2.0, -0.6, 0.6, 1.0, 2.0)) return CellState::Unknown;    // large
+    if (inBox(c, -2.5, -2.0, 0.8, 1.2, 2.7, 3.0)) return CellState::Unknown;   // ceiling
+    if (inBox(c, 2.7, 2.9, 0.0, 0.2, 1.0, 1.2)) return CellState::Unknown;     // wall
+    if (inBox(c, -3.0, -2.4, -0.2, 0.2, 1.0, 1.4)) return CellState::Unknown;  // opening
     if (c.z() < 0.2 || c.z() >= 3.0 || std::abs(c.x()) > 2.6 || std::abs(c.y()) > 1.6) return CellState::Occupied;
     return CellState::Free;
   });
 }
 
-const Eigen::Vector3d kSmall(-1.3, 0.0, 1.6), kLarge(1.25, 0.0, 1.5), kCeiling(-2.25, 1.0, 2.85),
-    kWall(2.8, 0.1, 1.1), kOpening(-2.7, 0.0, 1.2);
+const Eigen::Vector3d kSmall(-1.3, 0.0, 1.6), kLarge(1.25, 0.0, 1.5), kCeiling(-2.25, 1.0, 2.85), kWall(2.8, 0.1, 1.1),
+    kOpening(-2.7, 0.0, 1.2);
 
 std::shared_ptr<const MapIndex> indexed(const OccupancyMap& map, UnknownPolicy policy, double fill_max_m = 1.0) {
   MapIndexOptions options;
@@ -90,10 +90,10 @@ TEST(UnknownSpace, FillFreesSmallPocketsInFreeSpaceOnly) {
   const OccupancyMap map = hall(0.1);
   const auto index = indexed(map, UnknownPolicy::Fill, 1.0);
   EXPECT_TRUE(index->isAssumedFree(kSmall));
-  EXPECT_TRUE(index->isAssumedFree(kCeiling));   // touches the ceiling and free air
-  EXPECT_FALSE(index->isAssumedFree(kLarge));    // 1.5 m: larger than 1 m
-  EXPECT_FALSE(index->isAssumedFree(kWall));     // no free voxel beside it
-  EXPECT_FALSE(index->isAssumedFree(kOpening));  // open to the outside of the map
+  EXPECT_TRUE(index->isAssumedFree(kCeiling));      // touches the ceiling and free air
+  EXPECT_FALSE(index->isAssumedFree(kLarge));       // 1.5 m: larger than 1 m
+  EXPECT_FALSE(index->isAssumedFree(kWall));        // no free voxel beside it
+  EXPECT_FALSE(index->isAssumedFree(kOpening));     // open to the outside of the map
   EXPECT_FALSE(index->isAssumedFree({0, 0, 1.5}));  // known free: not an assumption
   const UnknownSpaceSummary& summary = index->unknownSummary();
   EXPECT_EQ(summary.regions, 5u);
@@ -110,7 +110,8 @@ TEST(UnknownSpace, FillFreesSmallPocketsInFreeSpaceOnly) {
 TEST(UnknownSpace, FreeAssumesEveryUnknownVoxelInsideTheMap) {
   const OccupancyMap map = hall(0.1);
   const auto index = indexed(map, UnknownPolicy::Free);
-  for (const auto& p : {kSmall, kLarge, kCeiling, kWall, kOpening}) EXPECT_TRUE(index->isAssumedFree(p)) << p.transpose();
+  for (const auto& p : {kSmall, kLarge, kCeiling, kWall, kOpening})
+    EXPECT_TRUE(index->isAssumedFree(p)) << p.transpose();
   EXPECT_NEAR(index->unknownSummary().assumed_free_volume_m3, index->unknownSummary().unknown_volume_m3, 1e-12);
   EXPECT_TRUE(Environment(index, quad()).isStateValid(kLarge));
 }
@@ -221,7 +222,7 @@ TEST(MapIndex, EveryVehicleOnAMapSharesOneIndex) {
   standoff.top_margin_m += 0.5;
   const Environment wide(index, standoff);
   EXPECT_EQ(plain.index().get(), wide.index().get());
-  EXPECT_EQ(&plain.grid(), &wide.grid());        // the grid was not built again
+  EXPECT_EQ(&plain.grid(), &wide.grid());  // the grid was not built again
   EXPECT_EQ(&plain.columns(), &wide.columns());
   EXPECT_EQ(index.use_count(), 3);
   // Sharing changes no answer: the same as an Environment that indexed the map itself.

@@ -88,7 +88,8 @@ TEST(StateValidity, TheFastPathAgreesWithTheExactCylinderTest) {
 
 // The specification of the cylinder test, voxel by voxel: the first blocking voxel (rows of
 // columns, then bottom to top) the inflated cylinder overlaps by more than a face or a side.
-std::optional<ViolationKind> scanCylinder(const Environment& environment, const Eigen::Vector3d& p, bool unknown_blocks) {
+std::optional<ViolationKind> scanCylinder(const Environment& environment, const Eigen::Vector3d& p,
+                                          bool unknown_blocks) {
   std::optional<ViolationKind> found;
   testing::anyVoxelInCylinder(environment.grid().frame(), environment.vehicle(), p, [&](int i, int j, int k) {
     const CellState state = environment.grid().at(i, j, k);
@@ -134,8 +135,10 @@ TEST(StateValidity, TheCylinderTestAndItsFastPathsAgreeWithAVoxelScan) {
       unknown += *expected == ViolationKind::Unknown;
     }
     EXPECT_GT(blocked, 2000);
-    if (unknown_blocks) EXPECT_GT(unknown, 200);
-    else EXPECT_EQ(unknown, 0);
+    if (unknown_blocks)
+      EXPECT_GT(unknown, 200);
+    else
+      EXPECT_EQ(unknown, 0);
   }
 }
 
@@ -199,12 +202,12 @@ TEST(ValidReach, IsZeroAtAnInvalidStateAndOutsideAndStopsAtTheMapsBox) {
 TEST(Clearance, IsTheDistanceToTheNearestBlockedVoxelSurface) {
   const OccupancyMap map = pillarRoom();
   const Environment environment(map, quad());
-  EXPECT_NEAR(environment.clearance_m({0, 0, 2.5}), 0.5, 1e-9);              // ceiling
+  EXPECT_NEAR(environment.clearance_m({0, 0, 2.5}), 0.5, 1e-9);                       // ceiling
   EXPECT_NEAR(environment.clearance_m({0.7, 0.5, 1.5}), std::hypot(0.3, 0.3), 1e-9);  // pillar edge
-  EXPECT_NEAR(environment.clearance_m({-1.8, 0, 1.5}), 0.2, 1e-9);           // unknown beyond the map
-  EXPECT_EQ(environment.clearance_m({1.2, 0, 1.5}), 0.0);                   // inside the pillar
+  EXPECT_NEAR(environment.clearance_m({-1.8, 0, 1.5}), 0.2, 1e-9);                    // unknown beyond the map
+  EXPECT_EQ(environment.clearance_m({1.2, 0, 1.5}), 0.0);                             // inside the pillar
   const Environment bold(map, quad(), {}, freeUnknown());
-  EXPECT_NEAR(bold.clearance_m({-1.8, 0, 1.5}), 1.3, 1e-9);                  // floor
+  EXPECT_NEAR(bold.clearance_m({-1.8, 0, 1.5}), 1.3, 1e-9);  // floor
 }
 
 TEST(MotionValidity, ASegmentThroughThePillarIsCaughtAndTheDenseCheckSaysWhere) {

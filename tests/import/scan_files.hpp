@@ -28,7 +28,8 @@ inline std::vector<Eigen::Vector3d> sampleRectangle(const Eigen::Vector3d& corne
 }
 
 // Points on the six faces of the box [min, max].
-inline std::vector<Eigen::Vector3d> sampleBoxSurface(const Eigen::Vector3d& min, const Eigen::Vector3d& max, double spacing) {
+inline std::vector<Eigen::Vector3d> sampleBoxSurface(const Eigen::Vector3d& min, const Eigen::Vector3d& max,
+                                                     double spacing) {
   const Eigen::Vector3d d = max - min;
   const Eigen::Vector3d x(d.x(), 0, 0), y(0, d.y(), 0), z(0, 0, d.z());
   std::vector<Eigen::Vector3d> points;
@@ -72,7 +73,8 @@ inline void writePlyPoints(const std::filesystem::path& file, const std::vector<
 inline environment::TriangleMesh boxMesh(const Eigen::Vector3d& min, const Eigen::Vector3d& max, bool outward = true) {
   environment::TriangleMesh mesh;
   for (int corner = 0; corner < 8; ++corner)
-    mesh.vertices_m.emplace_back(corner & 1 ? max.x() : min.x(), corner & 2 ? max.y() : min.y(), corner & 4 ? max.z() : min.z());
+    mesh.vertices_m.emplace_back(corner & 1 ? max.x() : min.x(), corner & 2 ? max.y() : min.y(),
+                                 corner & 4 ? max.z() : min.z());
   // Counter-clockwise seen from outside.
   const std::size_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : quads) {
@@ -85,7 +87,8 @@ inline environment::TriangleMesh boxMesh(const Eigen::Vector3d& min, const Eigen
 }
 
 // A rectangle as two triangles: an open mesh.
-inline environment::TriangleMesh rectangleMesh(const Eigen::Vector3d& corner, const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+inline environment::TriangleMesh rectangleMesh(const Eigen::Vector3d& corner, const Eigen::Vector3d& u,
+                                               const Eigen::Vector3d& v) {
   environment::TriangleMesh mesh;
   mesh.vertices_m = {corner, corner + u, corner + u + v, corner + v};
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}};

@@ -2,7 +2,8 @@
 // benchmark figure and docs/import.md, where no public scan of a bridge can be shipped. From
 // each station a spinning scanner casts rays on a regular azimuth x elevation grid; a ray that
 // hits an occupied voxel returns the point where it enters that voxel, moved along the ray by
-// Gaussian range noise. Writes a PCD (binary, or ascii with --offset) and an origins CSV (first_point,x,y,z per station).
+// Gaussian range noise. Writes a PCD (binary, or ascii with --offset) and an origins CSV (first_point,x,y,z per
+// station).
 //
 //   simulate_lidar --map maps/bridge.bt --stations "4,0,2;20,0,2" --out scan.pcd --origins scan_origins.csv
 //                  [--azimuth-steps 1440] [--elevation-steps 360] [--max-range 60] [--noise 0.005]
@@ -27,7 +28,8 @@ std::vector<Eigen::Vector3d> parsePoints(const std::string& text) {
   std::string item;
   while (std::getline(list, item, ';')) {
     Eigen::Vector3d p;
-    if (std::sscanf(item.c_str(), "%lf,%lf,%lf", &p.x(), &p.y(), &p.z()) != 3) throw std::runtime_error("bad point '" + item + "'");
+    if (std::sscanf(item.c_str(), "%lf,%lf,%lf", &p.x(), &p.y(), &p.z()) != 3)
+      throw std::runtime_error("bad point '" + item + "'");
     points.push_back(p);
   }
   return points;
@@ -84,22 +86,24 @@ int main(int argc, char** argv) {
         const double elevation = (-60.0 + 150.0 * (e + 0.5) / elevation_steps) * M_PI / 180.0;
         for (int a = 0; a < azimuth_steps; ++a) {
           const double azimuth = 2.0 * M_PI * (a + 0.5) / azimuth_steps;
-          const Eigen::Vector3d direction(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
-                                          std::sin(elevation));
+          const Eigen::Vector3d direction(std::cos(elevation) * std::cos(azimuth),
+                                          std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
           octomap::point3d end;
-          if (!tree.castRay(from, octomap::point3d(float(direction.x()), float(direction.y()), float(direction.z())), end,
+          if (!tree.castRay(from, octomap::point3d(float(direction.x()), float(direction.y()), float(direction.z())),
+                            end,
                             /*ignoreUnknown=*/true, max_range))
             continue;
           const Eigen::Vector3d centre(end.x(), end.y(), end.z());
-          const Eigen::Vector3d hit = entryPoint(station, direction, centre.array() - 0.5 * resolution, centre.array() + 0.5 * resolution);
+          const Eigen::Vector3d hit =
+              entryPoint(station, direction, centre.array() - 0.5 * resolution, centre.array() + 0.5 * resolution);
           points.push_back(hit + range_noise(random) * direction + offset);
         }
       }
     }
     // Projected coordinates need doubles; binary PCD of doubles is not readable by Open3D 0.16.
     ceilplan::testing::writePcd(out, points, /*binary=*/offset.isZero());
-    std::printf("%zu points from %zu stations -> %s, %s\n", points.size(), parsePoints(stations_text).size(), out.c_str(),
-                origins_out.c_str());
+    std::printf("%zu points from %zu stations -> %s, %s\n", points.size(), parsePoints(stations_text).size(),
+                out.c_str(), origins_out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "simulate_lidar: %s\n", e.what());
     return 1;

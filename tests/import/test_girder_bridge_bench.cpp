@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <sys/wait.h>
 #include <cstdlib>
 #include <map>
 #include <sstream>
-#include <sys/wait.h>
 
 namespace ceilplan {
 namespace {

@@ -65,14 +65,18 @@ TEST_F(ImportBadInput, MissingFiles) {
 TEST_F(ImportBadInput, CorruptFiles) {
   std::ofstream(dir_ / "garbage.pcd") << "this is not a point cloud\n";
   expectRefused("--points " + path("garbage.pcd"), "garbage.pcd: not a readable point cloud");
-  std::ofstream(dir_ / "truncated.pcd") << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1000\n"
-                                           "HEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 1000\nDATA binary\n0123456789ab";
+  std::ofstream(dir_ / "truncated.pcd")
+      << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1000\n"
+         "HEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 1000\nDATA binary\n0123456789ab";
   expectRefused("--points " + path("truncated.pcd"), "truncated.pcd: not a readable point cloud");
-  std::ofstream(dir_ / "truncated.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                           "property float z\nend_header\n0 0 0\n1 0 0\n";
+  std::ofstream(dir_ / "truncated.ply")
+      << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nend_header\n0 0 0\n1 0 0\n";
   expectRefused("--points " + path("truncated.ply"),
-                "truncated.ply: not a readable point cloud (the PLY's vertex element announces 3 records; the file ends in record 2)");
-  std::ofstream(dir_ / "truncated.stl", std::ios::binary) << std::string(80, ' ') << std::string("\x64\0\0\0", 4) << "short";
+                "truncated.ply: not a readable point cloud (the PLY's vertex element announces 3 records; the file "
+                "ends in record 2)");
+  std::ofstream(dir_ / "truncated.stl", std::ios::binary)
+      << std::string(80, ' ') << std::string("\x64\0\0\0", 4) << "short";
   expectRefused("--mesh " + path("truncated.stl"), "truncated.stl: not a readable mesh");
   std::ofstream(dir_ / "bad_index.obj") << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
   expectRefused("--mesh " + path("bad_index.obj"), "bad_index.obj: not a readable mesh");
@@ -86,7 +90,8 @@ TEST_F(ImportBadInput, CorruptFiles) {
 // cannot read (it skips it), and a mesh whose faces all have zero area.
 TEST_F(ImportBadInput, HeaderCountsThatDisagreeWithTheDataAndLinesThatAreNotPoints) {
   const std::string pcd = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
-  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
   const struct {
     std::string flag, file, text, says;
   } rows[] = {
@@ -97,21 +102,31 @@ TEST_F(ImportBadInput, HeaderCountsThatDisagreeWithTheDataAndLinesThatAreNotPoin
       {"--points", "nopoints.pcd", pcd + "WIDTH 2\nHEIGHT 1\nDATA ascii\n1 2 3\n2 3 4\n",
        "nopoints.pcd: not a readable point cloud (the PCD header lacks FIELDS, WIDTH, HEIGHT or POINTS)"},
       {"--points", "more.ply", ply + "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n",
-       "more.ply: not a readable point cloud (data after the last element its header announces; do the header's element counts match the data?)"},
+       "more.ply: not a readable point cloud (data after the last element its header announces; do the header's "
+       "element counts match the data?)"},
       {"--points", "short.ply", replaced(ply, "ascii", "binary_little_endian") + "end_header\n" + std::string(24, '\0'),
-       "short.ply: not a readable point cloud (the PLY's vertex element announces 3 records of 12 bytes, more than the file's remaining 24 bytes hold)"},
+       "short.ply: not a readable point cloud (the PLY's vertex element announces 3 records of 12 bytes, more than the "
+       "file's remaining 24 bytes hold)"},
       {"--points", "long.ply", replaced(ply, "ascii", "binary_little_endian") + "end_header\n" + std::string(48, '\0'),
        "long.ply: not a readable point cloud (data after the last element its header announces"},
-      {"--points", "huge.ply", replaced(replaced(ply, "ascii", "binary_little_endian"), "vertex 3", "vertex 99999999999999") +
-       "end_header\n" + std::string(24, '\0'), "huge.ply: not a readable point cloud (PLY header line 3: give 'element NAME COUNT', COUNT a whole number up to 2147483647)"},
-      {"--mesh", "faces.ply", ply + "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+      {"--points", "huge.ply",
+       replaced(replaced(ply, "ascii", "binary_little_endian"), "vertex 3", "vertex 99999999999999") + "end_header\n" +
+           std::string(24, '\0'),
+       "huge.ply: not a readable point cloud (PLY header line 3: give 'element NAME COUNT', COUNT a whole number up to "
+       "2147483647)"},
+      {"--mesh", "faces.ply",
+       ply + "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
        "faces.ply: not a readable mesh (the PLY's face element announces 2 records; the file ends in record 1)"},
-      {"--points", "words.xyz", "0 0 0\n1 0 0\n\n0 0 one\n", "words.xyz: not a readable point cloud (line 4: '0 0 one' is not 3 numbers; fix or delete the line)"},
+      {"--points", "words.xyz", "0 0 0\n1 0 0\n\n0 0 one\n",
+       "words.xyz: not a readable point cloud (line 4: '0 0 one' is not 3 numbers; fix or delete the line)"},
       {"--points", "two.xyz", "0 0 0\n1 0\n", "two.xyz: not a readable point cloud (line 2: '1 0' is not 3 numbers"},
-      {"--points", "letters.xyz", "0 0 0\n1 0 x 0\n", "letters.xyz: not a readable point cloud (line 2: '1 0 x 0' is not 3 numbers"},
-      {"--points", "normals.xyzn", "0 0 0 0 0 1\n1 0 0 0 0\n", "normals.xyzn: not a readable point cloud (line 2: '1 0 0 0 0' is not 6 numbers"},
+      {"--points", "letters.xyz", "0 0 0\n1 0 x 0\n",
+       "letters.xyz: not a readable point cloud (line 2: '1 0 x 0' is not 3 numbers"},
+      {"--points", "normals.xyzn", "0 0 0 0 0 1\n1 0 0 0 0\n",
+       "normals.xyzn: not a readable point cloud (line 2: '1 0 0 0 0' is not 6 numbers"},
       {"--mesh", "flat.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 0 1 0\nf 1 2 3\nf 4 4 4\n",
-       "flat.obj: all 2 triangles of the mesh have zero area (collinear or repeated corners); export the mesh again with its faces"},
+       "flat.obj: all 2 triangles of the mesh have zero area (collinear or repeated corners); export the mesh again "
+       "with its faces"},
   };
   for (const auto& row : rows) {
     std::ofstream(dir_ / row.file, std::ios::binary) << row.text;
@@ -156,22 +171,25 @@ TEST_F(ImportBadInput, WrongKindOfFile) {
   expectRefused("--mesh " + path("cloud.ply"), "the mesh has no triangles (only vertices: a point cloud?)");
   expectRefused("--points " + path("good.pcd") + " --out-of-nowhere 3", "out-of-nowhere", kUsageExit);
   expectRefused("--points " + path("good.pcd") + " --mesh " + path("good.stl"), "Exactly 1 option", kUsageExit);
-  expectRefused("--mesh " + path("good.stl") + " --origins " + path("good.csv"), "--origins requires --points", kUsageExit);
+  expectRefused("--mesh " + path("good.stl") + " --origins " + path("good.csv"), "--origins requires --points",
+                kUsageExit);
 }
 
 TEST_F(ImportBadInput, EmptyClouds) {
   testing::writePlyPoints(dir_ / "empty.ply", {});
-  expectRefused("--points " + path("empty.ply"), "empty.ply: not a readable point cloud");  // Open3D: "number of vertex <= 0"
+  expectRefused("--points " + path("empty.ply"),
+                "empty.ply: not a readable point cloud");  // Open3D: "number of vertex <= 0"
   testing::writePcd(dir_ / "empty.pcd", {}, false);
   expectRefused("--points " + path("empty.pcd"), "empty.pcd: not a readable point cloud");
 }
 
 TEST_F(ImportBadInput, NonFiniteCoordinates) {
-  std::ofstream(dir_ / "nan.pcd") << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 1\n"
-                                     "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 3\nDATA ascii\n1 2 3\nnan nan nan\n2 3 4\n";
+  std::ofstream(dir_ / "nan.pcd")
+      << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 1\n"
+         "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 3\nDATA ascii\n1 2 3\nnan nan nan\n2 3 4\n";
   expectRefused("--points " + path("nan.pcd"), "nan.pcd: point 1 (counting from 0) has a non-finite coordinate");
-  const auto result = testing::runCeilplan("import --points " + path("nan.pcd") + " --skip-non-finite --resolution 0.1 --out " +
-                                           path("skipped.bt"));
+  const auto result = testing::runCeilplan("import --points " + path("nan.pcd") +
+                                           " --skip-non-finite --resolution 0.1 --out " + path("skipped.bt"));
   EXPECT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("skipped_non_finite_points: 1"), std::string::npos) << result.out;
   std::ofstream(dir_ / "nan_origin.csv") << "x,y,z\n1,nan,1\n";
@@ -188,14 +206,16 @@ TEST_F(ImportBadInput, ResolutionsOutOfRangeAndBoxesTooLarge) {
   expectRefused("--points " + path("good.pcd") + " --max-range -1 --origins " + path("one.csv"), "--max-range -1");
   expectRefused("--mesh " + path("good.stl") + " --margin -1", "margin -1 m");
   expectRefused("--mesh " + path("good.stl") + " --interior porous", "unknown mesh interior 'porous'");
-  expectRefused("--points " + path("good.pcd") + " --free-region hull", "unknown free region 'hull': use between or box");
+  expectRefused("--points " + path("good.pcd") + " --free-region hull",
+                "unknown free region 'hull': use between or box");
 }
 
 TEST_F(ImportBadInput, OriginsThatDoNotFitTheCloud) {
   std::ofstream(dir_ / "three.csv") << "x,y,z\n1,1,1\n1,1,1\n1,1,1\n";
   expectRefused("--points " + path("good.pcd") + " --origins " + path("three.csv"), "3 rows of x,y,z for");
   std::ofstream(dir_ / "late.csv") << "first_point,x,y,z\n5,1,1,1\n";
-  expectRefused("--points " + path("good.pcd") + " --origins " + path("late.csv"), "the first scan must start at point 0");
+  expectRefused("--points " + path("good.pcd") + " --origins " + path("late.csv"),
+                "the first scan must start at point 0");
   std::ofstream(dir_ / "columns.csv") << "a,b,c\n1,1,1\n";
   expectRefused("--points " + path("good.pcd") + " --origins " + path("columns.csv"), "no column 'x'");
   std::ofstream(dir_ / "words.csv") << "x,y,z\none,1,1\n";
@@ -203,14 +223,16 @@ TEST_F(ImportBadInput, OriginsThatDoNotFitTheCloud) {
 }
 
 TEST_F(ImportBadInput, CoordinateReferenceSystems) {
-  expectRefused("--points " + path("good.pcd") + " --crs EPSG:999999", "unknown coordinate reference system EPSG:999999");
+  expectRefused("--points " + path("good.pcd") + " --crs EPSG:999999",
+                "unknown coordinate reference system EPSG:999999");
   expectRefused("--points " + path("good.pcd") + " --crs EPSG:4326", "is not a projected coordinate reference system");
   expectRefused("--points " + path("good.pcd") + " --crs utm32", "expected EPSG:<code>");
   expectRefused("--points " + path("nothing.pcd") + " --crs EPSG:999999", "EPSG:999999");  // the CRS is checked first
 }
 
 TEST_F(ImportBadInput, OutputThatIsNotABtFile) {
-  const auto result = testing::runCeilplan("import --points " + path("good.pcd") + " --resolution 0.1 --out " + path("map.ot"));
+  const auto result =
+      testing::runCeilplan("import --points " + path("good.pcd") + " --resolution 0.1 --out " + path("map.ot"));
   EXPECT_EQ(result.exit_code, kBadInputExit);
   EXPECT_NE(result.err.find("must end in .bt"), std::string::npos) << result.err;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "map.ot"));

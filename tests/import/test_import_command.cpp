@@ -1,9 +1,9 @@
 // `ceilplan import` as a user runs it: each import path on a generated structure, then the map's
 // gap and clearance queries agree with the source geometry to one voxel.
 
+#include "ceilplan/io/vehicle_file.hpp"
 #include "run_command.hpp"
 #include "scan_files.hpp"
-#include "ceilplan/io/vehicle_file.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
@@ -53,9 +53,12 @@ TEST(ImportPoints, WithSensorOriginsCarvesTheRoomByRayCasting) {
   const auto dir = testing::scratchDirectory("room_origins");
   testing::writePcd(dir / "room.pcd", testing::sampleBoxSurface(kRoomMin, kRoomMax, 0.03), /*binary=*/true);
   std::ofstream(dir / "origins.csv") << "x,y,z\n3.0,2.0,1.5\n";
-  const auto result = importOk("--points " + (dir / "room.pcd").string() + " --origins " + (dir / "origins.csv").string() +
-                               " --resolution 0.1 --out " + (dir / "room.bt").string());
-  EXPECT_NE(result.out.find("free_space: carved by ray casting from 1 sensor origin (max range none)"), std::string::npos) << result.out;
+  const auto result =
+      importOk("--points " + (dir / "room.pcd").string() + " --origins " + (dir / "origins.csv").string() +
+               " --resolution 0.1 --out " + (dir / "room.bt").string());
+  EXPECT_NE(result.out.find("free_space: carved by ray casting from 1 sensor origin (max range none)"),
+            std::string::npos)
+      << result.out;
 
   const Environment environment = environmentOf(dir / "room.bt");
   const Eigen::Vector3d at(3.0, 2.0, 1.0);
@@ -64,7 +67,7 @@ TEST(ImportPoints, WithSensorOriginsCarvesTheRoomByRayCasting) {
   const Eigen::Vector3d centre(3.0, 2.0, 1.5);
   EXPECT_NEAR(environment.clearance_m(centre), centre.z() - kRoomMin.z(), kVoxel);
   EXPECT_TRUE(environment.isStateValid(centre));
-  EXPECT_EQ(stateAt(dir / "room.bt", {5.9, 3.9, 2.9}), "free");  // a corner the rays reach
+  EXPECT_EQ(stateAt(dir / "room.bt", {5.9, 3.9, 2.9}), "free");     // a corner the rays reach
   EXPECT_EQ(stateAt(dir / "room.bt", {7.0, 2.0, 1.5}), "unknown");  // behind the wall: never seen
   const auto sidecar = sidecarOf(dir / "room.bt");
   EXPECT_EQ(sidecar["kind"], "points");
@@ -134,8 +137,8 @@ std::vector<Eigen::Vector3d> deckAndGround() {
 TEST(ImportPoints, WithoutOriginsFreeSpaceIsAssumedAndSaidSo) {
   const auto dir = testing::scratchDirectory("deck_alone");
   testing::writePcd(dir / "deck.pcd", deckAndGround(), false);
-  const auto result = importOk("--points " + (dir / "deck.pcd").string() + " --resolution 0.1 --free-distance 0 --out " +
-                               (dir / "deck.bt").string());
+  const auto result = importOk("--points " + (dir / "deck.pcd").string() +
+                               " --resolution 0.1 --free-distance 0 --out " + (dir / "deck.bt").string());
   EXPECT_NE(result.out.find("free_space: assumed, no sensor origins"), std::string::npos) << result.out;
   const Environment environment = environmentOf(dir / "deck.bt");
   const Eigen::Vector3d at(4.0, 3.0, 2.0);
@@ -147,7 +150,8 @@ TEST(ImportPoints, WithoutOriginsFreeSpaceIsAssumedAndSaidSo) {
 TEST(ImportPoints, WithoutOriginsTheDefaultKeepsTwoVoxelsNextToPointsUnknown) {
   const auto dir = testing::scratchDirectory("deck_band");
   testing::writePcd(dir / "deck.pcd", deckAndGround(), true);
-  const auto result = importOk("--points " + (dir / "deck.pcd").string() + " --resolution 0.1 --out " + (dir / "deck.bt").string());
+  const auto result =
+      importOk("--points " + (dir / "deck.pcd").string() + " --resolution 0.1 --out " + (dir / "deck.bt").string());
   const std::string rule = sidecarOf(dir / "deck.bt")["free_space"];
   EXPECT_NE(rule.find("farther than 0.2 m from them is free; the rest is unknown"), std::string::npos) << rule;
   EXPECT_NE(result.out.find(rule), std::string::npos);
@@ -166,7 +170,8 @@ TEST(ImportMesh, AClosedSolidIsFilledAndTheSpaceAroundItIsFree) {
   const auto dir = testing::scratchDirectory("pier");
   const Eigen::Vector3d min(1.03, 1.07, 0.02), max(3.03, 3.07, 3.02);
   testing::writeStlBinary(dir / "pier.stl", testing::boxMesh(min, max));
-  const auto result = importOk("--mesh " + (dir / "pier.stl").string() + " --resolution 0.1 --out " + (dir / "pier.bt").string());
+  const auto result =
+      importOk("--mesh " + (dir / "pier.stl").string() + " --resolution 0.1 --out " + (dir / "pier.bt").string());
   EXPECT_NE(result.out.find("closed mesh, triangles facing outward"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("filled as occupied"), std::string::npos) << result.out;
   EXPECT_EQ(stateAt(dir / "pier.bt", (min + max) / 2), "occupied");
@@ -187,7 +192,8 @@ TEST(ImportMesh, AClosedSolidIsFilledAndTheSpaceAroundItIsFree) {
 TEST(ImportMesh, AClosedInwardFacingMeshIsARoom) {
   const auto dir = testing::scratchDirectory("hall");
   testing::writeObj(dir / "hall.obj", testing::boxMesh(kRoomMin, kRoomMax, /*outward=*/false));
-  const auto result = importOk("--mesh " + (dir / "hall.obj").string() + " --resolution 0.1 --out " + (dir / "hall.bt").string());
+  const auto result =
+      importOk("--mesh " + (dir / "hall.obj").string() + " --resolution 0.1 --out " + (dir / "hall.bt").string());
   EXPECT_NE(result.out.find("facing inward"), std::string::npos) << result.out;
   EXPECT_EQ(stateAt(dir / "hall.bt", {3.0, 2.0, 1.5}), "free");
   EXPECT_EQ(stateAt(dir / "hall.bt", {-0.5, 2.0, 1.5}), "unknown");  // outside the room
@@ -195,7 +201,8 @@ TEST(ImportMesh, AClosedInwardFacingMeshIsARoom) {
   EXPECT_NEAR(environment.ceilingGapAt({3.0, 2.0, 1.0}), kRoomMax.z() - 1.0, kVoxel);
   EXPECT_NEAR(environment.clearance_m({3.0, 2.0, 1.5}), 1.5 - kRoomMin.z(), kVoxel);
   // The same mesh forced solid fills the room.
-  importOk("--mesh " + (dir / "hall.obj").string() + " --interior solid --resolution 0.1 --out " + (dir / "solid.bt").string());
+  importOk("--mesh " + (dir / "hall.obj").string() + " --interior solid --resolution 0.1 --out " +
+           (dir / "solid.bt").string());
   EXPECT_EQ(stateAt(dir / "solid.bt", {3.0, 2.0, 1.5}), "occupied");
 }
 
@@ -222,7 +229,8 @@ TEST(ImportMesh, AnOpenBoxIsNotFilled) {
   auto mesh = testing::boxMesh(kRoomMin, kRoomMax);
   mesh.triangles.erase(mesh.triangles.begin() + 2, mesh.triangles.begin() + 4);  // the top face
   testing::writeStlBinary(dir / "open.stl", mesh);
-  const auto result = importOk("--mesh " + (dir / "open.stl").string() + " --resolution 0.1 --out " + (dir / "open.bt").string());
+  const auto result =
+      importOk("--mesh " + (dir / "open.stl").string() + " --resolution 0.1 --out " + (dir / "open.bt").string());
   EXPECT_NE(result.out.find("it encloses no space"), std::string::npos) << result.out;
   EXPECT_EQ(stateAt(dir / "open.bt", {3.0, 2.0, 1.5}), "free");
 }
@@ -284,8 +292,8 @@ TEST(ImportMesh, OnlyClosedMeshesAreFilled) {
   // voxels enclose the inside. Only a closed mesh is filled.
   environment::TriangleMesh lifted = boxWithout(min, max, 1, 1);
   const std::size_t first = lifted.vertices_m.size();
-  const environment::TriangleMesh lid = testing::rectangleMesh(
-      {min.x(), min.y(), max.z() + 0.001}, {max.x() - min.x(), 0, 0}, {0, max.y() - min.y(), 0});
+  const environment::TriangleMesh lid =
+      testing::rectangleMesh({min.x(), min.y(), max.z() + 0.001}, {max.x() - min.x(), 0, 0}, {0, max.y() - min.y(), 0});
   for (const Eigen::Vector3d& v : lid.vertices_m) lifted.vertices_m.push_back(v);
   for (const auto& t : lid.triangles) lifted.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
   testing::writeStlBinary(dir / "lifted.stl", lifted);

@@ -25,9 +25,10 @@ TEST(SensorOrigins, ExpandsScansToPoints) {
 }
 
 TEST(SensorOrigins, RefusesScansThatDoNotFitTheCloud) {
-  EXPECT_THROW((SensorOrigins{{1}, {{0, 0, 0}}}.validate(5)), InputError);                   // not from point 0
-  EXPECT_THROW((SensorOrigins{{0, 7}, {{0, 0, 0}, {1, 1, 1}}}.validate(5)), InputError);     // beyond the cloud
-  EXPECT_THROW((SensorOrigins{{0, 3, 3}, {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}.validate(5)), InputError);  // not increasing
+  EXPECT_THROW((SensorOrigins{{1}, {{0, 0, 0}}}.validate(5)), InputError);                // not from point 0
+  EXPECT_THROW((SensorOrigins{{0, 7}, {{0, 0, 0}, {1, 1, 1}}}.validate(5)), InputError);  // beyond the cloud
+  EXPECT_THROW((SensorOrigins{{0, 3, 3}, {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}.validate(5)),
+               InputError);  // not increasing
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW((SensorOrigins{{0}, {{nan, 0, 0}}}.validate(5)), InputError);
 }
@@ -78,7 +79,8 @@ TEST(MapBuilders, ATriangleThinnerThanAVoxelStillClosesTheVoxelsItCrosses) {
   environment::MeshVoxelisingOptions options;
   options.resolution_m = 0.1;
   options.margin_m = 0.3;
-  const auto built = environment::mapFromMesh(testing::rectangleMesh({0.013, 0.017, 0.5}, {2, 0, 0.7}, {0, 2, 0.3}), options);
+  const auto built =
+      environment::mapFromMesh(testing::rectangleMesh({0.013, 0.017, 0.5}, {2, 0, 0.7}, {0, 2, 0.3}), options);
   for (double x = 0.1; x < 1.9; x += 0.037)
     for (double y = 0.1; y < 1.9; y += 0.041) {
       const double z = 0.5 + 0.35 * (x - 0.013) + 0.15 * (y - 0.017);  // on the sheet
@@ -155,8 +157,9 @@ TEST(MapBuilders, RefuseBadResolutionsAndHugeBoxesBeforeAllocating) {
   options.resolution_m = 0.05;
   const auto start = std::chrono::steady_clock::now();
   EXPECT_THROW(environment::mapFromPointsAlone({{0, 0, 0}, {1500, 1500, 100}}, options), InputError);
-  EXPECT_THROW(environment::carveFromScans({{0, 0, 0}, {1500, 1500, 100}}, SensorOrigins{{0}, {{1, 1, 1}}}, {0.05, 0.0}),
-               InputError);
+  EXPECT_THROW(
+      environment::carveFromScans({{0, 0, 0}, {1500, 1500, 100}}, SensorOrigins{{0}, {{1, 1, 1}}}, {0.05, 0.0}),
+      InputError);
   EXPECT_THROW(environment::mapFromMesh(testing::rectangleMesh({0, 0, 0}, {1500, 0, 0}, {0, 1500, 100}), {0.05, 1.0}),
                InputError);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);

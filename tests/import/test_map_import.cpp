@@ -4,9 +4,9 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/io/map_import.hpp"
 
+#include "input_error.hpp"
 #include "run_command.hpp"
 #include "scan_files.hpp"
-#include "input_error.hpp"
 
 #include <gtest/gtest.h>
 #include <octomap/OcTree.h>
@@ -25,9 +25,7 @@ std::string errorOf(const MapImportOptions& options) {
 }
 
 // A 4 x 3 m deck 3 m up, sampled every 5 cm.
-std::vector<Eigen::Vector3d> deck() {
-  return testing::sampleRectangle({0, 0, 3}, {4, 0, 0}, {0, 3, 0}, 0.05);
-}
+std::vector<Eigen::Vector3d> deck() { return testing::sampleRectangle({0, 0, 3}, {4, 0, 0}, {0, 3, 0}, 0.05); }
 
 TEST(MapImport, RefusesBadOptionsBeforeReadingAnyFile) {
   MapImportOptions options;

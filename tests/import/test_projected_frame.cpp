@@ -7,9 +7,9 @@
 
 #include "ceilplan/io/projected_frame.hpp"
 
+#include <gtest/gtest.h>
 #include <GeographicLib/LocalCartesian.hpp>
 #include <GeographicLib/UTMUPS.hpp>
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 namespace ceilplan {
@@ -34,7 +34,8 @@ TEST(ProjectedFrame, LocalCoordinatesAgreeWithGeographicLib) {
   EXPECT_NEAR(frame.origin().latitude_deg, lat0, 1e-9);
   EXPECT_NEAR(frame.origin().longitude_deg, lon0, 1e-9);
 
-  std::vector<Eigen::Vector3d> points = {origin, origin + Eigen::Vector3d(120.0, -80.0, 15.0), origin + Eigen::Vector3d(-300.0, 450.0, -5.0)};
+  std::vector<Eigen::Vector3d> points = {origin, origin + Eigen::Vector3d(120.0, -80.0, 15.0),
+                                         origin + Eigen::Vector3d(-300.0, 450.0, -5.0)};
   const std::vector<Eigen::Vector3d> projected = points;
   frame.toLocal(points);
   const GeographicLib::LocalCartesian enu(lat0, lon0, origin.z());
@@ -53,7 +54,8 @@ TEST(ProjectedFrame, LocalCoordinatesAgreeWithGeographicLib) {
 }
 
 TEST(ProjectedFrame, TheOriginNearTheDataIsRounded) {
-  EXPECT_TRUE(io::ProjectedFrame::originNear({{100.4, 200.2, 7.9}, {110.2, 230.9, 9.3}}).isApprox(Eigen::Vector3d(105.0, 216.0, 7.0)));
+  EXPECT_TRUE(io::ProjectedFrame::originNear({{100.4, 200.2, 7.9}, {110.2, 230.9, 9.3}})
+                  .isApprox(Eigen::Vector3d(105.0, 216.0, 7.0)));
 }
 
 TEST(ProjectedFrame, RefusesCodesThatAreNotProjectedCrs) {
@@ -70,8 +72,9 @@ TEST(ImportCrs, MovesAUtmCloudNearTheOriginAndPrintsTheMissionOrigin) {
   const auto deck = testing::sampleRectangle({499995.0, 5315997.0, 253.0}, {10, 0, 0}, {0, 6, 0}, 0.05);
   points.insert(points.end(), deck.begin(), deck.end());
   testing::writePlyPoints(dir / "utm.ply", points);
-  const auto result = testing::runCeilplan("import --points " + (dir / "utm.ply").string() +
-                                           " --crs EPSG:32632 --resolution 0.1 --free-distance 0 --out " + (dir / "utm.bt").string());
+  const auto result =
+      testing::runCeilplan("import --points " + (dir / "utm.ply").string() +
+                           " --crs EPSG:32632 --resolution 0.1 --free-distance 0 --out " + (dir / "utm.bt").string());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   double lat, lon;
   GeographicLib::UTMUPS::Reverse(32, true, 500000.0, 5316000.0, lat, lon);

@@ -13,7 +13,6 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-
 namespace ceilplan {
 namespace {
 
@@ -33,7 +32,9 @@ nlohmann::json importMap(const std::string& arguments, const fs::path& map) {
 }
 
 // "occupied", "free" or "unknown" at a point of a loaded map.
-std::string stateAt(const OccupancyMap& map, const Eigen::Vector3d& point) { return testing::stateAt(map.tree(), point); }
+std::string stateAt(const OccupancyMap& map, const Eigen::Vector3d& point) {
+  return testing::stateAt(map.tree(), point);
+}
 
 void expectExtent(const nlohmann::json& sidecar, const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
   for (int i = 0; i < 3; ++i) {
@@ -105,7 +106,8 @@ void proposeAndTourBothModes(const fs::path& map, const std::string& propose_arg
   // The proposed mission relies on no assumption about unknown space.
   EXPECT_EQ(testing::readWholeFile(mission).find("\nunknown:"), std::string::npos);
   result.tour = map.parent_path() / "tour";
-  const auto toured = testing::runCeilplan("tour --mission " + quoted(mission) + " --mode both --out " + quoted(result.tour));
+  const auto toured =
+      testing::runCeilplan("tour --mission " + quoted(mission) + " --mode both --out " + quoted(result.tour));
   ASSERT_EQ(toured.exit_code, 0) << toured.out << toured.err;
   const OccupancyMap loaded = OccupancyMap::load(map);
   for (const char* mode : {"ceiling", "free"}) {
@@ -123,8 +125,8 @@ void proposeAndTourBothModes(const fs::path& map, const std::string& propose_arg
 // `ceilplan import IMPORT_ARGUMENTS` into a fresh scratch directory `scratch` as `map_name`, then
 // proposeAndTourBothModes with the settings every real data set is proposed with: two regions at
 // 4 mm/px keep each case within about 10-35 s.
-void importProposeAndTour(const std::string& scratch, const std::string& map_name,
-                          const std::string& import_arguments, ProposedTour& result) {
+void importProposeAndTour(const std::string& scratch, const std::string& map_name, const std::string& import_arguments,
+                          ProposedTour& result) {
   const fs::path map = testing::scratchDirectory(scratch) / map_name;
   importMap(import_arguments, map);
   proposeAndTourBothModes(map, "--max-regions 2 --gsd-mm-px 4", result);
@@ -181,7 +183,7 @@ TEST(RealData, OctomapScanWithoutOriginsVouchesOnlyForSpaceBetweenItsSurfaces) {
   EXPECT_LT(sidecar["figures"]["free_m3"].get<double>(), 10.0);
   const OccupancyMap between = OccupancyMap::load(dir / "between.bt");
   EXPECT_EQ(stateAt(between, {2.0, 0.0, -0.1}), "occupied");
-  EXPECT_EQ(stateAt(between, {2.0, 0.0, 1.5}), "unknown");   // in front of the facade: nothing above
+  EXPECT_EQ(stateAt(between, {2.0, 0.0, 1.5}), "unknown");    // in front of the facade: nothing above
   EXPECT_EQ(stateAt(between, {18.0, -2.0, 8.0}), "unknown");  // under a vault: nothing scanned below
 
   // The whole box, as asked for: the air in front of the facade and behind its walls too.
@@ -211,8 +213,7 @@ TEST(RealData, OctomapScanProposedMissionToursInBothModesWithinItsData) {
   EXPECT_EQ(tour["coverage"]["regions"].size(), 2u);
   // Named: a range-for over a member of parse()'s temporary would read it after it is destroyed.
   const auto coverage = nlohmann::json::parse(testing::readWholeFile(proposal.tour / "ceiling/coverage.json"));
-  for (const auto& region : coverage["regions"])
-    EXPECT_GT(region["area_m2"].get<double>(), 5.0) << region["name"];
+  for (const auto& region : coverage["regions"]) EXPECT_GT(region["area_m2"].get<double>(), 5.0) << region["name"];
   // The vaults, 7.7 m and more above the ground.
   EXPECT_NE(proposal.proposed.find("  overhead_1: 19.47 m2 in the box (15.60, -5.00, 7.70) to (21.60, 0.40, 10.20)"),
             std::string::npos)
@@ -388,14 +389,13 @@ TEST(RealData, FzkHausPolygonMeshImportsWithItsRooms) {
 // from below (a thin shell, free on both sides) is left out as below the ground.
 TEST(RealData, FzkHausProposedMissionToursInBothModesWithinItsData) {
   ProposedTour proposal;
-  importProposeAndTour("fzk_haus_propose", "fzk_haus.bt", "--mesh " + quoted(kData / "fzk_haus/fzk_haus.obj") +
-                       " --resolution 0.2", proposal);
+  importProposeAndTour("fzk_haus_propose", "fzk_haus.bt",
+                       "--mesh " + quoted(kData / "fzk_haus/fzk_haus.obj") + " --resolution 0.2", proposal);
   if (HasFatalFailure()) return;
   EXPECT_NE(proposal.proposed.find(" above the ground at 0.20 m "), std::string::npos) << proposal.proposed;
   // Named: a range-for over a member of parse()'s temporary would read it after it is destroyed.
   const auto coverage = nlohmann::json::parse(testing::readWholeFile(proposal.tour / "ceiling/coverage.json"));
-  for (const auto& region : coverage["regions"])
-    EXPECT_GT(region["area_m2"].get<double>(), 30.0) << region["name"];
+  for (const auto& region : coverage["regions"]) EXPECT_GT(region["area_m2"].get<double>(), 30.0) << region["name"];
 }
 
 }  // namespace

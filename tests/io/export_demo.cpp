@@ -31,11 +31,16 @@ int main(int argc, char** argv) {
       if (k + 1 >= argc) throw std::runtime_error(flag + " needs a value");
       return argv[++k];
     };
-    if (flag == "--mission") mission_file = value();
-    else if (flag == "--tour") tour_dir = value();
-    else if (flag == "--out") out = value();
-    else if (flag == "--title") title = value();
-    else if (flag == "--coverage-mock") coverage_mock = true;
+    if (flag == "--mission")
+      mission_file = value();
+    else if (flag == "--tour")
+      tour_dir = value();
+    else if (flag == "--out")
+      out = value();
+    else if (flag == "--title")
+      title = value();
+    else if (flag == "--coverage-mock")
+      coverage_mock = true;
     else {
       std::cerr << "export_demo: unknown flag " << flag << "\n";
       return 2;
@@ -71,22 +76,25 @@ int main(int argc, char** argv) {
         io::writeQgcPlan(named("mission.plan"), autopilot);
         io::writeQgcWpl(named("mission.waypoints"), autopilot);
         io::writeDjiKmz(named("mission.kmz"), route, facts.origin, dji);
-        std::printf("%s sortie %d: trajectory %.1f s, %zu setpoints, %d stops, %d blended corners, %d photos (%.3f s)\n",
-                    output.mode.c_str(), route.sortie, t.duration_s(), t.setpoints.size(), t.stops, t.blended_corners,
-                    t.photos, seconds);
+        std::printf(
+            "%s sortie %d: trajectory %.1f s, %zu setpoints, %d stops, %d blended corners, %d photos (%.3f s)\n",
+            output.mode.c_str(), route.sortie, t.duration_s(), t.setpoints.size(), t.stops, t.blended_corners, t.photos,
+            seconds);
       }
-      io::writeRoutesKml(dir / "route.kml", output.routes, facts.origin, mission_file.stem().string() + " " + output.mode);
+      io::writeRoutesKml(dir / "route.kml", output.routes, facts.origin,
+                         mission_file.stem().string() + " " + output.mode);
       io::writeRoutesGeoJson(dir / "route.geojson", output.routes, facts.origin);
     }
     const auto start = std::chrono::steady_clock::now();
-    io::ReportModel model = testing::reportModel(outputs, facts, map, tour_dir,
-                                                 title.empty() ? mission_file.stem().string() + ": inspection tour" : title);
+    io::ReportModel model = testing::reportModel(
+        outputs, facts, map, tour_dir, title.empty() ? mission_file.stem().string() + ": inspection tour" : title);
     if (coverage_mock)
       for (io::ReportPlan& plan : model.plans) testing::addCoverageMock(plan, map);
     io::writeReportHtml(out / "report.html", model);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("report.html: %zu structure voxels of %.2f m, %zu plans (%.3f s), in %s\n", model.structure.centres_m.size(),
-                model.structure.voxel_m, model.plans.size(), seconds, out.string().c_str());
+    std::printf("report.html: %zu structure voxels of %.2f m, %zu plans (%.3f s), in %s\n",
+                model.structure.centres_m.size(), model.structure.voxel_m, model.plans.size(), seconds,
+                out.string().c_str());
   } catch (const std::exception& e) {
     std::cerr << "export_demo: " << e.what() << "\n";
     return 1;

@@ -38,7 +38,8 @@ MissionFacts readMissionFacts(const std::filesystem::path& mission_file) {
   facts.vehicle = dir / root["vehicle"].as<std::string>();
   const auto home = root["home"].as<std::vector<double>>();
   facts.home_m = {home[0], home[1], home[2]};
-  facts.origin = {root["origin"]["lat"].as<double>(), root["origin"]["lon"].as<double>(), root["origin"]["alt"].as<double>()};
+  facts.origin = {root["origin"]["lat"].as<double>(), root["origin"]["lon"].as<double>(),
+                  root["origin"]["alt"].as<double>()};
   facts.cruise_m_s = root["speeds"]["cruise_m_s"].as<double>();
   facts.climb_m_s = root["speeds"]["climb_m_s"].as<double>();
   facts.descent_m_s = root["speeds"]["descent_m_s"].as<double>();
@@ -147,9 +148,9 @@ io::ReportModel reportModel(const std::vector<TourOutput>& outputs, const Missio
     model.comparison_header = {"", "ceiling", "free", "reduction %"};
     const auto row = [&](const std::string& label, const nlohmann::json& c, const nlohmann::json& f, double scale,
                          int decimals, const std::string& reduction) {
-      model.comparison_rows.push_back({label, formatFixed(scale * c.get<double>(), decimals),
-                                       formatFixed(scale * f.get<double>(), decimals),
-                                       reduction.empty() ? "" : formatFixed(comparison["reduction_pct"][reduction].get<double>(), 2)});
+      model.comparison_rows.push_back(
+          {label, formatFixed(scale * c.get<double>(), decimals), formatFixed(scale * f.get<double>(), decimals),
+           reduction.empty() ? "" : formatFixed(comparison["reduction_pct"][reduction].get<double>(), 2)});
     };
     const nlohmann::json &c = comparison["ceiling"], &f = comparison["free"];
     row("charge [Ah]", c["charge_ah"], f["charge_ah"], 1, 4, "charge");
@@ -184,7 +185,8 @@ void addCoverageMock(io::ReportPlan& plan, const MapCheck& map) {
     plan.photos.push_back({s.position_m, 0.0, 90.0, hfov * 180 / M_PI, vfov * 180 / M_PI, range});
     // Heading north, camera up: image width along x, height along y.
     const double half_w = range * std::tan(hfov / 2), half_h = range * std::tan(vfov / 2);
-    footprints.push_back({s.position_m + Eigen::Vector3d(0, 0, gap), half_w, half_h, range * 1000 * sensor_w_mm / focal_mm / pixels_w});
+    footprints.push_back(
+        {s.position_m + Eigen::Vector3d(0, 0, gap), half_w, half_h, range * 1000 * sensor_w_mm / focal_mm / pixels_w});
     low = low.cwiseMin(s.position_m);
     high = high.cwiseMax(s.position_m);
   }

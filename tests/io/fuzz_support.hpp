@@ -4,13 +4,13 @@
 // names: every shipped map name (empty files: the mission reader checks that they exist) and the
 // shipped vehicle, reachable as a mission in maps/ or maps/coverage/ names them.
 
+#include <unistd.h>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 namespace ceilplan::fuzzing {
 
@@ -34,8 +34,8 @@ inline std::filesystem::path workingDirectory() {
 // Writes the input to `name` in the working directory and returns its path.
 inline std::filesystem::path inputFile(const std::uint8_t* data, std::size_t size, const char* name) {
   const std::filesystem::path path = workingDirectory() / name;
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data),
-                                                               static_cast<std::streamsize>(size));
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   return path;
 }
 

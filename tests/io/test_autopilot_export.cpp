@@ -131,7 +131,7 @@ TEST(AutopilotExport, WplHasTwelveTabSeparatedFieldsAndHomeFirst) {
     EXPECT_EQ(rows[k][11], "1");
   }
   EXPECT_EQ(rows[0][3], "16");
-  EXPECT_EQ(rows[0][1], "1");  // home is the current item
+  EXPECT_EQ(rows[0][1], "1");   // home is the current item
   EXPECT_EQ(rows[1][3], "22");  // then the take-off ArduCopter needs to start AUTO from the ground
   const Eigen::Vector3d home(std::stod(rows[0][8]), std::stod(rows[0][9]), std::stod(rows[0][10]));
   EXPECT_LT((toLocal(kCambridge, home) - mission.home_m).norm(), 0.01);
@@ -191,7 +191,7 @@ AutopilotMission cameraSortie() {
   AutopilotMission mission = bridgeSortie();
   mission.waypoints[1].gimbal_pitch_deg = 90.0;
   mission.waypoints[1].take_photo = true;
-  mission.waypoints[1].speed_m_s = 0.5;  // slow from waypoint 2 to 3
+  mission.waypoints[1].speed_m_s = 0.5;          // slow from waypoint 2 to 3
   mission.waypoints[2].gimbal_pitch_deg = 90.0;  // unchanged: no second gimbal command
   mission.waypoints[2].take_photo = true;
   mission.waypoints[2].trigger_distance_m = 1.5;
@@ -206,7 +206,8 @@ TEST(AutopilotExport, CameraSpeedAndYawCommandsWithEveryParameter) {
   const nlohmann::json& items = plan["mission"]["items"];
   std::vector<int> commands;
   for (const auto& item : items) commands.push_back(item["command"]);
-  // take-off, cruise, wp1; gimbal, wp2, photo; slow, wp3, photo, trigger on; cruise again, gimbal, wp4, trigger off; wp5
+  // take-off, cruise, wp1; gimbal, wp2, photo; slow, wp3, photo, trigger on; cruise again, gimbal, wp4, trigger off;
+  // wp5
   const std::vector<int> expected{22, 178, 16, 1000, 16, 2000, 178, 16, 2000, 206, 178, 1000, 16, 206, 16};
   EXPECT_EQ(commands, expected);
   for (std::size_t k = 0; k < items.size(); ++k) {

@@ -5,8 +5,8 @@
 
 #include "ceilplan/core/error.hpp"
 
-#include "run_command.hpp"
 #include "input_error.hpp"
+#include "run_command.hpp"
 
 #include <gtest/gtest.h>
 
@@ -43,10 +43,12 @@ TEST(CalibrationFile, ReadsTheNamedColumnsAndKeepsTheOthersDefault) {
 }
 
 TEST(CalibrationFile, RefusesWhatItCannotReadInOneLine) {
-  EXPECT_NE(errorOf("gap,current_a\n0.05,8\n").find("unknown column 'gap' (known: gap_m, coverage, "), std::string::npos);
-  EXPECT_NE(errorOf("gap_m\n0.05\n").find("has no column 'current_a'"), std::string::npos);
-  EXPECT_NE(errorOf("gap_m,current_a\nnone,9.5\n0.05,eight\n").find("line 3, column 'current_a': 'eight' is not a number"),
+  EXPECT_NE(errorOf("gap,current_a\n0.05,8\n").find("unknown column 'gap' (known: gap_m, coverage, "),
             std::string::npos);
+  EXPECT_NE(errorOf("gap_m\n0.05\n").find("has no column 'current_a'"), std::string::npos);
+  EXPECT_NE(
+      errorOf("gap_m,current_a\nnone,9.5\n0.05,eight\n").find("line 3, column 'current_a': 'eight' is not a number"),
+      std::string::npos);
   EXPECT_NE(errorOf("coverage,current_a\nnone,9.5\n").find("column 'coverage': 'none' is not a number"),
             std::string::npos);  // "none" only for the gaps
   EXPECT_NE(errorOf("gap_m,current_a\n").find("holds no samples"), std::string::npos);

@@ -57,8 +57,15 @@ std::vector<PhotoCsvRow> readPhotosCsv(const std::filesystem::path& file) {
     const std::vector<std::string> f = fieldsOf(line, ',');
     EXPECT_EQ(f.size(), 11u) << line;
     if (f.size() != 11u) continue;
-    rows.push_back({std::stoi(f[0]), std::stoi(f[1]), std::stod(f[2]), {std::stod(f[3]), std::stod(f[4]), std::stod(f[5])},
-                    std::stod(f[6]), std::stod(f[7]), std::stod(f[8]), std::stod(f[9]), f[10]});
+    rows.push_back({std::stoi(f[0]),
+                    std::stoi(f[1]),
+                    std::stod(f[2]),
+                    {std::stod(f[3]), std::stod(f[4]), std::stod(f[5])},
+                    std::stod(f[6]),
+                    std::stod(f[7]),
+                    std::stod(f[8]),
+                    std::stod(f[9]),
+                    f[10]});
   }
   return rows;
 }

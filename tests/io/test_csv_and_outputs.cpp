@@ -2,8 +2,8 @@
 // column-picking CSV reader, the escaping of echoed text, and outputs that appear whole or not
 // at all.
 
-#include "ceilplan/io/csv_columns.hpp"
 #include "ceilplan/core/printable_text.hpp"
+#include "ceilplan/io/csv_columns.hpp"
 #include "ceilplan/io/temporary_output.hpp"
 
 #include "ceilplan/core/error.hpp"
@@ -39,9 +39,13 @@ TEST(PrintableText, EscapesControlBytesAndInvalidUtf8ButKeepsLetters) {
   EXPECT_EQ(ceilplan::printableText("soc_%"), "soc_%");
   EXPECT_EQ(ceilplan::printableText("Ladezustand \xC2\xB5"), "Ladezustand \xC2\xB5");  // µ is a letter
   EXPECT_EQ(ceilplan::printableText("\x1b[2J\r\n\x07"), "\\x1B[2J\\x0D\\x0A\\x07");
-  EXPECT_EQ(ceilplan::printableText("\xC2\x9B" "31m"), "\\xC2\\x9B31m");  // C1 CSI, as UTF-8
-  EXPECT_EQ(ceilplan::printableText("\x9B" "31m"), "\\x9B31m");           // C1 CSI, raw byte
-  EXPECT_EQ(ceilplan::printableText("\xE2\x82"), "\\xE2\\x82");           // a cut sequence
+  EXPECT_EQ(ceilplan::printableText("\xC2\x9B"
+                                    "31m"),
+            "\\xC2\\x9B31m");  // C1 CSI, as UTF-8
+  EXPECT_EQ(ceilplan::printableText("\x9B"
+                                    "31m"),
+            "\\x9B31m");                                         // C1 CSI, raw byte
+  EXPECT_EQ(ceilplan::printableText("\xE2\x82"), "\\xE2\\x82");  // a cut sequence
   EXPECT_EQ(ceilplan::printableText(std::string("a\0b", 3)), "a\\x00b");
   EXPECT_EQ(ceilplan::printableText(std::string(100, 'x'), 8), "xxxxxxxx...");
 }
@@ -74,7 +78,11 @@ TEST(CsvColumns, RefusesBadInputInOneLineNamingLineAndColumn) {
   EXPECT_EQ(errorOf("soc,\"mode\n", {"soc"}), "log.csv line 1: a quoted field is not closed");
   EXPECT_EQ(errorOf("soc,soc\n", {"soc"}), "log.csv line 1: column 'soc' appears twice in the header");
   EXPECT_EQ(errorOf("", {"soc"}), "log.csv is empty; expected a header row of column names");
-  EXPECT_NE(errorOf("\x7f" "ELF\x02\x01,x\n", {"soc"}).find("header holds control characters"), std::string::npos);
+  EXPECT_NE(errorOf("\x7f"
+                    "ELF\x02\x01,x\n",
+                    {"soc"})
+                .find("header holds control characters"),
+            std::string::npos);
 }
 
 TEST(CsvColumns, ReadsAnEmptyFieldOrNoneAsInfinityOnlyWhereAsked) {
@@ -82,7 +90,8 @@ TEST(CsvColumns, ReadsAnEmptyFieldOrNoneAsInfinityOnlyWhereAsked) {
   const CsvColumns table = CsvColumns::parse(input, "log.csv", {"current_a"}, {"gap_m"}, {"gap_m"});
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_EQ(table.column("gap_m"), (std::vector<double>{inf, inf, 0.05}));
-  EXPECT_EQ(errorOf("gap_m,current_a\nnone,9.5\n", {"gap_m"}), "log.csv line 2, column 'gap_m': 'none' is not a number");
+  EXPECT_EQ(errorOf("gap_m,current_a\nnone,9.5\n", {"gap_m"}),
+            "log.csv line 2, column 'gap_m': 'none' is not a number");
   std::istringstream elsewhere("gap_m,current_a\n0.05,\n");
   EXPECT_THROW(CsvColumns::parse(elsewhere, "log.csv", {"current_a"}, {"gap_m"}, {"gap_m"}), ceilplan::InputError);
 }

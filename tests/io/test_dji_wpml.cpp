@@ -17,8 +17,8 @@ namespace ceilplan::io {
 namespace {
 
 using testing::childNumber;
-using testing::childText;
 using testing::children;
+using testing::childText;
 
 const mission::GeodeticOrigin kOrigin{52.218, 0.0923, 12.0};
 
@@ -131,8 +131,9 @@ TEST(DjiWpml, KmzHoldsBothFilesWithEveryRequiredElement) {
       const double height = childNumber(p, is_template ? "wpml:height" : "wpml:executeHeight");
       // Heights above the take-off point: back to the map frame within 1 cm; the route ends at
       // home, so its last waypoint is above home at the landing height (the last but one's, 4.7 m).
-      const Eigen::Vector3d flown = k + 1 < placemarks.size() ? route.waypoints[k].position_m
-                                                              : Eigen::Vector3d(route.home_m + Eigen::Vector3d(0, 0, 4.7));
+      const Eigen::Vector3d flown = k + 1 < placemarks.size()
+                                        ? route.waypoints[k].position_m
+                                        : Eigen::Vector3d(route.home_m + Eigen::Vector3d(0, 0, 4.7));
       const Eigen::Vector3d back = toLocal(kOrigin, {lat, lon, home.z() + height});
       EXPECT_LT((back - flown).norm(), 0.01) << "waypoint " << k;
       if (is_template) {
@@ -152,7 +153,8 @@ TEST(DjiWpml, KmzHoldsBothFilesWithEveryRequiredElement) {
       EXPECT_EQ(heading->FirstChildElement("wpml:waypointHeadingAngleEnable"), nullptr);  // not DJI's
       EXPECT_EQ(childText(p->FirstChildElement("wpml:waypointTurnParam"), "wpml:waypointTurnMode"),
                 "toPointAndStopWithDiscontinuityCurvature");
-      EXPECT_EQ(p->FirstChildElement("wpml:waypointTurnParam")->FirstChildElement("wpml:waypointTurnDampingDist"), nullptr);
+      EXPECT_EQ(p->FirstChildElement("wpml:waypointTurnParam")->FirstChildElement("wpml:waypointTurnDampingDist"),
+                nullptr);
       EXPECT_EQ(p->FirstChildElement("wpml:useStraightLine"), nullptr);
     }
     // Actions on arrival, in order, and the distance trigger as its own group.
@@ -188,14 +190,16 @@ TEST(DjiWpml, KmzHoldsBothFilesWithEveryRequiredElement) {
     const auto groups3 = children(placemarks[3], "wpml:actionGroup");
     ASSERT_EQ(groups3.size(), 1u);
     EXPECT_EQ(actionFunctions(groups3[0]), std::vector<std::string>{"rotateYaw"});
-    const tinyxml2::XMLElement* turn = children(groups3[0], "wpml:action")[0]->FirstChildElement("wpml:actionActuatorFuncParam");
+    const tinyxml2::XMLElement* turn =
+        children(groups3[0], "wpml:action")[0]->FirstChildElement("wpml:actionActuatorFuncParam");
     EXPECT_EQ(childNumber(turn, "wpml:aircraftHeading"), -160.0);
     EXPECT_EQ(childText(turn, "wpml:aircraftPathMode"), "clockwise");
     EXPECT_TRUE(children(placemarks[0], "wpml:actionGroup").empty());
     // Action group ids are unique in each file.
     std::set<int> ids;
     for (const auto* p : placemarks)
-      for (const auto* g : children(p, "wpml:actionGroup")) EXPECT_TRUE(ids.insert(static_cast<int>(childNumber(g, "wpml:actionGroupId"))).second);
+      for (const auto* g : children(p, "wpml:actionGroup"))
+        EXPECT_TRUE(ids.insert(static_cast<int>(childNumber(g, "wpml:actionGroupId"))).second);
   }
 }
 
@@ -209,9 +213,12 @@ TEST(DjiWpml, HeightsAboveSeaLevelNeedTheGeoidSeparation) {
   const DjiWpml wpml = djiWpml(route, kOrigin, options);
   ASSERT_EQ(files.template_kml.Parse(wpml.template_kml.c_str()), tinyxml2::XML_SUCCESS);
   ASSERT_EQ(files.waylines.Parse(wpml.waylines_wpml.c_str()), tinyxml2::XML_SUCCESS);
-  const auto* template_folder = files.template_kml.RootElement()->FirstChildElement("Document")->FirstChildElement("Folder");
-  const auto* waylines_folder = files.waylines.RootElement()->FirstChildElement("Document")->FirstChildElement("Folder");
-  EXPECT_EQ(childText(template_folder->FirstChildElement("wpml:waylineCoordinateSysParam"), "wpml:heightMode"), "EGM96");
+  const auto* template_folder =
+      files.template_kml.RootElement()->FirstChildElement("Document")->FirstChildElement("Folder");
+  const auto* waylines_folder =
+      files.waylines.RootElement()->FirstChildElement("Document")->FirstChildElement("Folder");
+  EXPECT_EQ(childText(template_folder->FirstChildElement("wpml:waylineCoordinateSysParam"), "wpml:heightMode"),
+            "EGM96");
   EXPECT_EQ(childText(waylines_folder, "wpml:executeHeightMode"), "WGS84");
   const auto template_marks = children(template_folder, "Placemark");
   const auto waylines_marks = children(waylines_folder, "Placemark");
@@ -266,12 +273,9 @@ TEST(DjiWpml, ClampsToDjisRangesAndSaysWhere) {
   std::vector<std::tuple<std::size_t, std::string, double, double>> clamps;
   for (const DjiClamp& c : wpml.clamps) clamps.emplace_back(c.waypoint, c.element, c.planned, c.written);
   const std::vector<std::tuple<std::size_t, std::string, double, double>> expected{
-      {0, "wpml:autoFlightSpeed", 20.0, 15.0},
-      {1, "wpml:waypointSpeed", 20.0, 15.0},
-      {3, "wpml:waypointSpeed", 0.5, 1.0},
-      {4, "wpml:waypointSpeed", 20.0, 15.0},
-      {5, "wpml:waypointSpeed", 20.0, 15.0},
-      {0, "wpml:takeOffSecurityHeight", 0.6, 1.2}};
+      {0, "wpml:autoFlightSpeed", 20.0, 15.0}, {1, "wpml:waypointSpeed", 20.0, 15.0},
+      {3, "wpml:waypointSpeed", 0.5, 1.0},     {4, "wpml:waypointSpeed", 20.0, 15.0},
+      {5, "wpml:waypointSpeed", 20.0, 15.0},   {0, "wpml:takeOffSecurityHeight", 0.6, 1.2}};
   EXPECT_EQ(clamps, expected);
   tinyxml2::XMLDocument waylines;
   ASSERT_EQ(waylines.Parse(wpml.waylines_wpml.c_str()), tinyxml2::XML_SUCCESS);
@@ -292,7 +296,8 @@ TEST(DjiWpml, AContactReadingHoversWithoutAPhoto) {
   route.waypoints[2].trigger_distance_m.reset();
   tinyxml2::XMLDocument waylines;
   ASSERT_EQ(waylines.Parse(djiWpml(route, kOrigin).waylines_wpml.c_str()), tinyxml2::XML_SUCCESS);
-  const auto placemarks = children(waylines.RootElement()->FirstChildElement("Document")->FirstChildElement("Folder"), "Placemark");
+  const auto placemarks =
+      children(waylines.RootElement()->FirstChildElement("Document")->FirstChildElement("Folder"), "Placemark");
   const auto groups = children(placemarks[1], "wpml:actionGroup");
   ASSERT_EQ(groups.size(), 1u);
   EXPECT_EQ(actionFunctions(groups[0]), (std::vector<std::string>{"rotateYaw", "gimbalRotate", "hover"}));
@@ -322,7 +327,8 @@ TEST(DjiWpml, AircraftPayloadAndMountFromTheirNames) {
   aircraft.payload = "builtin";
   aircraft.gimbal_pitch_range_deg = std::array<double, 2>{-90.0, 45.0};
   options = djiWpmlOptions(aircraft);
-  EXPECT_EQ(std::make_tuple(options.drone_enum, options.drone_sub_enum, options.payload_enum), std::make_tuple(67, 1, 53));
+  EXPECT_EQ(std::make_tuple(options.drone_enum, options.drone_sub_enum, options.payload_enum),
+            std::make_tuple(67, 1, 53));
   aircraft.payload_position = "upper";
   EXPECT_THROW(djiWpmlOptions(aircraft), InputError);  // one gimbal
   aircraft = {};

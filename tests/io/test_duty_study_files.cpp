@@ -26,7 +26,9 @@ battery::DutyStudyOptions shortStudy(std::vector<std::string> models) {
   return options;
 }
 
-std::size_t lineCount(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+std::size_t lineCount(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
 
 TEST(DutyStudyTable, ShowsThePapersFiguresPerCase) {
   const battery::DutyStudyOptions options = shortStudy({});
@@ -51,9 +53,10 @@ TEST(DutyStudyTable, AddsEachModelsWearAndTheCasesThatStoppedEarly) {
   options.step_s = 0.0;
   const std::string table = dutyStudyTable(options, battery::runDutyStudy(options));
   EXPECT_NE(table.find("exact, event-driven\n"), std::string::npos) << table;
-  EXPECT_NE(table.find("\nfec (a faded pack gave out before the study's end: totals cover the days each case flew, "
-                       "reductions the 59 days both flew):\n  days flown                              59          89\n"),
-            std::string::npos)
+  EXPECT_NE(
+      table.find("\nfec (a faded pack gave out before the study's end: totals cover the days each case flew, "
+                 "reductions the 59 days both flew):\n  days flown                              59          89\n"),
+      std::string::npos)
       << table;
   EXPECT_NE(table.find("\n  wear reduction vs first [%]           0.00       15.79\n"), std::string::npos) << table;
 }
@@ -86,8 +89,8 @@ TEST(DutyStudyCsv, WritesTheSeriesOfEveryCase) {
   const Provenance provenance = Provenance::of("ceilplan duty --csv-dir out");
   writeDutyStudyCsv(dir, result, provenance);
   const std::string comment = provenance.csvComment() + "\n";  // every file's first line
-  for (const char* name : {"case1_mission.csv", "case1_day.csv", "case1_run.csv", "case2_run.csv", "case1_soh.csv",
-                           "case2_soh.csv"})
+  for (const char* name :
+       {"case1_mission.csv", "case1_day.csv", "case1_run.csv", "case2_run.csv", "case1_soh.csv", "case2_soh.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
   EXPECT_EQ(testing::readWholeFile(dir / "cases.csv"),
             comment + "case,prefix,flight_current_a\n1,case1,9.5\n2,case2,8\n");

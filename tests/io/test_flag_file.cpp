@@ -25,8 +25,7 @@ std::string errorOf(const std::string& yaml, const std::string& command = "duty"
 }
 
 TEST(FlagFile, KeysAreFlagNamesListsRepeatAFlagAndTheCommandsSectionCounts) {
-  const std::vector<FlagFileEntry> entries =
-      read("capacity_ah: 5.2\nflight-current-a: [9.5, 8]\nduty:\n  days: 60\n");
+  const std::vector<FlagFileEntry> entries = read("capacity_ah: 5.2\nflight-current-a: [9.5, 8]\nduty:\n  days: 60\n");
   ASSERT_EQ(entries.size(), 3u);
   EXPECT_EQ(entries[0].flag, "capacity-ah");  // '_' spelled '-'
   EXPECT_EQ(entries[0].values, std::vector<std::string>{"5.2"});
@@ -51,7 +50,8 @@ TEST(FlagFile, RefusesWhatIsNotAFlatMapOfValues) {
   EXPECT_EQ(errorOf("- days\n"), "config file must be a YAML map of flag names to values");
   EXPECT_EQ(errorOf("? [a, b]\n: 1\n"), "config file line 1: a key must be a flag name");
   EXPECT_EQ(errorOf("days:\n  x: 1\n"), "config key 'days' holds a map; give a value or a list");
-  EXPECT_EQ(errorOf("flight-current-a: [[1, 2]]\n"), "config key 'flight-current-a' holds a nested list; use a flat list");
+  EXPECT_EQ(errorOf("flight-current-a: [[1, 2]]\n"),
+            "config key 'flight-current-a' holds a nested list; use a flat list");
   EXPECT_EQ(errorOf("days:\n"), "config key 'days' has no value");
   EXPECT_EQ(errorOf("days: [1\n").rfind("malformed YAML config at line ", 0), 0u);
 }
@@ -63,14 +63,19 @@ TEST(FlagFile, RefusesAFlagGivenTwiceAndASecondDocument) {
   const struct {
     std::string yaml, says;
   } rows[] = {
-      {"days: 3\ndays: 4\n", "config file line 2: 'days' gives flag 'days' again (first on line 1); give each flag once, a list for a repeated flag"},
-      {"capacity-ah: 5\ncapacity_ah: 6\n", "config file line 2: 'capacity_ah' gives flag 'capacity-ah' again (first on line 1)"},
+      {"days: 3\ndays: 4\n",
+       "config file line 2: 'days' gives flag 'days' again (first on line 1); give each flag once, a list for a "
+       "repeated flag"},
+      {"capacity-ah: 5\ncapacity_ah: 6\n",
+       "config file line 2: 'capacity_ah' gives flag 'capacity-ah' again (first on line 1)"},
       {"days: 3\nduty:\n  days: 4\n", "config file line 3: 'days' gives flag 'days' again (first on line 1)"},
       {"duty:\n  days: 4\ndays: 3\n", "config file line 3: 'days' gives flag 'days' again (first on line 2)"},
-      {"days: 3\n---\ndays: 4\n", "config file holds 2 YAML documents (split by '---'); give one map of flag names to values"},
+      {"days: 3\n---\ndays: 4\n",
+       "config file holds 2 YAML documents (split by '---'); give one map of flag names to values"},
       {"days: 3\n---\n", "config file holds 2 YAML documents"},
   };
-  for (const auto& row : rows) EXPECT_EQ(errorOf(row.yaml).rfind(row.says, 0), 0u) << row.yaml << "\n" << errorOf(row.yaml);
+  for (const auto& row : rows)
+    EXPECT_EQ(errorOf(row.yaml).rfind(row.says, 0), 0u) << row.yaml << "\n" << errorOf(row.yaml);
   // One document, even with its start marked, and a list for a repeated flag, pass.
   EXPECT_EQ(read("---\ndays: 3\n").size(), 1u);
   EXPECT_EQ(read("flight-current-a: [9.5, 8]\n").size(), 1u);

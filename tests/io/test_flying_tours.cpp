@@ -57,10 +57,11 @@ void flyShippedMission(const std::string& name, const std::filesystem::path& mis
       for (const mission::RouteWaypoint& w : route.waypoints) photos += w.take_photo;
       EXPECT_EQ(t.photos, photos);
       EXPECT_GT(t.blended_corners, 0);
-      std::printf("%s %s sortie %d: %zu setpoints, %.1f s (route %.1f m), %d stops, %d blended corners "
-                  "(furthest %.3f m off), generated in %.3f s\n",
-                  name.c_str(), output.mode.c_str(), route.sortie, t.setpoints.size(), t.duration_s(), t.length_m,
-                  t.stops, t.blended_corners, t.max_corner_deviation_m, seconds);
+      std::printf(
+          "%s %s sortie %d: %zu setpoints, %.1f s (route %.1f m), %d stops, %d blended corners "
+          "(furthest %.3f m off), generated in %.3f s\n",
+          name.c_str(), output.mode.c_str(), route.sortie, t.setpoints.size(), t.duration_s(), t.length_m, t.stops,
+          t.blended_corners, t.max_corner_deviation_m, seconds);
     }
   }
 }
@@ -73,7 +74,8 @@ TEST(ShippedTrajectories, Warehouse) { flyShippedMission("warehouse"); }
 TEST(ShippedTrajectories, Open) { flyShippedMission("open"); }
 // A coverage tour: photo stops, contact points and a point target (test_coverage_tour_files.cpp).
 TEST(ShippedTrajectories, CoverageStrip) {
-  flyShippedMission("bridge_strip", std::filesystem::path(CEILPLAN_SOURCE_DIR) / "tests/coverage/missions/bridge_strip.yaml");
+  flyShippedMission("bridge_strip",
+                    std::filesystem::path(CEILPLAN_SOURCE_DIR) / "tests/coverage/missions/bridge_strip.yaml");
 }
 
 // The bridge's ceiling-mode sortie, every format written and read back.
@@ -84,7 +86,8 @@ class BridgeExports : public ::testing::Test {
     output_ = readTourOutput(kTours / "bridge" / "ceiling", facts_);
     ASSERT_EQ(output_.routes.size(), 1u);
     route_ = output_.routes[0];
-    dir_ = scratchDirectory("bridge_exports_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = scratchDirectory("bridge_exports_" +
+                            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   }
   MissionFacts facts_;
   TourOutput output_;
@@ -149,7 +152,8 @@ TEST_F(BridgeExports, QgcPlanAndWplCarryEveryWaypointWithinOneCentimetre) {
     speed += command == 178;
     if (command != 16) continue;
     const auto& p = item["params"];
-    const Eigen::Vector3d back = io::toLocal(facts_.origin, {p[4].get<double>(), p[5].get<double>(), home_amsl + p[6].get<double>()});
+    const Eigen::Vector3d back =
+        io::toLocal(facts_.origin, {p[4].get<double>(), p[5].get<double>(), home_amsl + p[6].get<double>()});
     ASSERT_LT(waypoint, route_.waypoints.size());
     EXPECT_LT((back - flownPosition(route_, waypoint)).norm(), 0.01) << waypoint;
     EXPECT_EQ(p[0].get<double>(), route_.waypoints[waypoint].hold_s);
@@ -189,17 +193,23 @@ TEST_F(BridgeExports, DjiKmzKmlAndGeoJsonReadBackWithinOneCentimetre) {
   for (const char* name : {"wpmz/template.kml", "wpmz/waylines.wpml"}) {
     tinyxml2::XMLDocument xml;
     ASSERT_EQ(xml.Parse(entries.at(name).c_str()), tinyxml2::XML_SUCCESS) << name;
-    const auto placemarks = children(xml.RootElement()->FirstChildElement("Document")->FirstChildElement("Folder"), "Placemark");
+    const auto placemarks =
+        children(xml.RootElement()->FirstChildElement("Document")->FirstChildElement("Folder"), "Placemark");
     ASSERT_EQ(placemarks.size(), route_.waypoints.size()) << name;
     int photos = 0;
     for (std::size_t k = 0; k < placemarks.size(); ++k) {
       double lon = 0, lat = 0;
-      ASSERT_EQ(std::sscanf(childText(placemarks[k]->FirstChildElement("Point"), "coordinates").c_str(), "%lf,%lf", &lon, &lat), 2);
-      const double height = childNumber(placemarks[k], std::string(name).find("template") != std::string::npos ? "wpml:height" : "wpml:executeHeight");
+      ASSERT_EQ(std::sscanf(childText(placemarks[k]->FirstChildElement("Point"), "coordinates").c_str(), "%lf,%lf",
+                            &lon, &lat),
+                2);
+      const double height =
+          childNumber(placemarks[k],
+                      std::string(name).find("template") != std::string::npos ? "wpml:height" : "wpml:executeHeight");
       EXPECT_LT((io::toLocal(facts_.origin, {lat, lon, home.z() + height}) - flownPosition(route_, k)).norm(), 0.01);
       EXPECT_NEAR(childNumber(placemarks[k], "wpml:waypointSpeed"), route_.speedInto_m_s(k + 1), 5e-4);  // mm/s
       for (const auto* group : children(placemarks[k], "wpml:actionGroup"))
-        for (const auto* action : children(group, "wpml:action")) photos += childText(action, "wpml:actionActuatorFunc") == "takePhoto";
+        for (const auto* action : children(group, "wpml:action"))
+          photos += childText(action, "wpml:actionActuatorFunc") == "takePhoto";
     }
     EXPECT_EQ(photos, 13) << name;
   }
@@ -212,7 +222,8 @@ TEST_F(BridgeExports, DjiKmzKmlAndGeoJsonReadBackWithinOneCentimetre) {
   for (const auto& feature : geojson["features"]) {
     if (feature["properties"]["kind"] != "waypoint") continue;
     const auto& c = feature["geometry"]["coordinates"];
-    const Eigen::Vector3d back = io::toLocal(facts_.origin, {c[1].get<double>(), c[0].get<double>(), c[2].get<double>()});
+    const Eigen::Vector3d back =
+        io::toLocal(facts_.origin, {c[1].get<double>(), c[0].get<double>(), c[2].get<double>()});
     EXPECT_LT((back - route_.waypoints[k++].position_m).norm(), 0.01);
   }
   EXPECT_EQ(k, route_.waypoints.size());
@@ -279,7 +290,8 @@ TEST(RealScan, Geb079RouteFlownAndReported) {
         const double d = (p - from).norm();
         const bool visited =
             std::any_of(chain.begin(), chain.end(), [&](const Eigen::Vector3d& c) { return (c - p).norm() < 1.0; });
-        if (!visited && d > 1.5 && d < 6.0 && (!best || d > (*best - from).norm()) && !map.rules->checkPathDensely({from, p}))
+        if (!visited && d > 1.5 && d < 6.0 && (!best || d > (*best - from).norm()) &&
+            !map.rules->checkPathDensely({from, p}))
           best = &p;
       }
       if (!best) break;

@@ -14,8 +14,8 @@
 namespace ceilplan::io {
 namespace {
 
-using testing::childText;
 using testing::children;
+using testing::childText;
 
 const mission::GeodeticOrigin kOrigin{47.3769, 8.5417, 408.0};
 
@@ -33,7 +33,8 @@ std::vector<mission::SortieRoute> twoSorties() {
 }
 
 Eigen::Vector3d local(const nlohmann::json& lon_lat_height) {
-  return toLocal(kOrigin, {lon_lat_height[1].get<double>(), lon_lat_height[0].get<double>(), lon_lat_height[2].get<double>()});
+  return toLocal(kOrigin,
+                 {lon_lat_height[1].get<double>(), lon_lat_height[0].get<double>(), lon_lat_height[2].get<double>()});
 }
 
 TEST(GeoJson, FeaturesForEverySortieConvertBackWithinOneCentimetre) {
@@ -119,7 +120,8 @@ TEST(Kml, DocumentWithAFolderPerSortieConvertsBackWithinOneCentimetre) {
       EXPECT_EQ(childText(point, "altitudeMode"), "absolute");
       EXPECT_LT((parse(childText(point, "coordinates"))[0] - routes[s].waypoints[k].position_m).norm(), 0.01);
       EXPECT_FALSE(childText(placemarks[k + 1], "name").empty());
-      EXPECT_EQ(children(placemarks[k + 1]->FirstChildElement("ExtendedData"), "Data").size(), 12u);  // contact_reading too
+      EXPECT_EQ(children(placemarks[k + 1]->FirstChildElement("ExtendedData"), "Data").size(),
+                12u);  // contact_reading too
     }
   }
   EXPECT_EQ(childText(children(folders[0], "Placemark")[2], "name"), "crown <north> & wall");

@@ -112,16 +112,19 @@ TEST(MissionFile, BadVariantsNameTheKey) {
   expectError("missing_charge", "charge_current_a: 10.4", "", "missing key 'battery.charge_current_a'");
   expectError("duplicate_target", "name: deck_bay_14_north", "name: deck_bay_06",
               "duplicate target name 'deck_bay_06' at 'targets[1]'");
-  expectError("nan_point", "point: [6.0, 0.0, 6.0]", "point: [6.0, .nan, 6.0]", "'targets[0].point[1]' must be a finite");
+  expectError("nan_point", "point: [6.0, 0.0, 6.0]", "point: [6.0, .nan, 6.0]",
+              "'targets[0].point[1]' must be a finite");
   expectError("short_point", "point: [6.0, 0.0, 6.0]", "point: [6.0, 0.0]", "'targets[0].point' must be [x, y, z]");
   expectError("negative_dwell", "dwell_s: 20", "dwell_s: -20", "'targets[0].dwell_s' must be in [0, 3600] s, got -20");
   expectError("inverted_standoff", "standoff_m: [0.3, 1.5]", "standoff_m: [1.5, 0.3]", "standoff range");
   expectError("home_missing", "home: [-4.0, 0.0, 0.5]", "", "missing key 'home'");
   expectError("bad_latitude", "lat: 52.218", "lat: 152.218", "'origin.lat' must be in [-90, 90] deg, got 152.218");
   expectError("negative_speed", "cruise_m_s: 2.0", "cruise_m_s: -2.0", "'speeds.cruise_m_s' must be in [0.01, 15] m/s");
-  expectError("climb_beyond_physics", "climb_m_s: 1.0", "climb_m_s: 100", "'speeds.climb_m_s' must be in [0.01, 10] m/s");
+  expectError("climb_beyond_physics", "climb_m_s: 1.0", "climb_m_s: 100",
+              "'speeds.climb_m_s' must be in [0.01, 10] m/s");
   expectError("negative_seed", "seed: 1", "seed: -1", "'seed' must be a whole number in [1, 4294967295], got '-1'");
-  expectError("bad_mode", "mode: ceiling", "mode: min-wear", "'mode' must be one of ceiling, free, both, got 'min-wear'");
+  expectError("bad_mode", "mode: ceiling", "mode: min-wear",
+              "'mode' must be one of ceiling, free, both, got 'min-wear'");
   expectError("no_targets", "targets:", "targets: []\nignored_targets:", "unknown key 'ignored_targets'");
   expectError("bad_yaml", "home: [-4.0, 0.0, 0.5]", "home: [-4.0, 0.0", "malformed YAML");
   EXPECT_NE(errorOf(kMaps / "nowhere.yaml").find("no such mission file"), std::string::npos);
@@ -145,10 +148,12 @@ TEST(MissionFile, AnUnknownKeyIsAnErrorNamingTheNearestValidKey) {
   // Typos must never fall back to a default silently.
   expectError("typo_capacity", "capacity_ah: 5.2", "capacity_a: 5.2",
               "unknown key 'battery.capacity_a'; did you mean 'capacity_ah'?");
-  expectError("typo_top_level", "home: [-4.0, 0.0, 0.5]", "hone: [-4.0, 0.0, 0.5]", "unknown key 'hone'; did you mean 'home'?");
+  expectError("typo_top_level", "home: [-4.0, 0.0, 0.5]", "hone: [-4.0, 0.0, 0.5]",
+              "unknown key 'hone'; did you mean 'home'?");
   expectError("typo_target", "dwell_s: 20, standoff_m: [0.3, 1.5]}", "dwel_s: 20, standoff_m: [0.3, 1.5]}",
               "unknown key 'targets[0].dwel_s'; did you mean 'dwell_s'?");
-  expectError("typo_speed", "cruise_m_s: 2.0", "cruse_m_s: 2.0", "unknown key 'speeds.cruse_m_s'; did you mean 'cruise_m_s'?");
+  expectError("typo_speed", "cruise_m_s: 2.0", "cruse_m_s: 2.0",
+              "unknown key 'speeds.cruse_m_s'; did you mean 'cruise_m_s'?");
 }
 
 TEST(MissionFile, ATourNeedsTargets) {
@@ -220,8 +225,7 @@ TEST(BatteryFile, UnknownKeysAndOutOfRangeNumbersAreRefused) {
 }
 
 TEST(MissionFile, MissingOriginIsAnErrorOnlyWhenExporting) {
-  const std::filesystem::path file =
-      variant("no_origin", "origin: {lat: 52.218, lon: 0.0923, alt: 12.0}", "");
+  const std::filesystem::path file = variant("no_origin", "origin: {lat: 52.218, lon: 0.0923, alt: 12.0}", "");
   const mission::Mission mission = readMission(file);
   EXPECT_FALSE(mission.origin.has_value());
   try {

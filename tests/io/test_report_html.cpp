@@ -29,7 +29,8 @@ ReportModel model() {
   m.reserve_soc = 0.25;
   ReportPlan plan;
   plan.name = "ceiling";
-  for (int k = 0; k <= 10; ++k) plan.samples.push_back({k * 1.0, {1.0 + 0.5 * k, 2, 2.5}, 8.0 + 0.1 * k, 0.95 - 0.01 * k, 1});
+  for (int k = 0; k <= 10; ++k)
+    plan.samples.push_back({k * 1.0, {1.0 + 0.5 * k, 2, 2.5}, 8.0 + 0.1 * k, 0.95 - 0.01 * k, 1});
   plan.targets.push_back({"slab", {3, 2, 2.7}, Eigen::Vector3d(3, 2, 2.5)});
   plan.photos.push_back({{3, 2, 2.5}, 0, 90, 60, 45, 0.2});
   plan.coverage.push_back({{3, 2, 2.7}, -Eigen::Vector3d::UnitZ(), 0.5, 0.4});
@@ -93,7 +94,8 @@ TEST(ReportHtml, OneSelfContainedPageWithTheDataBlock) {
   ASSERT_EQ(data["plans"].size(), 2u);
   const nlohmann::json& plan = data["plans"][0];
   EXPECT_EQ(plan["name"], "ceiling");
-  for (const char* key : {"t", "x", "y", "z", "current", "soc", "sortie"}) EXPECT_EQ(plan["samples"][key].size(), 11u) << key;
+  for (const char* key : {"t", "x", "y", "z", "current", "soc", "sortie"})
+    EXPECT_EQ(plan["samples"][key].size(), 11u) << key;
   EXPECT_EQ(plan["samples"]["x"][10], 6.0);
   EXPECT_EQ(plan["targets"][0]["viewpoint"], nlohmann::json::parse("[3.0, 2.0, 2.5]"));
   EXPECT_EQ(plan["photos"][0]["pitch_deg"], 90.0);

@@ -42,7 +42,8 @@ TEST(ReportText, AGeneratedSceneNamesItsSizeAndABridgesLengthOnlyWhenNotTheShipp
       << line;
   options.bridge_length_m = 64.0;  // ignored but for a bridge
   EXPECT_EQ(generatedSceneLine("open", options, grid, tree->size(), file).find("length"), std::string::npos);
-  EXPECT_EQ(generatedSceneLine("bridge", options, grid, tree->size(), file).rfind("scene bridge, length 64 m, ", 0), 0u);
+  EXPECT_EQ(generatedSceneLine("bridge", options, grid, tree->size(), file).rfind("scene bridge, length 64 m, ", 0),
+            0u);
   options.bridge_length_m = environment::kShippedBridgeLength_m;
   EXPECT_EQ(generatedSceneLine("bridge", options, grid, tree->size(), file).find("length"), std::string::npos);
 }

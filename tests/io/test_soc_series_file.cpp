@@ -5,8 +5,8 @@
 
 #include "ceilplan/core/error.hpp"
 
-#include "run_command.hpp"
 #include "input_error.hpp"
+#include "run_command.hpp"
 
 #include <gtest/gtest.h>
 
@@ -34,7 +34,8 @@ TEST(SocSeriesFile, ReadsTheColumnWhateverTheOthersHold) {
 }
 
 TEST(SocSeriesFile, RefusesSocOutsideAFractionTimeGoingBackAndTooFewSamples) {
-  EXPECT_NE(errorOf("t_s,soc\n0,0.5\n1,95\n").find("line 3, column 'soc': SOC 95 is outside [0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf("t_s,soc\n0,0.5\n1,95\n").find("line 3, column 'soc': SOC 95 is outside [0, 1]"),
+            std::string::npos);
   EXPECT_NE(errorOf("t_s,soc\n5,0.5\n4,0.4\n").find("line 3, column 't_s': time goes backwards (5 s to 4 s)"),
             std::string::npos);
   EXPECT_NE(errorOf("t_s,soc\n0,0.5\n").find("has 1 data row; a rainflow count needs at least 2 samples of 'soc'"),
@@ -44,8 +45,9 @@ TEST(SocSeriesFile, RefusesSocOutsideAFractionTimeGoingBackAndTooFewSamples) {
 
 TEST(RainflowJson, ListsEachCycleWithItsKeysInOrder) {
   const nlohmann::ordered_json json = rainflowJson({{0.6, 0.65, 1.0, 2, 5}, {0.2, 0.4, 0.5, 5, 9}});
-  EXPECT_EQ(json.dump(), "{\"cycles\":[{\"range\":0.6,\"mean\":0.65,\"count\":1.0,\"start\":2,\"end\":5},"
-                         "{\"range\":0.2,\"mean\":0.4,\"count\":0.5,\"start\":5,\"end\":9}]}");
+  EXPECT_EQ(json.dump(),
+            "{\"cycles\":[{\"range\":0.6,\"mean\":0.65,\"count\":1.0,\"start\":2,\"end\":5},"
+            "{\"range\":0.2,\"mean\":0.4,\"count\":0.5,\"start\":5,\"end\":9}]}");
   EXPECT_EQ(rainflowJson({}).dump(), "{\"cycles\":[]}");
 }
 
@@ -61,8 +63,8 @@ TEST(RainflowText, TitlesTheColumnAndFileThenOneRowPerCycleAndTheTotals) {
 }
 
 TEST(RainflowTotals, CountHalvesAsHalfAndWeighTheRanges) {
-  const battery::RainflowTotals totals = battery::rainflowTotals({{0.6, 0.65, 1.0, 2, 5}, {0.2, 0.4, 0.5, 5, 9},
-                                                                  {0.4, 0.5, 0.5, 9, 12}});
+  const battery::RainflowTotals totals =
+      battery::rainflowTotals({{0.6, 0.65, 1.0, 2, 5}, {0.2, 0.4, 0.5, 5, 9}, {0.4, 0.5, 0.5, 9, 12}});
   EXPECT_EQ(totals.full_cycles, 1.0);
   EXPECT_EQ(totals.half_cycles, 2.0);
   EXPECT_EQ(totals.cycles, 2.0);

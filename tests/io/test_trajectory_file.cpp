@@ -36,9 +36,9 @@ TEST(TrajectoryFile, CsvHasTheDocumentedColumnsAndEverySetpoint) {
   const mission::Trajectory t = sampleTrajectory();
   const std::filesystem::path dir = testing::scratchDirectory("trajectory_csv");
   writeTrajectoryCsv(dir / "trajectory.csv", t, TrajectoryFrame::Enu, Provenance::of("test"));
-  const std::vector<std::string> expected{"t_s",     "x_m",     "y_m",     "z_m",     "vx_m_s",         "vy_m_s",
-                                          "vz_m_s",  "ax_m_s2", "ay_m_s2", "az_m_s2", "yaw_rad",        "yaw_rate_rad_s",
-                                          "gimbal_pitch_deg", "trigger"};
+  const std::vector<std::string> expected{
+      "t_s",     "x_m",     "y_m",     "z_m",     "vx_m_s",         "vy_m_s",           "vz_m_s",
+      "ax_m_s2", "ay_m_s2", "az_m_s2", "yaw_rad", "yaw_rate_rad_s", "gimbal_pitch_deg", "trigger"};
   const CsvColumns table = CsvColumns::read(dir / "trajectory.csv", expected);
   EXPECT_EQ(table.columnNames(), expected);
   ASSERT_EQ(table.rowCount(), t.setpoints.size());
@@ -68,7 +68,8 @@ TEST(TrajectoryFile, NedSwapsTheAxesNegatesUpAndTurnsYawToCompass) {
   EXPECT_EQ(columns[2], "east_m");
   EXPECT_EQ(columns[3], "down_m");
   for (const mission::TrajectorySetpoint& s : t.setpoints) {
-    const std::vector<double> enu = trajectoryRow(s, TrajectoryFrame::Enu), ned = trajectoryRow(s, TrajectoryFrame::Ned);
+    const std::vector<double> enu = trajectoryRow(s, TrajectoryFrame::Enu),
+                              ned = trajectoryRow(s, TrajectoryFrame::Ned);
     for (int block : {1, 4, 7}) {
       EXPECT_DOUBLE_EQ(ned[block], enu[block + 1]);
       EXPECT_DOUBLE_EQ(ned[block + 1], enu[block]);

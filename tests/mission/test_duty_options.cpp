@@ -23,7 +23,8 @@ TEST(DutyOptions, TimesUpToADayAndCountsInRange) {
        "duty: flight_min must be a finite number of minutes in [0, 1440] (a day), got 1e+308"},
       {[](DutyOptions& d) { d.flight_min = -1.0; }, "duty: flight_min must be a finite number of minutes in [0, 1440]"},
       {[](DutyOptions& d) { d.idle_min = std::numeric_limits<double>::infinity(); }, "duty: idle_min must be"},
-      {[](DutyOptions& d) { d.charge_max_min = 0.0; }, "duty: charge_max_min must be a finite number of minutes in (0, 1440]"},
+      {[](DutyOptions& d) { d.charge_max_min = 0.0; },
+       "duty: charge_max_min must be a finite number of minutes in (0, 1440]"},
       {[](DutyOptions& d) { d.missions_per_day = 0; }, "duty: missions_per_day must be in [1, 1000], got 0"},
       {[](DutyOptions& d) { d.days = 3651; }, "duty: days must be in [1, 3650], got 3651"},
   };

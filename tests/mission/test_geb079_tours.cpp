@@ -44,12 +44,14 @@ double median(std::vector<double> values) {
 }
 
 // The standoff kept along a path, sampled every 5 cm.
-std::vector<double> standoffsAlong(const environment::Environment& environment, const std::vector<Eigen::Vector3d>& path) {
+std::vector<double> standoffsAlong(const environment::Environment& environment,
+                                   const std::vector<Eigen::Vector3d>& path) {
   std::vector<double> standoffs;
   for (std::size_t k = 1; k < path.size(); ++k) {
     const int steps = std::max(1, static_cast<int>((path[k] - path[k - 1]).norm() / 0.05));
     for (int s = 0; s < steps; ++s)
-      standoffs.push_back(planner::standoffAt(environment, path[k - 1] + (path[k] - path[k - 1]) * (double(s) / steps)));
+      standoffs.push_back(
+          planner::standoffAt(environment, path[k - 1] + (path[k] - path[k - 1]) * (double(s) / steps)));
   }
   return standoffs;
 }
@@ -155,7 +157,8 @@ void corridorTourInBothModes(environment::UnknownPolicy policy) {
     const TourStop &hug = ceiling.stops[k], &keep = free.stops[k];
     const std::string& name = keep.target.name;
     // The viewpoint's standoff, as reported, is what the map says there.
-    EXPECT_NEAR(keep.viewpoint.standoff_m, planner::standoffAt(context->environment(), keep.viewpoint.position_m), 1e-9);
+    EXPECT_NEAR(keep.viewpoint.standoff_m, planner::standoffAt(context->environment(), keep.viewpoint.position_m),
+                1e-9);
     // Free mode keeps what fits within the target's own 0.3-1.5 m range (at least 0.1 m, most of
     // the corridor's ~0.9 m under fill; farther than 1.5 m, which free mode no longer goes, it
     // kept 0.6 and 0.15 m), ceiling mode comes close to a surface; no viewpoint in the corridor
@@ -170,9 +173,7 @@ void corridorTourInBothModes(environment::UnknownPolicy policy) {
   }
 }
 
-TEST(Geb079Fill, TheCorridorTourSucceedsInBothModes) {
-  corridorTourInBothModes(environment::UnknownPolicy::Fill);
-}
+TEST(Geb079Fill, TheCorridorTourSucceedsInBothModes) { corridorTourInBothModes(environment::UnknownPolicy::Fill); }
 
 TEST(Geb079Occupied, TheCorridorTourSucceedsInBothModes) {
   corridorTourInBothModes(environment::UnknownPolicy::Occupied);
@@ -180,8 +181,8 @@ TEST(Geb079Occupied, TheCorridorTourSucceedsInBothModes) {
 
 TEST(Geb079Cli, TourTakesTheUnknownFlagsAndSaysWhereFreeModeNarrowed) {
   const auto dir = testing::scratchDirectory("geb079_tour");
-  const auto run = testing::runCeilplan("tour --mission " + kMission.string() + " --mode free --no-export --unknown occupied --out " +
-                                        (dir / "out").string());
+  const auto run = testing::runCeilplan("tour --mission " + kMission.string() +
+                                        " --mode free --no-export --unknown occupied --out " + (dir / "out").string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("unknown space: occupied"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("  standoff 1 m: kept over "), std::string::npos) << run.out;
@@ -202,9 +203,9 @@ TEST(Geb079Cli, TourTakesTheUnknownFlagsAndSaysWhereFreeModeNarrowed) {
   for (const nlohmann::json& target : tour["targets"]) EXPECT_LT(target["viewpoint_standoff_m"].get<double>(), 1.0);
 
   // And a compare under the fill flags, with the free plan's narrowing in its outputs.
-  const auto compare = testing::runCeilplan(
-      "compare --map " + corridorMission().map_file.string() + " --unknown fill --unknown-fill-max-m 1.5 --start -4.5,0,0.6 " +
-      "--goal 7.5,0,2.3 --planner roadmap --out " + (dir / "compare").string());
+  const auto compare = testing::runCeilplan("compare --map " + corridorMission().map_file.string() +
+                                            " --unknown fill --unknown-fill-max-m 1.5 --start -4.5,0,0.6 " +
+                                            "--goal 7.5,0,2.3 --planner roadmap --out " + (dir / "compare").string());
   ASSERT_EQ(compare.exit_code, 0) << compare.err;
   EXPECT_NE(compare.out.find("unknown space: fill (pockets up to 1.5 m)"), std::string::npos) << compare.out;
   EXPECT_NE(compare.out.find("free mode's standoff 1 m: kept over "), std::string::npos) << compare.out;
@@ -222,26 +223,29 @@ TEST(Geb079Cli, TourTakesTheUnknownFlagsAndSaysWhereFreeModeNarrowed) {
 TEST(Geb079Cli, ACeilingCoverageTourCoversTheCorridorAndNeverCrashes) {
   const auto dir = testing::scratchDirectory("geb079_coverage");
   const std::filesystem::path mission = dir / "geb079_ceiling.yaml";
-  std::ofstream(mission) << "map: " << corridorMission().map_file.string() << "\n"
-                         << "vehicle: " << CEILPLAN_SOURCE_DIR << "/maps/vehicles/quad.yaml\n"
-                         << "battery: {capacity_ah: 5.2, start_soc: 0.95, reserve_soc: 0.25, charge_current_a: 10.4}\n"
-                         << "home: [-4.5, 0.0, 0.6]\nseed: 1\nunknown: {policy: fill, fill_max_m: 2.0}\n"
-                         << "speeds: {cruise_m_s: 1.0, inspection_m_s: 0.5, climb_m_s: 0.8, descent_m_s: 0.6}\n"
-                         << "camera: {preset: zenmuse_h20_wide, gimbal_pitch_deg: [-30, 90], mount_offset_m: [0, 0, 0.05]}\n"
-                         << "surfaces:\n  - {name: corridor_ceiling, box: {min: [0.0, -1.5, 2.3], max: [8.0, 1.5, 2.9]}, "
-                            "faces: [down], gsd_mm_px: 1.0, overlap: {front: 70, side: 60}, max_incidence_deg: 45}\n";
-  const auto ceiling = testing::runCeilplan("tour --mission " + mission.string() + " --mode ceiling --no-export --out " +
-                                            (dir / "ceiling").string());
+  std::ofstream(mission)
+      << "map: " << corridorMission().map_file.string() << "\n"
+      << "vehicle: " << CEILPLAN_SOURCE_DIR << "/maps/vehicles/quad.yaml\n"
+      << "battery: {capacity_ah: 5.2, start_soc: 0.95, reserve_soc: 0.25, charge_current_a: 10.4}\n"
+      << "home: [-4.5, 0.0, 0.6]\nseed: 1\nunknown: {policy: fill, fill_max_m: 2.0}\n"
+      << "speeds: {cruise_m_s: 1.0, inspection_m_s: 0.5, climb_m_s: 0.8, descent_m_s: 0.6}\n"
+      << "camera: {preset: zenmuse_h20_wide, gimbal_pitch_deg: [-30, 90], mount_offset_m: [0, 0, 0.05]}\n"
+      << "surfaces:\n  - {name: corridor_ceiling, box: {min: [0.0, -1.5, 2.3], max: [8.0, 1.5, 2.9]}, "
+         "faces: [down], gsd_mm_px: 1.0, overlap: {front: 70, side: 60}, max_incidence_deg: 45}\n";
+  const auto ceiling = testing::runCeilplan("tour --mission " + mission.string() +
+                                            " --mode ceiling --no-export --out " + (dir / "ceiling").string());
   ASSERT_EQ(ceiling.exit_code, 0) << ceiling.err;
   const nlohmann::json coverage = nlohmann::json::parse(testing::readWholeFile(dir / "ceiling/coverage.json"));
   const nlohmann::json& region = coverage["regions"].at(0);
   EXPECT_GT(region["reachable_area_m2"].get<double>(), 0.5 * region["area_m2"].get<double>());
   EXPECT_GE(region["covered_reachable_pct"].get<double>(), 99.0);
 
-  const auto free = testing::runCeilplan("tour --mission " + mission.string() +
-                                         " --mode free --unknown occupied --no-export --out " + (dir / "free").string());
+  const auto free =
+      testing::runCeilplan("tour --mission " + mission.string() + " --mode free --unknown occupied --no-export --out " +
+                           (dir / "free").string());
   ASSERT_EQ(free.exit_code, 0) << free.err;
-  EXPECT_NE(free.out.find("stops chosen again among the places a route from home reaches"), std::string::npos) << free.out;
+  EXPECT_NE(free.out.find("stops chosen again among the places a route from home reaches"), std::string::npos)
+      << free.out;
   EXPECT_TRUE(nlohmann::json::parse(testing::readWholeFile(dir / "free/tour.json"))["stops_rechosen"].get<bool>());
   EXPECT_FALSE(nlohmann::json::parse(testing::readWholeFile(dir / "ceiling/tour.json"))["stops_rechosen"].get<bool>());
   const nlohmann::json free_coverage = nlohmann::json::parse(testing::readWholeFile(dir / "free/coverage.json"));

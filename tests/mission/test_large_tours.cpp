@@ -3,10 +3,10 @@
 // sortie split over split points (every sortie starts at one, lands above the reserve, and with
 // every position allowed it is the exact split under a charge-proportional model).
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/mission/pair_table.hpp"
 #include "ceilplan/mission/sortie_plan.hpp"
 #include "ceilplan/mission/tour_order.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -92,8 +92,8 @@ TEST(LargeTours, NeighbourListSearchImprovesOnItsStartAndBoundsOnlySaveWork) {
     // The weakest bound (0) and a tight one (the straight line, which every leg costs at least).
     const TourOrder weak = neighbourListTour(targets, loose.cost(), [](int, int) { return 0.0; }, neighbours, {start});
     const TourOrder strong = neighbourListTour(
-        targets, tight.cost(), [&](int from, int to) { return (tight.places[to] - tight.places[from]).norm(); }, neighbours,
-        {start});
+        targets, tight.cost(), [&](int from, int to) { return (tight.places[to] - tight.places[from]).norm(); },
+        neighbours, {start});
     EXPECT_EQ(weak.targets, strong.targets) << "seed " << seed;
     EXPECT_LT(tight.exact_calls, loose.exact_calls) << "seed " << seed;
     std::vector<int> sorted = strong.targets;
@@ -107,10 +107,12 @@ TEST(LargeTours, NeighbourListSearchImprovesOnItsStartAndBoundsOnlySaveWork) {
     EXPECT_LT(strong.cost, 1.08 * heuristicTour(matrix, seed).cost) << "seed " << seed;
     EXPECT_EQ(strong.method, "neighbour-list 2-opt+or-opt");
     // Kicks only ever keep a cheaper order, and are reproducible from the seed.
-    const TourOrder kicked = neighbourListTour(targets, tight.cost(), [](int, int) { return 0.0; }, neighbours, {start}, 30, 9);
+    const TourOrder kicked = neighbourListTour(
+        targets, tight.cost(), [](int, int) { return 0.0; }, neighbours, {start}, 30, 9);
     EXPECT_LE(kicked.cost, strong.cost + 1e-9);
-    EXPECT_EQ(kicked.targets,
-              neighbourListTour(targets, tight.cost(), [](int, int) { return 0.0; }, neighbours, {start}, 30, 9).targets);
+    EXPECT_EQ(kicked.targets, neighbourListTour(
+                                  targets, tight.cost(), [](int, int) { return 0.0; }, neighbours, {start}, 30, 9)
+                                  .targets);
   }
 }
 

@@ -2,8 +2,8 @@
 // ageing model (checked against every possible split), convex DoD stress buys extra sorties
 // that a charge-proportional model would not, and every split says why.
 
-#include "ceilplan/mission/sortie_plan.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/mission/sortie_plan.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@ namespace {
 // `takeoff_ah` when it leaves home, and lasts a second per metre. Each target dwells `dwell_s`
 // at `dwell_a`.
 TourCosts lineTour(const std::vector<double>& positions, double ah_per_m, double dwell_s, double dwell_a,
-                  double takeoff_ah = 0.0) {
+                   double takeoff_ah = 0.0) {
   TourCosts tour;
   std::vector<double> x = {0.0};
   x.insert(x.end(), positions.begin(), positions.end());
@@ -82,7 +82,8 @@ TEST(SortiePlan, TheReserveForcesASplitAndTheReasonSaysSo) {
   const SortiePlan plan = planSorties(tour, inOrder(4), kBattery, model("fec"));
   ASSERT_EQ(plan.sorties.size(), 2u);
   for (const Sortie& sortie : plan.sorties) EXPECT_GE(sortie.lowest_soc, 0.25);
-  EXPECT_NE(plan.sorties[0].reason.find("split after 't2': one sortie on through 't4' would land at"), std::string::npos)
+  EXPECT_NE(plan.sorties[0].reason.find("split after 't2': one sortie on through 't4' would land at"),
+            std::string::npos)
       << plan.sorties[0].reason;
   EXPECT_NE(plan.sorties[0].reason.find("below the 25 % reserve"), std::string::npos) << plan.sorties[0].reason;
   EXPECT_NE(plan.sorties[1].reason.find("last sortie"), std::string::npos);
@@ -102,8 +103,7 @@ TEST(SortiePlan, ConvexDodStressChoosesMoreSortiesUnderWoehlerButNotUnderFec) {
   EXPECT_GT(woehler.charge_ah, fec.charge_ah);
   EXPECT_NE(woehler.sorties[0].reason.find("two sorties of"), std::string::npos) << woehler.sorties[0].reason;
   EXPECT_NE(woehler.sorties[0].reason.find("less than one of"), std::string::npos) << woehler.sorties[0].reason;
-  EXPECT_NE(woehler.sorties[0].reason.find("under woehler, for 0.0"), std::string::npos)
-      << woehler.sorties[0].reason;
+  EXPECT_NE(woehler.sorties[0].reason.find("under woehler, for 0.0"), std::string::npos) << woehler.sorties[0].reason;
   // Each plan is the better one under its own model.
   EXPECT_LT(planWear(woehler, "woehler").cycle_wear, planWear(fec, "woehler").cycle_wear);
   EXPECT_LT(planWear(fec, "fec").cycle_wear, planWear(woehler, "fec").cycle_wear);
@@ -236,8 +236,8 @@ TEST(SortiePlan, RefusesAReserveAtOrAboveTheStartSoc) {
 
 TEST(SortiePlan, RefusesBadInput) {
   TourCosts tour = lineTour({5, 10}, 0.01, 10, 10);
-  EXPECT_THROW(planSorties(tour, {1}, kBattery), ceilplan::InputError);      // a target missing
-  EXPECT_THROW(planSorties(tour, {1, 1}, kBattery), ceilplan::InputError);   // a target twice
+  EXPECT_THROW(planSorties(tour, {1}, kBattery), ceilplan::InputError);     // a target missing
+  EXPECT_THROW(planSorties(tour, {1, 1}, kBattery), ceilplan::InputError);  // a target twice
   EXPECT_THROW(planSorties(tour, {1, 2}, kBattery, model("nope")), ceilplan::InputError);
   TourCosts nan = tour;
   nan.legs[1][2].charge_ah = std::nan("");

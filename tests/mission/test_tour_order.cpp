@@ -1,8 +1,8 @@
 // Tour ordering: Held-Karp is exact (checked against brute force), the heuristic stays within
 // 2 % of it, and both price asymmetric costs (a reversed stretch costs what it costs).
 
-#include "ceilplan/mission/tour_order.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/mission/tour_order.hpp"
 #include "test_tour_random_costs.hpp"
 
 #include <gtest/gtest.h>
@@ -69,10 +69,7 @@ TEST(TourOrder, AsymmetricCostsPickTheCheapDirection) {
   // Three targets on a line; going out along it is cheap, coming back along it is dear. The best
   // tour must go out through 1, 2, 3 and jump home, never the reverse.
   CostMatrix costs(4, 4);
-  costs << 0, 1, 2, 3,
-           10, 0, 1, 2,
-           10, 10, 0, 1,
-           1, 10, 10, 0;
+  costs << 0, 1, 2, 3, 10, 0, 1, 2, 10, 10, 0, 1, 1, 10, 10, 0;
   const std::vector<int> out = {1, 2, 3};
   EXPECT_DOUBLE_EQ(heldKarpTour(costs).cost, 4.0);
   EXPECT_EQ(heldKarpTour(costs).targets, out);

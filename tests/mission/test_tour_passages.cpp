@@ -90,8 +90,8 @@ TEST_P(TourThroughADoorway, TheDefaultLegPlannerFindsItInBothModes) {
       EXPECT_FALSE(context.baseRules().checkPathDensely(path)) << name;
       if ((path.front().x() < 0.1) != (path.back().x() < 0.1)) {
         ++crossings;
-        EXPECT_TRUE(crossesOnlyThroughTheDoorway(path, width_m)) << name << ": " << tour.names[leg.from] << " -> "
-                                                                   << tour.names[leg.to];
+        EXPECT_TRUE(crossesOnlyThroughTheDoorway(path, width_m))
+            << name << ": " << tour.names[leg.from] << " -> " << tour.names[leg.to];
       }
     }
     EXPECT_EQ(crossings, 2) << name;  // there and back

@@ -52,7 +52,7 @@ TEST(ReachableViewpoints, TheHallIsReachedAndTheClosetBehindTheSlotIsNot) {
   const Eigen::Vector3d in_the_closet(1.6, 0.0, 1.5);
   ASSERT_TRUE(context.baseRules().isStateValid(in_the_closet));  // the closet holds the vehicle
   EXPECT_FALSE(space.reaches(in_the_closet));
-  EXPECT_FALSE(space.reaches({0.9, 0.0, 1.5}));  // in the slot: not a valid state
+  EXPECT_FALSE(space.reaches({0.9, 0.0, 1.5}));   // in the slot: not a valid state
   EXPECT_FALSE(space.reaches({10.0, 0.0, 1.5}));  // outside the map
 }
 

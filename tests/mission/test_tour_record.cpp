@@ -30,8 +30,8 @@ const std::filesystem::path kBridge = std::filesystem::path(CEILPLAN_SOURCE_DIR)
 
 std::filesystem::path scratch(const std::string& name) {
   // One directory per process: ctest runs this suite's tests in parallel processes.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("ceilplan_tour_record_" + std::to_string(::getpid()) + "_" + name);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("ceilplan_tour_record_" + std::to_string(::getpid()) + "_" + name);
   std::filesystem::remove_all(dir);
   return dir;
 }

@@ -23,8 +23,8 @@ SortieRoute lap() {
   SortieRoute route;
   route.home_m = {0, 0, 0.5};
   route.cruise_speed_m_s = 2.0;
-  route.waypoints = {{{0, 0, 3}},           {{10, 0, 3}},     {{20, 2, 3}},          {{30, 2, 5}},
-                     {{30, 12, 5}, 5.0, 90.0}, {{20, 12, 5}}, {{0, 0, 3}}, {{0, 0, 0.5}}};
+  route.waypoints = {{{0, 0, 3}},   {{10, 0, 3}}, {{20, 2, 3}}, {{30, 2, 5}}, {{30, 12, 5}, 5.0, 90.0},
+                     {{20, 12, 5}}, {{0, 0, 3}},  {{0, 0, 0.5}}};
   route.waypoints[2].speed_m_s = 3.0;
   return route;
 }
@@ -104,7 +104,8 @@ TEST(Trajectory, BlendsGentleCornersWithinTheToleranceAndStopsAtSharpOnes) {
   EXPECT_LT(blended.duration_s(), stopping.duration_s());
   EXPECT_LE(blended.max_corner_deviation_m, 0.05 + 1e-12);
   double furthest = 0;
-  for (const auto& p : blended.setpoints) furthest = std::max(furthest, distanceToPolyline(p.position_m, polyline(route)));
+  for (const auto& p : blended.setpoints)
+    furthest = std::max(furthest, distanceToPolyline(p.position_m, polyline(route)));
   EXPECT_LE(furthest, 0.05 + 1e-9);
   EXPECT_GT(furthest, 0.001);  // it did cut a corner
   // The right angle at (30, 2, 5) and the dwell at (30, 12, 5) are stops.

@@ -6,8 +6,8 @@
 #include "ceilplan/mission/viewpoint.hpp"
 
 #include "analytic_maps.hpp"
-#include "ceilplan/energy/paper_quad.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/energy/paper_quad.hpp"
 #include "ceilplan/planner/standoff.hpp"
 
 #include <gtest/gtest.h>
@@ -141,9 +141,9 @@ TEST(Viewpoint, BridgeTargetsGetViewpointsAndDeckBaysAreHugged) {
       environment::OccupancyMap::load(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/bridge.bt");
   const Environment environment(map, testing::quad());
   const std::vector<InspectionTarget> targets = {
-      {"deck_bay_06", {6.0, 0.0, 6.0}, 0.3, 1.5, 20},       {"deck_bay_30", {30.0, 0.0, 6.0}, 0.3, 1.5, 20},
-      {"girder_2_at_10", {10.0, -1.4, 5.2}, 0.3, 1.5, 15},  {"cross_frame_08", {8.0, 0.0, 5.4}, 0.3, 1.5, 10},
-      {"pier_cap_16", {16.0, 0.0, 4.2}, 0.3, 1.5, 30},      {"girder_1_at_42", {42.0, -4.2, 5.0}, 0.3, 1.5, 15}};
+      {"deck_bay_06", {6.0, 0.0, 6.0}, 0.3, 1.5, 20},      {"deck_bay_30", {30.0, 0.0, 6.0}, 0.3, 1.5, 20},
+      {"girder_2_at_10", {10.0, -1.4, 5.2}, 0.3, 1.5, 15}, {"cross_frame_08", {8.0, 0.0, 5.4}, 0.3, 1.5, 10},
+      {"pier_cap_16", {16.0, 0.0, 4.2}, 0.3, 1.5, 30},     {"girder_1_at_42", {42.0, -4.2, 5.0}, 0.3, 1.5, 15}};
   for (const InspectionTarget& target : targets) {
     const Viewpoint viewpoint = chooseViewpoint(target, environment, paperQuad());
     expectUsable(viewpoint, target, environment);

@@ -41,8 +41,7 @@ inline FiniteDifferenceMaxima finiteDifferenceMaxima(const std::vector<mission::
   for (std::size_t k = 2; k < p.size(); ++k)
     m.acceleration_m_s2 = std::max(m.acceleration_m_s2, ((p[k] - 2.0 * p[k - 1] + p[k - 2]) / (dt * dt)).norm());
   for (std::size_t k = 3; k < p.size(); ++k)
-    m.jerk_m_s3 =
-        std::max(m.jerk_m_s3, ((p[k] - 3.0 * p[k - 1] + 3.0 * p[k - 2] - p[k - 3]) / (dt * dt * dt)).norm());
+    m.jerk_m_s3 = std::max(m.jerk_m_s3, ((p[k] - 3.0 * p[k - 1] + 3.0 * p[k - 2] - p[k - 3]) / (dt * dt * dt)).norm());
   return m;
 }
 

@@ -3,10 +3,10 @@
 #include "planner_fixtures.hpp"
 
 #include "ceilplan/battery/ageing_factory.hpp"
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/ageing_objective.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,8 @@ battery::AgeingModelOptions modelOptions() {
 
 TEST(AgeingRates, EveryModelGivesAFiniteNonNegativeLinearisation) {
   for (const std::string& name : battery::ageingModelNames()) {
-    const planner::AgeingRates rates = planner::measureAgeingRates(name, modelOptions(), battery::Pack{}, 0.95, 0.3, 9.0);
+    const planner::AgeingRates rates =
+        planner::measureAgeingRates(name, modelOptions(), battery::Pack{}, 0.95, 0.3, 9.0);
     EXPECT_TRUE(std::isfinite(rates.loss_per_ah) && rates.loss_per_ah >= 0.0) << name;
     EXPECT_TRUE(std::isfinite(rates.loss_per_s) && rates.loss_per_s >= 0.0) << name;
     EXPECT_GT(rates.loss_per_ah, 0.0) << name << ": cycling must wear the pack";
@@ -38,8 +39,10 @@ TEST(AgeingRates, DeeperCyclesWearMorePerAmpereHourUnderWoehler) {
 }
 
 TEST(AgeingRates, RefusesADepthThePackCannotGive) {
-  EXPECT_THROW(planner::measureAgeingRates("xu", modelOptions(), battery::Pack{}, 0.95, 0.0, 9.0), ceilplan::InputError);
-  EXPECT_THROW(planner::measureAgeingRates("xu", modelOptions(), battery::Pack{}, 0.95, 0.97, 9.0), ceilplan::InputError);
+  EXPECT_THROW(planner::measureAgeingRates("xu", modelOptions(), battery::Pack{}, 0.95, 0.0, 9.0),
+               ceilplan::InputError);
+  EXPECT_THROW(planner::measureAgeingRates("xu", modelOptions(), battery::Pack{}, 0.95, 0.97, 9.0),
+               ceilplan::InputError);
 }
 
 TEST(AgeingObjective, CostIsTheLinearisedWearOfTheMotionsCharge) {

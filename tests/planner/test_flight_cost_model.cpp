@@ -37,7 +37,8 @@ TEST(FlightCostModel, BothWaysAtOnceIsEachWayOnItsOwn) {
   const FlightCostModel model(scene.environment, scene.energy, CostModelOptions{});
   // Climbing towards the ceiling: the two directions differ in speed and current.
   const Eigen::Vector3d a(1.0, 0.3, 1.2), b(2.3, -0.4, 3.3);
-  const auto [forth, back] = model.integrateBothWays(a, b, [&](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
+  const auto [forth, back] =
+      model.integrateBothWays(a, b, [&](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
   const planner::MotionTotals up = model.integrate(a, b), down = model.integrate(b, a);
   EXPECT_NE(up.charge_ah, down.charge_ah);
   EXPECT_NEAR(forth.charge_ah, up.charge_ah, 1e-12 * up.charge_ah);
@@ -78,7 +79,8 @@ TEST(FlightCostModel, FreeModeIgnoresTheCeilingInTheCurrentButNotInTheSpeedRule)
   energy::FlightCondition slow;
   slow.speed_m_s = options.speeds.near_ceiling_m_s;
   slow.soc = options.planning_soc;
-  EXPECT_NEAR(hugging.charge_ah, scene.energy.currentA(energy::kNoSurface, 0.0, slow) * hugging.duration_s / 3600.0, 1e-9);
+  EXPECT_NEAR(hugging.charge_ah, scene.energy.currentA(energy::kNoSurface, 0.0, slow) * hugging.duration_s / 3600.0,
+              1e-9);
 }
 
 TEST(FlightCostModel, SkippingFreeAirQueriesGivesTheExactConditions) {

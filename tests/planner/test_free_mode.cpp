@@ -46,8 +46,8 @@ struct FreeModeScene : PlannerScene {
 };
 
 // The least standoff over the samples of a path whose x lies in [x_lo, x_hi].
-double leastStandoff(const environment::Environment& environment, const std::vector<Eigen::Vector3d>& path,
-                     double x_lo, double x_hi) {
+double leastStandoff(const environment::Environment& environment, const std::vector<Eigen::Vector3d>& path, double x_lo,
+                     double x_hi) {
   double least = std::numeric_limits<double>::infinity();
   for (std::size_t k = 1; k < path.size(); ++k)
     for (int step = 0; step <= 50; ++step) {

@@ -21,7 +21,8 @@ double bruteForceCost(const planner::SafetyRules& rules, const planner::FlightOb
   for (int c = 0; c * stride < frame.size()[2]; ++c)
     for (int b = 0; b * stride < frame.size()[1]; ++b)
       for (int a = 0; a * stride < frame.size()[0]; ++a) {
-        const Eigen::Vector3d p(frame.centreOf(0, a * stride), frame.centreOf(1, b * stride), frame.centreOf(2, c * stride));
+        const Eigen::Vector3d p(frame.centreOf(0, a * stride), frame.centreOf(1, b * stride),
+                                frame.centreOf(2, c * stride));
         if (rules.isStateValid(p)) nodes.push_back(p);
       }
   const double spacing = stride * frame.resolution_m();

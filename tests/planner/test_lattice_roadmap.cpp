@@ -5,13 +5,13 @@
 
 #include "planner_fixtures.hpp"
 
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/parallel_for.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/lattice_planner.hpp"
 #include "ceilplan/planner/lattice_roadmap.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 #include "ceilplan/planner/standoff.hpp"
-#include "ceilplan/core/parallel_for.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -149,11 +149,12 @@ TEST(LatticeRoadmap, RefusesBadOptionsAndPlacesOutsideTheMap) {
 // With a 1 m standoff preferred, the route from the first to the last backs off the ceiling and
 // passes the middle place with the standoff kept.
 TEST(LatticeRoadmap, InFreeModeARouteKeepsTheStandoffPastAnotherPlace) {
-  const environment::OccupancyMap map = analyticMap({-0.7, -2.7, 0}, {12.7, 2.7, 4.2}, 0.1, [](const Eigen::Vector3d& c) {
-    if (c.z() < 0.2 || std::abs(c.y()) > 2.5 || c.x() < -0.5 || c.x() > 12.5) return CellState::Occupied;
-    if (c.z() < 3.5) return CellState::Free;
-    return c.z() < 3.9 ? CellState::Occupied : CellState::Unknown;
-  });
+  const environment::OccupancyMap map =
+      analyticMap({-0.7, -2.7, 0}, {12.7, 2.7, 4.2}, 0.1, [](const Eigen::Vector3d& c) {
+        if (c.z() < 0.2 || std::abs(c.y()) > 2.5 || c.x() < -0.5 || c.x() > 12.5) return CellState::Occupied;
+        if (c.z() < 3.5) return CellState::Free;
+        return c.z() < 3.9 ? CellState::Occupied : CellState::Unknown;
+      });
   const environment::Environment environment(map, quad());
   const energy::EnergyModel energy = paperEnergy();
   const std::vector<Eigen::Vector3d> places{{0.5, 0.0, 3.35}, {6.0, 0.0, 3.35}, {11.5, 0.0, 3.35}};

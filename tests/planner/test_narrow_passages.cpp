@@ -123,8 +123,7 @@ TEST_P(DoorwayOneVoxelWiderThanTheVehicle, TheRoadmapFindsTheWayThroughForEveryP
       if (to == from) continue;
       ASSERT_TRUE(routes[to]) << from << " -> " << to;
       EXPECT_FALSE(scene.rules.checkPathDensely(routes[to]->waypoints)) << from << " -> " << to;
-      EXPECT_NEAR(scene.planner.objective().pathCost(routes[to]->waypoints), routes[to]->cost,
-                  1e-4 * routes[to]->cost);
+      EXPECT_NEAR(scene.planner.objective().pathCost(routes[to]->waypoints), routes[to]->cost, 1e-4 * routes[to]->cost);
       EXPECT_FALSE(roadmap.blockage(from, to));
     }
     const int across = from % 2 == 0 ? 1 : 0;  // places 0 and 2 are left of the wall, 1 and 3 right
@@ -179,7 +178,9 @@ environment::OccupancyMap hallUnderALoft() {
 TEST(WideSearch, ThePlannersFindTheOnlyShaftPastTheUnscannedHolesNearerTheirWay) {
   const CeilingScene scene(hallUnderALoft());
   const Eigen::Vector3d hall(-1.0, -1.0, 1.2), loft(-1.0, -1.0, 3.4);
-  const auto inTheShaft = [](const Eigen::Vector3d& p) { return p.x() > 1.7 && p.x() < 2.7 && p.y() > 1.7 && p.y() < 2.7; };
+  const auto inTheShaft = [](const Eigen::Vector3d& p) {
+    return p.x() > 1.7 && p.x() < 2.7 && p.y() > 1.7 && p.y() < 2.7;
+  };
   const environment::GridFrame& frame = scene.environment.grid().frame();
   for (int k = 0; k < frame.size()[2]; k += 4)
     for (int j = 0; j < frame.size()[1]; j += 4)
@@ -273,7 +274,8 @@ TEST(NoPath, TheErrorNamesTheGapTooNarrowForTheVehicle) {
   EXPECT_NEAR(blockage.needed_width_m, kVehicleWidthM, 1e-9);
 
   const std::string message = noPathMessage(scene, planner::referencePlannerName());
-  EXPECT_NE(message.find("by the vehicle's clearance: the opening there is 0.80 m wide and 2.20 m high"), std::string::npos)
+  EXPECT_NE(message.find("by the vehicle's clearance: the opening there is 0.80 m wide and 2.20 m high"),
+            std::string::npos)
       << message;
   EXPECT_NE(message.find("the vehicle needs 0.92 x 0.30 m with its margins"), std::string::npos) << message;
   EXPECT_EQ(message.find("stride"), std::string::npos) << message;

@@ -3,8 +3,8 @@
 #include "planner_fixtures.hpp"
 
 #include "ceilplan/battery/simulation.hpp"
-#include "ceilplan/planner/path_evaluation.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/planner/path_evaluation.hpp"
 
 #include <gtest/gtest.h>
 

@@ -22,14 +22,14 @@ const std::string kUnderRoof = " --start 7.5,6,7.9 --goal 12.5,10,7.9";
 
 TEST(PlanCli, WritesThePlanAndThePathAndEvaluateAgrees) {
   const auto dir = scratchDirectory("plan_warehouse");
-  const CommandResult plan =
-      runCeilplan("plan" + kWarehouse + kUnderRoof + " --planner BITstar --time-limit-s 1 --seed 3 --out " + dir.string());
+  const CommandResult plan = runCeilplan("plan" + kWarehouse + kUnderRoof +
+                                         " --planner BITstar --time-limit-s 1 --seed 3 --out " + dir.string());
   ASSERT_EQ(plan.exit_code, 0) << plan.err;
   EXPECT_NE(plan.out.find("seed 3"), std::string::npos);
   const nlohmann::json json = nlohmann::json::parse(readWholeFile(dir / "plan.json"));
-  for (const char* key : {"waypoints", "length_m", "duration_s", "charge_ah", "energy_wh", "fec", "mean_current_a",
-                          "min_soc", "min_clearance_m", "min_ceiling_gap_m", "time_under_ceiling_s", "planner", "seed",
-                          "objective", "cost"})
+  for (const char* key :
+       {"waypoints", "length_m", "duration_s", "charge_ah", "energy_wh", "fec", "mean_current_a", "min_soc",
+        "min_clearance_m", "min_ceiling_gap_m", "time_under_ceiling_s", "planner", "seed", "objective", "cost"})
     EXPECT_TRUE(json.contains(key)) << key;
   EXPECT_EQ(json["seed"], 3);
   EXPECT_EQ(json["objective"], "charge");
@@ -44,14 +44,15 @@ TEST(PlanCli, WritesThePlanAndThePathAndEvaluateAgrees) {
   const std::string header = csv.substr(comment.size() + 1, csv.find('\n', comment.size() + 1) - comment.size() - 1);
   EXPECT_EQ(header, "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,ground_gap_m,assumed_free");
 
-  const CommandResult evaluate =
-      runCeilplan("evaluate" + kWarehouse + " --path " + (dir / "path.csv").string() + " --json " + (dir / "e.json").string());
+  const CommandResult evaluate = runCeilplan("evaluate" + kWarehouse + " --path " + (dir / "path.csv").string() +
+                                             " --json " + (dir / "e.json").string());
   ASSERT_EQ(evaluate.exit_code, 0) << evaluate.err;
   const nlohmann::json figures = nlohmann::json::parse(readWholeFile(dir / "e.json"));
   EXPECT_TRUE(figures["valid"].get<bool>());
   // path.csv repeats each waypoint's samples: the same route, so the same charge within the
   // change of integration points.
-  EXPECT_NEAR(figures["charge_ah"].get<double>(), json["charge_ah"].get<double>(), 0.01 * json["charge_ah"].get<double>());
+  EXPECT_NEAR(figures["charge_ah"].get<double>(), json["charge_ah"].get<double>(),
+              0.01 * json["charge_ah"].get<double>());
 }
 
 TEST(PlanCli, EvaluateReadsThePathOfAPlanWithNothingOverhead) {
@@ -77,14 +78,15 @@ TEST(PlanCli, EvaluateReadsThePathOfAPlanWithNothingOverhead) {
     EXPECT_EQ(fields[5], "") << line;  // ceiling_gap_m: no surface
   }
   EXPECT_GE(rows, 2);
-  const CommandResult evaluate =
-      runCeilplan("evaluate" + open + " --path " + (dir / "path.csv").string() + " --json " + (dir / "e.json").string());
+  const CommandResult evaluate = runCeilplan("evaluate" + open + " --path " + (dir / "path.csv").string() + " --json " +
+                                             (dir / "e.json").string());
   ASSERT_EQ(evaluate.exit_code, 0) << evaluate.err;
   const nlohmann::json planned = nlohmann::json::parse(readWholeFile(dir / "plan.json"));
   const nlohmann::json figures = nlohmann::json::parse(readWholeFile(dir / "e.json"));
   EXPECT_TRUE(figures["valid"].get<bool>());
   EXPECT_TRUE(figures["min_ceiling_gap_m"].is_null());
-  EXPECT_NEAR(figures["charge_ah"].get<double>(), planned["charge_ah"].get<double>(), 0.01 * planned["charge_ah"].get<double>());
+  EXPECT_NEAR(figures["charge_ah"].get<double>(), planned["charge_ah"].get<double>(),
+              0.01 * planned["charge_ah"].get<double>());
 }
 
 TEST(PlanCli, EvaluateSaysWhereAPathIsUnsafe) {
@@ -135,9 +137,9 @@ TEST(PlanCli, NoPathHasItsOwnExitCode) {
         return CellState::Free;
       });
   ASSERT_TRUE(walled.tree().writeBinaryConst((dir / "walled.bt").string()));
-  const CommandResult result = runCeilplan("plan --map " + (dir / "walled.bt").string() + kVehicle +
-                                           " --start -0.6,0,1 --goal 0.6,0,1 --planner lattice --out " +
-                                           (dir / "out").string());
+  const CommandResult result =
+      runCeilplan("plan --map " + (dir / "walled.bt").string() + kVehicle +
+                  " --start -0.6,0,1 --goal 0.6,0,1 --planner lattice --out " + (dir / "out").string());
   EXPECT_EQ(result.exit_code, 3) << result.err;
   EXPECT_NE(result.err.find("no path"), std::string::npos) << result.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
@@ -146,16 +148,16 @@ TEST(PlanCli, NoPathHasItsOwnExitCode) {
 TEST(CompareCli, CeilingModeBeatsFreeModeUnderAFlatCeilingAndProjectsTheDuty) {
   const auto dir = scratchDirectory("compare_corridor");
   ASSERT_TRUE(corridor(flatCeiling).tree().writeBinaryConst((dir / "corridor.bt").string()));
-  const CommandResult result = runCeilplan("compare --map " + (dir / "corridor.bt").string() + kVehicle +
-                                           " --start 0.5,0,3.4 --goal 5.5,0,3.4 --planner lattice --days 2 --out " +
-                                           (dir / "out").string());
+  const CommandResult result =
+      runCeilplan("compare --map " + (dir / "corridor.bt").string() + kVehicle +
+                  " --start 0.5,0,3.4 --goal 5.5,0,3.4 --planner lattice --days 2 --out " + (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json json = nlohmann::json::parse(readWholeFile(dir / "out" / "compare.json"));
   EXPECT_GT(json["reduction_pct"]["charge"].get<double>(), 3.0);
   EXPECT_GT(json["reduction_pct"]["fec_total"].get<double>(), 3.0);
   EXPECT_EQ(json["ceiling"]["repeats_per_mission"], json["free"]["repeats_per_mission"]);
-  for (const char* file : {"ceiling/plan.json", "ceiling/path.csv", "free/plan.json", "free/path.csv", "map_top.csv",
-                           "map_side.csv"})
+  for (const char* file :
+       {"ceiling/plan.json", "ceiling/path.csv", "free/plan.json", "free/path.csv", "map_top.csv", "map_side.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / file)) << file;
   EXPECT_NE(result.out.find("FEC over the study"), std::string::npos);
 }
@@ -167,7 +169,8 @@ TEST(BenchPlannersCli, TablesEachPlannerAgainstTheLatticeReference) {
   const CommandResult result =
       runCeilplan("bench-planners --map " + (dir / "corridor.bt").string() + kVehicle +
                   " --start 0.5,0,3.4 --goal 5.5,0,3.4 --planners BITstar,PRMstar,lattice,roadmap --runs 2"
-                  " --time-limit-s 3 --lattice-spacing-m 0.4 --json " + (dir / "bench.json").string());
+                  " --time-limit-s 3 --lattice-spacing-m 0.4 --json " +
+                  (dir / "bench.json").string());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("lattice reference"), std::string::npos);
   const nlohmann::json json = nlohmann::json::parse(readWholeFile(dir / "bench.json"));

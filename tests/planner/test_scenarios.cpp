@@ -23,8 +23,8 @@ struct Comparison {
   ModeOutcome free;
 };
 
-Comparison planBothModes(const environment::OccupancyMap& map, const Eigen::Vector3d& start, const Eigen::Vector3d& goal,
-                         const std::string& planner_name, double time_limit_s = 30.0,
+Comparison planBothModes(const environment::OccupancyMap& map, const Eigen::Vector3d& start,
+                         const Eigen::Vector3d& goal, const std::string& planner_name, double time_limit_s = 30.0,
                          const planner::FlightSpeeds& speeds = {}) {
   planner::seedOmpl(1);
   const environment::Environment environment(map, quad());
@@ -73,7 +73,8 @@ TEST(Scenarios, FlatCeilingCorridorHugsAndBeatsFreeFlight) {
 double slope(double x, double) { return 3.0 + 0.1 * std::round(x * 10.0) / 10.0; }
 
 // The ceiling is lowest over the back of the vehicle's footprint (0.46 m).
-const Eigen::Vector3d kSlopeStart(0.5, 0.0, bodyHeightUnder(slope(0.0, 0))), kSlopeGoal(5.5, 0.0, bodyHeightUnder(slope(5.0, 0)));
+const Eigen::Vector3d kSlopeStart(0.5, 0.0, bodyHeightUnder(slope(0.0, 0))),
+    kSlopeGoal(5.5, 0.0, bodyHeightUnder(slope(5.0, 0)));
 
 TEST(Scenarios, SlopedCeilingIsHuggedWhenTheSlowZoneIsNotSlower) {
   planner::FlightSpeeds speeds;

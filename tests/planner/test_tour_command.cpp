@@ -4,16 +4,16 @@
 
 #include "ceilplan/io/autopilot_export.hpp"
 #include "ceilplan/io/csv_columns.hpp"
-#include "run_command.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
+#include "run_command.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <octomap/OcTree.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -31,12 +31,12 @@ using testing::scratchDirectory;
 const std::filesystem::path kVehicle = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/vehicles/quad.yaml";
 
 bool occupied(double x, double y, double z, bool closet) {
-  if (z < 0.2) return true;                                        // floor
-  if (x >= 2.0 && z >= 3.0) return true;                          // deck slab, 3 m up, over x >= 2
+  if (z < 0.2) return true;               // floor
+  if (x >= 2.0 && z >= 3.0) return true;  // deck slab, 3 m up, over x >= 2
   // A closed closet under the deck: walls round x [6.6, 8.4), y [2.2, 4.0), the hall's edge beyond.
   if (closet && y >= 2.0 && ((x >= 6.4 && x < 6.6) || (x >= 8.4 && x < 8.6) || (y < 2.2 && x >= 6.4 && x < 8.6)))
     return true;
-  return x >= 4.2 && x < 5.8 && y >= -0.8 && y < 0.8;             // pier under the deck
+  return x >= 4.2 && x < 5.8 && y >= -0.8 && y < 0.8;  // pier under the deck
 }
 
 // The hall at 0.1 m: x [-1, 9), y [-4, 4), z [0, 3.4); every voxel known.
@@ -47,8 +47,8 @@ void writeHall(const std::filesystem::path& file, bool closet) {
     for (double y = -3.95; y < 4.0; y += resolution)
       for (double x = -0.95; x < 9.0; x += resolution) {
         const bool occ = occupied(x, y, z, closet);
-        tree.setNodeValue(octomap::point3d(x, y, z), occ ? tree.getClampingThresMaxLog() : tree.getClampingThresMinLog(),
-                          true);
+        tree.setNodeValue(octomap::point3d(x, y, z),
+                          occ ? tree.getClampingThresMaxLog() : tree.getClampingThresMinLog(), true);
       }
   tree.updateInnerOccupancy();
   tree.prune();
@@ -66,8 +66,7 @@ struct MissionText {
 std::filesystem::path writeMission(const std::filesystem::path& dir, const MissionText& text = {}) {
   writeHall(dir / "hall.bt", text.closet);
   std::ofstream out(dir / "mission.yaml");
-  out << "map: hall.bt\nvehicle: " << kVehicle.string() << "\nbattery: " << text.battery
-      << "\nhome: [0.0, 0.0, 0.5]\n"
+  out << "map: hall.bt\nvehicle: " << kVehicle.string() << "\nbattery: " << text.battery << "\nhome: [0.0, 0.0, 0.5]\n"
       << text.origin << "seed: 3\ntargets:\n"
       << "  - {name: deck_a, point: [3.0, -1.5, 3.0], dwell_s: 10, standoff_m: [0.3, 1.5]}\n"
       << "  - {name: deck_b, point: [7.0, 1.5, 3.0], dwell_s: 12, standoff_m: [0.3, 1.5]}\n"
@@ -91,9 +90,9 @@ const std::string kFast = " --workers 2";
 // What one run of both modes wrote, checked by the specifications below (one run: planning is
 // the slow part, and ctest runs every test in its own process).
 struct BothModesRun {
-  std::filesystem::path dir;    // the tour is in DIR/out
+  std::filesystem::path dir;  // the tour is in DIR/out
   std::filesystem::path map;
-  std::size_t targets = 0;      // in the mission
+  std::size_t targets = 0;  // in the mission
   testing::CommandResult result;
 };
 
@@ -113,15 +112,17 @@ void visitsEveryTargetWithItsDwellAboveTheReserve(const BothModesRun& run) {
     }
     for (const auto& target : tour["targets"]) EXPECT_EQ(visits[target["name"]], 1) << mode << target["name"];
     EXPECT_GE(tour["min_soc"].get<double>(), tour["reserve_soc"].get<double>());
-    for (const char* key : {"fec", "xu", "woehler", "schmalstieg"}) EXPECT_GT(tour["wear"][key]["cycle_wear"], 0.0) << key;
+    for (const char* key : {"fec", "xu", "woehler", "schmalstieg"})
+      EXPECT_GT(tour["wear"][key]["cycle_wear"], 0.0) << key;
 
     // path.csv hovers at each viewpoint for the target's dwell.
     std::map<std::string, double> dwell_of;
     for (const auto& target : tour["targets"]) dwell_of[target["name"]] = target["dwell_s"];
     const io::CsvColumns csv =
         io::CsvColumns::read(run.dir / "out" / mode / "path.csv", {"t_s", "x", "y", "z", "speed_m_s"});
-    EXPECT_EQ(csv.columnNames(), (std::vector<std::string>{"t_s", "x", "y", "z", "speed_m_s", "ceiling_gap_m", "current_a",
-                                                           "soc", "sortie", "ground_gap_m", "phase", "assumed_free"}));
+    EXPECT_EQ(csv.columnNames(),
+              (std::vector<std::string>{"t_s", "x", "y", "z", "speed_m_s", "ceiling_gap_m", "current_a", "soc",
+                                        "sortie", "ground_gap_m", "phase", "assumed_free"}));
     const auto& t = csv.column("t_s");
     const auto& speed = csv.column("speed_m_s");
     for (const auto& target : tour["targets"]) {
@@ -176,7 +177,8 @@ void planFileIsCompleteAndReproducesTheRouteWithinACentimetre(const BothModesRun
     EXPECT_TRUE(plan.contains(key)) << key;
   EXPECT_EQ(plan["fileType"], "Plan");
   const nlohmann::json& mission = plan["mission"];
-  for (const char* key : {"version", "firmwareType", "vehicleType", "cruiseSpeed", "hoverSpeed", "plannedHomePosition", "items"})
+  for (const char* key :
+       {"version", "firmwareType", "vehicleType", "cruiseSpeed", "hoverSpeed", "plannedHomePosition", "items"})
     EXPECT_TRUE(mission.contains(key)) << key;
 
   // The route as the tour flies it: each leg's waypoints after its first, a hold at each target.
@@ -217,8 +219,8 @@ void planFileIsCompleteAndReproducesTheRouteWithinACentimetre(const BothModesRun
     ASSERT_EQ(item["params"].size(), 7u);
     const auto& params = item["params"];
     EXPECT_NEAR(params[0].get<double>(), holds[k], 1e-9) << k;
-    const Eigen::Vector3d local = io::toLocal(
-        origin, {params[4].get<double>(), params[5].get<double>(), params[6].get<double>() + home_amsl_m});
+    const Eigen::Vector3d local =
+        io::toLocal(origin, {params[4].get<double>(), params[5].get<double>(), params[6].get<double>() + home_amsl_m});
     EXPECT_LT((local - route[k]).norm(), 0.01) << k;
   }
   const std::string wpl = readWholeFile(run.dir / "out" / "ceiling" / "mission.waypoints");
@@ -236,7 +238,8 @@ TEST(TourCommand, BothModesOnTheHall) {
   const std::filesystem::path dir = scratchDirectory("tour_both");
   BothModesRun run{dir, dir / "hall.bt", 4, {}};
   const std::filesystem::path mission = writeMission(run.dir);
-  run.result = runCeilplan("tour --mission " + mission.string() + " --mode both --out " + (run.dir / "out").string() + kFast);
+  run.result =
+      runCeilplan("tour --mission " + mission.string() + " --mode both --out " + (run.dir / "out").string() + kFast);
   ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
   checkBothModes(run);
 }
@@ -318,9 +321,10 @@ TEST(TourCommand, RoadmapToursAreReproducibleWhateverTheThreadCount) {
 TEST(TourCommand, PairwisePlannersStillPlanEveryLeg) {
   const std::filesystem::path dir = scratchDirectory("tour_pairwise");
   const std::filesystem::path mission = writeMission(dir);
-  const testing::CommandResult result =
-      runCeilplan("tour --mission " + mission.string() + " --mode ceiling --planner lattice --lattice-spacing-m 0.4 "
-                  "--time-limit-s 20 --out " + (dir / "out").string());
+  const testing::CommandResult result = runCeilplan("tour --mission " + mission.string() +
+                                                    " --mode ceiling --planner lattice --lattice-spacing-m 0.4 "
+                                                    "--time-limit-s 20 --out " +
+                                                    (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json tour = readJson(dir / "out" / "tour.json");
   EXPECT_EQ(tour["planner"], "lattice");

@@ -1,14 +1,14 @@
 #pragma once
 // Runs the `ceilplan` executable as a user would and captures what it says.
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace ceilplan::testing {
 

@@ -8,8 +8,8 @@
 #include "run_command.hpp"
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <octomap/OcTree.h>
+#include <nlohmann/json.hpp>
 
 #include <Eigen/Core>
 
@@ -106,7 +106,8 @@ inline SupportFigures expectTourWithinItsData(const std::filesystem::path& mode_
       const Eigen::Vector3d at = from + (to - from) * (static_cast<double>(k) / steps);
       ++figures.route_points;
       if (supported(at)) continue;
-      ADD_FAILURE() << "route point at " << at.transpose() << " (path.csv row " << s + 1 << ") is " << stateAt(tree, at);
+      ADD_FAILURE() << "route point at " << at.transpose() << " (path.csv row " << s + 1 << ") is "
+                    << stateAt(tree, at);
       return figures;  // the first is enough: a route leaving its data leaves it for many points
     }
   }
@@ -136,13 +137,13 @@ inline SupportFigures expectTourWithinItsData(const std::filesystem::path& mode_
     EXPECT_TRUE(supported(camera)) << "photo " << photo.at("index") << " camera at " << camera.transpose();
     // With unknown cells not ignored, castRay stops at the first unknown one and says false.
     octomap::point3d hit;
-    const bool hit_occupied =
-        tree.castRay(octomap::point3d(camera.x(), camera.y(), camera.z()), octomap::point3d(axis.x(), axis.y(), axis.z()),
-                     hit, /*ignoreUnknownCells=*/unknown_is_free, reach_m);
+    const bool hit_occupied = tree.castRay(octomap::point3d(camera.x(), camera.y(), camera.z()),
+                                           octomap::point3d(axis.x(), axis.y(), axis.z()), hit,
+                                           /*ignoreUnknownCells=*/unknown_is_free, reach_m);
     EXPECT_TRUE(hit_occupied) << "photo " << photo.at("index") << " (" << photo.at("region") << ") from "
                               << camera.transpose() << " along " << axis.transpose() << " meets "
-                              << (tree.search(hit) ? "nothing" : "unknown space") << " at " << hit << " before a surface within "
-                              << reach_m << " m";
+                              << (tree.search(hit) ? "nothing" : "unknown space") << " at " << hit
+                              << " before a surface within " << reach_m << " m";
   }
   return figures;
 }

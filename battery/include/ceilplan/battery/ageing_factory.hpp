@@ -25,7 +25,6 @@ struct AgeingModelOptions {
 const std::vector<std::string>& ageingModelNames();
 
 // Throws ceilplan::InputError for an unknown name (listing the known ones) or bad options.
-std::unique_ptr<AgeingModel> makeAgeingModel(const std::string& name,
-                                             const AgeingModelOptions& options);
+std::unique_ptr<AgeingModel> makeAgeingModel(const std::string& name, const AgeingModelOptions& options);
 
 }  // namespace ceilplan::battery

@@ -94,8 +94,7 @@ class AgeingModel {
 
   // Receives validated samples; `previous` is the sample before samples[0], or nullptr at the
   // start of the history.
-  virtual void consume(const AgeingSample* previous, const AgeingSample* samples,
-                       std::size_t count) = 0;
+  virtual void consume(const AgeingSample* previous, const AgeingSample* samples, std::size_t count) = 0;
   // The model's law, unclamped.
   virtual double modelCapacityLoss() const = 0;
 
@@ -111,11 +110,9 @@ class AgeingModel {
 // Human-readable warnings, one per way the study leaves the model's validity range; empty when
 // it stays inside.
 std::vector<std::string> validityWarnings(const std::string& model_name, const ValidityRange& range,
-                                          const OperatingConditions& conditions,
-                                          const ObservedCRates& observed);
+                                          const OperatingConditions& conditions, const ObservedCRates& observed);
 // Same, with the C-rates the model has seen.
-std::vector<std::string> validityWarnings(const AgeingModel& model,
-                                          const OperatingConditions& conditions,
+std::vector<std::string> validityWarnings(const AgeingModel& model, const OperatingConditions& conditions,
                                           double nominal_capacity_ah);
 
 }  // namespace ceilplan::battery

@@ -35,8 +35,7 @@ class CycleAgeingModel : public AgeingModel {
     double state_of_health;
   };
 
-  void consume(const AgeingSample* previous, const AgeingSample* samples,
-               std::size_t count) final;
+  void consume(const AgeingSample* previous, const AgeingSample* samples, std::size_t count) final;
   double stateOfHealthAt(std::size_t index) const;
 
   RainflowCounter counter_;

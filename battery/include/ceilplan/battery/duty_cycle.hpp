@@ -23,8 +23,8 @@ struct MissionTemplate {
 
 // The paper's mission: fly at `flight_current_a` for `flight_s`, idle for `idle_s`, then charge
 // at `charge_current_a` until SOC >= `target_soc` for at most `charge_max_s`.
-MissionTemplate flyIdleChargeMission(double flight_current_a, double flight_s, double idle_s,
-                                     double charge_current_a, double charge_max_s, double target_soc);
+MissionTemplate flyIdleChargeMission(double flight_current_a, double flight_s, double idle_s, double charge_current_a,
+                                     double charge_max_s, double target_soc);
 
 // The most steps the fixed-step scheme may take per mission. Finer steps only cost time and
 // memory: the exact scheme (step 0) is exact, and the paper's 30 s take 90 steps a mission.
@@ -44,17 +44,17 @@ struct DutyCycle {
 };
 
 struct MissionTally {
-  long index = 0;           // 0-based over the whole run
-  int day = 0;              // 0-based
-  int mission_in_day = 0;   // 0-based
+  long index = 0;          // 0-based over the whole run
+  int day = 0;             // 0-based
+  int mission_in_day = 0;  // 0-based
   double start_s = 0.0;
-  double fec = 0.0;         // this mission's FEC (its discharge and charge, against C_nom)
+  double fec = 0.0;                // this mission's FEC (its discharge and charge, against C_nom)
   double faded_pack_cycles = 0.0;  // the same against the usable capacity C_nom * SOH
   double discharge_ah = 0.0;
   double charge_ah = 0.0;
   double min_soc = 0.0;
   double end_soc = 0.0;
-  double charge_end_s = 0.0;  // end of its last charge, from the mission's start (0 if none)
+  double charge_end_s = 0.0;     // end of its last charge, from the mission's start (0 if none)
   double state_of_health = 1.0;  // during this mission
 };
 
@@ -71,11 +71,11 @@ struct DayTally {
 using MissionHook = std::function<double(const MissionTally& mission, const std::vector<Sample>& samples)>;
 
 struct DutyOptions {
-  double step_s = 0.0;          // 0 = exact, event-driven
-  bool record_missions = true;   // keeps every mission's tally in DutyResult::missions
-  bool record_first_day = true;  // keeps samples of mission 1 and day 1
-  bool record_run = false;       // keeps samples of the whole run
-  MissionHook on_mission;        // optional
+  double step_s = 0.0;                            // 0 = exact, event-driven
+  bool record_missions = true;                    // keeps every mission's tally in DutyResult::missions
+  bool record_first_day = true;                   // keeps samples of mission 1 and day 1
+  bool record_run = false;                        // keeps samples of the whole run
+  MissionHook on_mission;                         // optional
   std::function<void(double fraction)> progress;  // optional, called once a day
   // Optional: called after every day; returning false ends the run there.
   std::function<bool(const DayTally& day)> continue_after_day;

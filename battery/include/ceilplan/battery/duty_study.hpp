@@ -31,13 +31,13 @@ struct DutyStudyOptions {
   double soc_start = 0.95;  // SOC at the first take-off, and the charge-back target
   int missions_per_day = 15;
   int days = 30;
-  double years = 0.0;   // > 0 replaces `days` (365 days a year, rounded to whole days)
+  double years = 0.0;    // > 0 replaces `days` (365 days a year, rounded to whole days)
   double step_s = 30.0;  // the paper's step; 0 = exact, event-driven
   std::vector<std::string> ageing_models = ageingModelNames();  // empty: no ageing projection
   double temperature_c = 25.0;
   std::string chemistry = "LiPo";  // checked against each model's validity range
   double end_of_life_soh = 0.8;
-  WoehlerParameters woehler;       // used by "fec" (N100) and "woehler" [open]
+  WoehlerParameters woehler;  // used by "fec" (N100) and "woehler" [open]
   // The cell's open-circuit voltage, needed by "schmalstieg" (e.g. energy::LipoOpenCircuitVoltage).
   CellVoltageOfSoc cell_voltage_of_soc;
   bool record_run = false;  // keep each case's samples of the whole run (DutyResult::run)
@@ -73,9 +73,9 @@ struct DutyStudyAgeing {
 
 struct DutyStudyCase {
   double flight_current_a = 0.0;
-  DutyResult run;                  // the duty cycle over the whole study, pack held new
-  double max_dod = 0.0;            // the deepest mission's start SOC minus its lowest
-  double fec_reduction_pct = 0.0;  // 100 (1 - this FEC / the first case's)
+  DutyResult run;                       // the duty cycle over the whole study, pack held new
+  double max_dod = 0.0;                 // the deepest mission's start SOC minus its lowest
+  double fec_reduction_pct = 0.0;       // 100 (1 - this FEC / the first case's)
   std::vector<DutyStudyAgeing> ageing;  // one per DutyStudyOptions::ageing_models, in order
 };
 

@@ -14,10 +14,10 @@
 namespace ceilplan::battery {
 
 struct LifetimeOptions {
-  int study_days = 30;             // wear and fade are reported at the end of this period
-  double end_of_life_soh = 0.8;    // the usual data-sheet end of life
-  int max_projection_days = 36500; // the projection gives up after this (100 years)
-  double step_s = 0.0;             // 0 = exact
+  int study_days = 30;              // wear and fade are reported at the end of this period
+  double end_of_life_soh = 0.8;     // the usual data-sheet end of life
+  int max_projection_days = 36500;  // the projection gives up after this (100 years)
+  double step_s = 0.0;              // 0 = exact
   // false: the pack keeps its SOH whatever the model says (as Xu et al. 2018 derive their
   // figures, and the paper's SOH = 1); the wear is still counted.
   bool feed_back_fade = true;
@@ -31,14 +31,14 @@ struct LifetimeOptions {
 struct LifetimeResult {
   std::string model;
   std::string cycle_wear_name;
-  double cycle_wear = 0.0;        // the model's cycle-ageing measure over the study period
-  double capacity_loss = 0.0;     // fraction of nominal capacity lost over the study period
-  double fec = 0.0;               // FEC over the study period (against nominal capacity)
+  double cycle_wear = 0.0;     // the model's cycle-ageing measure over the study period
+  double capacity_loss = 0.0;  // fraction of nominal capacity lost over the study period
+  double fec = 0.0;            // FEC over the study period (against nominal capacity)
   // The same throughput counted against the faded pack's usable capacity (sum |dSOC| / 2):
   // larger than the FEC once the pack has faded.
   double faded_pack_cycles = 0.0;
-  double min_soc = 1.0;           // lowest SOC over the study period
-  int days_flown = 0;             // whole days of the study period flown
+  double min_soc = 1.0;  // lowest SOC over the study period
+  int days_flown = 0;    // whole days of the study period flown
   // First mission whose end finds SOH <= end_of_life_soh: its 1-based number and the time from
   // the first take-off to its end, in days. Empty if end of life was not reached.
   std::optional<long> missions_to_end_of_life;

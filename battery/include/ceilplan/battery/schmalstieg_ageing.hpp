@@ -44,14 +44,12 @@ struct SchmalstiegParameters {
 double schmalstiegCalendarCapacityRate(double cell_voltage_v, double temperature_k,
                                        const SchmalstiegParameters& parameters = {});
 // b_cap(Vrms, DoD).
-double schmalstiegCycleCapacityRate(double rms_voltage_v, double depth,
-                                    const SchmalstiegParameters& parameters = {});
+double schmalstiegCycleCapacityRate(double rms_voltage_v, double depth, const SchmalstiegParameters& parameters = {});
 // a_res(V, T), clamped at 0 (below 3.097 V).
 double schmalstiegCalendarResistanceRate(double cell_voltage_v, double temperature_k,
                                          const SchmalstiegParameters& parameters = {});
 // b_res(Vrms, DoD); slightly negative for shallow cycles near 3.725 V, as published.
-double schmalstiegCycleResistanceRate(double rms_voltage_v, double depth,
-                                      const SchmalstiegParameters& parameters = {});
+double schmalstiegCycleResistanceRate(double rms_voltage_v, double depth, const SchmalstiegParameters& parameters = {});
 
 // Advances a power-law state x = rate * s^exponent by `step` of s at a new rate, from the
 // equivalent s at which the new rate gives the present state (BLAST-Lite's and SimSES's way of
@@ -73,8 +71,8 @@ class SchmalstiegAgeingModel : public CycleAgeingModel {
   std::unique_ptr<AgeingModel> clone() const override;
 
   double calendarCapacityLoss() const { return calendar_capacity_loss_; }
-  double cycleCapacityLoss() const;           // open ranges as half cycles
-  double resistanceGrowth() const;            // R / R_new - 1, open ranges as half cycles
+  double cycleCapacityLoss() const;  // open ranges as half cycles
+  double resistanceGrowth() const;   // R / R_new - 1, open ranges as half cycles
   // Q so far, in ampere-hours of the fitted cell, open ranges as half cycles.
   double chargeThroughputAh() const;
   double cycleWear() const override { return cycleCapacityLoss(); }

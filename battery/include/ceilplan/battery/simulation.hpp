@@ -93,7 +93,7 @@ class Simulator {
 };
 
 // Runs a whole profile from `initial_soc` and closes the last mode interval.
-BatteryState simulate(const Pack& pack, const LoadProfile& profile, double initial_soc,
-                      double step_s = 0.0, std::vector<Sample>* record = nullptr);
+BatteryState simulate(const Pack& pack, const LoadProfile& profile, double initial_soc, double step_s = 0.0,
+                      std::vector<Sample>* record = nullptr);
 
 }  // namespace ceilplan::battery

@@ -11,9 +11,9 @@ namespace ceilplan::battery {
 // [open] calibration parameters (docs/ageing.md: no public LiPo cycle-life
 // versus DoD data; N100 comes from a pack's data sheet, k about 1.2 to 2.1).
 struct WoehlerParameters {
-  double cycles_at_full_depth = 300.0;      // N100: full cycles to end of life at DoD 1 [open]
-  double exponent = 1.5;                    // k [open]
-  double end_of_life_capacity_loss = 0.2;   // end of life at SOH 0.8, the usual data-sheet rule
+  double cycles_at_full_depth = 300.0;     // N100: full cycles to end of life at DoD 1 [open]
+  double exponent = 1.5;                   // k [open]
+  double end_of_life_capacity_loss = 0.2;  // end of life at SOH 0.8, the usual data-sheet rule
 
   // Throws ceilplan::InputError unless N100 > 0, k >= 0 and 0 < end-of-life loss <= 1.
   void validate() const;
@@ -61,8 +61,7 @@ class FecAgeingModel : public AgeingModel {
   std::string cycleWearName() const override { return "FEC"; }
 
  private:
-  void consume(const AgeingSample* previous, const AgeingSample* samples,
-               std::size_t count) override;
+  void consume(const AgeingSample* previous, const AgeingSample* samples, std::size_t count) override;
   double modelCapacityLoss() const override;
 
   WoehlerParameters parameters_;

@@ -9,15 +9,15 @@ namespace ceilplan::battery {
 
 // Constants as published (Xu et al. 2018), agreed by five open implementations of the model.
 struct XuParameters {
-  double k_d1 = 1.40e5;           // depth stress
+  double k_d1 = 1.40e5;  // depth stress
   double k_d2 = -0.501;
   double k_d3 = -1.23e5;
-  double k_s = 1.04;              // SOC stress
+  double k_s = 1.04;  // SOC stress
   double soc_ref = 0.5;
-  double k_t_per_k = 0.0693;      // temperature stress, 1/K
+  double k_t_per_k = 0.0693;  // temperature stress, 1/K
   double t_ref_k = 298.15;
   double k_calendar_per_s = 4.14e-10;  // calendar rate k_t, 1/s
-  double a_sei = 0.0575;          // share of capacity lost in the fast SEI phase
+  double a_sei = 0.0575;               // share of capacity lost in the fast SEI phase
   double b_sei = 121.0;
 };
 
@@ -35,8 +35,7 @@ double xuCapacityLoss(double damage, const XuParameters& parameters = {});
 // s_avg the time-averaged SOC over the history (trapezoid rule between samples).
 class XuAgeingModel : public CycleAgeingModel {
  public:
-  explicit XuAgeingModel(const OperatingConditions& conditions = {},
-                         const XuParameters& parameters = {});
+  explicit XuAgeingModel(const OperatingConditions& conditions = {}, const XuParameters& parameters = {});
   std::string name() const override { return "xu"; }
   ValidityRange validity() const override;
   std::unique_ptr<AgeingModel> clone() const override;

@@ -1,9 +1,9 @@
 #pragma once
 // Fitting the model's free constants to measured currents (bounded least squares, NLopt).
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/energy/energy_parameters.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <string>
 #include <vector>

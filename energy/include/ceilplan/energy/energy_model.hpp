@@ -1,12 +1,12 @@
 #pragma once
 // Predicted battery current from ceiling gap(s), ground gap, horizontal speed, climb rate and SOC.
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/energy/ceiling_effect.hpp"
 #include "ceilplan/energy/energy_parameters.hpp"
 #include "ceilplan/energy/ground_effect.hpp"
 #include "ceilplan/energy/pack_electrics.hpp"
 #include "ceilplan/energy/rotary_wing_power.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <limits>
 
@@ -30,16 +30,16 @@ struct FlightCondition {
 
 // Powers are electrical, at the pack terminals; they add up to power_w.
 struct CurrentBreakdown {
-  double current_a = 0.0;           // total pack current
-  double power_w = 0.0;             // terminal voltage x current
+  double current_a = 0.0;  // total pack current
+  double power_w = 0.0;    // terminal voltage x current
   double terminal_voltage_v = 0.0;
   double induced_w = 0.0;
   double profile_w = 0.0;
   double parasitic_w = 0.0;
-  double climb_w = 0.0;             // negative in descent, floored
+  double climb_w = 0.0;  // negative in descent, floored
   double avionics_w = 0.0;
-  double ceiling_factor = 1.0;      // thrust ratio T_ceiling / T_free, mean over rotors
-  double ground_factor = 1.0;       // thrust ratio T_ground / T_free
+  double ceiling_factor = 1.0;        // thrust ratio T_ceiling / T_free, mean over rotors
+  double ground_factor = 1.0;         // thrust ratio T_ground / T_free
   double induced_power_factor = 1.0;  // induced power / free-air induced power, both effects
 
   // Electrical propulsion power: what the pack delivers to the motors whatever its state of

@@ -21,15 +21,15 @@ struct AirframeParameters {
   int rotor_count = 4;
   double rotor_radius_m = 0.127;
   double adjacent_rotor_spacing_m = 0.31819805153394637;  // d = sqrt(2) x 0.225 m arm: 450 mm X frame
-  double opposite_rotor_spacing_m = 0.45;      // b
-  double max_speed_m_s = 15.0;                 // beyond it the model refuses to answer
+  double opposite_rotor_spacing_m = 0.45;                 // b
+  double max_speed_m_s = 15.0;                            // beyond it the model refuses to answer
 };
 
 // Image-method ceiling effect T_ic/T_oc = 1 / (1 - (1/K1) (R / (z + K2))^2)
 // (Sanchez-Cuevas et al., ICUAS 2017), faded out between the taper radii (docs/models.md).
 struct CeilingEffectParameters {
-  double k1 = 0.0;    // dimensionless [open]; the defaults are solved by paperQuadParameters()
-  double k2_m = 0.0;  // metres [open]
+  double k1 = 0.0;                 // dimensionless [open]; the defaults are solved by paperQuadParameters()
+  double k2_m = 0.0;               // metres [open]
   double taper_start_radii = 1.5;  // full image-method effect below this gap (in rotor radii)
   double taper_end_radii = 2.5;    // no effect from this gap on
 };
@@ -55,9 +55,9 @@ struct RotorPowerParameters {
 
 // Rint pack (docs/models.md, "Pack electrics") plus a constant avionics load.
 struct PackParameters {
-  int cell_count = 4;                // 4S, the founding paper's pack
-  double resistance_ohm = 0.020;     // 12-25 mOhm for a new 4S 5.2 Ah pack [open]
-  double avionics_current_a = 0.5;   // flight controller, radio, sensors [open]
+  int cell_count = 4;               // 4S, the founding paper's pack
+  double resistance_ohm = 0.020;    // 12-25 mOhm for a new 4S 5.2 Ah pack [open]
+  double avionics_current_a = 0.5;  // flight controller, radio, sensors [open]
 };
 
 struct EnergyParameters {

@@ -1,8 +1,8 @@
 #pragma once
 // Thrust ratio of the vehicle above the ground.
 
-#include "ceilplan/energy/energy_parameters.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/energy/energy_parameters.hpp"
 
 namespace ceilplan::energy {
 

@@ -1,9 +1,9 @@
 #pragma once
 // From electrical propulsion power to pack current: a Rint pack with a constant avionics load.
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/energy/energy_parameters.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
-#include "ceilplan/core/error.hpp"
 
 namespace ceilplan::energy {
 

@@ -3,8 +3,8 @@
 // arXiv 1812.11707): 9.5 A hovering in free air, 8.0 A close under a ceiling. How the anchors
 // fix the constants: docs/models.md, "The default vehicle".
 
-#include "ceilplan/energy/energy_parameters.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/energy/energy_parameters.hpp"
 
 namespace ceilplan::energy {
 

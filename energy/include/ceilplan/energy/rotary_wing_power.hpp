@@ -25,8 +25,8 @@ class RotaryWingPower {
   // measured hover shaft power is left. Throws ceilplan::InputError when that is negative
   // (hover power too low for the mass and rotor size).
   static RotaryWingPower scaledToHover(double hover_shaft_power_w, double weight_n, double total_disc_area_m2,
-                                       double induced_power_correction, double tip_speed_m_s,
-                                       double drag_area_m2, double air_density_kg_m3);
+                                       double induced_power_correction, double tip_speed_m_s, double drag_area_m2,
+                                       double air_density_kg_m3);
 
   double profilePowerW(double speed_m_s) const noexcept {
     return profile_power_w_ * (1.0 + 3.0 * speed_m_s * speed_m_s * inverse_tip_speed_squared_);

@@ -9,15 +9,12 @@
 namespace ceilplan::energy {
 
 inline double inducedPowerRatio(double thrust_ratio, ThrustToPowerConvention convention) noexcept {
-  return convention == ThrustToPowerConvention::kMomentumTheory
-             ? 1.0 / (thrust_ratio * std::sqrt(thrust_ratio))
-             : 1.0 / thrust_ratio;
+  return convention == ThrustToPowerConvention::kMomentumTheory ? 1.0 / (thrust_ratio * std::sqrt(thrust_ratio))
+                                                                : 1.0 / thrust_ratio;
 }
 
-inline double thrustRatioForInducedPowerRatio(double power_ratio,
-                                              ThrustToPowerConvention convention) noexcept {
-  return convention == ThrustToPowerConvention::kMomentumTheory ? std::pow(power_ratio, -2.0 / 3.0)
-                                                               : 1.0 / power_ratio;
+inline double thrustRatioForInducedPowerRatio(double power_ratio, ThrustToPowerConvention convention) noexcept {
+  return convention == ThrustToPowerConvention::kMomentumTheory ? std::pow(power_ratio, -2.0 / 3.0) : 1.0 / power_ratio;
 }
 
 }  // namespace ceilplan::energy

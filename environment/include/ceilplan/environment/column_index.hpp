@@ -53,7 +53,9 @@ class ColumnIndex {
   std::size_t runCount() const { return runs_.size(); }
   const std::vector<std::uint32_t>& offsets() const { return offsets_; }
   const std::vector<Run>& runs() const { return runs_; }
-  std::size_t memoryBytes() const { return offsets_.capacity() * sizeof(std::uint32_t) + runs_.capacity() * sizeof(Run); }
+  std::size_t memoryBytes() const {
+    return offsets_.capacity() * sizeof(std::uint32_t) + runs_.capacity() * sizeof(Run);
+  }
 
  private:
   std::size_t column(int i, int j) const { return static_cast<std::size_t>(j) * frame_.size()[0] + i; }

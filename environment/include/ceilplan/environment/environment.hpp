@@ -5,6 +5,7 @@
 // built once and shared; an Environment adds only what depends on the vehicle's geometry and
 // margins (docs/environment.md). Every query is const and safe to call from many threads.
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/column_index.hpp"
 #include "ceilplan/environment/distance_field.hpp"
 #include "ceilplan/environment/footprint_masks.hpp"
@@ -13,7 +14,6 @@
 #include "ceilplan/environment/unknown_space.hpp"
 #include "ceilplan/environment/vehicle_geometry.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -74,7 +74,7 @@ struct AssumedFreeStretches {
 
 // The first place a state, motion or path breaks the collision constraint.
 struct Violation {
-  std::size_t segment = 0;  // index of the path segment (0 for a single state or motion)
+  std::size_t segment = 0;     // index of the path segment (0 for a single state or motion)
   Eigen::Vector3d position_m;  // body centre of the first invalid state found
   ViolationKind kind;
   std::string describe() const;  // one line, e.g. "segment 3 at (1.20, 0.00, 5.95): touches occupied space"
@@ -171,11 +171,11 @@ class Environment {
   // than its side, until one returns true; returns whether one did.
   template <class Visit>
   bool anyColumnUnderCylinder(const Eigen::Vector3d& body_m, Visit&& visit) const;
-  std::optional<Violation> segmentViolation(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
-                                            double step_m, bool fast_path) const;
+  std::optional<Violation> segmentViolation(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m, double step_m,
+                                            bool fast_path) const;
 
   std::shared_ptr<const MapIndex> index_;
-  const ColumnIndex* columns_;    // the index's, reached without two indirections on every query
+  const ColumnIndex* columns_;  // the index's, reached without two indirections on every query
   const DistanceField* distance_;
   VehicleGeometry vehicle_;
   EnvironmentOptions options_;

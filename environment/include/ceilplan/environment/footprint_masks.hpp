@@ -29,7 +29,7 @@ class FootprintMasks {
  private:
   GridFrame frame_;
   bool unknown_blocks_;
-  int words_;                        // 64-bit words per column
+  int words_;                         // 64-bit words per column
   std::vector<std::uint64_t> reach_;  // words_ per column, column (i, j) at (j * size_x + i) * words_
 };
 

@@ -39,7 +39,8 @@ class MapIndex {
  public:
   // Indexes `map` under `options.unknown` (validated here, ceilplan::InputError); `progress`
   // receives fractions in [0, 1]. About 7 bytes per voxel of the box of the map's known voxels.
-  MapIndex(const OccupancyMap& map, const MapIndexOptions& options = {}, const std::function<void(double)>& progress = {});
+  MapIndex(const OccupancyMap& map, const MapIndexOptions& options = {},
+           const std::function<void(double)>& progress = {});
   static std::shared_ptr<const MapIndex> build(const OccupancyMap& map, const MapIndexOptions& options = {},
                                                const std::function<void(double)>& progress = {});
 

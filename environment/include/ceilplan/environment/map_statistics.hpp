@@ -29,8 +29,8 @@ struct MapStatistics {
   std::size_t free_leaves;
   double occupied_volume_m3;
   double free_volume_m3;
-  double unknown_volume_m3;      // inside the extent
-  UnknownSpace unknown;          // the policy the index applied
+  double unknown_volume_m3;  // inside the extent
+  UnknownSpace unknown;      // the policy the index applied
   UnknownSpaceSummary unknown_summary;
   CeilingCriteria ceiling;
   // Share of the floor area (columns holding free space) under a ceiling, in [0, 1].

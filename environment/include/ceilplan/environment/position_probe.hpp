@@ -17,8 +17,8 @@ struct PositionProbe {
   SurfaceGaps ground;
   double clearance_m;
   std::optional<Violation> violation;  // empty: a valid state
-  bool assumes_free;        // the vehicle overlaps unknown space the policy assumed free
-  bool point_assumed_free;  // the body centre itself lies in such space
+  bool assumes_free;                   // the vehicle overlaps unknown space the policy assumed free
+  bool point_assumed_free;             // the body centre itself lies in such space
 };
 
 // Throws ceilplan::InputError for a body position outside the map.

@@ -2,8 +2,8 @@
 // The shipped inspection scenes, built as voxel grids a sensor could have left: structure
 // occupied, the space a scan from below would see free, everything else unknown.
 
-#include "ceilplan/environment/voxel_grid.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/environment/voxel_grid.hpp"
 
 #include <cstdint>
 #include <string>
@@ -21,8 +21,8 @@ const std::vector<std::string>& sceneNames();
 constexpr double kShippedBridgeLength_m = 48.0;
 
 struct SceneOptions {
-  double resolution_m = 0.1;  // in [0.02, 1] m
-  std::uint64_t seed = 1;     // places the clutter (boulders, lamps, pallets)
+  double resolution_m = 0.1;                        // in [0.02, 1] m
+  std::uint64_t seed = 1;                           // places the clutter (boulders, lamps, pallets)
   double bridge_length_m = kShippedBridgeLength_m;  // bridge only: a multiple of 4 m in [16, 2000]
 };
 

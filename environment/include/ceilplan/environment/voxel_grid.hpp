@@ -43,9 +43,7 @@ class GridFrame {
   bool inside(int i, int j, int k) const {
     return i >= 0 && j >= 0 && k >= 0 && i < size_[0] && j < size_[1] && k < size_[2];
   }
-  std::size_t linear(int i, int j, int k) const {
-    return (static_cast<std::size_t>(k) * size_[1] + j) * size_[0] + i;
-  }
+  std::size_t linear(int i, int j, int k) const { return (static_cast<std::size_t>(k) * size_[1] + j) * size_[0] + i; }
   Index3 unlinear(std::size_t voxel) const {
     return {static_cast<int>(voxel % size_[0]), static_cast<int>((voxel / size_[0]) % size_[1]),
             static_cast<int>(voxel / (static_cast<std::size_t>(size_[0]) * size_[1]))};

@@ -4,9 +4,9 @@
 // every error is a ceilplan::InputError naming the key, unknown keys with the nearest valid one.
 // The mission-file reader adds the file name.
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <yaml-cpp/yaml.h>
 

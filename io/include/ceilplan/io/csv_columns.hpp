@@ -30,7 +30,7 @@ class CsvColumns {
                           const std::vector<std::string>& none_is_infinite = {});
 
   const std::vector<std::string>& columnNames() const { return names_; }  // the whole header
-  bool hasColumn(const std::string& name) const;                         // kept (read) or not
+  bool hasColumn(const std::string& name) const;                          // kept (read) or not
   // A kept column; throws ceilplan::InputError naming the header's columns if it was not kept.
   const std::vector<double>& column(const std::string& name) const;
   std::size_t rowCount() const { return lines_.size(); }

@@ -26,14 +26,14 @@ struct MapImportOptions {
   std::filesystem::path mesh;     // a triangle mesh (meshExtensions()): exactly one of the two
   std::filesystem::path origins;  // optional, with points: free space carved by ray casting
   double resolution_m = 0.1;
-  std::string crs;                // "EPSG:<code>" of the data's projected CRS; empty: local already
-  double max_range_m = 0.0;       // with origins: the longest ray carved (0: no limit)
+  std::string crs;                        // "EPSG:<code>" of the data's projected CRS; empty: local already
+  double max_range_m = 0.0;               // with origins: the longest ray carved (0: no limit)
   std::optional<double> free_distance_m;  // without origins: default two voxels
   // Without origins, where the assumption holds: environment::assumedFreeRegionFromName.
   std::string free_region = "between";
-  std::optional<double> margin_m;         // default kMeshMargin_m for a mesh, 0 for a cloud
-  std::string interior = "auto";          // a mesh's inside: environment::meshInteriorFromName
-  bool skip_non_finite = false;           // drop points with NaN or infinite coordinates
+  std::optional<double> margin_m;  // default kMeshMargin_m for a mesh, 0 for a cloud
+  std::string interior = "auto";   // a mesh's inside: environment::meshInteriorFromName
+  bool skip_non_finite = false;    // drop points with NaN or infinite coordinates
   // A box in map coordinates (after --crs): data outside it is dropped before voxelising, and the
   // map goes no farther (environment::CropBox).
   std::optional<Eigen::AlignedBox3d> crop_m;

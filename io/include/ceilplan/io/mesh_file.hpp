@@ -1,8 +1,8 @@
 #pragma once
 // Mesh files, read with assimp (docs/import.md says why that library).
 
-#include "ceilplan/environment/map_builder.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/environment/map_builder.hpp"
 
 #include <filesystem>
 #include <string>

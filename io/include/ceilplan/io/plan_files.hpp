@@ -1,12 +1,12 @@
 #pragma once
 // What planning commands write: plan.json figures and path.csv rows, from a PathEvaluation.
 
+#include "ceilplan/environment/environment.hpp"
+#include "ceilplan/io/provenance.hpp"
+#include "ceilplan/mission/route_planning.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
 #include "ceilplan/planner/standoff.hpp"
-#include "ceilplan/environment/environment.hpp"
-#include "ceilplan/mission/route_planning.hpp"
-#include "ceilplan/io/provenance.hpp"
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -67,7 +67,8 @@ std::string ageingObjectiveLine(const planner::AgeingRates& ageing);
 std::string routePlanText(const mission::RoutePlan& route);
 // `ceilplan evaluate`'s lines: the path's points and figures, its cost under the context's
 // objective, whether it is valid (and the violation) and what the map's unknown space counts as.
-std::string routeCheckText(const mission::RouteCheck& check, std::size_t points, const mission::PlanningContext& context);
+std::string routeCheckText(const mission::RouteCheck& check, std::size_t points,
+                           const mission::PlanningContext& context);
 
 // What every standoff figure of the JSON outputs measures (their key `standoff_measures`).
 inline constexpr const char* kStandoffMeasures =

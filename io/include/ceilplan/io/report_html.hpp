@@ -41,7 +41,7 @@ struct ReportPhoto {
   double gimbal_pitch_deg = 0.0;  // +90 up
   double horizontal_fov_deg = 60.0;
   double vertical_fov_deg = 45.0;
-  double range_m = 1.0;           // how far the pyramid reaches (e.g. the distance to the surface)
+  double range_m = 1.0;  // how far the pyramid reaches (e.g. the distance to the surface)
 };
 
 // A square of inspected surface, coloured by `value` (e.g. the GSD reached); NaN: not covered

@@ -40,9 +40,9 @@ nlohmann::json currentReportJson(const std::string& vehicle, double ceiling_gap_
                                  const energy::FlightCondition& flight, const energy::CurrentBreakdown& breakdown);
 // `current --sweep`: the condition, rotor_radius_m, free_air_current_a and sweep, one breakdown
 // per point with its gap_m.
-nlohmann::json currentSweepReportJson(const std::string& vehicle, double coverage, const energy::FlightCondition& flight,
-                                      double rotor_radius_m, double free_air_current_a,
-                                      const std::vector<energy::GapPoint>& sweep);
+nlohmann::json currentSweepReportJson(const std::string& vehicle, double coverage,
+                                      const energy::FlightCondition& flight, double rotor_radius_m,
+                                      double free_air_current_a, const std::vector<energy::GapPoint>& sweep);
 
 // reference {planner, spacing_m (the lattice's), time_s, raw_cost, cost} and planners [{planner,
 // runs, solved, median_first_solution_s, median_raw_cost_ratio, median_cost_ratio,

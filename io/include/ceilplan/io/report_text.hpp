@@ -37,7 +37,8 @@ std::string flightConditionText(const std::string& vehicle, double coverage, con
 // The ceiling gap (absent: none) and every term of the breakdown.
 std::string currentBreakdownText(const std::optional<double>& ceiling_gap_m, const energy::CurrentBreakdown& breakdown);
 // The free-air current and one row per gap: gap_m, gap in rotor radii, current, power, factor.
-std::string currentSweepText(double rotor_radius_m, double free_air_current_a, const std::vector<energy::GapPoint>& sweep);
+std::string currentSweepText(double rotor_radius_m, double free_air_current_a,
+                             const std::vector<energy::GapPoint>& sweep);
 
 // The fit: vehicle, data file and its samples, RMSE, largest error and evaluations, then one row
 // per fitted parameter (value, allowed range, start, and whether it ended at its bound).
@@ -63,6 +64,7 @@ std::string generatedSceneLine(const std::string& scene, const environment::Scen
 
 // What `import` built: source, resolution, the builder's figures, free-space assumption, extent,
 // the geodetic origin for the mission file when a CRS was given, and the file written.
-std::string mapImportText(const MapImport& imported, const MapImportOptions& options, const std::filesystem::path& map_file);
+std::string mapImportText(const MapImport& imported, const MapImportOptions& options,
+                          const std::filesystem::path& map_file);
 
 }  // namespace ceilplan::io

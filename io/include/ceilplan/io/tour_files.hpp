@@ -59,7 +59,8 @@ void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResu
 
 // One autopilot mission per sortie from the tour's routes (mission/tour_routes.hpp): the camera
 // aimed and a photo at each viewpoint. Throws ceilplan::InputError without a geodetic origin.
-std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour, const mission::Mission& mission, Autopilot autopilot);
+std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour, const mission::Mission& mission,
+                                                Autopilot autopilot);
 
 // DIR/tour.json, DIR/path.csv, DIR/map_top.csv, DIR/map_side.csv, DIR/trajectory.csv and
 // DIR/trajectory.json (per sortie when several: trajectory_sortie2.csv, ...), DIR/report.html
@@ -67,9 +68,9 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
 // DIR/mission.kmz (DJI WPML) per sortie, DIR/routes.kml and DIR/routes.geojson (docs/tours.md,
 // docs/flying.md); without an origin those are skipped (geodeticExportsSkipped, tour.json
 // geodetic_exports_skipped).
-void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour, const mission::Mission& mission,
-                        const environment::Environment& environment, std::optional<Autopilot> autopilot,
-                        const Provenance& provenance);
+void writeTourDirectory(const std::filesystem::path& dir, const mission::TourResult& tour,
+                        const mission::Mission& mission, const environment::Environment& environment,
+                        std::optional<Autopilot> autopilot, const Provenance& provenance);
 
 // The side-by-side table of two modes (ceiling first), as printed and as DIR/comparison.txt.
 std::string comparisonTable(const mission::TourResult& ceiling, const mission::TourResult& free);

@@ -8,9 +8,9 @@
 // down_m, vn_m_s, ve_m_s, vd_m_s, an_m_s2, ae_m_s2, ad_m_s2, so a file cannot be read in the
 // wrong frame by mistake.
 
+#include "ceilplan/io/provenance.hpp"
 #include "ceilplan/mission/geodetic_origin.hpp"
 #include "ceilplan/mission/trajectory.hpp"
-#include "ceilplan/io/provenance.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -14,7 +14,8 @@ namespace ceilplan::io {
 
 // {"policy", "fill_max_m" (null unless fill), "unknown_volume_m3", "assumed_free_volume_m3",
 // "regions", "filled_regions" (null unless fill)}.
-nlohmann::json unknownSpaceJson(const environment::UnknownSpace& unknown, const environment::UnknownSpaceSummary& summary);
+nlohmann::json unknownSpaceJson(const environment::UnknownSpace& unknown,
+                                const environment::UnknownSpaceSummary& summary);
 // The same for an environment's index.
 nlohmann::json unknownSpaceJson(const environment::Environment& environment);
 // One line for text outputs, e.g. "fill (pockets up to 1 m): 0.42 of 12.3 m3 unknown assumed free (7 of 19 regions)".

@@ -17,7 +17,7 @@ struct BatterySpec {
   double start_soc = 0.95;    // every sortie takes off at this SOC (the paper's missions)
   double reserve_soc = 0.25;  // and lands with at least this much
   Turnaround between_sorties = Turnaround::Recharge;
-  double swap_s = 120.0;      // landing to take-off with a swapped pack
+  double swap_s = 120.0;  // landing to take-off with a swapped pack
   std::string description = "built-in: the founding paper's 4S 5.2 Ah pack at 95 %";  // for reports: where it came from
 
   // Throws ceilplan::InputError for a bad pack, an SOC outside [0, 1], a start SOC at or below

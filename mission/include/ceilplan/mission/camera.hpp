@@ -19,8 +19,8 @@ namespace ceilplan::mission {
 enum class CaptureStyle { Hover, OnTheMove };
 
 struct Camera {
-  std::string name = "custom";      // the preset's name, or "custom"
-  double sensor_width_mm = 0.0;     // along the image width
+  std::string name = "custom";   // the preset's name, or "custom"
+  double sensor_width_mm = 0.0;  // along the image width
   double sensor_height_mm = 0.0;
   int image_width_px = 0;
   int image_height_px = 0;
@@ -30,12 +30,12 @@ struct Camera {
   Eigen::Vector3d mount_offset_m = Eigen::Vector3d::Zero();
   double gimbal_pitch_min_deg = -90.0;  // +90 is straight up, 0 level, -90 straight down
   double gimbal_pitch_max_deg = 90.0;
-  double min_focus_m = 0.0;             // nearest sharp distance, along the optical axis
-  double min_photo_interval_s = 0.0;    // shortest time between two photos
+  double min_focus_m = 0.0;           // nearest sharp distance, along the optical axis
+  double min_photo_interval_s = 0.0;  // shortest time between two photos
   CaptureStyle capture = CaptureStyle::Hover;
-  double hover_s = 2.0;          // Hover: time stopped per photo (stop, settle, shoot) [open]
-  double exposure_s = 0.001;     // OnTheMove: shutter time
-  double blur_limit_px = 0.5;    // OnTheMove: largest motion blur allowed in a photo, pixels
+  double hover_s = 2.0;        // Hover: time stopped per photo (stop, settle, shoot) [open]
+  double exposure_s = 0.001;   // OnTheMove: shutter time
+  double blur_limit_px = 0.5;  // OnTheMove: largest motion blur allowed in a photo, pixels
 
   // Throws ceilplan::InputError naming the first bad field and its range.
   void validate() const;

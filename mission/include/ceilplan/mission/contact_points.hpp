@@ -3,11 +3,11 @@
 // InspectionTarget the tour's viewpoint search (chooseViewpoint) places a hugging pose at, so
 // the ceiling effect pays during every reading. docs/coverage.md, "Contact grids".
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
 #include "ceilplan/mission/region_surface.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <vector>
 

@@ -6,10 +6,10 @@
 // (OcTree::computeRayKeys, the keys looked up among the tree's known-free leaves, read once), not
 // through the planner's voxel grid or any of its visibility bookkeeping. docs/coverage.md, "Re-check".
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
 #include "ceilplan/mission/region_surface.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <octomap/OcTree.h>
 
@@ -40,8 +40,8 @@ struct RegionCoverageCheck {
 
   // Per element (RegionSurface order).
   std::vector<std::uint8_t> covered;
-  std::vector<float> best_gsd_mm_px;     // +inf if no photo sees it
-  std::vector<std::uint16_t> view_count; // photos seeing it at or below the required GSD and incidence
+  std::vector<float> best_gsd_mm_px;      // +inf if no photo sees it
+  std::vector<std::uint16_t> view_count;  // photos seeing it at or below the required GSD and incidence
 
   double coveredShare() const { return area_m2 > 0.0 ? covered_area_m2 / area_m2 : 0.0; }
   double coveredReachableShare() const {
@@ -56,8 +56,8 @@ struct CoverageCheck {
 
 // `surfaces[r]` and `reachable[r]` (per element, from the planner, for the reachable share only)
 // belong to `regions[r]`; `photos` are the poses flown. Runs on `workers` threads.
-CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera, const std::vector<CoverageRegion>& regions,
-                            const std::vector<RegionSurface>& surfaces,
+CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera,
+                            const std::vector<CoverageRegion>& regions, const std::vector<RegionSurface>& surfaces,
                             const std::vector<std::vector<std::uint8_t>>& reachable,
                             const std::vector<CameraPose>& photos, int workers = 2);
 

@@ -16,17 +16,17 @@
 namespace ceilplan::mission {
 
 struct ViewPass {
-  std::vector<std::uint32_t> views;  // indices into the caller's list, in flying order
+  std::vector<std::uint32_t> views;                      // indices into the caller's list, in flying order
   Eigen::Vector3d direction = Eigen::Vector3d::UnitY();  // unit, along which the pass flies (first to last)
-  double length_m = 0.0;             // first to last camera position, along the views
+  double length_m = 0.0;                                 // first to last camera position, along the views
 };
 
 struct PassPlan {
-  std::vector<ViewPass> passes;   // in flying order; every view in exactly one
-  double route_m = 0.0;           // closed route through the passes in order (camera positions)
-  double generic_route_m = 0.0;   // closed route of a generic tour of the same views
-  std::string generic_method;     // how generic_route_m was found
-  bool passes_win = false;        // route_m <= generic_route_m: fly the passes
+  std::vector<ViewPass> passes;  // in flying order; every view in exactly one
+  double route_m = 0.0;          // closed route through the passes in order (camera positions)
+  double generic_route_m = 0.0;  // closed route of a generic tour of the same views
+  std::string generic_method;    // how generic_route_m was found
+  bool passes_win = false;       // route_m <= generic_route_m: fly the passes
 };
 
 // Orders `poses` (their cameras at `camera_m`) into passes. The views marked in `in_lanes`

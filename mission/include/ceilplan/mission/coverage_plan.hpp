@@ -4,6 +4,7 @@
 // a tour flies: photo stops (fixed poses with a dwell) grouped into passes, plus the elements
 // no valid pose can see. docs/coverage.md.
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_passes.hpp"
@@ -12,7 +13,6 @@
 #include "ceilplan/mission/region_surface.hpp"
 #include "ceilplan/mission/view_selection.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -28,14 +28,15 @@ namespace ceilplan::mission {
 struct PlannedPhoto {
   CameraPose pose;
   Eigen::Vector3d camera_m = Eigen::Vector3d::Zero();
-  int region = 0;               // index into CoveragePlan::regions
-  int pass = 0;                 // index into that region's passes
-  double distance_m = 0.0;      // area-weighted mean over the elements it covers
-  double gsd_mm_px = 0.0;       // likewise
-  double covered_area_m2 = 0.0; // of the region, in the covered part of the image
-  double hover_current_a = 0.0; // at the pose, under the mode's cost model
-  double stop_s = 0.0;          // hover here this long (0 when shooting on the move)
-  double max_speed_m_s = 0.0;   // flying on to the next photo: the transit speed, on the move capped by the blur limit and photo interval
+  int region = 0;                // index into CoveragePlan::regions
+  int pass = 0;                  // index into that region's passes
+  double distance_m = 0.0;       // area-weighted mean over the elements it covers
+  double gsd_mm_px = 0.0;        // likewise
+  double covered_area_m2 = 0.0;  // of the region, in the covered part of the image
+  double hover_current_a = 0.0;  // at the pose, under the mode's cost model
+  double stop_s = 0.0;           // hover here this long (0 when shooting on the move)
+  double max_speed_m_s =
+      0.0;  // flying on to the next photo: the transit speed, on the move capped by the blur limit and photo interval
 };
 
 struct RegionPlan {
@@ -44,12 +45,12 @@ struct RegionPlan {
   std::vector<std::uint8_t> reachable;  // per element: some valid candidate pose covers it
   double reachable_area_m2 = 0.0;
   double unreachable_area_m2 = 0.0;
-  double heading_deg = 0.0;             // the region's long axis (regionHeading)
-  std::vector<std::uint32_t> photos;    // indices into CoveragePlan::photos, in pass order
-  PassPlan passes;                      // views index `photos` (passes[k].views[i] -> photos[...])
-  std::size_t candidates = 0;           // candidate views after filtering
-  GenerationStats generation;           // seeds, poses tried, repairs
-  SetCoverResult selection;             // candidate indices, costs and improvement counters
+  double heading_deg = 0.0;           // the region's long axis (regionHeading)
+  std::vector<std::uint32_t> photos;  // indices into CoveragePlan::photos, in pass order
+  PassPlan passes;                    // views index `photos` (passes[k].views[i] -> photos[...])
+  std::size_t candidates = 0;         // candidate views after filtering
+  GenerationStats generation;         // seeds, poses tried, repairs
+  SetCoverResult selection;           // candidate indices, costs and improvement counters
 
   // Centres of the elements no candidate covers.
   std::vector<Eigen::Vector3d> unreachableCentres() const;
@@ -60,7 +61,7 @@ struct CoverageTimes {
   double surfaces_s = 0.0;
   double candidates_s = 0.0;  // lattice, visibility and repairs
   double costs_s = 0.0;
-  double selection_s = 0.0;   // greedy and local improvement
+  double selection_s = 0.0;  // greedy and local improvement
   double passes_s = 0.0;
 };
 
@@ -81,14 +82,14 @@ struct CoveragePlanOptions {
 
 // One photo as flown: a row of photos.csv (docs/coverage.md, "Outputs").
 struct PhotoRow {
-  int index = 0;                  // 1-based, in flying order
-  std::optional<int> sortie;      // 1-based; empty until a tour assigns it
-  std::optional<double> t_s;      // when the photo is taken, from the first take-off; empty until a tour times it
+  int index = 0;              // 1-based, in flying order
+  std::optional<int> sortie;  // 1-based; empty until a tour assigns it
+  std::optional<double> t_s;  // when the photo is taken, from the first take-off; empty until a tour times it
   Eigen::Vector3d camera_m = Eigen::Vector3d::Zero();  // the camera's optical centre, map frame
-  double yaw_deg = 0.0;           // heading, clockwise from north
-  double gimbal_pitch_deg = 0.0;  // +90 straight up
-  double distance_m = 0.0;        // area-weighted mean distance to the surface it covers
-  double gsd_mm_px = 0.0;         // area-weighted mean GSD over the surface it covers
+  double yaw_deg = 0.0;                                // heading, clockwise from north
+  double gimbal_pitch_deg = 0.0;                       // +90 straight up
+  double distance_m = 0.0;                             // area-weighted mean distance to the surface it covers
+  double gsd_mm_px = 0.0;                              // area-weighted mean GSD over the surface it covers
   std::string region;
 };
 

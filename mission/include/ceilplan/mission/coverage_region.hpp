@@ -4,8 +4,8 @@
 // A region is a box or a vertical polygon prism in the map frame, and a choice of which way
 // its surfaces may face. docs/coverage.md, "Regions".
 
-#include "ceilplan/mission/camera.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/mission/camera.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -55,10 +55,10 @@ struct CoverageRegion {
   std::string name;
   RegionShape shape;
   FaceSet faces;
-  double gsd_mm_px = 1.0;          // required ground sample distance: every element at or below it
-  double overlap_front_pct = 70.0; // along the direction of flight (the image height)
-  double overlap_side_pct = 60.0;  // across it (the image width)
-  double max_incidence_deg = 45.0; // largest angle between a line of sight and the surface normal
+  double gsd_mm_px = 1.0;           // required ground sample distance: every element at or below it
+  double overlap_front_pct = 70.0;  // along the direction of flight (the image height)
+  double overlap_side_pct = 60.0;   // across it (the image width)
+  double max_incidence_deg = 45.0;  // largest angle between a line of sight and the surface normal
 
   // Throws ceilplan::InputError naming the region and the field: no name, no faces, GSD <= 0
   // or beyond 1000 mm/px, overlap outside [0, 100) %, incidence outside (0, 89] deg.

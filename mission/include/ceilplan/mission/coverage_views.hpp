@@ -6,13 +6,13 @@
 // are valid states of the vehicle (Environment::isStateValid) between the minimum focus
 // distance and the distance the GSD allows. docs/coverage.md, "Candidate views".
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
 #include "ceilplan/mission/region_surface.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
 #include "ceilplan/planner/reachable_space.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -26,7 +26,7 @@ struct SeenElement {
   std::uint32_t element = 0;  // index into RegionSurface::elements
   float gsd_mm_px = 0.0f;     // at its distance and incidence
   float incidence_deg = 0.0f;
-  float distance_m = 0.0f;    // camera to the element's centre
+  float distance_m = 0.0f;  // camera to the element's centre
 };
 
 // What candidate generation tried (for reports and benchmarks).

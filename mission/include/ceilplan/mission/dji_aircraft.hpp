@@ -10,8 +10,8 @@
 namespace ceilplan::mission {
 
 struct DjiAircraft {
-  std::string drone = "m350_rtk";      // m300_rtk, m350_rtk, m30, m30t, m3e, m3t, m3d, m3td, m4e, m4t
-  std::string payload = "h20";         // h20, h20t, h20n, h30, h30t, or the drone's own camera ("builtin")
+  std::string drone = "m350_rtk";         // m300_rtk, m350_rtk, m30, m30t, m3e, m3t, m3d, m3td, m4e, m4t
+  std::string payload = "h20";            // h20, h20t, h20n, h30, h30t, or the drone's own camera ("builtin")
   std::string payload_position = "main";  // main (left, underslung), right, upper (M300/M350 RTK only)
   // The payload's gimbal pitch range in this position, degrees (+90 straight up). None: the
   // range DJI publishes for the payload (H20 series), mirrored on the upper mount.

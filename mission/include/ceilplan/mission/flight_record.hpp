@@ -22,7 +22,7 @@ struct SortieRecord {
   double turnaround_s = 0.0;                 // landing to the next take-off (the recharge, or a pack swap)
   double recharge_s = 0.0;                   // back to the start SOC at the charge current (the pack's own cycle)
 
-  double chargeAh() const;      // the trapezoid integral of the samples' current
+  double chargeAh() const;  // the trapezoid integral of the samples' current
   double flightS() const { return samples.empty() ? 0.0 : samples.back().t_s; }
   double lowestSoc() const;
 };

@@ -4,6 +4,7 @@
 // grids (a coverage mission: docs/coverage.md). Read from a mission file by io::readMission
 // (docs/missions.md).
 
+#include "ceilplan/environment/unknown_space.hpp"
 #include "ceilplan/mission/battery_spec.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
@@ -12,7 +13,6 @@
 #include "ceilplan/mission/trajectory.hpp"
 #include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
-#include "ceilplan/environment/unknown_space.hpp"
 
 #include <Eigen/Core>
 
@@ -40,15 +40,15 @@ struct Mission {
   Eigen::Vector3d home_m = Eigen::Vector3d::Zero();
   std::optional<GeodeticOrigin> origin;  // needed only to export to an autopilot
   MissionSpeeds speeds;
-  std::string mode;       // "ceiling", "free" or "both"; empty: the command decides
-  std::uint32_t seed = 1;  // of every random choice
+  std::string mode;                   // "ceiling", "free" or "both"; empty: the command decides
+  std::uint32_t seed = 1;             // of every random choice
   environment::UnknownSpace unknown;  // what the map's unknown voxels count as (docs/environment.md)
   TrajectoryOptions trajectory;       // time scaling of the flown routes (key `trajectory:`, docs/flying.md)
   bool trajectory_ned = false;        // trajectory files in NED instead of the map's ENU
   DjiAircraft dji;                    // the KMZ's aircraft, payload and failsafes (key `dji:`)
   std::vector<InspectionTarget> targets;
   // Coverage (docs/coverage.md): surfaces photographed with the camera, contact grids probed.
-  std::optional<Camera> camera;             // required by surfaces
+  std::optional<Camera> camera;  // required by surfaces
   std::vector<CoverageRegion> surfaces;
   std::vector<ContactGrid> contact_grids;
 

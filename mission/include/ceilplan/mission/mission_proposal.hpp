@@ -43,10 +43,10 @@ struct ProposalOptions {
 };
 
 struct ProposedRegion {
-  std::string name;          // "overhead_1", ... by area, largest first
+  std::string name;           // "overhead_1", ... by area, largest first
   Eigen::AlignedBox3d box_m;  // the region's faces, each with its half voxel around it
-  double area_m2 = 0.0;      // the surface's area (environment::SurfaceElement::area_m2)
-  std::size_t elements = 0;  // voxel faces
+  double area_m2 = 0.0;       // the surface's area (environment::SurfaceElement::area_m2)
+  std::size_t elements = 0;   // voxel faces
   // All the overhead area inside the box: more than area_m2 where smaller surfaces (a closet's
   // ceiling, a lamp) lie within its bounds. The mission's region covers them too.
   double box_area_m2 = 0.0;
@@ -56,7 +56,7 @@ struct MissionProposal {
   std::vector<ProposedRegion> regions;
   Eigen::Vector3d home_m = Eigen::Vector3d::Zero();
   bool home_given = false;
-  double home_height_m = 0.0;   // above the floor under the home (NaN when no floor lies below)
+  double home_height_m = 0.0;       // above the floor under the home (NaN when no floor lies below)
   std::size_t dropped_regions = 0;  // below the area or beyond the count
   double dropped_area_m2 = 0.0;
   double overhead_area_m2 = 0.0;  // of every down-facing face onto known free space (in the crop)

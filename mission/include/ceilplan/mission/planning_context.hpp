@@ -30,9 +30,9 @@ struct PlanningOptions {
   std::string ageing_model = "xu";   // of the ageing objective
   double ageing_dod = 0.0;           // 0: the route's own depth of discharge (straight-line estimate, at least 1 %)
   planner::FlightSpeeds speeds;
-  double min_ceiling_gap_m = 0.05;   // rotor plane to any ceiling, never less
-  double standoff_m = 1.0;           // free mode: the conventional distance from every structure
-  double temperature_c = 25.0;       // cell temperature for the ageing models
+  double min_ceiling_gap_m = 0.05;  // rotor plane to any ceiling, never less
+  double standoff_m = 1.0;          // free mode: the conventional distance from every structure
+  double temperature_c = 25.0;      // cell temperature for the ageing models
   environment::EnvironmentOptions environment;
   environment::UnknownSpace unknown;  // the map index's unknown-space policy
 
@@ -83,7 +83,8 @@ class PlanningContext {
   // Where a route from `origin_m` reaches under the safety rules (planner::ReachableSpace at
   // `spacing_m`): flooded on first use and kept, so the two modes of a tour share one flood.
   // Safe to call from several threads.
-  const planner::ReachableSpace& reachableFrom(const Eigen::Vector3d& origin_m, double spacing_m, int workers = 1) const;
+  const planner::ReachableSpace& reachableFrom(const Eigen::Vector3d& origin_m, double spacing_m,
+                                               int workers = 1) const;
 
  private:
   struct ReachableCache;

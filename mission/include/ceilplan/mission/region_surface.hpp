@@ -2,10 +2,10 @@
 // The surface elements of one region: the exposed voxel faces (environment/surface_elements.hpp)
 // inside its shape whose normal faces one of its face kinds.
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/surface_elements.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <vector>
 

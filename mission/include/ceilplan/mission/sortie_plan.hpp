@@ -7,10 +7,10 @@
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/battery/pack.hpp"
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/mission/battery_spec.hpp"
 #include "ceilplan/mission/pair_table.hpp"
 #include "ceilplan/mission/soc_integrator.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <optional>
 #include <string>
@@ -38,12 +38,12 @@ struct Dwell {
 
 // Everything indexed like the tour's cost matrix: 0 is home, 1..N the targets.
 struct TourCosts {
-  std::vector<std::string> names;        // names[0] is home's, e.g. "home"
+  std::vector<std::string> names;  // names[0] is home's, e.g. "home"
   // legs[i][j]: flying from i to j. Only the legs a split can fly are needed: between
   // neighbours in the order, and out of home and back where a sortie may start and end.
   PairTable<LegCost> legs;
-  std::vector<Dwell> dwells;             // dwells[0] is ignored
-  CurrentAtSoc current_at_soc;           // unset: loads are currents
+  std::vector<Dwell> dwells;    // dwells[0] is ignored
+  CurrentAtSoc current_at_soc;  // unset: loads are currents
 
   int targetCount() const { return static_cast<int>(names.size()) - 1; }
   // Throws ceilplan::InputError naming the first bad entry (sizes, NaN, negative values).
@@ -68,23 +68,23 @@ struct SortieLeg {
 
 // A point of a sortie's SOC history: flight, then the recharge back to the start SOC.
 struct SocSample {
-  double t_s = 0.0;       // from the sortie's take-off
+  double t_s = 0.0;  // from the sortie's take-off
   double soc = 0.0;
-  double current_a = 0.0; // positive discharging, negative charging
+  double current_a = 0.0;  // positive discharging, negative charging
 };
 
 struct Sortie {
-  std::vector<int> targets;     // matrix indices in visiting order
-  std::vector<SortieLeg> legs;  // home -> targets -> home
-  double charge_ah = 0.0;       // legs and dwells
-  double flight_s = 0.0;        // take-off to landing, dwells included
-  double recharge_s = 0.0;      // back to the start SOC at the pack's charge current
-  double turnaround_s = 0.0;    // landing to the next take-off: the recharge, or the pack swap
-  double fec = 0.0;             // the discharge and its recharge, against nominal capacity
-  double dod = 0.0;             // start SOC - lowest SOC
-  double lowest_soc = 0.0;      // at landing (the SOC only falls in flight)
-  double wear = 0.0;            // the ageing model's cycle wear of this sortie, fresh pack
-  std::string reason;           // why it ends where it does, one sentence
+  std::vector<int> targets;            // matrix indices in visiting order
+  std::vector<SortieLeg> legs;         // home -> targets -> home
+  double charge_ah = 0.0;              // legs and dwells
+  double flight_s = 0.0;               // take-off to landing, dwells included
+  double recharge_s = 0.0;             // back to the start SOC at the pack's charge current
+  double turnaround_s = 0.0;           // landing to the next take-off: the recharge, or the pack swap
+  double fec = 0.0;                    // the discharge and its recharge, against nominal capacity
+  double dod = 0.0;                    // start SOC - lowest SOC
+  double lowest_soc = 0.0;             // at landing (the SOC only falls in flight)
+  double wear = 0.0;                   // the ageing model's cycle wear of this sortie, fresh pack
+  std::string reason;                  // why it ends where it does, one sentence
   std::vector<SocSample> soc_history;  // leg and dwell boundaries, profile samples, recharge end
 };
 

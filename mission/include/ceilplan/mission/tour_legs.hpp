@@ -27,7 +27,7 @@ struct TourLeg {
   // false: an estimate, the straight line scored without asking whether it is valid (a tour of
   // many places estimates the legs it may fly and routes those it does).
   bool routed = true;
-  bool refined = false;                    // post-processed (shortcuts and NLopt refinement)
+  bool refined = false;  // post-processed (shortcuts and NLopt refinement)
 };
 using LegTable = PairTable<TourLeg>;  // legs[i][j] for the pairs stored
 

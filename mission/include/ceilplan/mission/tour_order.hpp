@@ -28,8 +28,8 @@ struct TourOrder {
 inline constexpr int kDefaultTourRestarts = 200;
 
 struct TourOrderOptions {
-  int exact_max_targets = 12;  // Held-Karp up to this many targets, the heuristic beyond
-  std::uint64_t seed = 1;      // for the heuristic's random restarts
+  int exact_max_targets = 12;           // Held-Karp up to this many targets, the heuristic beyond
+  std::uint64_t seed = 1;               // for the heuristic's random restarts
   int restarts = kDefaultTourRestarts;  // perturbation rounds of the heuristic (iterated local search)
 };
 
@@ -63,8 +63,9 @@ TourOrder orderTour(const CostMatrix& costs, const TourOrderOptions& options = {
 // search). Deterministic for a seed. Throws ceilplan::InputError for bad starts or lists.
 using PairCost = std::function<double(int from, int to)>;
 TourOrder neighbourListTour(int target_count, const PairCost& cost, const PairCost& bound,
-                            const std::vector<std::vector<int>>& neighbours, const std::vector<std::vector<int>>& starts,
-                            int kicks = 0, std::uint64_t seed = 1, int kick_window = 10);
+                            const std::vector<std::vector<int>>& neighbours,
+                            const std::vector<std::vector<int>>& starts, int kicks = 0, std::uint64_t seed = 1,
+                            int kick_window = 10);
 
 // The `k` nearest other places of each place by straight-line distance (ties by index), nearest
 // first: every leg is at least that long, so its charge is at least the distance times the least

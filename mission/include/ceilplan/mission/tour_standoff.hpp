@@ -27,12 +27,13 @@ struct TourStandoff {
   double narrowed_m = 0.0;      // of it, with less than the standoff
   double min_standoff_m = 0.0;  // the closest the airframe came to a structure, on a leg or hovering
   Eigen::Vector3d narrowest_m = Eigen::Vector3d::Zero();  // where
-  std::vector<NarrowedLeg> legs;       // the legs flown that narrowed, in the order flown
-  std::vector<int> narrowed_stops;     // stops (indices into TourResult::stops) whose viewpoint keeps less
+  std::vector<NarrowedLeg> legs;                          // the legs flown that narrowed, in the order flown
+  std::vector<int> narrowed_stops;  // stops (indices into TourResult::stops) whose viewpoint keeps less
 };
 
 // The standoff report of every leg the tour's plan flies and of its viewpoints, on the
 // environment it was planned in.
-TourStandoff measureTourStandoff(const TourResult& tour, const environment::Environment& environment, double standoff_m);
+TourStandoff measureTourStandoff(const TourResult& tour, const environment::Environment& environment,
+                                 double standoff_m);
 
 }  // namespace ceilplan::mission

@@ -65,10 +65,10 @@ struct TrajectorySetpoint {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // map frame, x east, y north, z up
   Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();
   Eigen::Vector3d acceleration_m_s2 = Eigen::Vector3d::Zero();
-  double yaw_rad = 0.0;          // ENU: counter-clockwise from east, in (-pi, pi]
-  double yaw_rate_rad_s = 0.0;   // ENU: positive counter-clockwise
-  double gimbal_pitch_deg = 0.0; // +90 straight up, -90 straight down
-  bool trigger = false;          // take a photo at this setpoint
+  double yaw_rad = 0.0;           // ENU: counter-clockwise from east, in (-pi, pi]
+  double yaw_rate_rad_s = 0.0;    // ENU: positive counter-clockwise
+  double gimbal_pitch_deg = 0.0;  // +90 straight up, -90 straight down
+  bool trigger = false;           // take a photo at this setpoint
 };
 
 struct Trajectory {
@@ -76,11 +76,11 @@ struct Trajectory {
   double rate_hz = 20.0;
   TrajectoryLimits limits;
   std::vector<TrajectorySetpoint> setpoints;  // at t = k / rate_hz from 0, at rest at both ends
-  int stops = 0;              // corners and waypoints where the vehicle comes to rest (end included)
-  int blended_corners = 0;    // corners passed without stopping
-  int photos = 0;             // setpoints with the trigger set
-  double length_m = 0.0;      // of the route's polyline
-  double max_corner_deviation_m = 0.0;  // furthest a blend strays from the polyline
+  int stops = 0;                              // corners and waypoints where the vehicle comes to rest (end included)
+  int blended_corners = 0;                    // corners passed without stopping
+  int photos = 0;                             // setpoints with the trigger set
+  double length_m = 0.0;                      // of the route's polyline
+  double max_corner_deviation_m = 0.0;        // furthest a blend strays from the polyline
 
   double duration_s() const { return setpoints.empty() ? 0.0 : setpoints.back().t_s; }
 };

@@ -6,11 +6,11 @@
 // area with lazy evaluation, then local improvement: drop redundant views, and exchange (add
 // one view where the views it makes redundant cost more). docs/coverage.md, "Choice of views".
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_views.hpp"
 #include "ceilplan/mission/region_surface.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -33,8 +33,9 @@ struct ViewCostOptions {
 // The cost of every candidate. The ageing models are monotone in charge for a given sortie, and
 // every view's charge feeds the same tour, so ranking by charge is ranking by wear to first order
 // (docs/coverage.md); the tour then prices the real wear.
-std::vector<ViewCost> viewCosts(const planner::FlightCostModel& model, const Camera& camera, const CandidateViews& views,
-                                const RegionSurface& surface, const ViewCostOptions& options = {});
+std::vector<ViewCost> viewCosts(const planner::FlightCostModel& model, const Camera& camera,
+                                const CandidateViews& views, const RegionSurface& surface,
+                                const ViewCostOptions& options = {});
 
 struct SetCoverOptions {
   int improvement_rounds = 4;  // rounds of redundancy removal and exchanges
@@ -45,15 +46,15 @@ struct SetCoverResult {
   double cost = 0.0;                  // sum of the chosen views' costs
   double greedy_cost = 0.0;           // before local improvement
   std::size_t greedy_views = 0;
-  std::size_t evaluations = 0;        // gains computed by the lazy greedy (plain greedy: views x rounds)
-  std::size_t removed = 0;            // views dropped as redundant
-  std::size_t exchanges = 0;          // views added where the views they made redundant cost more
+  std::size_t evaluations = 0;  // gains computed by the lazy greedy (plain greedy: views x rounds)
+  std::size_t removed = 0;      // views dropped as redundant
+  std::size_t exchanges = 0;    // views added where the views they made redundant cost more
 };
 
 // Covers every element some candidate covers (elements no candidate covers are ignored), at
 // least cost. `area` is each element's weight, `cost` each candidate's (both positive).
 // Deterministic: ties go to the lower candidate index.
-SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double>& area, const std::vector<double>& cost,
-                           const SetCoverOptions& options = {});
+SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double>& area,
+                           const std::vector<double>& cost, const SetCoverOptions& options = {});
 
 }  // namespace ceilplan::mission

@@ -7,11 +7,11 @@
 // position with the largest standoff that fits (planner/standoff.hpp). Both modes keep the same
 // clearance rules, and either way the dwell is scored with the full model.
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/mission/flight_mode.hpp"
 #include "ceilplan/planner/reachable_space.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -26,7 +26,7 @@ struct InspectionTarget {
 
   std::string name;
   Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  // on the structure's surface
-  double standoff_min_m = 0.3;  // body centre to point
+  double standoff_min_m = 0.3;                        // body centre to point
   double standoff_max_m = 1.5;
   double dwell_s = 0.0;
 
@@ -38,7 +38,7 @@ struct ViewpointOptions {
   FlightMode mode = FlightMode::Ceiling;
   // Rotors never come closer than this to the surface above (the planner's minimum ceiling gap).
   double min_ceiling_gap_m = 0.03;
-  double soc = 0.65;  // SOC at which the dwell current is evaluated (energy model's reference)
+  double soc = 0.65;        // SOC at which the dwell current is evaluated (energy model's reference)
   double standoff_m = 1.0;  // free mode: the conventional standoff from every structure
   // Whether a route from home reaches a position (a tour's planner::ReachableSpace); empty:
   // every valid position. The best reachable position wins; only where none is reachable is
@@ -49,12 +49,12 @@ struct ViewpointOptions {
 
 struct Viewpoint {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // body centre
-  double distance_m = 0.0;        // to the target point
-  double ceiling_gap_m = 0.0;     // nearest rotor-plane gap above; +inf if none
-  double standoff_m = 0.0;        // airframe to the nearest structure (planner::standoffAt)
-  double dwell_current_a = 0.0;   // full model, hovering here
-  double dwell_charge_ah = 0.0;   // dwell current x dwell time
-  bool reachable = true;          // ViewpointOptions::reachable held (or was not given)
+  double distance_m = 0.0;                               // to the target point
+  double ceiling_gap_m = 0.0;                            // nearest rotor-plane gap above; +inf if none
+  double standoff_m = 0.0;                               // airframe to the nearest structure (planner::standoffAt)
+  double dwell_current_a = 0.0;                          // full model, hovering here
+  double dwell_charge_ah = 0.0;                          // dwell current x dwell time
+  bool reachable = true;                                 // ViewpointOptions::reachable held (or was not given)
 };
 
 // A target lies on structure: some occupied voxel within its standoff range (standoff_max_m)

@@ -3,8 +3,8 @@
 // FEC = (Q + Q) / (2 C_nom) = Q / C_nom (Kocer et al. 2019, arXiv 1812.11707, eq. 6),
 // with C_nom the pack's nominal capacity.
 
-#include "ceilplan/planner/flight_objective.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/planner/flight_objective.hpp"
 
 #include <stdexcept>
 

@@ -4,9 +4,9 @@
 // gaps), and so how long it takes and how much charge it takes out of the pack. Every planner
 // objective is a weighted sum of these totals; see docs/planner.md.
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/environment/environment.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <Eigen/Core>
 
@@ -22,10 +22,11 @@ struct FlightSpeeds {
   static constexpr double kMinSpeed_m_s = 0.01;
   static constexpr double kMaxNearCeilingGapRadii = 10.0;
 
-  double cruise_m_s = 2.0;            // horizontal, in free air
-  double near_ceiling_m_s = 1.8;      // horizontal, when a rotor is closer than near_ceiling_gap_radii R to a ceiling (docs/planner.md: break-even)
+  double cruise_m_s = 2.0;              // horizontal, in free air
+  double near_ceiling_m_s = 1.8;        // horizontal, when a rotor is closer than near_ceiling_gap_radii R to a ceiling
+                                        // (docs/planner.md: break-even)
   double near_ceiling_gap_radii = 2.0;  // where the ceiling effect has nearly faded (docs/models.md, "Ceiling effect")
-  double climb_m_s = 1.0;             // vertical rate limits
+  double climb_m_s = 1.0;               // vertical rate limits
   double descent_m_s = 0.8;
 
   // Throws ceilplan::InputError naming the bad field (a speed under kMinSpeed_m_s, a non-positive
@@ -57,7 +58,7 @@ struct CostModelOptions {
 struct PointConditions {
   std::array<energy::RotorCeiling, energy::EnergyModel::kMaxRotors> rotors{};
   int rotor_count = 0;
-  double ground_gap_m = energy::kNoSurface;        // area-weighted mean gap of the ground under the discs
+  double ground_gap_m = energy::kNoSurface;           // area-weighted mean gap of the ground under the discs
   double nearest_ceiling_gap_m = energy::kNoSurface;  // rotor plane to the nearest ceiling, any rotor (speed rule)
   double standoff_shortfall_m = 0.0;  // how far the standoff preference is from kept here (0 without one)
 };
@@ -69,9 +70,9 @@ PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const
 
 // The vehicle's velocity along a motion direction at a point.
 struct Velocity {
-  double along_m_s = 0.0;       // along the path
+  double along_m_s = 0.0;  // along the path
   double horizontal_m_s = 0.0;
-  double climb_m_s = 0.0;       // positive up
+  double climb_m_s = 0.0;  // positive up
 };
 
 struct MotionTotals {

@@ -7,8 +7,8 @@
 
 #include "ceilplan/planner/flight_cost_model.hpp"
 
-#include <Eigen/Core>
 #include <ompl/base/OptimizationObjective.h>
+#include <Eigen/Core>
 
 #include <string>
 #include <vector>

@@ -4,15 +4,15 @@
 // the path with the objective (shortcuts, NLopt refinement) and re-checks it densely. A path
 // that fails the dense re-check is an error, never a result.
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/planner/flight_objective.hpp"
 #include "ceilplan/planner/lattice_settings.hpp"
 #include "ceilplan/planner/objective_factory.hpp"
 #include "ceilplan/planner/path_refinement.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
-#include "ceilplan/core/error.hpp"
 
-#include <Eigen/Core>
 #include <ompl/base/SpaceInformation.h>
+#include <Eigen/Core>
 
 #include <cstdint>
 #include <memory>
@@ -27,14 +27,14 @@ namespace ceilplan::planner {
 struct PlanRequest {
   Eigen::Vector3d start_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d goal_m = Eigen::Vector3d::Zero();
-  std::string planner;            // empty: defaultPlannerName()
+  std::string planner;  // empty: defaultPlannerName()
   // For a sampling search; the deterministic ones run to completion, and so does the
   // post-processing (RefinementOptions::max_evaluations bounds it, not a clock).
   double time_limit_s = 5.0;
   // The longest search: a day. OMPL's clock overflows on far larger limits and stops at once.
   static constexpr double kMaxTimeLimit_s = 86400.0;
-  double band_fraction = 0.0;     // share of samples aimed at the ceiling band (0, the default: uniform; docs/planner.md)
-  bool refine = true;             // shortcuts + NLopt refinement
+  double band_fraction = 0.0;  // share of samples aimed at the ceiling band (0, the default: uniform; docs/planner.md)
+  bool refine = true;          // shortcuts + NLopt refinement
   RefinementOptions refinement;
   LatticeSettings lattice = queryLatticeSettings();  // the lattice planners' spacing
   // Known routes from start to goal (e.g. the free-mode plan): each that is valid under these
@@ -46,11 +46,11 @@ struct PlanRequest {
 struct PlanResult {
   std::vector<Eigen::Vector3d> waypoints;
   std::string planner;
-  double cost = 0.0;             // under the planning objective, after post-processing
-  double search_cost = 0.0;      // as the planner returned it
+  double cost = 0.0;         // under the planning objective, after post-processing
+  double search_cost = 0.0;  // as the planner returned it
   double search_time_s = 0.0;
   double total_time_s = 0.0;
-  bool from_candidate = false;   // one of PlanRequest::candidates beat the search
+  bool from_candidate = false;  // one of PlanRequest::candidates beat the search
 };
 
 class FlightPlanner {

@@ -67,7 +67,7 @@ class LatticeRoadmap : public LatticePlannerBase {
   const std::vector<Eigen::Vector3d>& places() const { return places_m_; }
   std::size_t nodeCount() const { return node_count_; }
   std::size_t validNodeCount() const { return valid_nodes_.size(); }
-  std::size_t edgeCount() const;  // directed lattice edges
+  std::size_t edgeCount() const;                                                // directed lattice edges
   std::size_t bridgeVertexCount() const { return bridge_positions_m_.size(); }  // added by refinement
   std::size_t memoryBytes() const;
 
@@ -110,16 +110,16 @@ class LatticeRoadmap : public LatticePlannerBase {
 
   void settingsChanged() override { clear(); }
 
-  const SafetyRules* rules_ = nullptr;           // behind the space's validity checker
-  const FlightObjective* objective_ = nullptr;   // the roadmap's costs; null until built
+  const SafetyRules* rules_ = nullptr;          // behind the space's validity checker
+  const FlightObjective* objective_ = nullptr;  // the roadmap's costs; null until built
   std::size_t node_count_ = 0;
-  std::vector<std::uint32_t> slot_;         // lattice node -> row of core_costs_, or kNoSlot
-  std::vector<std::uint32_t> valid_nodes_;  // rows of core_costs_ -> lattice node
-  std::vector<float> core_costs_;           // 26 per valid node, +inf where no valid edge
-  std::vector<Eigen::Vector3d> bridge_positions_m_;   // vertices refinement added
-  std::vector<std::vector<Arc>> bridge_arcs_;        // out of each of them
+  std::vector<std::uint32_t> slot_;                       // lattice node -> row of core_costs_, or kNoSlot
+  std::vector<std::uint32_t> valid_nodes_;                // rows of core_costs_ -> lattice node
+  std::vector<float> core_costs_;                         // 26 per valid node, +inf where no valid edge
+  std::vector<Eigen::Vector3d> bridge_positions_m_;       // vertices refinement added
+  std::vector<std::vector<Arc>> bridge_arcs_;             // out of each of them
   std::vector<std::pair<std::uint32_t, Arc>> node_arcs_;  // out of lattice nodes, sorted by node
-  std::vector<Eigen::Vector3d> places_m_;   // build()'s places
+  std::vector<Eigen::Vector3d> places_m_;                 // build()'s places
   std::vector<Place> places_;
   std::vector<std::optional<Blockage>> place_blockages_;  // of build()'s places left apart
 };

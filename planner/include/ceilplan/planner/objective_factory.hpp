@@ -1,9 +1,9 @@
 #pragma once
 // The objectives by name: length, time, charge, fec, ageing.
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/planner/ageing_rates.hpp"
 #include "ceilplan/planner/flight_objective.hpp"
-#include "ceilplan/core/error.hpp"
 
 #include <memory>
 #include <string>

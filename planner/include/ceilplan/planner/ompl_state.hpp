@@ -3,9 +3,9 @@
 
 #include "ceilplan/environment/environment.hpp"
 
-#include <Eigen/Core>
 #include <ompl/base/State.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <Eigen/Core>
 
 #include <memory>
 

@@ -22,8 +22,8 @@ Waypoints shortcutPath(const Waypoints& path, const SafetyRules& rules, const Fl
 // machine's speed or load.
 struct RefinementOptions {
   int max_evaluations = 600;
-  int max_waypoints = 12;      // the path is resampled to at most this many waypoints first
-  double max_move_m = 0.6;     // each inner waypoint moves at most this far per axis
+  int max_waypoints = 12;   // the path is resampled to at most this many waypoints first
+  double max_move_m = 0.6;  // each inner waypoint moves at most this far per axis
 };
 
 // Moves the inner waypoints with NLopt's LN_BOBYQA on cost x (1 + number of invalid motions),

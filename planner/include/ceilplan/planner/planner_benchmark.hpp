@@ -27,11 +27,11 @@ std::string plannerList(const std::vector<std::string>& names);
 
 struct PlannerBenchmarkOptions {
   std::vector<std::string> planners = samplingPlannerNames();  // any of plannerNames()
-  LatticeSettings lattice;            // for the lattice planners among them
-  unsigned runs = 10;                 // per planner
-  double time_limit_s = 5.0;          // per run
-  double band_fraction = 0.0;         // share of samples from the ceiling band (0: uniform)
-  bool refine = true;                 // post-process with NLopt refinement, as plan() does
+  LatticeSettings lattice;                                     // for the lattice planners among them
+  unsigned runs = 10;                                          // per planner
+  double time_limit_s = 5.0;                                   // per run
+  double band_fraction = 0.0;                                  // share of samples from the ceiling band (0: uniform)
+  bool refine = true;                                          // post-process with NLopt refinement, as plan() does
   std::string experiment = "ceilplan";
   // OMPL's benchmark log (ompl_benchmark_statistics format) is written here; null: none. A stream,
   // not a file name: the caller writes it with its other outputs, all or nothing.
@@ -52,8 +52,8 @@ struct PlannerBenchmarkRow {
   std::size_t runs = 0;
   int solved = 0;
   double median_first_solution_s;
-  double median_raw_cost_ratio;    // the planner's own path, before post-processing
-  double median_cost_ratio;        // after shortcuts and refinement
+  double median_raw_cost_ratio;  // the planner's own path, before post-processing
+  double median_cost_ratio;      // after shortcuts and refinement
   double best_cost_ratio;
   // When the planner's own best cost first came within 5 % of the reference's raw (search)
   // cost; infinite for a run that never did.

@@ -5,8 +5,8 @@
 // preference of its cost (CostModelOptions::standoff_m), not a rule. Everything is const and
 // safe to call from many threads.
 
-#include "ceilplan/environment/environment.hpp"
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/environment/environment.hpp"
 
 #include <Eigen/Core>
 

@@ -25,8 +25,8 @@ double standoffAt(const environment::Environment& environment, const Eigen::Vect
 
 // A stretch of a path where the standoff was not kept.
 struct NarrowedSpan {
-  double from_m = 0.0, to_m = 0.0;  // along the path, from its start
-  double min_standoff_m = 0.0;      // the closest the airframe came
+  double from_m = 0.0, to_m = 0.0;                        // along the path, from its start
+  double min_standoff_m = 0.0;                            // the closest the airframe came
   Eigen::Vector3d narrowest_m = Eigen::Vector3d::Zero();  // where
 };
 
