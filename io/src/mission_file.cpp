@@ -122,7 +122,7 @@ std::vector<mission::InspectionTarget> readTargets(const Section& root, bool req
 }
 
 std::filesystem::path existingFile(const Section& root, const std::string& key) {
-  const std::filesystem::path path = root.file().path().parent_path() / root.text(key);
+  std::filesystem::path path = root.file().path().parent_path() / root.text(key);
   std::error_code ec;
   const std::string named = "'" + key + "' names " + printableText(path.string(), 256);
   if (std::filesystem::is_directory(path, ec)) root.fail(named + ", which is a directory, not a file");
