@@ -175,7 +175,8 @@ TEST(RealData, OctomapScanWithoutOriginsVouchesOnlyForSpaceBetweenItsSurfaces) {
       "box with a point above and below it in its column whose centre lies farther than 0.4 m from them is free; "
       "the rest is unknown: an obstacle for planning unless --unknown free or fill, and no ceiling is seen through "
       "that band; beyond the scanned surfaces (outside walls, beside the structure) the cloud says nothing, so that "
-      "space is unknown");
+      "space is unknown; holes of up to two voxels across in a scanned floor or ceiling take the floor and ceiling "
+      "around them (44 columns)");
   EXPECT_NEAR(sidecar["figures"]["occupied_m3"].get<double>(), 75.0, 3.0);  // the same voxels hold points
   expectExtent(sidecar, {-0.2, -15.2, -1.2}, {27.2, 16.6, 10.2});
   // The scanner stood 5 cm above the ground: it saw the ground only round itself, and under the
