@@ -47,7 +47,7 @@ void expectExtent(const nlohmann::json& sidecar, const Eigen::Vector3d& min, con
 // path, written beside the map.
 fs::path missionFor(const std::string& data_set, const fs::path& map) {
   const std::string text = testing::readWholeFile(kData / data_set / "mission.yaml");
-  const fs::path mission = map.parent_path() / "mission.yaml";
+  fs::path mission = map.parent_path() / "mission.yaml";  // not const: returned by move
   testing::writeWholeFile(mission,
                           testing::substituted(text, {{"../../../out/real-data/" + data_set + ".bt", map.string()},
                                                       {"../../../maps/", CEILPLAN_SOURCE_DIR "/maps/"}}));
