@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <limits>
 #include <thread>
+#include <tuple>
+#include <utility>
 
 namespace ceilplan::environment {
 namespace detail {
@@ -117,6 +119,56 @@ bool clipToBox(Eigen::Vector3d& start, Eigen::Vector3d& stop, const Eigen::Align
 }
 
 int workerCount() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
+// A scan's floors and ceilings have holes: a lamp's or a beam's shadow, a voxel between sparse
+// returns. A column in one has a surface on one side only, so between surfaces it would stay
+// unknown, a pillar of unknown space standing in a corridor. A column inside a hole of at most two
+// voxels across (the columns with a surface above and one below, closed morphologically by a 3 x 3
+// square: the outline of what was scanned does not grow, and a gap wider than two voxels stays
+// open) takes the highest floor and the lowest ceiling of the columns around it that have both:
+// it is free only below every ceiling and above every floor beside it. Returns how many columns
+// were closed.
+std::size_t closeHolesInSurfaces(std::vector<int>& lowest, std::vector<int>& highest,
+                                 const std::vector<int>& occupied_voxels, int nx, int ny) {
+  const auto column = [nx](int i, int j) { return std::size_t(j) * nx + i; };
+  // A floor and a ceiling: a voxel without a point between the column's lowest and highest
+  // point-holding voxels (a wall's column, solid from bottom to top, has none).
+  const auto spans = [&](int i, int j) {
+    const std::size_t c = column(i, j);
+    return highest[c] - lowest[c] + 1 > occupied_voxels[c];
+  };
+  const auto anyAround = [nx, ny](int i, int j, const auto& test) {
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di)
+        if (i + di >= 0 && i + di < nx && j + dj >= 0 && j + dj < ny && test(i + di, j + dj)) return true;
+    return false;
+  };
+  std::vector<char> dilated(std::size_t(nx) * ny, 0);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) dilated[column(i, j)] = anyAround(i, j, spans);
+  std::vector<std::pair<int, int>> closed;  // (floor, ceiling) per column, or (0, -1): not closed
+  closed.assign(std::size_t(nx) * ny, {0, -1});
+  std::size_t count = 0;
+  for (int j = 1; j + 1 < ny; ++j)
+    for (int i = 1; i + 1 < nx; ++i) {
+      if (spans(i, j) || anyAround(i, j, [&](int a, int b) { return !dilated[column(a, b)]; })) continue;
+      int floor = std::numeric_limits<int>::min(), ceiling = std::numeric_limits<int>::max();
+      anyAround(i, j, [&](int a, int b) {
+        if (spans(a, b)) {
+          floor = std::max(floor, lowest[column(a, b)]);
+          ceiling = std::min(ceiling, highest[column(a, b)]);
+        }
+        return false;
+      });
+      // Not when the column's own points could fill the span (a wall's column): nothing to free.
+      if (ceiling - floor - 1 <= occupied_voxels[column(i, j)]) continue;
+      closed[column(i, j)] = {floor, ceiling};
+      ++count;
+    }
+  for (std::size_t c = 0; c < closed.size(); ++c)
+    if (closed[c].second >= 0) std::tie(lowest[c], highest[c]) = closed[c];
+  return count;
+}
 
 }  // namespace
 
@@ -354,6 +406,7 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
   // above and one below (AssumedFreeRegion::BetweenSurfaces).
   const int nx = frame.size()[0], ny = frame.size()[1], nz = frame.size()[2];
   std::vector<int> lowest(std::size_t(nx) * ny, nz), highest(std::size_t(nx) * ny, -1);
+  std::vector<int> occupied_voxels(std::size_t(nx) * ny, 0);
   const bool between = options.region == AssumedFreeRegion::BetweenSurfaces;
   if (between)
     for (int k = 0; k < nz; ++k)
@@ -363,7 +416,9 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
             const std::size_t column = std::size_t(j) * nx + i;
             lowest[column] = std::min(lowest[column], k);
             highest[column] = k;
+            ++occupied_voxels[column];
           }
+  const std::size_t closed_columns = between ? closeHolesInSurfaces(lowest, highest, occupied_voxels, nx, ny) : 0;
   const DistanceField distance(grid, /*unknown_is_blocked=*/false);
   if (progress) progress(0.4);
   const double free_distance = options.free_distance_m;
@@ -400,9 +455,15 @@ BuiltMap mapFromPointsAlone(const std::vector<Eigen::Vector3d>& points_m, const 
   line += between ? "; beyond the scanned surfaces (outside walls, beside the structure) the cloud says nothing, "
                     "so that space is unknown"
                   : ", behind walls and beside the structure too: planning may use space the scan never saw";
+  if (closed_columns > 0)
+    line +=
+        "; holes of up to two voxels across in a scanned floor or ceiling take the floor and ceiling around "
+        "them (" +
+        std::to_string(closed_columns) + (closed_columns == 1 ? " column)" : " columns)");
   built.free_space = line;
   built.figures = {{"points", double(points_m.size())}, {"free_distance_m", free_distance}};
   if (!crop.isEmpty()) built.figures.emplace_back("points_in_crop", double(in_crop));
+  if (between) built.figures.emplace_back("columns_closed_across_holes", double(closed_columns));
   detail::addVolumeFigures(built);
   return built;
 }

@@ -146,6 +146,38 @@ TEST(MapBuilders, ACloudAloneVouchesOnlyForSpaceBetweenItsSurfaces) {
   EXPECT_THROW(environment::assumedFreeRegionFromName("hull"), InputError);
 }
 
+// A scanned ceiling has holes (a lamp's shadow, a voxel between returns): a column under one has a
+// floor but no ceiling. A hole of up to two voxels across takes the floor and ceiling around it, so
+// it is no pillar of unknown space in the room; a wider one, and the space beyond the ceiling's
+// edge, stay unknown: the outline of what was scanned does not grow.
+TEST(MapBuilders, ACloudAloneClosesNarrowHolesInItsSurfacesOnly) {
+  const auto floor = testing::sampleRectangle({0.01, 0.02, 0.013}, {8, 0, 0}, {0, 6, 0}, 0.05);
+  const auto ceiling = testing::sampleRectangle({0.01, 0.02, 3.033}, {4, 0, 0}, {0, 6, 0}, 0.05);
+  std::vector<Eigen::Vector3d> points = floor;
+  const auto inHole = [](const Eigen::Vector3d& p, double x0, double y0, double width) {
+    return p.x() >= x0 && p.x() < x0 + width && p.y() >= y0 && p.y() < y0 + width;
+  };
+  for (const Eigen::Vector3d& point : ceiling)
+    if (!inHole(point, 2.0, 3.0, 0.1) && !inHole(point, 1.0, 1.0, 0.5)) points.push_back(point);
+  environment::PointAssumptionOptions options;
+  options.resolution_m = 0.1;
+  options.free_distance_m = 0.0;
+  const auto built = environment::mapFromPointsAlone(points, options);
+  EXPECT_EQ(stateIn(built, {2.05, 3.05, 1.5}), "free");      // under the one-voxel hole
+  EXPECT_EQ(stateIn(built, {2.05, 3.05, 3.05}), "unknown");  // the hole itself: no ceiling is made up there
+  EXPECT_EQ(stateIn(built, {1.25, 1.25, 1.5}), "unknown");   // under the 0.5 m hole
+  EXPECT_EQ(stateIn(built, {4.15, 3.05, 1.5}), "unknown");   // beyond the ceiling's edge
+  EXPECT_EQ(stateIn(built, {3.95, 3.05, 1.5}), "free");      // inside it
+  double closed = -1.0;
+  for (const auto& [name, value] : built.figures)
+    if (name == "columns_closed_across_holes") closed = value;
+  EXPECT_EQ(closed, 1.0);
+  EXPECT_NE(built.free_space.find("; holes of up to two voxels across in a scanned floor or ceiling take the floor "
+                                  "and ceiling around them (1 column)"),
+            std::string::npos)
+      << built.free_space;
+}
+
 TEST(MapBuilders, RefuseBadResolutionsAndHugeBoxesBeforeAllocating) {
   const std::vector<Eigen::Vector3d> points = {{0, 0, 0}, {1, 1, 1}};
   environment::PointAssumptionOptions options;

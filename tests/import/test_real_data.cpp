@@ -47,7 +47,7 @@ void expectExtent(const nlohmann::json& sidecar, const Eigen::Vector3d& min, con
 // path, written beside the map.
 fs::path missionFor(const std::string& data_set, const fs::path& map) {
   const std::string text = testing::readWholeFile(kData / data_set / "mission.yaml");
-  const fs::path mission = map.parent_path() / "mission.yaml";
+  fs::path mission = map.parent_path() / "mission.yaml";  // not const: returned by move
   testing::writeWholeFile(mission,
                           testing::substituted(text, {{"../../../out/real-data/" + data_set + ".bt", map.string()},
                                                       {"../../../maps/", CEILPLAN_SOURCE_DIR "/maps/"}}));
@@ -133,7 +133,7 @@ void importProposeAndTour(const std::string& scratch, const std::string& map_nam
 }
 
 TEST(RealData, EverySetCarriesItsLicenceAndSource) {
-  for (const char* data_set : {"octomap_scan", "mrpt_vlp16", "fzk_haus", "house_regr01"}) {
+  for (const char* data_set : {"octomap_scan", "geb079_points", "mrpt_vlp16", "fzk_haus", "house_regr01"}) {
     for (const char* file : {"LICENSE", "SOURCE.md"})
       EXPECT_GT(fs::file_size(kData / data_set / file), 100u) << data_set << "/" << file;
     EXPECT_NE(testing::readWholeFile(kData / data_set / "LICENSE").find("License: BSD-3-clause"), std::string::npos)
@@ -175,7 +175,8 @@ TEST(RealData, OctomapScanWithoutOriginsVouchesOnlyForSpaceBetweenItsSurfaces) {
       "box with a point above and below it in its column whose centre lies farther than 0.4 m from them is free; "
       "the rest is unknown: an obstacle for planning unless --unknown free or fill, and no ceiling is seen through "
       "that band; beyond the scanned surfaces (outside walls, beside the structure) the cloud says nothing, so that "
-      "space is unknown");
+      "space is unknown; holes of up to two voxels across in a scanned floor or ceiling take the floor and ceiling "
+      "around them (44 columns)");
   EXPECT_NEAR(sidecar["figures"]["occupied_m3"].get<double>(), 75.0, 3.0);  // the same voxels hold points
   expectExtent(sidecar, {-0.2, -15.2, -1.2}, {27.2, 16.6, 10.2});
   // The scanner stood 5 cm above the ground: it saw the ground only round itself, and under the
@@ -269,6 +270,46 @@ TEST(RealData, OctomapScanTargetOnAScannedPointMovesOntoTheVault) {
   EXPECT_NEAR(vault["point"][2].get<double>(), 10.0, 1e-9);
   EXPECT_NEAR(vault["given_point"][2].get<double>(), 10.0533, 1e-9);
   EXPECT_EQ(tour["targets_visited"], 4);
+}
+
+// --- OctoMap's FR-079 corridor: a registered multi-station cloud, no sensor origins ----------
+
+const std::string kGeb079Points = "--points " + quoted(kData / "geb079_points/geb079.pcd");
+
+// Without origins, free space is assumed between the scanned floor and ceiling (the default
+// --free-region between), with no band (--free-distance 0: the cloud is denser than the map, and
+// a band of unknown space under the ceiling would hide it from every view). Holes in the ceiling
+// and floor are closed from the columns round them, so the corridor is one way through, not cut by
+// pillars of unknown space; beside the corridor, where nothing was scanned overhead, space stays
+// unknown. Then propose and tour as a user would, within the data's support.
+TEST(RealData, Geb079PointsWithoutOriginsProposedMissionToursInBothModesWithinItsData) {
+  const fs::path map = testing::scratchDirectory("geb079_points_propose") / "geb079.bt";
+  const auto sidecar = importMap(kGeb079Points + " --resolution 0.2 --free-distance 0", map);
+  EXPECT_EQ(sidecar["figures"]["points"], 135753);
+  EXPECT_GT(sidecar["figures"]["columns_closed_across_holes"].get<double>(), 0.0);
+  EXPECT_NE(sidecar["free_space"].get<std::string>().find("; holes of up to two voxels across in a scanned floor or "
+                                                          "ceiling take the floor and ceiling around them ("),
+            std::string::npos)
+      << sidecar["free_space"];
+  expectExtent(sidecar, {-8.0, -7.6, -0.4}, {20.0, 7.6, 2.8});
+  {
+    const OccupancyMap loaded = OccupancyMap::load(map);
+    EXPECT_EQ(stateAt(loaded, {5.0, 0.0, 1.2}), "free");      // the corridor, between floor and ceiling
+    EXPECT_EQ(stateAt(loaded, {5.0, 0.0, 2.7}), "occupied");  // its ceiling
+    EXPECT_EQ(stateAt(loaded, {5.0, 5.0, 1.2}), "unknown");   // an office beside it, its ceiling never scanned
+    EXPECT_EQ(stateAt(loaded, {5.0, 0.0, 3.5}), "unknown");   // above the ceiling: outside the data
+  }
+  ProposedTour proposal;
+  proposeAndTourBothModes(map, "--max-regions 2 --gsd-mm-px 4", proposal);
+  if (HasFatalFailure()) return;
+  // The corridor's ceiling is the largest region, reachable from the home up to the clutter 10-11 m
+  // along it that leaves no way as wide as the vehicle (measured: 39.97 of 74.04 m2; 14.5 m2 while
+  // holes in the ceiling stood as pillars of unknown space across the corridor).
+  const auto coverage = nlohmann::json::parse(testing::readWholeFile(proposal.tour / "ceiling/coverage.json"));
+  ASSERT_FALSE(coverage["regions"].empty());
+  const auto& corridor = coverage["regions"][0];
+  EXPECT_GT(corridor["area_m2"].get<double>(), 50.0) << corridor;
+  EXPECT_GT(corridor["reachable_area_m2"].get<double>(), 35.0) << corridor;
 }
 
 // --- MRPT's VLP-16 street scan: 16 beams, returns up to 108 m ------------------------------
