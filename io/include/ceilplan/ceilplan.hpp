@@ -1,5 +1,6 @@
 #pragma once
-// Everything ceilplan offers a program, in one header (target ceilplan::ceilplan).
+/// @file
+/// Everything ceilplan offers a program, in one header (target ceilplan::ceilplan).
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"

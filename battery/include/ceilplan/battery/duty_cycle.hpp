@@ -1,6 +1,7 @@
 #pragma once
-// A mission template (fly, idle, charge back) repeated N times a day for D days, as in the
-// founding paper's month-long study (Kocer et al. 2019; docs/battery.md).
+/// @file
+/// A mission template (fly, idle, charge back) repeated N times a day for D days, as in the
+/// founding paper's month-long study (Kocer et al. 2019; docs/battery.md).
 
 #include "ceilplan/battery/load_profile.hpp"
 #include "ceilplan/battery/pack.hpp"
@@ -11,8 +12,8 @@
 
 namespace ceilplan::battery {
 
-// One mission. Missions start every `period_s` (0: the sum of the segments' durations); when a
-// segment stops early (a charge that reached its target) the battery idles to the slot's end.
+/// One mission. Missions start every `period_s` (0: the sum of the segments' durations); when a
+/// segment stops early (a charge that reached its target) the battery idles to the slot's end.
 struct MissionTemplate {
   LoadProfile segments;
   double period_s = 0.0;
@@ -21,41 +22,41 @@ struct MissionTemplate {
   void validate() const;
 };
 
-// The paper's mission: fly at `flight_current_a` for `flight_s`, idle for `idle_s`, then charge
-// at `charge_current_a` until SOC >= `target_soc` for at most `charge_max_s`.
+/// The paper's mission: fly at `flight_current_a` for `flight_s`, idle for `idle_s`, then charge
+/// at `charge_current_a` until SOC >= `target_soc` for at most `charge_max_s`.
 MissionTemplate flyIdleChargeMission(double flight_current_a, double flight_s, double idle_s, double charge_current_a,
                                      double charge_max_s, double target_soc);
 
-// The most steps the fixed-step scheme may take per mission. Finer steps only cost time and
-// memory: the exact scheme (step 0) is exact, and the paper's 30 s take 90 steps a mission.
+/// The most steps the fixed-step scheme may take per mission. Finer steps only cost time and
+/// memory: the exact scheme (step 0) is exact, and the paper's 30 s take 90 steps a mission.
 inline constexpr double kMaxStepsPerMission = 10000.0;
 
-// Steps the fixed-step scheme takes over one mission slot at `step_s`; 0 for the exact scheme.
+/// Steps the fixed-step scheme takes over one mission slot at `step_s`; 0 for the exact scheme.
 double stepsPerMission(const MissionTemplate& mission, double step_s);
 
 struct DutyCycle {
   MissionTemplate mission;
   int missions_per_day = 15;
   int days = 30;
-  double day_s = 86400.0;     // missions start at the beginning of each day; the pack rests overnight
-  double initial_soc = 0.95;  // no self-discharge (paper)
+  double day_s = 86400.0;     ///< missions start at the beginning of each day; the pack rests overnight
+  double initial_soc = 0.95;  ///< no self-discharge (paper)
 
   void validate() const;
 };
 
 struct MissionTally {
-  long index = 0;          // 0-based over the whole run
-  int day = 0;             // 0-based
-  int mission_in_day = 0;  // 0-based
+  long index = 0;          ///< 0-based over the whole run
+  int day = 0;             ///< 0-based
+  int mission_in_day = 0;  ///< 0-based
   double start_s = 0.0;
-  double fec = 0.0;                // this mission's FEC (its discharge and charge, against C_nom)
-  double faded_pack_cycles = 0.0;  // the same against the usable capacity C_nom * SOH
+  double fec = 0.0;                ///< this mission's FEC (its discharge and charge, against C_nom)
+  double faded_pack_cycles = 0.0;  ///< the same against the usable capacity C_nom * SOH
   double discharge_ah = 0.0;
   double charge_ah = 0.0;
   double min_soc = 0.0;
   double end_soc = 0.0;
-  double charge_end_s = 0.0;     // end of its last charge, from the mission's start (0 if none)
-  double state_of_health = 1.0;  // during this mission
+  double charge_end_s = 0.0;     ///< end of its last charge, from the mission's start (0 if none)
+  double state_of_health = 1.0;  ///< during this mission
 };
 
 struct DayTally {
@@ -63,26 +64,26 @@ struct DayTally {
   double fec = 0.0;
   double min_soc = 0.0;
   double end_soc = 0.0;
-  double state_of_health = 1.0;  // at the day's end
+  double state_of_health = 1.0;  ///< at the day's end
 };
 
-// Called after every mission with its tally and its recorded samples; returns the state of
-// health for the missions that follow (capacity fade fed back, paper eq. 7).
+/// Called after every mission with its tally and its recorded samples; returns the state of
+/// health for the missions that follow (capacity fade fed back, paper eq. 7).
 using MissionHook = std::function<double(const MissionTally& mission, const std::vector<Sample>& samples)>;
 
 struct DutyOptions {
-  double step_s = 0.0;                            // 0 = exact, event-driven
-  bool record_missions = true;                    // keeps every mission's tally in DutyResult::missions
-  bool record_first_day = true;                   // keeps samples of mission 1 and day 1
-  bool record_run = false;                        // keeps samples of the whole run
-  MissionHook on_mission;                         // optional
-  std::function<void(double fraction)> progress;  // optional, called once a day
-  // Optional: called after every day; returning false ends the run there.
+  double step_s = 0.0;                            ///< 0 = exact, event-driven
+  bool record_missions = true;                    ///< keeps every mission's tally in DutyResult::missions
+  bool record_first_day = true;                   ///< keeps samples of mission 1 and day 1
+  bool record_run = false;                        ///< keeps samples of the whole run
+  MissionHook on_mission;                         ///< optional
+  std::function<void(double fraction)> progress;  ///< optional, called once a day
+  /// Optional: called after every day; returning false ends the run there.
   std::function<bool(const DayTally& day)> continue_after_day;
 };
 
 struct DutyResult {
-  std::vector<MissionTally> missions;  // empty unless DutyOptions::record_missions
+  std::vector<MissionTally> missions;  ///< empty unless DutyOptions::record_missions
   long missions_flown = 0;
   std::vector<DayTally> days;
   BatteryState final_state;
@@ -91,14 +92,14 @@ struct DutyResult {
   std::vector<Sample> run;
 
   double fecTotal() const { return final_state.fec; }
-  double fecPerMission() const;  // mean over the run
-  double fecPerDay() const;      // mean over the run
+  double fecPerMission() const;  ///< mean over the run
+  double fecPerDay() const;      ///< mean over the run
   double minSoc() const { return final_state.min_soc; }
 };
 
-// Runs the duty cycle. A mission that would cross the SOC floor throws DepletionError saying
-// which mission of which day and by how much. Throws ceilplan::InputError, before any work, for
-// a bad duty cycle or a step that cuts a mission into more than kMaxStepsPerMission steps.
+/// Runs the duty cycle. A mission that would cross the SOC floor throws DepletionError saying
+/// which mission of which day and by how much. Throws ceilplan::InputError, before any work, for
+/// a bad duty cycle or a step that cuts a mission into more than kMaxStepsPerMission steps.
 DutyResult simulateDuty(const Pack& pack, const DutyCycle& duty, const DutyOptions& options = {});
 
 }  // namespace ceilplan::battery

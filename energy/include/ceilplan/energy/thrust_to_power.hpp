@@ -1,6 +1,7 @@
 #pragma once
-// Turning a thrust ratio kappa = T_near / T_free into the ratio of induced power at equal
-// thrust, and back (docs/models.md, "From thrust ratio to power").
+/// @file
+/// Turning a thrust ratio kappa = T_near / T_free into the ratio of induced power at equal
+/// thrust, and back (docs/models.md, "From thrust ratio to power").
 
 #include "ceilplan/energy/energy_parameters.hpp"
 

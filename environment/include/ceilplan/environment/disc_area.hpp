@@ -1,7 +1,8 @@
 #pragma once
-// Exact area of a disc's overlap with an axis-aligned rectangle: how much of a rotor disc lies
-// under one map column. Exact (closed form), so a beam edge through a rotor's centre gives
-// coverage 0.5 to rounding error.
+/// @file
+/// Exact area of a disc's overlap with an axis-aligned rectangle: how much of a rotor disc lies
+/// under one map column. Exact (closed form), so a beam edge through a rotor's centre gives
+/// coverage 0.5 to rounding error.
 
 #include <Eigen/Core>
 

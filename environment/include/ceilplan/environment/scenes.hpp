@@ -1,6 +1,7 @@
 #pragma once
-// The shipped inspection scenes, built as voxel grids a sensor could have left: structure
-// occupied, the space a scan from below would see free, everything else unknown.
+/// @file
+/// The shipped inspection scenes, built as voxel grids a sensor could have left: structure
+/// occupied, the space a scan from below would see free, everything else unknown.
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
@@ -13,22 +14,22 @@ namespace ceilplan::environment {
 
 enum class Scene { Bridge, Tunnel, Warehouse, Open };
 
-// "bridge", "tunnel", "warehouse", "open"; throws ceilplan::InputError for any other name.
+/// "bridge", "tunnel", "warehouse", "open"; throws ceilplan::InputError for any other name.
 Scene sceneFromName(const std::string& name);
 const std::vector<std::string>& sceneNames();
 
-// The shipped bridge spans 48 m between its abutments.
+/// The shipped bridge spans 48 m between its abutments.
 constexpr double kShippedBridgeLength_m = 48.0;
 
 struct SceneOptions {
-  double resolution_m = 0.1;                        // in [0.02, 1] m
-  std::uint64_t seed = 1;                           // places the clutter (boulders, lamps, pallets)
-  double bridge_length_m = kShippedBridgeLength_m;  // bridge only: a multiple of 4 m in [16, 2000]
+  double resolution_m = 0.1;                        ///< in [0.02, 1] m
+  std::uint64_t seed = 1;                           ///< places the clutter (boulders, lamps, pallets)
+  double bridge_length_m = kShippedBridgeLength_m;  ///< bridge only: a multiple of 4 m in [16, 2000]
 };
 
-// Deterministic for given options. Geometry lies on multiples of 0.1 m, so at 0.1 m and finer
-// every surface is a voxel face. Throws ceilplan::InputError for an option out of range, or a
-// bridge length given for another scene.
+/// Deterministic for given options. Geometry lies on multiples of 0.1 m, so at 0.1 m and finer
+/// every surface is a voxel face. Throws ceilplan::InputError for an option out of range, or a
+/// bridge length given for another scene.
 VoxelGrid generateScene(Scene scene, const SceneOptions& options);
 VoxelGrid generateScene(Scene scene, double resolution_m, std::uint64_t seed);
 

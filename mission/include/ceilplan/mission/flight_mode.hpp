@@ -1,6 +1,7 @@
 #pragma once
-// The two ways ceilplan plans the same work: hugging ceilings where that saves charge, or as a
-// conventional planner would fly it (proximity effects ignored, a standoff kept from structure).
+/// @file
+/// The two ways ceilplan plans the same work: hugging ceilings where that saves charge, or as a
+/// conventional planner would fly it (proximity effects ignored, a standoff kept from structure).
 
 #include <string>
 #include <vector>
@@ -9,13 +10,13 @@ namespace ceilplan::mission {
 
 enum class FlightMode { Ceiling, Free };
 
-// "ceiling", "free".
+/// "ceiling", "free".
 std::string flightModeName(FlightMode mode);
-// Throws ceilplan::InputError for any other name, listing both.
+/// Throws ceilplan::InputError for any other name, listing both.
 FlightMode flightModeFromName(const std::string& name);
 const std::vector<std::string>& flightModeNames();
-// What a tour flies for "ceiling" or "free", or "both": ceiling mode, then free mode, to compare
-// them. Throws as flightModeFromName for any other name.
+/// What a tour flies for "ceiling" or "free", or "both": ceiling mode, then free mode, to compare
+/// them. Throws as flightModeFromName for any other name.
 std::vector<FlightMode> tourFlightModes(const std::string& name);
 
 }  // namespace ceilplan::mission

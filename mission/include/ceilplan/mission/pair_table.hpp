@@ -1,9 +1,10 @@
 #pragma once
-// Values for ordered pairs of a tour's places (legs, leg costs), stored sparsely: a tour of a
-// few places keeps every pair, a tour of thousands keeps only the pairs it routes (near
-// neighbours, home, what the plan flies). Indexed like a matrix, `table[from][to]`: reading a
-// pair that is not stored throws std::out_of_range, writing one stores it. docs/tours.md,
-// "Large tours".
+/// @file
+/// Values for ordered pairs of a tour's places (legs, leg costs), stored sparsely: a tour of a
+/// few places keeps every pair, a tour of thousands keeps only the pairs it routes (near
+/// neighbours, home, what the plan flies). Indexed like a matrix, `table[from][to]`: reading a
+/// pair that is not stored throws std::out_of_range, writing one stores it. docs/tours.md,
+/// "Large tours".
 
 #include <cstddef>
 #include <map>
@@ -20,14 +21,14 @@ class PairTable {
   explicit PairTable(int place_count) : rows_(static_cast<std::size_t>(place_count)) {}
 
   int placeCount() const { return static_cast<int>(rows_.size()); }
-  // Pairs stored.
+  /// Pairs stored.
   std::size_t size() const {
     std::size_t count = 0;
     for (const auto& row : rows_) count += row.size();
     return count;
   }
   bool contains(int from, int to) const { return find(from, to) != nullptr; }
-  // The stored value, or null.
+  /// The stored value, or null.
   const Value* find(int from, int to) const {
     const auto& row = rows_.at(static_cast<std::size_t>(from));
     const auto it = row.find(to);
@@ -42,11 +43,11 @@ class PairTable {
     if (const Value* value = find(from, to)) return *value;
     throw std::out_of_range("no entry from place " + std::to_string(from) + " to place " + std::to_string(to));
   }
-  // Stores a default value if the pair is not stored yet. References stay valid while other
-  // pairs are added, so several threads may fill cells stored beforehand, one cell each.
+  /// Stores a default value if the pair is not stored yet. References stay valid while other
+  /// pairs are added, so several threads may fill cells stored beforehand, one cell each.
   Value& operator()(int from, int to) { return rows_.at(static_cast<std::size_t>(from))[to]; }
 
-  // The stored pairs out of a place, by destination.
+  /// The stored pairs out of a place, by destination.
   const std::map<int, Value>& row(int from) const { return rows_.at(static_cast<std::size_t>(from)); }
 
   class ConstRow {

@@ -1,7 +1,8 @@
 #pragma once
-// Minimises predicted battery wear: loss_per_ah x charge + loss_per_s x time, from an ageing
-// model linearised at the route's depth of discharge (ageing_rates.hpp). Additive along motions.
-// The cost is a fraction of nominal capacity.
+/// @file
+/// Minimises predicted battery wear: loss_per_ah x charge + loss_per_s x time, from an ageing
+/// model linearised at the route's depth of discharge (ageing_rates.hpp). Additive along motions.
+/// The cost is a fraction of nominal capacity.
 
 #include "ceilplan/planner/ageing_rates.hpp"
 #include "ceilplan/planner/flight_objective.hpp"

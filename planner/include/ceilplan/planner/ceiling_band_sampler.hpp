@@ -1,8 +1,9 @@
 #pragma once
-// A state sampler that puts a share of its samples in the thin band under ceilings, where a
-// ceiling-hugging optimum lies and uniform sampling rarely looks: pick a random point, find the
-// ceiling above it, and place the rotor plane a random gap between the minimum gap and the
-// band's depth (about 2 R) below it. The rest, and every point with no ceiling above, is uniform.
+/// @file
+/// A state sampler that puts a share of its samples in the thin band under ceilings, where a
+/// ceiling-hugging optimum lies and uniform sampling rarely looks: pick a random point, find the
+/// ceiling above it, and place the rotor plane a random gap between the minimum gap and the
+/// band's depth (about 2 R) below it. The rest, and every point with no ceiling above, is uniform.
 
 #include "ceilplan/environment/environment.hpp"
 
@@ -12,14 +13,14 @@
 namespace ceilplan::planner {
 
 struct CeilingBandOptions {
-  double band_fraction = 0.5;  // share of samples aimed at the band
-  double min_gap_m = 0.05;     // rotor plane to ceiling
-  double max_gap_m = 0.254;    // 2 R of the default vehicle
+  double band_fraction = 0.5;  ///< share of samples aimed at the band
+  double min_gap_m = 0.05;     ///< rotor plane to ceiling
+  double max_gap_m = 0.254;    ///< 2 R of the default vehicle
 };
 
 class CeilingBandSampler : public ompl::base::StateSampler {
  public:
-  // `environment` must outlive the sampler.
+  /// `environment` must outlive the sampler.
   CeilingBandSampler(const ompl::base::StateSpace* space, const environment::Environment& environment,
                      CeilingBandOptions options);
 

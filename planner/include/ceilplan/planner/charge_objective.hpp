@@ -1,5 +1,6 @@
 #pragma once
-// Minimises the charge drawn from the pack (Ah).
+/// @file
+/// Minimises the charge drawn from the pack (Ah).
 
 #include "ceilplan/planner/flight_objective.hpp"
 

@@ -1,7 +1,8 @@
 #pragma once
-// Minimises full equivalent cycles: the flight's discharge Q and the recharge that puts it back,
-// FEC = (Q + Q) / (2 C_nom) = Q / C_nom (Kocer et al. 2019, arXiv 1812.11707, eq. 6),
-// with C_nom the pack's nominal capacity.
+/// @file
+/// Minimises full equivalent cycles: the flight's discharge Q and the recharge that puts it back,
+/// FEC = (Q + Q) / (2 C_nom) = Q / C_nom (Kocer et al. 2019, arXiv 1812.11707, eq. 6),
+/// with C_nom the pack's nominal capacity.
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/planner/flight_objective.hpp"

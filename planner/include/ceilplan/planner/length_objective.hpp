@@ -1,5 +1,6 @@
 #pragma once
-// Minimises the path length (m).
+/// @file
+/// Minimises the path length (m).
 
 #include "ceilplan/planner/flight_objective.hpp"
 

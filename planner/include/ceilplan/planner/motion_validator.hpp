@@ -1,5 +1,6 @@
 #pragma once
-// OMPL's view of SafetyRules for straight motions.
+/// @file
+/// OMPL's view of SafetyRules for straight motions.
 
 #include "ceilplan/planner/safety_rules.hpp"
 
@@ -11,10 +12,10 @@ namespace ceilplan::planner {
 
 class FlightMotionValidator : public ompl::base::MotionValidator {
  public:
-  // `rules` must outlive the validator.
+  /// `rules` must outlive the validator.
   FlightMotionValidator(const ompl::base::SpaceInformationPtr& si, const SafetyRules& rules);
   bool checkMotion(const ompl::base::State* from, const ompl::base::State* to) const override;
-  // Reports the last valid state found by bisection-free stepping from `from`.
+  /// Reports the last valid state found by bisection-free stepping from `from`.
   bool checkMotion(const ompl::base::State* from, const ompl::base::State* to,
                    std::pair<ompl::base::State*, double>& last_valid) const override;
 

@@ -1,5 +1,6 @@
 #pragma once
-// The objectives by name: length, time, charge, fec, ageing.
+/// @file
+/// The objectives by name: length, time, charge, fec, ageing.
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/planner/ageing_rates.hpp"
@@ -13,13 +14,13 @@ namespace ceilplan::planner {
 
 struct ObjectiveChoice {
   std::string name = "charge";
-  double nominal_capacity_ah = 5.2;  // fec
-  AgeingRates ageing;                // ageing (measureAgeingRates)
+  double nominal_capacity_ah = 5.2;  ///< fec
+  AgeingRates ageing;                ///< ageing (measureAgeingRates)
 };
 
 const std::vector<std::string>& objectiveNames();
 
-// Throws ceilplan::InputError for an unknown name, listing the known ones.
+/// Throws ceilplan::InputError for an unknown name, listing the known ones.
 std::shared_ptr<FlightObjective> makeObjective(const ObjectiveChoice& choice, const ompl::base::SpaceInformationPtr& si,
                                                const FlightCostModel& model);
 

@@ -1,5 +1,6 @@
 #pragma once
-// Positions as OMPL states: a 3-D real vector space over the map's bounds.
+/// @file
+/// Positions as OMPL states: a 3-D real vector space over the map's bounds.
 
 #include "ceilplan/environment/environment.hpp"
 
@@ -23,7 +24,7 @@ inline void setPosition(ompl::base::State* state, const Eigen::Vector3d& positio
   values[2] = position_m.z();
 }
 
-// The space of body positions inside the map's known-voxel box.
+/// The space of body positions inside the map's known-voxel box.
 std::shared_ptr<ompl::base::RealVectorStateSpace> makePositionSpace(const environment::Environment& environment);
 
 }  // namespace ceilplan::planner

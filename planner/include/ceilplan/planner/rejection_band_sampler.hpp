@@ -1,8 +1,9 @@
 #pragma once
-// Informed sampling that keeps the space's own sampler (the ceiling-band one): OMPL 1.5.2's
-// RejectionInfSampler draws from the space's default sampler, which would bypass the band.
-// Rejects samples whose admissible solution-cost bound (cost-to-come heuristic + cost-to-go)
-// cannot beat the current best.
+/// @file
+/// Informed sampling that keeps the space's own sampler (the ceiling-band one): OMPL 1.5.2's
+/// RejectionInfSampler draws from the space's default sampler, which would bypass the band.
+/// Rejects samples whose admissible solution-cost bound (cost-to-come heuristic + cost-to-go)
+/// cannot beat the current best.
 
 #include <ompl/base/StateSampler.h>
 #include <ompl/base/samplers/InformedStateSampler.h>

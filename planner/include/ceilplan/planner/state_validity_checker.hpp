@@ -1,5 +1,6 @@
 #pragma once
-// OMPL's view of SafetyRules for single states.
+/// @file
+/// OMPL's view of SafetyRules for single states.
 
 #include "ceilplan/planner/safety_rules.hpp"
 
@@ -9,7 +10,7 @@ namespace ceilplan::planner {
 
 class FlightStateValidityChecker : public ompl::base::StateValidityChecker {
  public:
-  // `rules` must outlive the checker.
+  /// `rules` must outlive the checker.
   FlightStateValidityChecker(const ompl::base::SpaceInformationPtr& si, const SafetyRules& rules);
   bool isValid(const ompl::base::State* state) const override;
   const SafetyRules& rules() const { return rules_; }

@@ -1,5 +1,6 @@
 #pragma once
-// Minimises the flight time (s) under the speed rules.
+/// @file
+/// Minimises the flight time (s) under the speed rules.
 
 #include "ceilplan/planner/flight_objective.hpp"
 
