@@ -14,12 +14,13 @@
 
 namespace ceilplan::battery {
 
+/// What makeAgeingModel needs to build any model: the study's conditions and each model's constants.
 struct AgeingModelOptions {
-  OperatingConditions conditions;
+  OperatingConditions conditions;        ///< temperature and chemistry of the study
   CellVoltageOfSoc cell_voltage_of_soc;  ///< needed by "schmalstieg" only
   WoehlerParameters woehler;             ///< used by "fec" (N100) and "woehler"
-  XuParameters xu;
-  SchmalstiegParameters schmalstieg;
+  XuParameters xu;                       ///< used by "xu"
+  SchmalstiegParameters schmalstieg;     ///< used by "schmalstieg"
 };
 
 /// "fec", "xu", "schmalstieg", "woehler", in that order.

@@ -11,6 +11,8 @@
 
 namespace ceilplan::battery {
 
+/// An ageing model whose cycle terms come from a rainflow count of the SOC history: subclasses add each closed cycle's
+/// damage.
 class CycleAgeingModel : public AgeingModel {
  public:
   /// The rainflow count of the SOC history so far (for inspection and reports).

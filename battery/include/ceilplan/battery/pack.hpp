@@ -10,7 +10,7 @@ struct Pack {
   /// The capacities a pack may have: from a 10 mAh micro cell to 1000 Ah. Outside them the
   /// simulation's SOC and FEC figures are meaningless (1e-300 Ah gives SOCs of -1e297 %).
   static constexpr double kMinCapacity_ah = 0.01;
-  static constexpr double kMaxCapacity_ah = 1000.0;
+  static constexpr double kMaxCapacity_ah = 1000.0;  ///< largest capacity accepted, Ah
 
   double capacity_ah = 5.2;        ///< nominal capacity C_nom
   int cell_count = 4;              ///< series cells

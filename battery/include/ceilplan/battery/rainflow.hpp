@@ -16,20 +16,23 @@ namespace ceilplan::battery {
 /// sample indices (0-based, counting every sample fed so far) of its two turning points, in time
 /// order; on a plateau a turning point is the plateau's first sample.
 struct RainflowCycle {
-  double range = 0.0;
-  double mean = 0.0;
-  double count = 0.0;
-  std::size_t start = 0;
-  std::size_t end = 0;
+  double range = 0.0;     ///< the absolute difference of the turning points, the depth of discharge for an SOC series
+  double mean = 0.0;      ///< (a + b) / 2
+  double count = 0.0;     ///< 1 (full cycle) or 0.5 (half cycle)
+  std::size_t start = 0;  ///< global index of the earlier turning point
+  std::size_t end = 0;    ///< global index of the later turning point
 };
 
+/// Streaming rainflow counter (ASTM E1049-85): fed a series piece by piece, it returns the cycles as they close.
 class RainflowCounter {
  public:
   /// Feeds the next sample(s), in time order. Cycles closed by them are appended to `closed`
   /// (nothing is cleared). Throws ceilplan::InputError on a non-finite value, naming its index;
   /// samples before the bad one have been counted.
   void add(double value, std::vector<RainflowCycle>& closed);
+  /// Feeds `count` values from `values` (as add(double, ...)).
   void add(const double* values, std::size_t count, std::vector<RainflowCycle>& closed);
+  /// Feeds a vector of values (as add(double, ...)).
   void add(const std::vector<double>& values, std::vector<RainflowCycle>& closed);
 
   /// What the series fed so far still holds, as half cycles: the last extreme is taken as a
@@ -37,6 +40,7 @@ class RainflowCounter {
   /// left counts as one half cycle. Leaves the counter unchanged, so feeding may go on.
   std::vector<RainflowCycle> residue() const;
 
+  /// Samples fed so far.
   std::size_t samplesSeen() const { return samples_seen_; }
   /// The index of the earliest sample a cycle counted from now on (closed later, or in the
   /// residue) can start at: nothing before it is needed any more.
@@ -65,11 +69,12 @@ std::vector<RainflowCycle> countRainflowCycles(const std::vector<double>& series
 /// What a count adds up to: full and half cycles, cycles in all (a half counts 0.5), and the sum
 /// of count x range (the FEC of an SOC series' swings).
 struct RainflowTotals {
-  double full_cycles = 0.0;
-  double half_cycles = 0.0;
-  double cycles = 0.0;
-  double count_weighted_range = 0.0;
+  double full_cycles = 0.0;           ///< cycles counted with count 1
+  double half_cycles = 0.0;           ///< cycles counted with count 0.5
+  double cycles = 0.0;                ///< full_cycles + 0.5 half_cycles
+  double count_weighted_range = 0.0;  ///< sum of count x range
 };
+/// The totals of `cycles`.
 RainflowTotals rainflowTotals(const std::vector<RainflowCycle>& cycles);
 
 }  // namespace ceilplan::battery

@@ -16,25 +16,26 @@ namespace ceilplan::battery {
 /// the table (the energy module's); this module embeds none.
 using CellVoltageOfSoc = std::function<double(double soc)>;
 
+/// Schmalstieg et al. (2014)'s fitted constants (docs/models.md, "Ageing models").
 struct SchmalstiegParameters {
   /// Calendar capacity: a_cap = (a_cap_v V + a_cap_0) 1e6 exp(a_cap_t / T), per day^0.75.
   double a_cap_v = 7.543;
-  double a_cap_0 = -23.75;
-  double a_cap_t_k = -6976.0;
+  double a_cap_0 = -23.75;     ///< a_cap's constant term
+  double a_cap_t_k = -6976.0;  ///< a_cap's temperature constant a_cap_t, K
   /// Cycle capacity: b_cap = b_cap_v (Vrms - b_cap_v0)^2 + b_cap_0 + b_cap_dod DoD, per sqrt(Ah).
   double b_cap_v = 7.348e-3;
-  double b_cap_v0 = 3.667;
-  double b_cap_0 = 7.60e-4;
-  double b_cap_dod = 4.081e-3;
+  double b_cap_v0 = 3.667;      ///< b_cap's voltage offset, V
+  double b_cap_0 = 7.60e-4;     ///< b_cap's constant term
+  double b_cap_dod = 4.081e-3;  ///< b_cap's depth-of-discharge coefficient
   /// Calendar resistance: a_res = (a_res_v V + a_res_0) 1e5 exp(a_res_t / T), per day^0.75.
   double a_res_v = 5.270;
-  double a_res_0 = -16.32;
-  double a_res_t_k = -5986.0;
+  double a_res_0 = -16.32;     ///< a_res's constant term
+  double a_res_t_k = -5986.0;  ///< a_res's temperature constant a_res_t, K
   /// Cycle resistance: b_res = b_res_v (Vrms - b_res_v0)^2 + b_res_0 + b_res_dod DoD, per Ah.
   double b_res_v = 2.153e-4;
-  double b_res_v0 = 3.725;
-  double b_res_0 = -1.521e-5;
-  double b_res_dod = 2.798e-4;
+  double b_res_v0 = 3.725;      ///< b_res's voltage offset, V
+  double b_res_0 = -1.521e-5;   ///< b_res's constant term
+  double b_res_dod = 2.798e-4;  ///< b_res's depth-of-discharge coefficient
   /// Q is the charge throughput of the fitted cell (Sanyo UR18650E; 2.15 Ah as in BLAST-Lite),
   /// counted in nominal capacities: a swing of the SOC by dSOC at state of health SOH passes
   /// dSOC * SOH * this many ampere-hours.
@@ -71,6 +72,7 @@ class SchmalstiegAgeingModel : public CycleAgeingModel {
   ValidityRange validity() const override;
   std::unique_ptr<AgeingModel> clone() const override;
 
+  /// Calendar capacity loss so far (fraction of nominal capacity).
   double calendarCapacityLoss() const { return calendar_capacity_loss_; }
   double cycleCapacityLoss() const;  ///< open ranges as half cycles
   double resistanceGrowth() const;   ///< R / R_new - 1, open ranges as half cycles

@@ -16,32 +16,35 @@ namespace ceilplan::battery {
 /// One recorded point of a simulation. `current_a` is signed (positive discharging) and holds
 /// the current of the segment the point belongs to, so consecutive points draw the load steps.
 struct Sample {
-  double t_s = 0.0;
-  double current_a = 0.0;
-  double soc = 0.0;
+  double t_s = 0.0;             ///< time, s
+  double current_a = 0.0;       ///< pack current, A, positive discharging
+  double soc = 0.0;             ///< state of charge, 0..1
   double fec = 0.0;             ///< discrete update at mode changes (paper eq. 3-5)
   double fec_continuous = 0.0;  ///< running integral (paper eq. 6)
-  Mode mode = Mode::Idle;
+  Mode mode = Mode::Idle;       ///< the segment's mode
 };
 
+/// Where a Simulator stands: time, SOC, FEC and the charge moved so far.
 struct BatteryState {
-  double t_s = 0.0;
-  double soc = 1.0;
-  double min_soc = 1.0;
+  double t_s = 0.0;             ///< time, s
+  double soc = 1.0;             ///< state of charge, 0..1
+  double min_soc = 1.0;         ///< lowest SOC so far
   double fec = 0.0;             ///< booked at each mode change (paper eq. 3-5)
   double fec_continuous = 0.0;  ///< FEC(t) = 1/(2 C_nom) * integral |i| dt (paper eq. 6)
   /// The same throughput counted against the usable capacity C_nom * SOH: sum |dSOC| / 2, the
   /// cycles of the faded pack. Equal to the FEC while SOH = 1; never call it FEC.
   double faded_pack_cycles = 0.0;
-  double discharge_ah = 0.0;
-  double charge_ah = 0.0;
+  double discharge_ah = 0.0;  ///< charge drawn so far, Ah
+  double charge_ah = 0.0;     ///< charge put back so far, Ah
 };
 
 /// Thrown when a segment would take the SOC below the pack's floor (soc_min).
 class DepletionError : public ceilplan::InfeasibleError {
  public:
+  /// The error `message`, with the SOC the segment would have reached and the floor it crossed.
   DepletionError(const std::string& message, double reached_soc, double floor_soc);
-  double reachedSoc() const { return reached_soc_; }  // the SOC the segment would have reached
+  double reachedSoc() const { return reached_soc_; }  ///< the SOC the segment would have reached
+  /// The pack's SOC floor (soc_min).
   double floorSoc() const { return floor_soc_; }
 
  private:
@@ -58,6 +61,7 @@ class DepletionError : public ceilplan::InfeasibleError {
 /// 40.5 min); the SOC stops at the target, so charge throughput and FEC match the exact scheme.
 class Simulator {
  public:
+  /// A simulator of `pack` at `initial_soc`, exact (step_s 0) or at fixed steps of `step_s`.
   Simulator(const Pack& pack, double initial_soc, double step_s = 0.0);
 
   /// Runs one segment from the current state and returns how long it lasted. Appends the
@@ -71,8 +75,11 @@ class Simulator {
   /// Capacity fade: later segments see usable capacity C_nom * SOH (paper eq. 7).
   void setStateOfHealth(double state_of_health);
 
+  /// Where the simulation stands.
   const BatteryState& state() const { return state_; }
+  /// The pack simulated.
   const Pack& pack() const { return pack_; }
+  /// The fixed step, s (0: exact).
   double stepS() const { return step_s_; }
 
  private:

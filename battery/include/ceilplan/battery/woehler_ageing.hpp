@@ -26,6 +26,7 @@ double woehlerCyclesToEndOfLife(double depth, const WoehlerParameters& parameter
 /// Miner's rule: damage = sum n_i / N(DoD_i); capacity lost = damage * end-of-life loss.
 class WoehlerAgeingModel : public CycleAgeingModel {
  public:
+  /// A Woehler model with `parameters` (N100 and exponent k).
   explicit WoehlerAgeingModel(const WoehlerParameters& parameters = {});
   std::string name() const override { return "woehler"; }
   ValidityRange validity() const override;
@@ -52,11 +53,13 @@ class WoehlerAgeingModel : public CycleAgeingModel {
 /// a faded pack counts the charge it really moves, not its deeper SOC swings.
 class FecAgeingModel : public AgeingModel {
  public:
+  /// An FEC model reaching end of life after `parameters`' N100 FEC.
   explicit FecAgeingModel(const WoehlerParameters& parameters = {});
   std::string name() const override { return "fec"; }
   ValidityRange validity() const override;
   std::unique_ptr<AgeingModel> clone() const override;
 
+  /// FEC so far, against the nominal capacity.
   double fullEquivalentCycles() const { return fec_; }
   double cycleWear() const override { return fec_; }
   std::string cycleWearName() const override { return "FEC"; }

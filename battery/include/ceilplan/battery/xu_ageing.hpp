@@ -10,16 +10,16 @@ namespace ceilplan::battery {
 
 /// Constants as published (Xu et al. 2018), agreed by five open implementations of the model.
 struct XuParameters {
-  double k_d1 = 1.40e5;  ///< depth stress
-  double k_d2 = -0.501;
-  double k_d3 = -1.23e5;
-  double k_s = 1.04;  ///< SOC stress
-  double soc_ref = 0.5;
-  double k_t_per_k = 0.0693;  ///< temperature stress, 1/K
-  double t_ref_k = 298.15;
+  double k_d1 = 1.40e5;                ///< depth stress
+  double k_d2 = -0.501;                ///< depth stress exponent
+  double k_d3 = -1.23e5;               ///< depth stress offset
+  double k_s = 1.04;                   ///< SOC stress
+  double soc_ref = 0.5;                ///< reference SOC of the SOC stress
+  double k_t_per_k = 0.0693;           ///< temperature stress, 1/K
+  double t_ref_k = 298.15;             ///< reference temperature, K
   double k_calendar_per_s = 4.14e-10;  ///< calendar rate k_t, 1/s
   double a_sei = 0.0575;               ///< share of capacity lost in the fast SEI phase
-  double b_sei = 121.0;
+  double b_sei = 121.0;                ///< rate of the fast SEI phase, per unit damage
 };
 
 /// S_d(d) = 1 / (k_d1 d^k_d2 + k_d3), depth clamped to [0, 1] (S_d is positive only below
@@ -36,6 +36,7 @@ double xuCapacityLoss(double damage, const XuParameters& parameters = {});
 /// s_avg the time-averaged SOC over the history (trapezoid rule between samples).
 class XuAgeingModel : public CycleAgeingModel {
  public:
+  /// A Xu model at the study's `conditions` (temperature) with `parameters`.
   explicit XuAgeingModel(const OperatingConditions& conditions = {}, const XuParameters& parameters = {});
   std::string name() const override { return "xu"; }
   ValidityRange validity() const override;

@@ -30,7 +30,9 @@ class InputError : public Error {
 /// (Python raises FileNotFoundError or OSError, docs/python.md).
 class InputFileError : public InputError {
  public:
+  /// An InputError with `message`, readable by a front end as the system error `reason`.
   InputFileError(const std::string& message, std::errc reason) : InputError(message), reason_(reason) {}
+  /// Why the file could not be read, as the system would say it (std::errc::no_such_file_or_directory, ...).
   std::errc reason() const { return reason_; }
 
  private:

@@ -9,7 +9,7 @@
 
 namespace ceilplan {
 
-/// `text` with every byte that is not printable escaped as \xHH: ASCII control characters
+/// `text` with every byte that is not printable escaped as `\xHH`: ASCII control characters
 /// (ESC, CR, NUL...), DEL, C1 controls (U+0080..U+009F, which some terminals obey as escapes)
 /// and bytes that are not valid UTF-8. Printable ASCII and valid UTF-8 letters stay as they are,
 /// and so does a backslash. Longer than `max_chars` characters, the rest becomes "...".

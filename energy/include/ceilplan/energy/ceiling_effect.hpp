@@ -23,11 +23,14 @@ class CeilingEffect {
 
   /// Full-coverage thrust ratio at `gap_m` >= 0 (not checked here); +infinity gives 1.
   double thrustRatio(double gap_m) const noexcept;
+  /// Thrust ratio at `gap_m` with a `coverage` share (0..1) of the rotor disc under the ceiling.
   double thrustRatio(double gap_m, double coverage) const noexcept {
     return 1.0 + coverage * (thrustRatio(gap_m) - 1.0);
   }
 
+  /// Thrust ratio with the rotor touching the ceiling (gap 0).
   double contactThrustRatio() const noexcept { return thrustRatio(0.0); }
+  /// Gap from which the effect is faded out entirely, m.
   double taperEndM() const noexcept { return taper_end_m_; }
 
  private:

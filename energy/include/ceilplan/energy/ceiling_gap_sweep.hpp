@@ -9,9 +9,10 @@
 
 namespace ceilplan::energy {
 
+/// One point of a sweep of the current against the ceiling gap.
 struct GapPoint {
-  double gap_m;
-  CurrentBreakdown breakdown;
+  double gap_m;                ///< rotor plane to ceiling
+  CurrentBreakdown breakdown;  ///< the current and its parts at that gap
 };
 
 /// Gaps 0, R / steps_per_radius, ..., max_radii R (R the rotor radius), both ends included, each

@@ -22,6 +22,7 @@ struct RotorCeiling {
   double coverage = 1.0;      ///< fraction of the rotor disc under the ceiling, 0..1
 };
 
+/// The flight state besides the ceiling: ground gap, speeds and state of charge.
 struct FlightCondition {
   double ground_gap_m = kNoSurface;  ///< rotor plane to ground, >= 0
   double speed_m_s = 0.0;            ///< horizontal, 0..max_speed_m_s
@@ -31,14 +32,14 @@ struct FlightCondition {
 
 /// Powers are electrical, at the pack terminals; they add up to power_w.
 struct CurrentBreakdown {
-  double current_a = 0.0;  ///< total pack current
-  double power_w = 0.0;    ///< terminal voltage x current
-  double terminal_voltage_v = 0.0;
-  double induced_w = 0.0;
-  double profile_w = 0.0;
-  double parasitic_w = 0.0;
-  double climb_w = 0.0;  ///< negative in descent, floored
-  double avionics_w = 0.0;
+  double current_a = 0.0;             ///< total pack current
+  double power_w = 0.0;               ///< terminal voltage x current
+  double terminal_voltage_v = 0.0;    ///< at the pack terminals
+  double induced_w = 0.0;             ///< induced power
+  double profile_w = 0.0;             ///< blade profile power
+  double parasitic_w = 0.0;           ///< parasitic (fuselage drag) power
+  double climb_w = 0.0;               ///< negative in descent, floored
+  double avionics_w = 0.0;            ///< constant avionics load
   double ceiling_factor = 1.0;        ///< thrust ratio T_ceiling / T_free, mean over rotors
   double ground_factor = 1.0;         ///< thrust ratio T_ground / T_free
   double induced_power_factor = 1.0;  ///< induced power / free-air induced power, both effects
@@ -53,26 +54,35 @@ struct CurrentBreakdown {
 /// NaN gap, coverage outside [0, 1], speed beyond the vehicle's limit, ...).
 class EnergyModel {
  public:
-  static constexpr int kMaxRotors = 16;
+  static constexpr int kMaxRotors = 16;  ///< the most rotors a vehicle may have
 
   /// Validates and precomputes; throws ceilplan::InputError naming the bad parameter.
   explicit EnergyModel(const EnergyParameters& parameters);
 
   /// Convenience: the same gap and coverage on every rotor.
   double currentA(double ceiling_gap_m, double coverage, const FlightCondition& flight) const;
+  /// The same, with the current's parts.
   CurrentBreakdown breakdown(double ceiling_gap_m, double coverage, const FlightCondition& flight) const;
 
   /// Per rotor: `rotors` points at exactly rotorCount() entries.
   double currentA(const RotorCeiling* rotors, int rotor_count, const FlightCondition& flight) const;
+  /// The same, with the current's parts.
   CurrentBreakdown breakdown(const RotorCeiling* rotors, int rotor_count, const FlightCondition& flight) const;
 
+  /// The parameters it was built from.
   const EnergyParameters& parameters() const noexcept { return parameters_; }
+  /// Rotors of the airframe.
   int rotorCount() const noexcept { return parameters_.airframe.rotor_count; }
+  /// Rotor radius, m.
   double rotorRadiusM() const noexcept { return parameters_.airframe.rotor_radius_m; }
+  /// Fastest horizontal speed the model answers for.
   double maxSpeedM_s() const noexcept { return parameters_.airframe.max_speed_m_s; }
+  /// The ceiling effect's thrust ratio.
   const CeilingEffect& ceilingEffect() const noexcept { return ceiling_; }
+  /// The ground effect's thrust ratio.
   const GroundEffect& groundEffect() const noexcept { return ground_; }
-  const RotaryWingPower& rotaryWingPower() const noexcept { return rotor_power_; }  // shaft power
+  const RotaryWingPower& rotaryWingPower() const noexcept { return rotor_power_; }  ///< shaft power
+  /// The pack's electrics (Rint and open-circuit voltage).
   const PackElectrics& pack() const noexcept { return pack_; }
 
  private:

@@ -12,15 +12,17 @@ enum class ThrustToPowerConvention {
   kConstantPower,   ///< P_near / P_free = 1 / kappa: the Cheeseman-Bennett convention
 };
 
+/// Which form of the ground effect the model uses (docs/models.md).
 enum class GroundEffectModel {
   kCheesemanBennett,  ///< single rotor, Cheeseman & Bennett 1955 (ARC R&M 3021)
   kMultirotor,        ///< Sanchez-Cuevas et al. 2017 multirotor form (Int. J. Aerospace Eng.)
 };
 
+/// The airframe: mass, rotors and their layout, top speed.
 struct AirframeParameters {
-  double mass_kg = 1.4;
-  int rotor_count = 4;
-  double rotor_radius_m = 0.127;
+  double mass_kg = 1.4;                                   ///< take-off mass
+  int rotor_count = 4;                                    ///< rotors, at most EnergyModel::kMaxRotors
+  double rotor_radius_m = 0.127;                          ///< rotor radius R
   double adjacent_rotor_spacing_m = 0.31819805153394637;  ///< d = sqrt(2) x 0.225 m arm: 450 mm X frame
   double opposite_rotor_spacing_m = 0.45;                 ///< b
   double max_speed_m_s = 15.0;                            ///< beyond it the model refuses to answer
@@ -35,8 +37,9 @@ struct CeilingEffectParameters {
   double taper_end_radii = 2.5;    ///< no effect from this gap on
 };
 
+/// The ground effect's form and its constants.
 struct GroundEffectParameters {
-  GroundEffectModel model = GroundEffectModel::kCheesemanBennett;
+  GroundEffectModel model = GroundEffectModel::kCheesemanBennett;  ///< which form
   double body_lift_factor = 2.0;  ///< K_b of the multirotor form, "about 2" (Sanchez-Cuevas et al. 2017)
   double min_gap_radii = 0.5;     ///< gaps below 0.5 R are clamped: both forms are singular near R/4 [open]
 };
@@ -51,6 +54,7 @@ struct RotorPowerParameters {
   double air_density_kg_m3 = 1.225;       ///< ISA sea level, as in Zeng's example
   double descent_power_floor = 0.75;      ///< descent never takes propulsion power below this
                                           ///< fraction of level flight [open]
+  /// how thrust ratios become induced power
   ThrustToPowerConvention convention = ThrustToPowerConvention::kMomentumTheory;
 };
 
@@ -61,15 +65,16 @@ struct PackParameters {
   double avionics_current_a = 0.5;  ///< flight controller, radio, sensors [open]
 };
 
+/// Every constant of the energy model (a vehicle file's `energy:` part; docs/energy.md).
 struct EnergyParameters {
-  AirframeParameters airframe;
-  CeilingEffectParameters ceiling;
-  GroundEffectParameters ground;
-  RotorPowerParameters rotor;
-  PackParameters pack;
-  double reference_soc = 0.65;  ///< SOC at which the vehicle's currents are quoted; default --soc
+  AirframeParameters airframe;      ///< mass, rotors, top speed
+  CeilingEffectParameters ceiling;  ///< ceiling effect
+  GroundEffectParameters ground;    ///< ground effect
+  RotorPowerParameters rotor;       ///< rotor power against speed
+  PackParameters pack;              ///< pack electrics and avionics
+  double reference_soc = 0.65;      ///< SOC at which the vehicle's currents are quoted; default --soc
 };
 
-inline constexpr double kStandardGravityM_s2 = 9.80665;
+inline constexpr double kStandardGravityM_s2 = 9.80665;  ///< Standard gravity g0, m/s^2.
 
 }  // namespace ceilplan::energy

@@ -16,7 +16,7 @@ namespace ceilplan::energy {
 /// table says nothing deeper and a planner must never rely on charge there anyway.
 class LipoOpenCircuitVoltage {
  public:
-  static constexpr int kPointCount = 27;
+  static constexpr int kPointCount = 27;  ///< points in the table
 
   LipoOpenCircuitVoltage();
 
@@ -28,6 +28,7 @@ class LipoOpenCircuitVoltage {
 
   /// The table itself, ascending in SOC (fractions 0..1) with voltages in V.
   const std::array<double, kPointCount>& socPoints() const noexcept { return soc_; }
+  /// The table's cell voltages, V, one per socPoints() entry.
   const std::array<double, kPointCount>& voltagePointsV() const noexcept { return voltage_v_; }
 
  private:

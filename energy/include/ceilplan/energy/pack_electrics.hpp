@@ -8,6 +8,7 @@
 
 namespace ceilplan::energy {
 
+/// The pack's current and terminal voltage at one propulsion power.
 struct PackOperatingPoint {
   double current_a;           ///< total pack current: propulsion + avionics
   double terminal_voltage_v;  ///< n OCV(SOC) - I R
@@ -21,6 +22,7 @@ class PackElectrics {
  public:
   explicit PackElectrics(const PackParameters& parameters);  ///< throws ceilplan::InputError
 
+  /// Pack open-circuit voltage at `soc` (n cells x OCV), V.
   double openCircuitVoltageV(double soc) const noexcept { return cell_count_ * ocv_.cellVoltageUncheckedV(soc); }
 
   /// `soc` must be in [0, 1] (unchecked). Throws ceilplan::Error when the pack cannot deliver
@@ -30,7 +32,9 @@ class PackElectrics {
   /// Inverse: the propulsion power that makes the pack deliver `current_a` in total.
   double propulsionPowerForCurrentW(double current_a, double soc) const noexcept;
 
+  /// The cell voltage curve.
   const LipoOpenCircuitVoltage& openCircuitVoltage() const noexcept { return ocv_; }
+  /// The constant avionics current, A.
   double avionicsCurrentA() const noexcept { return avionics_current_a_; }
 
  private:

@@ -9,7 +9,8 @@
 
 namespace ceilplan::energy {
 
-inline constexpr double kPaperFreeAirCurrentA = 9.5;
+inline constexpr double kPaperFreeAirCurrentA = 9.5;  ///< The founding paper's hover current in free air, A.
+/// The founding paper's hover current within 10 cm of a ceiling, A.
 inline constexpr double kPaperCeilingCurrentA = 8.0;
 inline constexpr double kPaperCeilingGapM = 0.05;  ///< "within 10 cm": the middle of that range
 /// About the middle of the paper's free-flight mission: 95 % -> 34.1 % SOC at constant current.

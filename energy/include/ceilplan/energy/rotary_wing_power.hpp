@@ -11,6 +11,8 @@ namespace ceilplan::energy {
 /// c = 0.5 d0 rho s A (= 0.5 rho times the flat-plate drag area).
 class RotaryWingPower {
  public:
+  /// A rotor power curve from its hover profile and induced powers, tip speed, hover induced velocity and parasitic
+  /// coefficient.
   RotaryWingPower(double profile_power_w, double induced_power_w, double tip_speed_m_s,
                   double hover_induced_velocity_m_s, double parasitic_coefficient_kg_m);
 
@@ -29,20 +31,26 @@ class RotaryWingPower {
                                        double induced_power_correction, double tip_speed_m_s, double drag_area_m2,
                                        double air_density_kg_m3);
 
+  /// Blade profile power at `speed_m_s`, W.
   double profilePowerW(double speed_m_s) const noexcept {
     return profile_power_w_ * (1.0 + 3.0 * speed_m_s * speed_m_s * inverse_tip_speed_squared_);
   }
   /// Induced power relative to hover's: 1 at rest, falling with speed.
   double inducedSpeedFactor(double speed_m_s) const noexcept;
+  /// Induced power at `speed_m_s`, W.
   double inducedPowerW(double speed_m_s) const noexcept { return induced_power_w_ * inducedSpeedFactor(speed_m_s); }
+  /// Parasitic power at `speed_m_s`, W.
   double parasiticPowerW(double speed_m_s) const noexcept {
     return parasitic_coefficient_kg_m_ * speed_m_s * speed_m_s * speed_m_s;
   }
+  /// Total shaft power P(V) at `speed_m_s`, W.
   double powerW(double speed_m_s) const noexcept {
     return profilePowerW(speed_m_s) + inducedPowerW(speed_m_s) + parasiticPowerW(speed_m_s);
   }
 
+  /// Profile power P0 at hover, W.
   double hoverProfilePowerW() const noexcept { return profile_power_w_; }
+  /// Induced power Pi at hover, W.
   double hoverInducedPowerW() const noexcept { return induced_power_w_; }
 
  private:

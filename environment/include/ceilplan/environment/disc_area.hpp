@@ -8,6 +8,7 @@
 
 namespace ceilplan::environment {
 
+/// Area of a disc (centre, radius) that lies inside the axis-aligned rectangle [min_m, max_m], m^2.
 double discRectangleOverlap_m2(const Eigen::Vector2d& centre_m, double radius_m, const Eigen::Vector2d& min_m,
                                const Eigen::Vector2d& max_m);
 

@@ -17,6 +17,7 @@
 
 namespace ceilplan::environment {
 
+/// Distances from any point to the nearest blocked voxel of a grid (the clearance queries).
 class DistanceField {
  public:
   /// Horizontal squared distances are stored up to this many voxels squared (255 voxels and a bit).
@@ -43,8 +44,11 @@ class DistanceField {
   /// there is none that close. Outside the grid is not counted here.
   std::uint32_t horizontalSquared(std::size_t voxel) const { return horizontal_[voxel]; }
 
+  /// Where the voxels lie.
   const GridFrame& frame() const { return frame_; }
+  /// Whether unknown voxels count as blocked.
   bool unknownIsBlocked() const { return unknown_is_blocked_; }
+  /// Memory held, bytes.
   std::size_t memoryBytes() const {
     return nearest_.capacity() * sizeof(std::int32_t) + horizontal_.capacity() * sizeof(std::uint16_t);
   }

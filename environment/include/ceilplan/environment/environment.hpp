@@ -37,7 +37,7 @@ struct EnvironmentOptions {
   /// Ceiling: the modelled effect is gone by 2.5 R (docs/models.md, "Ceiling effect"), 4 R leaves
   /// room. Ground: significant up to about 5 R (Sanchez-Cuevas et al. 2017).
   double ceiling_reach_radii = 4.0;
-  double ground_reach_radii = 5.0;
+  double ground_reach_radii = 5.0;  ///< ground: coverage counts disc area with a surface within this many rotor radii
   /// Motions are checked at this fraction of the map resolution.
   double motion_step_voxels = 0.25;
   int workers = 2;  ///< threads building what depends on the vehicle (and the index, when built here)
@@ -50,6 +50,7 @@ struct RotorGap {
   double mean_gap_m;     ///< area-weighted mean gap over the covered part; +inf if coverage is 0
 };
 
+/// The rotor discs of a vehicle against the surface above (or below) them, and their summary.
 struct SurfaceGaps {
   std::vector<RotorGap> rotors;  ///< in the vehicle file's rotor order
   double nearest_gap_m;          ///< smallest over the rotors
@@ -57,14 +58,16 @@ struct SurfaceGaps {
   double mean_gap_m;             ///< area-weighted mean gap over all covered disc area
 };
 
+/// Why a state is not valid: it lies outside the map, touches occupied space, or touches unknown space the policy
+/// keeps.
 enum class ViolationKind { OutsideMap, Occupied, Unknown };
 
 /// A stretch of a path, by distance along it from its first waypoint.
 struct PathInterval {
-  double from_m;
-  double to_m;
-  Eigen::Vector3d from_point_m;
-  Eigen::Vector3d to_point_m;
+  double from_m;                 ///< start, m along the path
+  double to_m;                   ///< end, m along the path
+  Eigen::Vector3d from_point_m;  ///< where it starts
+  Eigen::Vector3d to_point_m;    ///< where it ends
 };
 
 /// Where a path relies on the unknown-space policy.
@@ -75,12 +78,14 @@ struct AssumedFreeStretches {
 
 /// The first place a state, motion or path breaks the collision constraint.
 struct Violation {
-  std::size_t segment = 0;     ///< index of the path segment (0 for a single state or motion)
-  Eigen::Vector3d position_m;  ///< body centre of the first invalid state found
-  ViolationKind kind;
+  std::size_t segment = 0;       ///< index of the path segment (0 for a single state or motion)
+  Eigen::Vector3d position_m;    ///< body centre of the first invalid state found
+  ViolationKind kind;            ///< what the vehicle touches there
   std::string describe() const;  ///< one line, e.g. "segment 3 at (1.20, 0.00, 5.95): touches occupied space"
 };
 
+/// A map indexed for one vehicle: gaps above and below each rotor, clearance, and the validity of states, motions and
+/// paths. Read only; safe to share between threads.
 class Environment {
  public:
   /// `vehicle` (validated here) on a map indexed once for every vehicle: builds only the
@@ -97,11 +102,17 @@ class Environment {
 
   /// The shared index: pass it to the next Environment on this map.
   const std::shared_ptr<const MapIndex>& index() const { return index_; }
+  /// The map's own voxel states.
   const VoxelGrid& grid() const { return index_->grid(); }
+  /// The runs of what blocks under the policy.
   const ColumnIndex& columns() const { return index_->columns(); }
+  /// The vehicle, as validated.
   const VehicleGeometry& vehicle() const { return vehicle_; }
+  /// The options it was built with.
   const EnvironmentOptions& options() const { return options_; }
+  /// The unknown-space policy of the index.
   const UnknownSpace& unknownSpace() const { return index_->unknownSpace(); }
+  /// The map's name (its file) for messages.
   const std::string& mapName() const { return index_->mapName(); }
   /// The footprint masks and the index's share; the index is counted once however many share it.
   std::size_t memoryBytes() const { return footprint_.memoryBytes(); }
@@ -113,11 +124,13 @@ class Environment {
   /// above (below), +infinity if none (or unknown comes first, by policy). Throws
   /// ceilplan::InputError for a point outside the map.
   double ceilingGapAt(const Eigen::Vector3d& point_m) const;
+  /// Vertical distance from `point_m` down to the nearest occupied voxel face (as ceilingGapAt, below).
   double groundGapAt(const Eigen::Vector3d& point_m) const;
 
   /// Every rotor disc of the vehicle with its body centre at `body_m`. Throws ceilplan::InputError
   /// if the body centre lies outside the map.
   SurfaceGaps ceiling(const Eigen::Vector3d& body_m) const;
+  /// The same below every rotor disc (ground effect).
   SurfaceGaps ground(const Eigen::Vector3d& body_m) const;
 
   /// Distance from the body centre to the nearest occupied (or, by policy, unknown) voxel
@@ -137,12 +150,14 @@ class Environment {
   /// A state is valid when the collision cylinder inflated by the margins touches no occupied
   /// (or, by policy, unknown) voxel and the body centre lies in the map.
   bool isStateValid(const Eigen::Vector3d& body_m) const { return !stateViolation(body_m); }
+  /// The first violation at `body_m`, or none when it is valid.
   std::optional<Violation> stateViolation(const Eigen::Vector3d& body_m) const;
 
   /// Checks states along the segment every options().motion_step_voxels voxels, both ends included.
   bool isMotionValid(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
     return !motionViolation(from_m, to_m);
   }
+  /// The first violation along the segment, or none when it is valid.
   std::optional<Violation> motionViolation(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
 
   /// Independent re-check of a whole path (waypoints joined by straight segments), at a tenth

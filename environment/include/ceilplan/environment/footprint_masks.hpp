@@ -17,14 +17,18 @@
 
 namespace ceilplan::environment {
 
+/// Per column, a bit per height slice that says whether anything blocking lies within a footprint radius: a fast first
+/// test before the exact cylinder test.
 class FootprintMasks {
  public:
+  /// Builds the masks from `field` for a footprint of `footprint_radius_m`, on `workers` threads.
   FootprintMasks(const DistanceField& field, double footprint_radius_m, int workers = 1);
 
   /// False only if no blocking voxel overlapping the heights (bottom_m, top_m) lies in the reach
   /// of a cylinder of the footprint radius centred anywhere in column (i, j) (inside the grid).
   bool mayBlock(int i, int j, double bottom_m, double top_m) const;
 
+  /// Memory held, bytes.
   std::size_t memoryBytes() const { return reach_.capacity() * sizeof(std::uint64_t); }
 
  private:

@@ -24,14 +24,14 @@ namespace ceilplan::environment {
 
 /// Accepted voxel sizes, in metres.
 inline constexpr double kMinImportResolution_m = 0.01;
-inline constexpr double kMaxImportResolution_m = 1.0;
+inline constexpr double kMaxImportResolution_m = 1.0;  ///< largest voxel size an import accepts
 
 /// Where the sensor stood for each point: scan s covers points [first_point[s], first_point[s + 1])
 /// (the last scan runs to the end of the cloud) and was taken from origin_m[s]. One scan per
 /// point is the per-point form.
 struct SensorOrigins {
-  std::vector<std::size_t> first_point;
-  std::vector<Eigen::Vector3d> origin_m;
+  std::vector<std::size_t> first_point;   ///< index of each scan's first point, increasing from 0
+  std::vector<Eigen::Vector3d> origin_m;  ///< each scan's sensor origin, map coordinates
 
   /// Checks the scans against a cloud of `point_count` points: first_point starts at 0, strictly
   /// increases and stays below point_count, origins are finite. Throws ceilplan::InputError
@@ -52,8 +52,9 @@ using CropBox = Eigen::AlignedBox3d;
 /// Throws ceilplan::InputError unless `crop_m` is empty or finite with min < max on every axis.
 void validateCrop(const CropBox& crop_m);
 
+/// How buildFromScans carves free space along the rays from the sensor origins.
 struct RayCarvingOptions {
-  double resolution_m = 0.1;
+  double resolution_m = 0.1;  ///< voxel size of the map built
   /// Returns farther than this from their origin are dropped: not occupied, and the map's box is
   /// not grown for them; their rays still carve free space up to this range inside the box of
   /// what is kept. <= 0 keeps every return.
@@ -74,12 +75,13 @@ enum class AssumedFreeRegion {
 /// "between", "box"; throws ceilplan::InputError for any other name.
 AssumedFreeRegion assumedFreeRegionFromName(const std::string& name);
 
+/// How buildFromPoints decides free space for a cloud without sensor origins.
 struct PointAssumptionOptions {
-  double resolution_m = 0.1;
+  double resolution_m = 0.1;  ///< voxel size of the map built
   /// A voxel of the region is free when its centre lies farther than this from every voxel that
   /// holds a point (measured to that voxel's faces); nearer ones stay unknown.
   double free_distance_m = 0.2;
-  AssumedFreeRegion region = AssumedFreeRegion::BetweenSurfaces;
+  AssumedFreeRegion region = AssumedFreeRegion::BetweenSurfaces;  ///< where the free-space assumption holds
   /// The box is the points' bounding box grown by this on every side.
   double margin_m = 0.0;
   /// Points outside it are dropped; the box goes no farther.
@@ -88,8 +90,8 @@ struct PointAssumptionOptions {
 
 /// A triangle mesh: vertex positions and, per triangle, three vertex indices.
 struct TriangleMesh {
-  std::vector<Eigen::Vector3d> vertices_m;
-  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<Eigen::Vector3d> vertices_m;            ///< vertex positions, map coordinates
+  std::vector<std::array<std::size_t, 3>> triangles;  ///< per triangle, three indices into vertices_m
 };
 
 /// What fills the space a mesh's surface encloses.
@@ -103,11 +105,12 @@ enum class MeshInterior {
 /// "auto", "solid", "hollow", "shell"; throws ceilplan::InputError for any other name.
 MeshInterior meshInteriorFromName(const std::string& name);
 
+/// How buildFromMesh voxelises a mesh.
 struct MeshVoxelisingOptions {
-  double resolution_m = 0.1;
+  double resolution_m = 0.1;  ///< voxel size of the map built
   /// The map's box is the mesh's bounding box grown by this on every side.
   double margin_m = 1.0;
-  MeshInterior interior = MeshInterior::Automatic;
+  MeshInterior interior = MeshInterior::Automatic;  ///< what fills the space the mesh encloses
   /// Triangles are clipped at its faces (only voxels inside it are voxelised); whether the mesh
   /// is closed is decided on the whole mesh, and a closed mesh the box cuts is filled inside the
   /// box as it would be whole.
@@ -120,12 +123,15 @@ struct MeshTopology {
   std::size_t non_manifold_edges = 0;  ///< edges of three or more triangles
   bool consistently_oriented = false;  ///< every interior edge is walked once each way
   double signed_volume_m3 = 0.0;       ///< > 0 when a closed mesh's triangles face outward
+  /// No boundary and no non-manifold edge: the mesh encloses space.
   bool closed() const { return boundary_edges == 0 && non_manifold_edges == 0; }
 };
+/// The closedness and orientation of `mesh`.
 MeshTopology meshTopology(const TriangleMesh& mesh);
 
+/// A map built from a scan or a mesh, with how its free space was decided.
 struct BuiltMap {
-  std::unique_ptr<octomap::OcTree> tree;
+  std::unique_ptr<octomap::OcTree> tree;  ///< the OctoMap built
   /// How free space was decided, one line (printed and written beside the map).
   std::string free_space;
   /// Named figures for the summary: points used, voxels filled, and so on, in a fixed order.

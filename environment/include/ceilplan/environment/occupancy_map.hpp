@@ -15,6 +15,7 @@
 
 namespace ceilplan::environment {
 
+/// An OctoMap occupancy tree as loaded, with its name for messages.
 class OccupancyMap {
  public:
   /// Reads a .bt (binary) or .ot (full) OctoMap file; the format is taken from the file's
@@ -36,8 +37,11 @@ class OccupancyMap {
   /// Wraps a tree built in memory (tests, scene generation). Throws if it has no known voxel.
   OccupancyMap(std::unique_ptr<octomap::OcTree> tree, std::string name);
 
+  /// The OctoMap tree.
   const octomap::OcTree& tree() const { return *tree_; }
+  /// Voxel size, m.
   double resolution_m() const { return tree_->getResolution(); }
+  /// The map's name (its file) for messages.
   const std::string& name() const { return name_; }
 
  private:

@@ -12,11 +12,12 @@
 
 namespace ceilplan::environment {
 
+/// What `ceilplan probe` reports at one body position: gaps, clearance and validity.
 struct PositionProbe {
-  Eigen::Vector3d body_m;
-  SurfaceGaps ceiling;
-  SurfaceGaps ground;
-  double clearance_m;
+  Eigen::Vector3d body_m;              ///< the body centre probed
+  SurfaceGaps ceiling;                 ///< the rotors against the surface above
+  SurfaceGaps ground;                  ///< the rotors against the surface below
+  double clearance_m;                  ///< body centre to the nearest blocking voxel
   std::optional<Violation> violation;  ///< empty: a valid state
   bool assumes_free;                   ///< the vehicle overlaps unknown space the policy assumed free
   bool point_assumed_free;             ///< the body centre itself lies in such space

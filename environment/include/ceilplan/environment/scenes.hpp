@@ -12,15 +12,18 @@
 
 namespace ceilplan::environment {
 
+/// The shipped inspection scenes (`ceilplan mapgen`): a bridge, a tunnel, a warehouse, open ground.
 enum class Scene { Bridge, Tunnel, Warehouse, Open };
 
 /// "bridge", "tunnel", "warehouse", "open"; throws ceilplan::InputError for any other name.
 Scene sceneFromName(const std::string& name);
+/// The scenes' names, in Scene's order.
 const std::vector<std::string>& sceneNames();
 
 /// The shipped bridge spans 48 m between its abutments.
 constexpr double kShippedBridgeLength_m = 48.0;
 
+/// How generateScene builds a scene.
 struct SceneOptions {
   double resolution_m = 0.1;                        ///< in [0.02, 1] m
   std::uint64_t seed = 1;                           ///< places the clutter (boulders, lamps, pallets)
@@ -31,6 +34,7 @@ struct SceneOptions {
 /// every surface is a voxel face. Throws ceilplan::InputError for an option out of range, or a
 /// bridge length given for another scene.
 VoxelGrid generateScene(Scene scene, const SceneOptions& options);
+/// The same with default options but `resolution_m` and `seed`.
 VoxelGrid generateScene(Scene scene, double resolution_m, std::uint64_t seed);
 
 }  // namespace ceilplan::environment

@@ -15,6 +15,7 @@
 
 namespace ceilplan::environment {
 
+/// One exposed voxel face of a structure: a patch of surface to inspect.
 struct SurfaceElement {
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();  ///< centre of the voxel face
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   ///< unit, out of the structure into free space

@@ -33,32 +33,34 @@
 namespace ceilplan::io {
 
 using mission::GeodeticOrigin;
+/// A waypoint of an exported route: the route's own waypoint type.
 using ExportWaypoint = mission::RouteWaypoint;
 
+/// The autopilot a .plan or WPL file is written for: PX4 or ArduPilot (they differ in camera and gimbal commands).
 enum class Autopilot { PX4, ArduPilot };
 
 /// The route (home, waypoints, cruise speed) plus what the autopilot file needs besides.
 struct AutopilotMission : mission::SortieRoute {
   std::optional<GeodeticOrigin> origin;  ///< required: the export fails clearly without it
-  Autopilot autopilot = Autopilot::PX4;
-  double hover_speed_m_s = 0.5;
-  double acceptance_radius_m = 0.2;  ///< a waypoint counts as reached within this distance
-  double pass_radius_m = 0.0;        ///< 0: fly through the waypoint itself
+  Autopilot autopilot = Autopilot::PX4;  ///< the autopilot the file is for
+  double hover_speed_m_s = 0.5;          ///< speed near a target
+  double acceptance_radius_m = 0.2;      ///< a waypoint counts as reached within this distance
+  double pass_radius_m = 0.0;            ///< 0: fly through the waypoint itself
 };
 
 // MAVLink command and frame numbers (common.xml) the files use.
 namespace mav {
-constexpr int kNavWaypoint = 16;
-constexpr int kNavLand = 21;
-constexpr int kNavTakeoff = 22;
-constexpr int kDoChangeSpeed = 178;
-constexpr int kDoSetCamTriggDist = 206;
-constexpr int kDoGimbalManagerPitchYaw = 1000;
-constexpr int kImageStartCapture = 2000;
-constexpr int kFrameGlobal = 0;
-constexpr int kFrameMission = 2;
-constexpr int kFrameGlobalRelativeAlt = 3;
-constexpr int kSpeedTypeGroundSpeed = 1;
+constexpr int kNavWaypoint = 16;                ///< MAV_CMD_NAV_WAYPOINT
+constexpr int kNavLand = 21;                    ///< MAV_CMD_NAV_LAND
+constexpr int kNavTakeoff = 22;                 ///< MAV_CMD_NAV_TAKEOFF
+constexpr int kDoChangeSpeed = 178;             ///< MAV_CMD_DO_CHANGE_SPEED
+constexpr int kDoSetCamTriggDist = 206;         ///< MAV_CMD_DO_SET_CAM_TRIGG_DIST
+constexpr int kDoGimbalManagerPitchYaw = 1000;  ///< MAV_CMD_DO_GIMBAL_MANAGER_PITCHYAW
+constexpr int kImageStartCapture = 2000;        ///< MAV_CMD_IMAGE_START_CAPTURE
+constexpr int kFrameGlobal = 0;                 ///< MAV_FRAME_GLOBAL
+constexpr int kFrameMission = 2;                ///< MAV_FRAME_MISSION
+constexpr int kFrameGlobalRelativeAlt = 3;      ///< MAV_FRAME_GLOBAL_RELATIVE_ALT
+constexpr int kSpeedTypeGroundSpeed = 1;        ///< DO_CHANGE_SPEED speed type: ground speed
 /// GIMBAL_MANAGER_FLAGS_ROLL_LOCK | GIMBAL_MANAGER_FLAGS_PITCH_LOCK: pitch against the horizon,
 /// yaw following the vehicle (whose heading the waypoints set).
 constexpr int kGimbalFlagsHorizonFollow = 4 | 8;
@@ -85,6 +87,7 @@ std::string qgcWpl(const AutopilotMission& mission);
 
 /// Both written atomically (whole or not at all).
 void writeQgcPlan(const std::filesystem::path& file, const AutopilotMission& mission);
+/// The WPL 110 text of `mission`, written atomically.
 void writeQgcWpl(const std::filesystem::path& file, const AutopilotMission& mission);
 
 /// The file for sortie `sortie` (1-based) of `sortie_count`: `file` itself for a single sortie,

@@ -17,10 +17,11 @@
 
 namespace ceilplan::io {
 
+/// A mission file's coverage keys as read: camera, surfaces and contact grids.
 struct CoverageKeys {
-  std::optional<mission::Camera> camera;
-  std::vector<mission::CoverageRegion> surfaces;
-  std::vector<mission::ContactGrid> contact_grids;
+  std::optional<mission::Camera> camera;            ///< key `camera:`
+  std::vector<mission::CoverageRegion> surfaces;    ///< key `surfaces:`
+  std::vector<mission::ContactGrid> contact_grids;  ///< key `contact_grids:`
 };
 
 /// The top-level keys read here: "camera", "surfaces", "contact_grid".

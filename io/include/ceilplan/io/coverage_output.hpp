@@ -50,6 +50,7 @@ std::string coverageElementsCsv(const mission::CoveragePlan& plan, const mission
 /// Both written atomically (whole or not at all), with `provenance`: the CSV's first line is its
 /// comment, the JSON holds it as "provenance".
 void writePhotosCsv(const std::filesystem::path& file, const std::vector<PhotoRow>& rows, const Provenance& provenance);
+/// coverage.json, written atomically with `provenance`.
 void writeCoverageJson(const std::filesystem::path& file, const nlohmann::json& coverage, const Provenance& provenance);
 
 /// A coverage tour's files in its directory: photos.csv (the photos as flown, with sortie and
@@ -67,11 +68,12 @@ nlohmann::json coverageSummaryJson(const mission::TourResult& tour);
 /// the share of the reachable surface covered (%) and the mean GSD of the covered area. Throws
 /// ceilplan::InputError when the tour has no coverage plan.
 struct CoverageSummary {
-  std::size_t photos = 0;
-  double route_m = 0.0;
-  double covered_reachable_pct = 100.0;
-  double mean_gsd_mm_px = 0.0;
+  std::size_t photos = 0;                ///< photos taken
+  double route_m = 0.0;                  ///< route length through the photos
+  double covered_reachable_pct = 100.0;  ///< share of the reachable surface covered
+  double mean_gsd_mm_px = 0.0;           ///< mean GSD of the covered area
 };
+/// The summary of a coverage tour, as above.
 CoverageSummary coverageSummary(const mission::TourResult& tour);
 
 /// Both modes' coverage side by side, as comparison.json's "coverage".

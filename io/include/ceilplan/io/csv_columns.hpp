@@ -12,6 +12,7 @@
 
 namespace ceilplan::io {
 
+/// A CSV file read by column name, every field checked to be a finite number (path.csv, calibration data, SOC series).
 class CsvColumns {
  public:
   /// Reads `path`: a header row of column names, then rows with as many fields. Accepts a UTF-8
@@ -30,12 +31,14 @@ class CsvColumns {
                           const std::vector<std::string>& optional = {},
                           const std::vector<std::string>& none_is_infinite = {});
 
-  const std::vector<std::string>& columnNames() const { return names_; }  // the whole header
+  const std::vector<std::string>& columnNames() const { return names_; }  ///< the whole header
   bool hasColumn(const std::string& name) const;                          ///< kept (read) or not
   /// A kept column; throws ceilplan::InputError naming the header's columns if it was not kept.
   const std::vector<double>& column(const std::string& name) const;
+  /// Data rows read.
   std::size_t rowCount() const { return lines_.size(); }
-  std::size_t lineOfRow(std::size_t row) const { return lines_.at(row); }  // 1-based file line
+  std::size_t lineOfRow(std::size_t row) const { return lines_.at(row); }  ///< 1-based file line
+  /// The file or stream name used in messages.
   const std::string& source() const { return source_; }
 
  private:

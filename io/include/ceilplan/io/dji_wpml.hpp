@@ -26,6 +26,7 @@
 
 namespace ceilplan::io {
 
+/// Which height reference the KMZ's heights use.
 enum class DjiHeightMode {
   /// Heights above the take-off point (WPML relativeToStartPoint in both files): exact, needs no
   /// geoid. The default.
@@ -40,16 +41,16 @@ enum class DjiHeightMode {
 /// on the main gimbal (gimbalindex 0), whose tilt range is -120 to +30 degrees (DJI H20
 /// specifications): it cannot look straight up at a soffit; on the upper mount it can.
 struct DjiWpmlOptions {
-  int drone_enum = 89;
-  int drone_sub_enum = 0;
-  int payload_enum = 42;
+  int drone_enum = 89;       ///< droneEnumValue
+  int drone_sub_enum = 0;    ///< droneSubEnumValue
+  int payload_enum = 42;     ///< payloadEnumValue
   int payload_position = 0;  ///< gimbalindex: 0 main (left, underslung), 1 right, 2 upper (M300/M350 RTK)
-  std::array<double, 2> gimbal_pitch_range_deg{-120.0, 30.0};
-  DjiHeightMode height_mode = DjiHeightMode::RelativeToTakeoff;
-  std::optional<double> geoid_separation_m;  ///< ellipsoid above geoid at the site (SeaLevel only)
-  std::string finish_action = "autoLand";    ///< goHome | autoLand | noAction | gotoFirstWaypoint
-  std::string rc_lost_action = "hover";      ///< executeRCLostAction: goBack | landing | hover
-  double rth_height_m = 2.0;                 ///< globalRTHHeight, [2, 1500] m
+  std::array<double, 2> gimbal_pitch_range_deg{-120.0, 30.0};  ///< gimbal pitch range of the payload, degrees (+90 up)
+  DjiHeightMode height_mode = DjiHeightMode::RelativeToTakeoff;  ///< which height reference the files use
+  std::optional<double> geoid_separation_m;                      ///< ellipsoid above geoid at the site (SeaLevel only)
+  std::string finish_action = "autoLand";                        ///< goHome | autoLand | noAction | gotoFirstWaypoint
+  std::string rc_lost_action = "hover";                          ///< executeRCLostAction: goBack | landing | hover
+  double rth_height_m = 2.0;                                     ///< globalRTHHeight, [2, 1500] m
 
   /// Throws ceilplan::InputError naming the bad field.
   void validate() const;
@@ -57,6 +58,7 @@ struct DjiWpmlOptions {
 
 /// The names the mission file's `dji:` keys take (mission::DjiAircraft).
 const std::vector<std::string>& djiDroneNames();
+/// The payload names the `dji:` key takes.
 const std::vector<std::string>& djiPayloadNames();
 
 /// The enum values and pitch range of an aircraft, payload and mount. Throws
@@ -67,16 +69,17 @@ DjiWpmlOptions djiWpmlOptions(const mission::DjiAircraft& aircraft);
 /// Where a value of the route lies outside the range DJI's WPML tables allow and was written as
 /// the nearest allowed value instead.
 struct DjiClamp {
-  int sortie = 1;
+  int sortie = 1;            ///< 1-based
   std::size_t waypoint = 0;  ///< 1-based; 0: a route-wide element
   std::string element;       ///< e.g. "wpml:waypointSpeed"
-  double planned = 0.0;
-  double written = 0.0;
+  double planned = 0.0;      ///< the value planned
+  double written = 0.0;      ///< the value written
 };
 
+/// A DJI WPML mission (the two files of a KMZ) and what was clamped to fit DJI's ranges.
 struct DjiWpml {
-  std::string template_kml;
-  std::string waylines_wpml;
+  std::string template_kml;      ///< wpmz/template.kml
+  std::string waylines_wpml;     ///< wpmz/waylines.wpml
   std::vector<DjiClamp> clamps;  ///< the same in both files
 };
 

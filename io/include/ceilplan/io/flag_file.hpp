@@ -11,6 +11,7 @@
 
 namespace ceilplan::io {
 
+/// One key of a --config file: a long flag and its values.
 struct FlagFileEntry {
   std::string flag;                 ///< the long name, '_' spelled '-'
   std::vector<std::string> values;  ///< one per occurrence of the flag

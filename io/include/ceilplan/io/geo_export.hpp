@@ -32,6 +32,7 @@ std::string routesKml(const std::vector<mission::SortieRoute>& routes, const mis
 /// Both written atomically (whole or not at all).
 void writeRoutesGeoJson(const std::filesystem::path& file, const std::vector<mission::SortieRoute>& routes,
                         const mission::GeodeticOrigin& origin);
+/// routes.kml: every sortie's route, titled `title`, written atomically.
 void writeRoutesKml(const std::filesystem::path& file, const std::vector<mission::SortieRoute>& routes,
                     const mission::GeodeticOrigin& origin, const std::string& title);
 

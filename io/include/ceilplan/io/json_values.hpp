@@ -11,6 +11,7 @@
 
 namespace ceilplan::io {
 
+/// `value` as JSON, or null when it is not finite (JSON has no NaN or infinity).
 inline nlohmann::json finiteOrNull(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
@@ -19,10 +20,12 @@ inline nlohmann::json finiteOrNull(double value) {
 /// names, target names) may hold bytes that are not UTF-8, which nlohmann::json refuses to dump:
 /// each such byte becomes U+FFFD, so an output is never lost to a name after the work is done.
 std::string jsonText(const nlohmann::json& json, int indent = -1);
+/// The same for an ordered JSON document.
 std::string jsonText(const nlohmann::ordered_json& json, int indent = -1);
 
 /// Writes `json` indented by 2, with a final newline, atomically (writeTextAtomically).
 void writeJsonFile(const std::filesystem::path& file, const nlohmann::json& json);
+/// The same for an ordered JSON document.
 void writeJsonFile(const std::filesystem::path& file, const nlohmann::ordered_json& json);
 
 }  // namespace ceilplan::io

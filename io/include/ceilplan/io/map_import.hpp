@@ -22,11 +22,12 @@ namespace ceilplan::io {
 
 inline constexpr double kMeshMargin_m = 1.0;  ///< known space around a mesh by default
 
+/// What `ceilplan import` reads and how it builds the map (docs/import.md).
 struct MapImportOptions {
-  std::filesystem::path points;   ///< a point cloud (pointCloudExtensions()), or
-  std::filesystem::path mesh;     ///< a triangle mesh (meshExtensions()): exactly one of the two
-  std::filesystem::path origins;  ///< optional, with points: free space carved by ray casting
-  double resolution_m = 0.1;
+  std::filesystem::path points;           ///< a point cloud (pointCloudExtensions()), or
+  std::filesystem::path mesh;             ///< a triangle mesh (meshExtensions()): exactly one of the two
+  std::filesystem::path origins;          ///< optional, with points: free space carved by ray casting
+  double resolution_m = 0.1;              ///< voxel size of the map built
   std::string crs;                        ///< "EPSG:<code>" of the data's projected CRS; empty: local already
   double max_range_m = 0.0;               ///< with origins: the longest ray carved (0: no limit)
   std::optional<double> free_distance_m;  ///< without origins: default two voxels
@@ -48,19 +49,20 @@ struct MapImportOptions {
 
 /// The local frame a projected CRS was moved into.
 struct ImportedFrame {
-  std::string crs;
-  std::string crs_name;
+  std::string crs;                   ///< "EPSG:<code>" of the projected CRS
+  std::string crs_name;              ///< the CRS's name, as PROJ gives it
   Eigen::Vector3d origin_projected;  ///< the local origin in the CRS's coordinates
   GeodeticOrigin origin;             ///< the same, geodetic: a mission file's `origin`
 };
 
+/// A map imported from a cloud or a mesh, with where it lies.
 struct MapImport {
-  std::filesystem::path source;  ///< the cloud or mesh read
-  bool from_mesh = false;
-  environment::BuiltMap built;
-  std::size_t skipped_non_finite_points = 0;
-  std::optional<ImportedFrame> frame;
-  Eigen::AlignedBox3d extent_m;  ///< the map's metric bounds
+  std::filesystem::path source;               ///< the cloud or mesh read
+  bool from_mesh = false;                     ///< the source was a mesh, not a cloud
+  environment::BuiltMap built;                ///< the map built and how its free space was decided
+  std::size_t skipped_non_finite_points = 0;  ///< points dropped for a NaN or infinite coordinate
+  std::optional<ImportedFrame> frame;         ///< the local frame, when the data came in a projected CRS
+  Eigen::AlignedBox3d extent_m;               ///< the map's metric bounds
 };
 
 /// Reads, moves into the local frame and builds the map; `progress` (optional) gets the stage

@@ -31,14 +31,14 @@ void checkWritableFile(const std::filesystem::path& file);
 
 /// One output of a command: `flag` names it in messages ("--json").
 struct Output {
-  std::string flag;
+  std::string flag;            ///< names the output in messages, e.g. "--json"
   std::filesystem::path path;  ///< empty: not asked for
-  bool directory = false;
+  bool directory = false;      ///< the output is a directory
 };
 
 /// One input the outputs must leave alone (a file read, or one the command will read).
 struct Input {
-  std::string flag;
+  std::string flag;            ///< names the input in messages, e.g. "--map"
   std::filesystem::path path;  ///< empty: none
 };
 
@@ -46,6 +46,7 @@ struct Input {
 /// flag, the path and what to do.
 void checkOutputs(const std::vector<Output>& outputs, const std::vector<Input>& inputs);
 
+/// A command's outputs, staged and put in place all or none (docs/cli.md, "Outputs").
 class OutputSet {
  public:
   /// Checks, before any work, that `dir` can receive outputs: it is a directory or does not exist
@@ -62,9 +63,11 @@ class OutputSet {
   /// Where to write the output given with `flag` (empty if it was not asked for), in the layout
   /// it will have; and where it goes.
   const std::filesystem::path& path(const std::string& flag) const;
+  /// Where the output given with `flag` goes once committed.
   const std::filesystem::path& finalPath(const std::string& flag) const;
   /// The same for the first output.
   const std::filesystem::path& path() const { return path(outputs_.front().flag); }
+  /// Where the first output goes once committed.
   const std::filesystem::path& finalPath() const { return finalPath(outputs_.front().flag); }
 
   /// Puts every staged output in place, all or none (TemporaryOutput::commitAll).

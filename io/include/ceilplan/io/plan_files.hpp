@@ -23,6 +23,7 @@ namespace ceilplan::io {
 /// min_ceiling_gap_m (null: no ceiling), time_under_ceiling_s.
 nlohmann::json figuresJson(const planner::PathEvaluation& evaluation);
 
+/// `waypoints_m` as a JSON array of [x, y, z].
 nlohmann::json waypointsJson(const std::vector<Eigen::Vector3d>& waypoints_m);
 
 /// A provenance comment line, then t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,ground_gap_m

@@ -18,6 +18,8 @@ namespace ceilplan::io {
 /// is in the data's own height system (usually above sea level).
 using mission::GeodeticOrigin;
 
+/// A projected CRS (PROJ) and a local ENU frame at an origin in it: how `ceilplan import --crs` moves data into map
+/// coordinates.
 class ProjectedFrame {
  public:
   /// `crs` is "EPSG:<code>" of a projected CRS (or a compound one with a projected part);
@@ -37,9 +39,13 @@ class ProjectedFrame {
   /// metres, at the lowest height rounded down to a whole metre.
   static Eigen::Vector3d originNear(const std::vector<Eigen::Vector3d>& projected);
 
+  /// "EPSG:<code>".
   const std::string& crs() const { return crs_; }
+  /// The CRS's name, as PROJ gives it.
   const std::string& crsName() const { return name_; }
+  /// The local origin in the CRS's coordinates.
   const Eigen::Vector3d& originProjected() const { return origin_projected_; }
+  /// The local origin, geodetic.
   const GeodeticOrigin& origin() const { return origin_; }
 
   /// Projected coordinates to the local ENU frame, in place. Throws ceilplan::InputError

@@ -21,14 +21,14 @@ namespace ceilplan::io {
 /// What the proposed mission says besides the proposal: each has a default the user may change
 /// (with the command's flags, or in the file afterwards).
 struct ProposalSettings {
-  std::filesystem::path map_file;      ///< written relative to the mission file's directory
-  std::filesystem::path vehicle_file;  ///< the same
-  std::string camera_preset = "zenmuse_h20_wide";
-  double gsd_mm_px = 2.0;
-  double overlap_front_pct = 70.0;
-  double overlap_side_pct = 60.0;
-  double max_incidence_deg = 45.0;
-  std::uint32_t seed = 1;
+  std::filesystem::path map_file;                  ///< written relative to the mission file's directory
+  std::filesystem::path vehicle_file;              ///< the same
+  std::string camera_preset = "zenmuse_h20_wide";  ///< the camera (mission::cameraPresets())
+  double gsd_mm_px = 2.0;                          ///< required GSD of each region
+  double overlap_front_pct = 70.0;                 ///< front overlap of each region
+  double overlap_side_pct = 60.0;                  ///< side overlap of each region
+  double max_incidence_deg = 45.0;                 ///< largest incidence of each region
+  std::uint32_t seed = 1;                          ///< the mission's seed
   /// The policy the home was checked under: the mission's `unknown:` key, so that its tours assume
   /// the same (written only when not the default, occupied).
   environment::UnknownSpace unknown;
@@ -42,10 +42,12 @@ struct ProposalSettings {
 struct ProposalRequest {
   std::filesystem::path mission_file;  ///< .yaml or .yml
   std::filesystem::path picture_file;  ///< .svg; empty: beside the mission file
-  mission::ProposalOptions options;
-  ProposalSettings settings;  ///< with the map and vehicle files to read
+  mission::ProposalOptions options;    ///< how regions and the home are proposed
+  ProposalSettings settings;           ///< with the map and vehicle files to read
   /// How messages name the two outputs ("--out", "--picture" for the command line).
   std::string mission_flag = "mission file", picture_flag = "picture";
+  /** @var picture_flag
+   *  How messages name the picture output. */
   std::vector<Input> other_inputs;  ///< besides the map and the vehicle (a --config file)
 };
 

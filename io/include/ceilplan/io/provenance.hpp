@@ -15,23 +15,26 @@
 
 namespace ceilplan::io {
 
+/// One input file of a run, with its SHA-256.
 struct InputFile {
-  std::string role;  ///< "mission", "map", "vehicle", "battery", "path", ...
-  std::filesystem::path path;
-  std::string sha256;  ///< hex
+  std::string role;            ///< "mission", "map", "vehicle", "battery", "path", ...
+  std::filesystem::path path;  ///< as given
+  std::string sha256;          ///< hex
 };
 
+/// Where an output came from: version, command line, inputs with their SHA-256, seed (docs/cli.md).
 struct Provenance {
-  std::string version;       ///< "0.1.0 (git abc123)"
-  std::string command_line;  ///< as typed (arguments joined and quoted), or who called the library
-  std::vector<InputFile> inputs;
-  std::optional<std::uint64_t> seed;
+  std::string version;                ///< "0.1.0 (git abc123)"
+  std::string command_line;           ///< as typed (arguments joined and quoted), or who called the library
+  std::vector<InputFile> inputs;      ///< every input file read
+  std::optional<std::uint64_t> seed;  ///< the seed of every random choice, when there was one
 
   /// The version of this build, `command_line`, no inputs yet.
   static Provenance of(std::string command_line);
   /// Adds an input file with its SHA-256; an empty path is skipped (a built-in default).
   Provenance& input(const std::string& role, const std::filesystem::path& path);
 
+  /// The provenance as a JSON object.
   nlohmann::json json() const;
   /// The same as named one-line fields, for formats that hold such (OMPL's benchmark log):
   /// "ceilplan", "command", "seed" when there is one, and per input ROLE and ROLE_sha256.
@@ -44,6 +47,7 @@ struct Provenance {
 
 /// `json`, an object, with `provenance` under "provenance": what every JSON output records.
 nlohmann::json withProvenance(nlohmann::json json, const Provenance& provenance);
+/// The same for an ordered JSON document.
 nlohmann::ordered_json withProvenance(nlohmann::ordered_json json, const Provenance& provenance);
 
 /// The command line as one string, each argument quoted where the shell would need it.

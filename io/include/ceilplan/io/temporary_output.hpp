@@ -47,6 +47,7 @@ class TemporaryOutput {
 
   /// Where to write.
   const std::filesystem::path& path() const { return temporary_; }
+  /// Where it goes once committed.
   const std::filesystem::path& finalPath() const { return final_; }
 
   /// Puts the temporary in place of the final path: whatever was there (a file, or a directory

@@ -46,7 +46,20 @@ struct StopCounts {
   int targets = 0, targets_visited = 0;
   int contact_readings = 0, contact_readings_taken = 0;
   int photos = 0, photos_taken = 0;
+  /** @var targets
+   *  Point targets of the mission. */
+  /** @var targets_visited
+   *  Point targets the sorties fly to. */
+  /** @var contact_readings
+   *  Contact grid points of the mission. */
+  /** @var contact_readings_taken
+   *  Contact grid points the sorties read. */
+  /** @var photos
+   *  Photos of the coverage plan. */
+  /** @var photos_taken
+   *  Photos the sorties take. */
 };
+/// The stop counts of `tour`.
 StopCounts stopCounts(const mission::TourResult& tour);
 
 /// Everything of the tour (docs/tours.md, "Outputs"), with the mission, map and vehicle named.
@@ -75,6 +88,7 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
 
 /// The side-by-side table of two modes (ceiling first), as printed and as DIR/comparison.txt.
 std::string comparisonTable(const mission::TourResult& ceiling, const mission::TourResult& free);
+/// comparison.json: both modes' figures with the mission, map and vehicle named.
 nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free,
                               const mission::Mission& mission, const Provenance& provenance);
 /// DIR/comparison.txt, DIR/comparison.json, DIR/report.html (both modes) and map views covering both routes.

@@ -22,8 +22,10 @@
 
 namespace ceilplan::io {
 
+/// The frame a trajectory file is written in: the map's ENU, or NED for PX4's TrajectorySetpoint.
 enum class TrajectoryFrame { Enu, Ned };
 
+/// The column names of a trajectory row in `frame`.
 std::vector<std::string> trajectoryColumns(TrajectoryFrame frame);
 
 /// One row of numbers per setpoint, in trajectoryColumns' order (trigger 0 or 1).
@@ -42,6 +44,7 @@ nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryF
 /// comment, the JSON holds it as "provenance".
 void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajectory& trajectory, TrajectoryFrame frame,
                         const Provenance& provenance);
+/// trajectory.json, written atomically with `provenance`.
 void writeTrajectoryJson(const std::filesystem::path& file, const mission::Trajectory& trajectory,
                          TrajectoryFrame frame, const std::optional<mission::GeodeticOrigin>& origin,
                          const Provenance& provenance);

@@ -21,6 +21,7 @@ nlohmann::json unknownSpaceJson(const environment::UnknownSpace& unknown,
 nlohmann::json unknownSpaceJson(const environment::Environment& environment);
 /// One line for text outputs, e.g. "fill (pockets up to 1 m): 0.42 of 12.3 m3 unknown assumed free (7 of 19 regions)".
 std::string unknownSpaceLine(const environment::UnknownSpace& unknown, const environment::UnknownSpaceSummary& summary);
+/// The same for an environment's index.
 std::string unknownSpaceLine(const environment::Environment& environment);
 /// Where a route relies on the policy: {"assumed_free_m", "assumed_free_intervals": [{from_m, to_m, from, to}]}.
 nlohmann::json assumedFreeJson(const environment::AssumedFreeStretches& stretches);

@@ -13,12 +13,14 @@ namespace ceilplan::mission {
 /// current, or swapped for a charged one (and charged off the aircraft, wearing the same).
 enum class Turnaround { Recharge, Swap };
 
+/// The battery a mission flies (a battery file, docs/planner.md "Battery file"): the pack, its SOC limits and what
+/// happens between sorties.
 struct BatterySpec {
-  battery::Pack pack;         ///< capacity (usable = nominal x SOH), charge current, SOC limits
-  double start_soc = 0.95;    ///< every sortie takes off at this SOC (the paper's missions)
-  double reserve_soc = 0.25;  ///< and lands with at least this much
-  Turnaround between_sorties = Turnaround::Recharge;
-  double swap_s = 120.0;  ///< landing to take-off with a swapped pack
+  battery::Pack pack;                                 ///< capacity (usable = nominal x SOH), charge current, SOC limits
+  double start_soc = 0.95;                            ///< every sortie takes off at this SOC (the paper's missions)
+  double reserve_soc = 0.25;                          ///< and lands with at least this much
+  Turnaround between_sorties = Turnaround::Recharge;  ///< recharge or swap between sorties
+  double swap_s = 120.0;                              ///< landing to take-off with a swapped pack
   std::string description =
       "built-in: the founding paper's 4S 5.2 Ah pack at 95 %";  ///< for reports: where it came from
 

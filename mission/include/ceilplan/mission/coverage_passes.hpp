@@ -16,12 +16,14 @@
 
 namespace ceilplan::mission {
 
+/// A straight run of views flown one after another.
 struct ViewPass {
   std::vector<std::uint32_t> views;                      ///< indices into the caller's list, in flying order
   Eigen::Vector3d direction = Eigen::Vector3d::UnitY();  ///< unit, along which the pass flies (first to last)
   double length_m = 0.0;                                 ///< first to last camera position, along the views
 };
 
+/// A region's views arranged in passes, with the generic tour it was compared against.
 struct PassPlan {
   std::vector<ViewPass> passes;  ///< in flying order; every view in exactly one
   double route_m = 0.0;          ///< closed route through the passes in order (camera positions)

@@ -27,7 +27,8 @@ namespace ceilplan::mission {
 
 /// One photo the plan takes: where, how, and what it delivers.
 struct PlannedPhoto {
-  CameraPose pose;
+  CameraPose pose;  ///< body pose and gimbal pitch
+  /// the camera's optical centre, map frame
   Eigen::Vector3d camera_m = Eigen::Vector3d::Zero();
   int region = 0;                ///< index into CoveragePlan::regions
   int pass = 0;                  ///< index into that region's passes
@@ -40,18 +41,19 @@ struct PlannedPhoto {
       0.0;  ///< flying on to the next photo: the transit speed, on the move capped by the blur limit and photo interval
 };
 
+/// One region's part of a coverage plan: its surface, what is reachable, the photos chosen and their passes.
 struct RegionPlan {
-  CoverageRegion region;
-  RegionSurface surface;
+  CoverageRegion region;                ///< as the mission gives it
+  RegionSurface surface;                ///< its surface elements
   std::vector<std::uint8_t> reachable;  ///< per element: some valid candidate pose covers it
-  double reachable_area_m2 = 0.0;
-  double unreachable_area_m2 = 0.0;
-  double heading_deg = 0.0;           ///< the region's long axis (regionHeading)
-  std::vector<std::uint32_t> photos;  ///< indices into CoveragePlan::photos, in pass order
-  PassPlan passes;                    ///< views index `photos` (passes[k].views[i] -> photos[...])
-  std::size_t candidates = 0;         ///< candidate views after filtering
-  GenerationStats generation;         ///< seeds, poses tried, repairs
-  SetCoverResult selection;           ///< candidate indices, costs and improvement counters
+  double reachable_area_m2 = 0.0;       ///< area some candidate pose covers
+  double unreachable_area_m2 = 0.0;     ///< area no candidate pose covers
+  double heading_deg = 0.0;             ///< the region's long axis (regionHeading)
+  std::vector<std::uint32_t> photos;    ///< indices into CoveragePlan::photos, in pass order
+  PassPlan passes;                      ///< views index `photos` (passes[k].views[i] -> photos[...])
+  std::size_t candidates = 0;           ///< candidate views after filtering
+  GenerationStats generation;           ///< seeds, poses tried, repairs
+  SetCoverResult selection;             ///< candidate indices, costs and improvement counters
 
   /// Centres of the elements no candidate covers.
   std::vector<Eigen::Vector3d> unreachableCentres() const;
@@ -59,24 +61,26 @@ struct RegionPlan {
 
 /// Seconds spent per phase, summed over regions.
 struct CoverageTimes {
-  double surfaces_s = 0.0;
+  double surfaces_s = 0.0;    ///< surface elements
   double candidates_s = 0.0;  ///< lattice, visibility and repairs
-  double costs_s = 0.0;
-  double selection_s = 0.0;  ///< greedy and local improvement
-  double passes_s = 0.0;
+  double costs_s = 0.0;       ///< view costs
+  double selection_s = 0.0;   ///< greedy and local improvement
+  double passes_s = 0.0;      ///< pass arrangement
 };
 
+/// The views planCoverage chooses for a mission's surfaces in one mode (docs/coverage.md).
 struct CoveragePlan {
-  std::vector<RegionPlan> regions;
+  std::vector<RegionPlan> regions;   ///< one per surface, in the mission's order
   std::vector<PlannedPhoto> photos;  ///< region by region, each in pass order
   double charge_estimate_ah = 0.0;   ///< sum of the chosen views' costs (the selection's estimate)
-  CoverageTimes times;
+  CoverageTimes times;               ///< seconds per phase
 };
 
+/// How planCoverage generates, prices and selects views.
 struct CoveragePlanOptions {
-  ViewGenerationOptions views;
-  ViewCostOptions costs;
-  SetCoverOptions selection;
+  ViewGenerationOptions views;  ///< candidate generation
+  ViewCostOptions costs;        ///< view costs
+  SetCoverOptions selection;    ///< set cover
   /// Progress of the long phases: (phase name, fraction of that phase). Never prints.
   std::function<void(const std::string&, double)> progress;
 };
@@ -91,7 +95,7 @@ struct PhotoRow {
   double gimbal_pitch_deg = 0.0;                       ///< +90 straight up
   double distance_m = 0.0;                             ///< area-weighted mean distance to the surface it covers
   double gsd_mm_px = 0.0;                              ///< area-weighted mean GSD over the surface it covers
-  std::string region;
+  std::string region;                                  ///< the region's name
 };
 
 /// The row of photo `k` of the plan, numbered `index`, sortie and time left empty.

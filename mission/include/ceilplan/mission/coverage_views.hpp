@@ -24,10 +24,10 @@ namespace ceilplan::mission {
 
 /// One element a pose covers, with how it sees it.
 struct SeenElement {
-  std::uint32_t element = 0;  ///< index into RegionSurface::elements
-  float gsd_mm_px = 0.0f;     ///< at its distance and incidence
-  float incidence_deg = 0.0f;
-  float distance_m = 0.0f;  ///< camera to the element's centre
+  std::uint32_t element = 0;   ///< index into RegionSurface::elements
+  float gsd_mm_px = 0.0f;      ///< at its distance and incidence
+  float incidence_deg = 0.0f;  ///< line of sight to the surface normal
+  float distance_m = 0.0f;     ///< camera to the element's centre
 };
 
 /// What candidate generation tried (for reports and benchmarks).
@@ -41,21 +41,26 @@ struct GenerationStats {
 /// Candidate poses and, for each, the elements it covers (compressed rows: poses[i] covers
 /// seen[offsets[i]] .. seen[offsets[i + 1] - 1]).
 struct CandidateViews {
-  std::vector<CameraPose> poses;
-  std::vector<std::uint32_t> offsets{0};
-  std::vector<SeenElement> seen;
-  std::vector<std::uint8_t> reachable;  ///< per element: 1 if some candidate covers it
+  std::vector<CameraPose> poses;          ///< the candidate poses
+  std::vector<std::uint32_t> offsets{0};  ///< row starts into `seen`, one more than poses
+  std::vector<SeenElement> seen;          ///< every pose's covered elements, row after row
+  std::vector<std::uint8_t> reachable;    ///< per element: 1 if some candidate covers it
 
+  /// Candidates held.
   std::size_t size() const { return poses.size(); }
+  /// First element `view` covers.
   const SeenElement* begin(std::size_t view) const { return seen.data() + offsets[view]; }
+  /// One past the last element `view` covers.
   const SeenElement* end(std::size_t view) const { return seen.data() + offsets[view + 1]; }
+  /// Appends a candidate with the elements it covers.
   void add(const CameraPose& pose, const std::vector<SeenElement>& covered);
 
-  GenerationStats stats;
+  GenerationStats stats;  ///< what generation tried
 };
 
+/// How candidate views are generated for a region.
 struct ViewGenerationOptions {
-  FlightMode mode = FlightMode::Ceiling;
+  FlightMode mode = FlightMode::Ceiling;  ///< the mode the views are for
   /// Free mode: the conventional distance kept from every structure, airframe to surface. A pose
   /// keeps it (body clearance >= collision radius + standoff) where any pose for its seed does;
   /// elsewhere only the poses of largest clearance for that seed are kept.
@@ -66,7 +71,7 @@ struct ViewGenerationOptions {
                                     ///< (and as many within the room in front of the surface, where that is shorter)
   double seed_spacing_share = 0.5;  ///< seeds every this share of the covered footprint at each distance
   double tilt_share = 0.6;          ///< lattice tilts: this share of the region's max incidence
-  int workers = 2;
+  int workers = 2;                  ///< threads testing poses
   std::function<void(double)> progress;  ///< fraction of the visibility work done
   /// Poses only where this holds (a tour's planner::ReachableSpace, when its first stops left a
   /// place no route from home reaches); empty: every admissible pose. An element seen only from

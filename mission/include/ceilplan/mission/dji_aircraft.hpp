@@ -10,6 +10,7 @@
 
 namespace ceilplan::mission {
 
+/// The DJI aircraft, payload and failsafes a mission's KMZ is written for (mission key `dji:`, docs/flying.md).
 struct DjiAircraft {
   std::string drone = "m350_rtk";         ///< m300_rtk, m350_rtk, m30, m30t, m3e, m3t, m3d, m3td, m4e, m4t
   std::string payload = "h20";            ///< h20, h20t, h20n, h30, h30t, or the drone's own camera ("builtin")

@@ -8,12 +8,15 @@
 
 namespace ceilplan::mission {
 
+/// Ceiling: hug the structure's underside where it saves charge. Free: the conventional flight, a standoff from every
+/// structure and no proximity effects.
 enum class FlightMode { Ceiling, Free };
 
 /// "ceiling", "free".
 std::string flightModeName(FlightMode mode);
 /// Throws ceilplan::InputError for any other name, listing both.
 FlightMode flightModeFromName(const std::string& name);
+/// "ceiling", "free".
 const std::vector<std::string>& flightModeNames();
 /// What a tour flies for "ceiling" or "free", or "both": ceiling mode, then free mode, to compare
 /// them. Throws as flightModeFromName for any other name.

@@ -13,8 +13,10 @@
 
 namespace ceilplan::mission {
 
+/// What the vehicle does at a sample: flying a leg, or hovering at a stop (a dwell).
 enum class FlightPhase : std::uint8_t { Leg, Dwell };
 
+/// One sortie as flown, sample by sample, with its turnaround.
 struct SortieRecord {
   std::vector<planner::PathSample> samples;  ///< t_s from this sortie's take-off
   std::vector<FlightPhase> phases;           ///< one per sample
@@ -24,12 +26,15 @@ struct SortieRecord {
   double recharge_s = 0.0;                   ///< back to the start SOC at the charge current (the pack's own cycle)
 
   double chargeAh() const;  ///< the trapezoid integral of the samples' current
+  /// Take-off to landing, s.
   double flightS() const { return samples.empty() ? 0.0 : samples.back().t_s; }
+  /// The lowest SOC of the samples.
   double lowestSoc() const;
 };
 
+/// What a tour flies, sortie by sortie (path.csv).
 struct FlightRecord {
-  std::vector<SortieRecord> sorties;
+  std::vector<SortieRecord> sorties;  ///< in flying order
 };
 
 }  // namespace ceilplan::mission

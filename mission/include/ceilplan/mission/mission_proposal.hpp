@@ -22,6 +22,7 @@
 
 namespace ceilplan::mission {
 
+/// How proposeMission finds overhead regions and a home (`ceilplan propose`, docs/import.md).
 struct ProposalOptions {
   /// Only overhead surfaces inside this box (map frame); none: the whole map.
   std::optional<Eigen::AlignedBox3d> crop_m;
@@ -33,7 +34,7 @@ struct ProposalOptions {
   int max_regions = 8;
   /// The proposed home's height above the floor under it (the lowest one that is a valid state).
   double min_home_height_m = 0.5;
-  double max_home_height_m = 3.0;
+  double max_home_height_m = 3.0;  ///< the proposed home's highest height above the floor
   /// Camera to surface: a down-facing face is overhead only with this much known free space below
   /// it besides the vehicle's inflated height (proposalStandoff_m; io sets it from the camera).
   double standoff_m = 1.0;
@@ -43,6 +44,7 @@ struct ProposalOptions {
   void validate() const;
 };
 
+/// One proposed coverage region.
 struct ProposedRegion {
   std::string name;           ///< "overhead_1", ... by area, largest first
   Eigen::AlignedBox3d box_m;  ///< the region's faces, each with its half voxel around it
@@ -53,14 +55,16 @@ struct ProposedRegion {
   double box_area_m2 = 0.0;
 };
 
+/// What proposeMission returns: regions, a home and what was left out.
 struct MissionProposal {
-  std::vector<ProposedRegion> regions;
+  std::vector<ProposedRegion> regions;  ///< largest first
+  /// the home, map frame
   Eigen::Vector3d home_m = Eigen::Vector3d::Zero();
-  bool home_given = false;
+  bool home_given = false;          ///< the home was given (ProposalOptions::home_m), not proposed
   double home_height_m = 0.0;       ///< above the floor under the home (NaN when no floor lies below)
   std::size_t dropped_regions = 0;  ///< below the area or beyond the count
-  double dropped_area_m2 = 0.0;
-  double overhead_area_m2 = 0.0;  ///< of every down-facing face onto known free space (in the crop)
+  double dropped_area_m2 = 0.0;     ///< their overhead area
+  double overhead_area_m2 = 0.0;    ///< of every down-facing face onto known free space (in the crop)
   /// Of that, the regions with less free space below most of their area than the vehicle needs
   /// to photograph them (min_room_below_m), and the faces less high than that above the ground: a
   /// table's underside, the ground seen from a hole under it (a scan's) or from below (an open mesh's).

@@ -26,16 +26,17 @@
 
 namespace ceilplan::mission {
 
+/// What a PlanningContext plans with: the objective, speeds, clearances and the map's policies.
 struct PlanningOptions {
   std::string objective = "charge";  ///< planner::objectiveNames()
   std::string ageing_model = "xu";   ///< of the ageing objective
   double ageing_dod = 0.0;           ///< 0: the route's own depth of discharge (straight-line estimate, at least 1 %)
-  planner::FlightSpeeds speeds;
-  double min_ceiling_gap_m = 0.05;  ///< rotor plane to any ceiling, never less
-  double standoff_m = 1.0;          ///< free mode: the conventional distance from every structure
-  double temperature_c = 25.0;      ///< cell temperature for the ageing models
-  environment::EnvironmentOptions environment;
-  environment::UnknownSpace unknown;  ///< the map index's unknown-space policy
+  planner::FlightSpeeds speeds;      ///< cruise, inspection, climb and descent speeds, m/s
+  double min_ceiling_gap_m = 0.05;   ///< rotor plane to any ceiling, never less
+  double standoff_m = 1.0;           ///< free mode: the conventional distance from every structure
+  double temperature_c = 25.0;       ///< cell temperature for the ageing models
+  environment::EnvironmentOptions environment;  ///< the map index's sampling and clearance settings
+  environment::UnknownSpace unknown;            ///< the map index's unknown-space policy
 
   /// Throws ceilplan::InputError naming the first bad field.
   void validate() const;
@@ -48,6 +49,8 @@ battery::AgeingModelOptions ageingModelOptions(double temperature_c);
 /// A mission's speeds and the charge objective (what a tour plans with).
 PlanningOptions planningOptions(const Mission& mission);
 
+/// A map indexed for one vehicle and battery, with its energy, cost and safety models: built once, shared read-only by
+/// every route, tour and thread (docs/cpp.md).
 class PlanningContext {
  public:
   /// Indexes `map` for the vehicle. Throws ceilplan::InputError for bad options or vehicle.
@@ -56,11 +59,17 @@ class PlanningContext {
   /// The mission's map (loaded here), vehicle, battery and planningOptions(mission).
   explicit PlanningContext(const Mission& mission, const ProgressCallback& progress = {});
 
+  /// The options the context was built with, validated.
   const PlanningOptions& options() const { return options_; }
+  /// The vehicle it was built for.
   const Vehicle& vehicle() const { return vehicle_; }
+  /// The battery it was built for.
   const BatterySpec& battery() const { return battery_; }
+  /// The map as loaded.
   const environment::OccupancyMap& map() const { return map_; }
+  /// The map indexed for the vehicle: gaps, clearance and validity queries.
   const environment::Environment& environment() const { return *environment_; }
+  /// The vehicle's current model.
   const energy::EnergyModel& energy() const { return *energy_; }
 
   /// The full proximity model at the start SOC: every reported figure comes from it.
@@ -71,9 +80,10 @@ class PlanningContext {
   /// What one mode plans with: the same safety rules in both; free mode's cost ignores proximity
   /// effects and prefers the conventional standoff where it fits (CostModelOptions::standoff_m).
   struct Mode {
-    std::unique_ptr<planner::FlightCostModel> model;
-    std::unique_ptr<planner::SafetyRules> rules;
+    std::unique_ptr<planner::FlightCostModel> model;  ///< the mode's cost model
+    std::unique_ptr<planner::SafetyRules> rules;      ///< the safety rules (the same in both modes)
   };
+  /// The cost model and safety rules `mode` plans with, built anew for the caller.
   Mode mode(FlightMode mode) const;
 
   /// The objective (the options', or `name`), with ageing rates measured for the route's

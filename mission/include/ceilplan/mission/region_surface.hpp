@@ -12,9 +12,10 @@
 
 namespace ceilplan::mission {
 
+/// A region's surface as the voxel faces of its structure (regionSurface).
 struct RegionSurface {
-  std::vector<environment::SurfaceElement> elements;
-  double area_m2 = 0.0;  ///< sum of the elements' areas
+  std::vector<environment::SurfaceElement> elements;  ///< the exposed faces, in surfaceElements' order
+  double area_m2 = 0.0;                               ///< sum of the elements' areas
 };
 
 /// Throws ceilplan::InputError naming `what` (e.g. "surface region 'soffit'") when the shape

@@ -22,12 +22,14 @@ inline constexpr double kHoverStepS = 1.0;
 
 /// A point of a load profile; t_s from the profile's start.
 struct LoadSample {
-  double t_s = 0.0;
-  double load = 0.0;
+  double t_s = 0.0;   ///< from the profile's start
+  double load = 0.0;  ///< what is drawn: a current (A) or a power (W), as CurrentAtSoc takes it
 };
 
+/// The state of charge of one pack through a sortie: the one SOC integration tours use (coulomb counting).
 class SocIntegrator {
  public:
+  /// A pack at `start_soc`, loads turned into current by `current_at_soc`.
   SocIntegrator(const battery::Pack& pack, double start_soc, CurrentAtSoc current_at_soc = {});
 
   /// The current a load draws now.
@@ -35,9 +37,13 @@ class SocIntegrator {
   /// Moves on by `dt_s` drawing `current_a` (the interval's mean current).
   void advance(double dt_s, double current_a);
 
+  /// State of charge now, 0..1.
   double soc() const { return soc_; }
+  /// Time integrated so far, s.
   double time_s() const { return time_s_; }
+  /// Charge drawn so far, Ah.
   double chargeAh() const { return charge_ah_; }
+  /// Lowest SOC so far.
   double lowestSoc() const { return lowest_soc_; }
 
  private:

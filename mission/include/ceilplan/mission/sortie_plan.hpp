@@ -23,8 +23,8 @@ namespace ceilplan::mission {
 struct LegCost {
   /// Flown from the start SOC: what orders the tour.
   double charge_ah = 0.0;
-  double duration_s = 0.0;
-  double mean_current_a = 0.0;
+  double duration_s = 0.0;      ///< flight time of the leg
+  double mean_current_a = 0.0;  ///< charge / duration
   /// What the leg draws over [0, duration_s], turned into current at the SOC the sortie has
   /// reached there (TourCosts::current_at_soc). Empty: mean_current_a throughout, as a current.
   std::vector<LoadSample> load_profile;
@@ -32,7 +32,7 @@ struct LegCost {
 
 /// Hovering at a target's viewpoint for its inspection.
 struct Dwell {
-  double duration_s = 0.0;
+  double duration_s = 0.0;     ///< hover time
   double current_a = 0.0;      ///< at the start SOC: what orders the tour
   std::optional<double> load;  ///< what hovering draws (current_at_soc); unset: current_a, as a current
 };
@@ -46,34 +46,38 @@ struct TourCosts {
   std::vector<Dwell> dwells;    ///< dwells[0] is ignored
   CurrentAtSoc current_at_soc;  ///< unset: loads are currents
 
+  /// Targets, home left out.
   int targetCount() const { return static_cast<int>(names.size()) - 1; }
   /// Throws ceilplan::InputError naming the first bad entry (sizes, NaN, negative values).
   void validate() const;
 };
 
+/// How planSorties splits the order: the ageing model it minimises and where sorties may start.
 struct SortieOptions {
-  std::string ageing_model = "xu";  ///< battery::ageingModelNames()
-  battery::AgeingModelOptions ageing;
+  std::string ageing_model = "xu";     ///< battery::ageingModelNames()
+  battery::AgeingModelOptions ageing;  ///< the model's conditions and constants
   /// Positions in the order (0-based) where a sortie may start; 0 always may. Empty: every
   /// position. planTour spaces a large tour's by the sorties it needs (docs/tours.md, "Large
   /// tours").
   std::vector<int> split_points;
 };
 
+/// One leg of a sortie.
 struct SortieLeg {
-  int from = 0;  ///< matrix indices
-  int to = 0;
-  double charge_ah = 0.0;
-  double duration_s = 0.0;
+  int from = 0;             ///< matrix indices
+  int to = 0;               ///< matrix index flown to
+  double charge_ah = 0.0;   ///< charge drawn on the leg
+  double duration_s = 0.0;  ///< flight time of the leg
 };
 
 /// A point of a sortie's SOC history: flight, then the recharge back to the start SOC.
 struct SocSample {
-  double t_s = 0.0;  ///< from the sortie's take-off
-  double soc = 0.0;
+  double t_s = 0.0;        ///< from the sortie's take-off
+  double soc = 0.0;        ///< state of charge, 0..1
   double current_a = 0.0;  ///< positive discharging, negative charging
 };
 
+/// One flight from home and back: its targets, legs, charge, depth of discharge, wear and why it ends there.
 struct Sortie {
   std::vector<int> targets;            ///< matrix indices in visiting order
   std::vector<SortieLeg> legs;         ///< home -> targets -> home
@@ -89,16 +93,17 @@ struct Sortie {
   std::vector<SocSample> soc_history;  ///< leg and dwell boundaries, profile samples, recharge end
 };
 
+/// A tour's sorties and their totals (planSorties).
 struct SortiePlan {
-  std::string ageing_model;  ///< the model the split minimises
-  std::string wear_name;     ///< its cycle-wear measure, e.g. "Miner damage"
-  std::vector<Sortie> sorties;
-  double charge_ah = 0.0;
-  double flight_s = 0.0;    ///< in the air, dwells included
-  double duration_s = 0.0;  ///< first take-off to last landing: flights and the turnarounds between them
-  double fec = 0.0;
-  double wear = 0.0;
-  double min_soc = 1.0;
+  std::string ageing_model;      ///< the model the split minimises
+  std::string wear_name;         ///< its cycle-wear measure, e.g. "Miner damage"
+  std::vector<Sortie> sorties;   ///< in flying order
+  double charge_ah = 0.0;        ///< charge drawn over all sorties
+  double flight_s = 0.0;         ///< in the air, dwells included
+  double duration_s = 0.0;       ///< first take-off to last landing: flights and the turnarounds between them
+  double fec = 0.0;              ///< full equivalent cycles of all sorties and recharges
+  double wear = 0.0;             ///< the model's cycle wear, summed over the sorties
+  double min_soc = 1.0;          ///< lowest SOC at any landing
   double state_of_health = 1.0;  ///< of the pack that flies it
 };
 
@@ -127,11 +132,12 @@ Sortie flySortie(const TourCosts& legs, const std::vector<int>& targets, const B
 /// Wear of a plan under any model, so one split can be reported under every model: one new pack
 /// flies the sorties back to back, recharged to the start SOC after each.
 struct PlanWear {
-  std::string model;
-  std::string wear_name;
+  std::string model;           ///< the ageing model's name
+  std::string wear_name;       ///< its cycle-wear measure, e.g. "Miner damage"
   double cycle_wear = 0.0;     ///< the model's cycle wear (equal to the sum over the sorties)
   double capacity_loss = 0.0;  ///< fraction of nominal capacity lost, calendar ageing included
 };
+/// The wear of `plan` under `model` (battery::ageingModelNames()).
 PlanWear planWear(const SortiePlan& plan, const std::string& model, const battery::AgeingModelOptions& options = {});
 
 }  // namespace ceilplan::mission

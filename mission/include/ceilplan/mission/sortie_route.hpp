@@ -14,6 +14,7 @@
 
 namespace ceilplan::mission {
 
+/// One waypoint of a route as a vehicle flies it: position, hold, heading, speed, gimbal and camera actions.
 struct RouteWaypoint {
   /// The common case in one brace: {position, hold, heading}; set the rest by name.
   RouteWaypoint(const Eigen::Vector3d& position = Eigen::Vector3d::Zero(), double hold = 0.0,
@@ -38,6 +39,8 @@ struct RouteWaypoint {
   std::string name;  ///< what is inspected here, if anything (labels in KML, GeoJSON, reports)
 };
 
+/// One sortie as an autopilot flies it: home, waypoints, speeds, take-off and landing heights (the autopilot files'
+/// source).
 struct SortieRoute {
   int sortie = 1;                                    ///< 1-based
   Eigen::Vector3d home_m = Eigen::Vector3d::Zero();  ///< take-off point; the flight starts here
@@ -63,6 +66,7 @@ struct SortieRoute {
   bool endsAtHome() const;
   /// The take-off climb's and the landing descent's heights above home, as above.
   double takeoffHeight_m() const;
+  /// The landing descent's height above home, as above.
   double landingHeight_m() const;
 };
 
@@ -83,14 +87,16 @@ std::vector<double> gimbalPitchesInEffect_deg(const SortieRoute& route);
 /// Heading (none when the target is straight above or below, within 1 cm horizontally) and
 /// gimbal pitch that point a camera at `target_m` from `from_m`.
 struct CameraAim {
-  std::optional<double> yaw_deg;
-  double gimbal_pitch_deg = 0.0;
+  std::optional<double> yaw_deg;  ///< heading, degrees clockwise from north; none: straight above or below
+  double gimbal_pitch_deg = 0.0;  ///< +90 straight up, -90 straight down
 };
+/// The heading and gimbal pitch that point a camera at `target_m` from `from_m`.
 CameraAim aimAt(const Eigen::Vector3d& from_m, const Eigen::Vector3d& target_m);
 
 /// Compass heading (degrees clockwise from north) <-> ENU yaw (radians counter-clockwise from
 /// east, REP 103), both wrapped: heading to [0, 360), yaw to (-pi, pi].
 double enuYawFromHeading_rad(double heading_deg);
+/// ENU yaw `yaw_rad` as a compass heading, degrees in [0, 360).
 double headingFromEnuYaw_deg(double yaw_rad);
 
 }  // namespace ceilplan::mission

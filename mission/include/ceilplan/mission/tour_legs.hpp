@@ -22,6 +22,7 @@ namespace ceilplan::mission {
 /// Share of a stage done, from the calling thread.
 using FractionCallback = std::function<void(double)>;
 
+/// One leg of a tour: the path between two places and its figures.
 struct TourLeg {
   std::vector<Eigen::Vector3d> waypoints;  ///< from the leg's first place to its second
   planner::PathEvaluation evaluation;      ///< flown at the start SOC with the full model
@@ -38,12 +39,14 @@ using LegScorer = std::function<planner::PathEvaluation(int from, int to, const 
 /// One search per unordered pair: `plan(i, j)` (i < j) gives the post-processed path, flown
 /// back reversed. Throws the first failure by pair order.
 using PairPlanner = std::function<std::vector<Eigen::Vector3d>(int from, int to)>;
+/// Plans every unordered pair with `plan`, scores both directions with `score`, on `workers` threads.
 LegTable planLegsByPair(int place_count, const PairPlanner& plan, const LegScorer& score, int workers,
                         const FractionCallback& progress);
 
 /// One search per place: `routes_from(i)` gives raw paths from place i to every place (entry i
 /// unused). Throws the first failure by place order.
 using RoutesFrom = std::function<std::vector<std::vector<Eigen::Vector3d>>(int from)>;
+/// Plans the legs out of every place with `routes_from` and scores them with `score`, on `workers` threads.
 LegTable planLegsByPlace(int place_count, const RoutesFrom& routes_from, const LegScorer& score, int workers,
                          const FractionCallback& progress);
 
@@ -51,9 +54,12 @@ LegTable planLegsByPlace(int place_count, const RoutesFrom& routes_from, const L
 /// `rework` makes of it and scores it again: routing an estimate (then `routed`) or
 /// post-processing a raw leg (then `refined`).
 using LegRework = std::function<std::vector<Eigen::Vector3d>(int from, int to, const std::vector<Eigen::Vector3d>&)>;
+/// A post-processing rework (refineLegs).
 using LegRefiner = LegRework;
+/// Post-processes the legs `which` with `refine` and scores them again (then `refined`).
 void refineLegs(LegTable& legs, const std::vector<std::pair<int, int>>& which, const LegRefiner& refine,
                 const LegScorer& score, int workers, const FractionCallback& progress);
+/// Routes the estimated legs `which` with `route` and scores them again (then `routed`).
 void routeLegs(LegTable& legs, const std::vector<std::pair<int, int>>& which, const LegRework& route,
                const LegScorer& score, int workers, const FractionCallback& progress);
 

@@ -18,6 +18,7 @@ namespace ceilplan::mission {
 /// costs(i, j): the cost of flying from i to j; index 0 is home, 1..N the targets.
 using CostMatrix = Eigen::MatrixXd;
 
+/// A visiting order of a tour's targets and its cost.
 struct TourOrder {
   std::vector<int> targets;  ///< matrix indices 1..N in visiting order (home left out)
   double cost = 0.0;         ///< home -> targets -> home
@@ -28,6 +29,7 @@ struct TourOrder {
 /// Perturbation rounds of the heuristic: 50 targets take about 10 ms (bench_tour_order).
 inline constexpr int kDefaultTourRestarts = 200;
 
+/// How orderTour chooses between the exact and the heuristic order.
 struct TourOrderOptions {
   int exact_max_targets = 12;           ///< Held-Karp up to this many targets, the heuristic beyond
   std::uint64_t seed = 1;               ///< for the heuristic's random restarts
@@ -40,6 +42,7 @@ double tourCost(const CostMatrix& costs, const std::vector<int>& targets);
 /// Exact: Held-Karp dynamic programming over subsets, O(2^N N^2) time, O(2^N N) memory.
 /// Throws ceilplan::InputError for more than kHeldKarpMaxTargets targets or a bad matrix.
 inline constexpr int kHeldKarpMaxTargets = 15;
+/// The exact cheapest order (Held-Karp) of the targets of `costs`.
 TourOrder heldKarpTour(const CostMatrix& costs);
 
 /// Heuristic: nearest neighbour from home, then 2-opt and Or-opt moves (segments of 1 to 3
@@ -63,6 +66,7 @@ TourOrder orderTour(const CostMatrix& costs, const TourOrderOptions& options = {
 /// followed by the same local search, keeping the result when it is cheaper (iterated local
 /// search). Deterministic for a seed. Throws ceilplan::InputError for bad starts or lists.
 using PairCost = std::function<double(int from, int to)>;
+/// The order of a large tour by neighbour lists, as described above.
 TourOrder neighbourListTour(int target_count, const PairCost& cost, const PairCost& bound,
                             const std::vector<std::vector<int>>& neighbours,
                             const std::vector<std::vector<int>>& starts, int kicks = 0, std::uint64_t seed = 1,

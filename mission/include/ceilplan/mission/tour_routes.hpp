@@ -21,12 +21,13 @@ namespace ceilplan::mission {
 /// A place a sortie stops at: its name, the point inspected and the dwell; for a coverage photo,
 /// the heading and gimbal pitch it was planned with (docs/coverage.md).
 struct RouteStop {
-  std::string name;
+  std::string name;  ///< the stop's name
+  /// the point inspected
   Eigen::Vector3d point_m = Eigen::Vector3d::Zero();
-  double dwell_s = 0.0;
-  std::optional<double> yaw_deg;
-  std::optional<double> gimbal_pitch_deg;
-  bool contact_reading = false;  ///< a contact grid point: the dwell is a reading, no photo
+  double dwell_s = 0.0;                    ///< hover time at the stop
+  std::optional<double> yaw_deg;           ///< heading at the stop, degrees clockwise from north (photos)
+  std::optional<double> gimbal_pitch_deg;  ///< gimbal pitch at the stop, degrees (photos)
+  bool contact_reading = false;            ///< a contact grid point: the dwell is a reading, no photo
 };
 
 /// Each sortie's waypoints: every flown leg's waypoints after its first; at a stop's viewpoint a

@@ -17,11 +17,14 @@ struct TourResult;
 
 /// A leg flown with less than the standoff somewhere.
 struct NarrowedLeg {
-  int sortie = 0;                  ///< from 1
-  int from = 0, to = 0;            ///< places: 0 home, k the target of stops[k - 1]
+  int sortie = 0;        ///< from 1
+  int from = 0, to = 0;  ///< places: 0 home, k the target of stops[k - 1]
+  /** @var from
+   *  The place the leg starts at: 0 home, k the target of stops[k - 1]. */
   planner::StandoffReport report;  ///< its spans, along the leg from its start
 };
 
+/// Free mode: where a tour flew closer than the conventional standoff, leg by leg.
 struct TourStandoff {
   double standoff_m = 0.0;      ///< the conventional standoff asked for
   double length_m = 0.0;        ///< flown, every leg of every sortie

@@ -36,18 +36,19 @@ namespace ceilplan::mission {
 /// MPC_ACC_HOR (3 m/s^2), MPC_JERK_AUTO (4 m/s^3) and MPC_YAWRAUTO_MAX (45 deg/s); climb and
 /// descent as the mission file's speeds.
 struct TrajectoryLimits {
-  double climb_m_s = 1.0;
-  double descent_m_s = 0.8;
+  double climb_m_s = 1.0;              ///< vertical speed limit, climbing
+  double descent_m_s = 0.8;            ///< vertical speed limit, descending
   double max_acceleration_m_s2 = 3.0;  ///< norm of the acceleration vector
   double max_jerk_m_s3 = 4.0;          ///< norm of the jerk vector
-  double max_yaw_rate_deg_s = 45.0;
+  double max_yaw_rate_deg_s = 45.0;    ///< fastest yaw rate
 
   /// Throws ceilplan::InputError naming the field that is not positive and finite.
   void validate() const;
 };
 
+/// How routes are time-scaled into setpoints (mission key `trajectory:`, docs/flying.md).
 struct TrajectoryOptions {
-  double rate_hz = 20.0;
+  double rate_hz = 20.0;  ///< setpoints per second
   /// How far a corner flown without stopping may stray from the route's polyline (m). 0 stops
   /// at every corner.
   double corner_tolerance_m = 0.05;
@@ -61,10 +62,13 @@ struct TrajectoryOptions {
   void validate() const;
 };
 
+/// One setpoint of a trajectory, as PX4's TrajectorySetpoint takes it (docs/flying.md).
 struct TrajectorySetpoint {
-  double t_s = 0.0;
+  double t_s = 0.0;                                      ///< time from the sortie's take-off
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< map frame, x east, y north, z up
+  /// velocity, map frame
   Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();
+  /// acceleration, map frame
   Eigen::Vector3d acceleration_m_s2 = Eigen::Vector3d::Zero();
   double yaw_rad = 0.0;           ///< ENU: counter-clockwise from east, in (-pi, pi]
   double yaw_rate_rad_s = 0.0;    ///< ENU: positive counter-clockwise
@@ -72,10 +76,11 @@ struct TrajectorySetpoint {
   bool trigger = false;           ///< take a photo at this setpoint
 };
 
+/// One sortie's route time-scaled into setpoints (timeScaleRoute).
 struct Trajectory {
-  int sortie = 1;
-  double rate_hz = 20.0;
-  TrajectoryLimits limits;
+  int sortie = 1;                             ///< 1-based
+  double rate_hz = 20.0;                      ///< setpoints per second
+  TrajectoryLimits limits;                    ///< the limits it was scaled under
   std::vector<TrajectorySetpoint> setpoints;  ///< at t = k / rate_hz from 0, at rest at both ends
   int stops = 0;                              ///< corners and waypoints where the vehicle comes to rest (end included)
   int blended_corners = 0;                    ///< corners passed without stopping
@@ -83,6 +88,7 @@ struct Trajectory {
   double length_m = 0.0;                      ///< of the route's polyline
   double max_corner_deviation_m = 0.0;        ///< furthest a blend strays from the polyline
 
+  /// Time of the last setpoint, s.
   double duration_s() const { return setpoints.empty() ? 0.0 : setpoints.back().t_s; }
 };
 

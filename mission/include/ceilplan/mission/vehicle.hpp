@@ -16,13 +16,14 @@ namespace ceilplan::mission {
 /// (mission/trajectory.hpp). Defaults: PX4 v1.14's auto-mode MPC_ACC_HOR, MPC_JERK_AUTO and
 /// MPC_YAWRAUTO_MAX (docs/flying.md).
 struct MotionLimits {
-  double max_acceleration_m_s2 = 3.0;
-  double max_jerk_m_s3 = 4.0;
-  double max_yaw_rate_deg_s = 45.0;
+  double max_acceleration_m_s2 = 3.0;  ///< largest acceleration
+  double max_jerk_m_s3 = 4.0;          ///< largest jerk
+  double max_yaw_rate_deg_s = 45.0;    ///< fastest yaw rate
 };
 
+/// A vehicle (a vehicle file, docs/planner.md): its shape, its energy model's constants and its motion limits.
 struct Vehicle {
-  std::string name;
+  std::string name;                       ///< for messages and reports
   environment::VehicleGeometry geometry;  ///< rotor discs, collision cylinder, clearance margins
   energy::EnergyParameters energy;        ///< mass, rotor spacing, power model, pack electrics
   MotionLimits limits;                    ///< vehicle file key `limits:`

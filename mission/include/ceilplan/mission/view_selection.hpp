@@ -18,6 +18,7 @@
 
 namespace ceilplan::mission {
 
+/// What one candidate view costs the tour.
 struct ViewCost {
   double hover_current_a = 0.0;  ///< at the pose, under the mode's cost model
   double stop_s = 0.0;           ///< stopped to shoot (Camera::stopPerPhoto_s)
@@ -26,9 +27,10 @@ struct ViewCost {
   double charge_ah = 0.0;        ///< hover current x (stop + transit)
 };
 
+/// How viewCosts prices the candidates.
 struct ViewCostOptions {
   double transit_speed_m_s = 0.5;  ///< between neighbouring photos (the mission's inspection speed)
-  int workers = 2;
+  int workers = 2;                 ///< threads pricing views
 };
 
 /// The cost of every candidate. The ageing models are monotone in charge for a given sortie, and
@@ -38,18 +40,20 @@ std::vector<ViewCost> viewCosts(const planner::FlightCostModel& model, const Cam
                                 const CandidateViews& views, const RegionSurface& surface,
                                 const ViewCostOptions& options = {});
 
+/// How the set cover improves on its greedy choice.
 struct SetCoverOptions {
   int improvement_rounds = 4;  ///< rounds of redundancy removal and exchanges
 };
 
+/// The views chosen to cover a region, and how the choice went.
 struct SetCoverResult {
   std::vector<std::uint32_t> chosen;  ///< candidate indices, ascending
   double cost = 0.0;                  ///< sum of the chosen views' costs
   double greedy_cost = 0.0;           ///< before local improvement
-  std::size_t greedy_views = 0;
-  std::size_t evaluations = 0;  ///< gains computed by the lazy greedy (plain greedy: views x rounds)
-  std::size_t removed = 0;      ///< views dropped as redundant
-  std::size_t exchanges = 0;    ///< views added where the views they made redundant cost more
+  std::size_t greedy_views = 0;       ///< views the greedy choice took
+  std::size_t evaluations = 0;        ///< gains computed by the lazy greedy (plain greedy: views x rounds)
+  std::size_t removed = 0;            ///< views dropped as redundant
+  std::size_t exchanges = 0;          ///< views added where the views they made redundant cost more
 };
 
 /// Covers every element some candidate covers (elements no candidate covers are ignored), at

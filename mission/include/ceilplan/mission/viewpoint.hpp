@@ -21,22 +21,24 @@
 
 namespace ceilplan::mission {
 
+/// A point target of a mission (`targets:` entry, docs/missions.md): a point to inspect from within a standoff range.
 struct InspectionTarget {
   /// The farthest standoff: beyond, a viewpoint search spans more than any inspected structure.
   static constexpr double kMaxStandoff_m = 50.0;
 
-  std::string name;
+  std::string name;                                   ///< unique in the mission
   Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  ///< on the structure's surface
   double standoff_min_m = 0.3;                        ///< body centre to point
-  double standoff_max_m = 1.5;
-  double dwell_s = 0.0;
+  double standoff_max_m = 1.5;                        ///< farthest body centre to point
+  double dwell_s = 0.0;                               ///< hover time for the inspection
 
   /// Throws ceilplan::InputError naming the target and the bad field.
   void validate() const;
 };
 
+/// How a viewpoint is chosen for a target.
 struct ViewpointOptions {
-  FlightMode mode = FlightMode::Ceiling;
+  FlightMode mode = FlightMode::Ceiling;  ///< the mode the viewpoint is for
   /// Rotors never come closer than this to the surface above (the planner's minimum ceiling gap).
   double min_ceiling_gap_m = 0.03;
   double soc = 0.65;        ///< SOC at which the dwell current is evaluated (energy model's reference)
@@ -48,6 +50,7 @@ struct ViewpointOptions {
   planner::ReachablePredicate reachable;
 };
 
+/// Where a target is inspected from, and what hovering there costs.
 struct Viewpoint {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< body centre
   double distance_m = 0.0;                               ///< to the target point

@@ -9,12 +9,15 @@
 
 namespace ceilplan::planner {
 
+/// Least capacity lost under an ageing model, linearised at the route's depth of discharge (AgeingRates).
 class AgeingObjective : public FlightObjective {
  public:
+  /// The objective with `rates`; `model` must outlive it.
   AgeingObjective(const ompl::base::SpaceInformationPtr& si, const FlightCostModel& model, const AgeingRates& rates)
       : FlightObjective(si, model, CostWeights{0.0, rates.loss_per_s, rates.loss_per_ah}, "ageing",
                         "capacity fraction"),
         rates_(rates) {}
+  /// The rates it weighs charge and time with.
   const AgeingRates& rates() const { return rates_; }
 
  private:

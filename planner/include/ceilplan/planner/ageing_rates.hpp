@@ -12,11 +12,12 @@
 
 namespace ceilplan::planner {
 
+/// An ageing model's capacity loss per ampere-hour and per second at one depth of discharge (measureAgeingRates).
 struct AgeingRates {
-  std::string model;
-  double depth_of_discharge = 0.0;
-  double loss_per_ah = 0.0;  ///< fraction of nominal capacity per Ah discharged (and recharged)
-  double loss_per_s = 0.0;   ///< calendar part, fraction per second (0 for cycle-only models)
+  std::string model;                ///< the ageing model's name
+  double depth_of_discharge = 0.0;  ///< the depth of discharge the rates were measured at, 0..1
+  double loss_per_ah = 0.0;         ///< fraction of nominal capacity per Ah discharged (and recharged)
+  double loss_per_s = 0.0;          ///< calendar part, fraction per second (0 for cycle-only models)
 };
 
 /// Cycle: from `start_soc` down by `depth_of_discharge` at `discharge_current_a`, then back at the

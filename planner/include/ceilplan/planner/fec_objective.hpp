@@ -11,8 +11,10 @@
 
 namespace ceilplan::planner {
 
+/// Least full equivalent cycles: the charge drawn over the nominal capacity.
 class FecObjective : public FlightObjective {
  public:
+  /// The objective for a pack of `nominal_capacity_ah` (> 0, else ceilplan::InputError); `model` must outlive it.
   FecObjective(const ompl::base::SpaceInformationPtr& si, const FlightCostModel& model, double nominal_capacity_ah)
       : FlightObjective(si, model, CostWeights{0.0, 0.0, inverseCapacity(nominal_capacity_ah)}, "fec", "FEC") {}
 

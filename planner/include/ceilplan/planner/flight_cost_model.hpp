@@ -18,18 +18,18 @@ namespace ceilplan::planner {
 
 /// The speed rules (mission files' `speeds:` block, docs/missions.md).
 struct FlightSpeeds {
-  static constexpr double kMaxVerticalSpeed_m_s = 10.0;
+  static constexpr double kMaxVerticalSpeed_m_s = 10.0;  ///< fastest climb or descent accepted
   /// Slower is hovering, not flying: times and charges of a route at 1e-300 m/s overflow.
   static constexpr double kMinSpeed_m_s = 0.01;
-  static constexpr double kMaxNearCeilingGapRadii = 10.0;
+  static constexpr double kMaxNearCeilingGapRadii = 10.0;  ///< widest slow zone accepted, rotor radii
 
   double cruise_m_s = 2.0;        ///< horizontal, in free air
   double near_ceiling_m_s = 1.8;  ///< horizontal, when a rotor is closer than near_ceiling_gap_radii R to a ceiling
                                   ///< (docs/planner.md: break-even)
   double near_ceiling_gap_radii =
-      2.0;                 ///< where the ceiling effect has nearly faded (docs/models.md, "Ceiling effect")
-  double climb_m_s = 1.0;  ///< vertical rate limits
-  double descent_m_s = 0.8;
+      2.0;                   ///< where the ceiling effect has nearly faded (docs/models.md, "Ceiling effect")
+  double climb_m_s = 1.0;    ///< vertical rate limits
+  double descent_m_s = 0.8;  ///< vertical rate limit, descending
 
   /// Throws ceilplan::InputError naming the bad field (a speed under kMinSpeed_m_s, a non-positive
   /// slow zone, non-finite, a horizontal
@@ -38,8 +38,9 @@ struct FlightSpeeds {
   void validate(double max_speed_m_s) const;
 };
 
+/// How a FlightCostModel predicts a motion's time and charge.
 struct CostModelOptions {
-  FlightSpeeds speeds;
+  FlightSpeeds speeds;  ///< the speed rules
   /// SOC at which currents are predicted while planning (the final evaluation integrates it):
   /// the battery's start SOC by default, so planning currents never exceed the evaluated ones.
   double planning_soc = 0.95;
@@ -53,13 +54,14 @@ struct CostModelOptions {
   /// short, as much as `standoff_weight` metres of level cruise in free air. The conventional
   /// standoff where it fits, the largest that fits where it does not (docs/planner.md, "Free mode").
   double standoff_m = 0.0;
-  double standoff_weight = 100.0;
+  double standoff_weight = 100.0;  ///< metres of level cruise each metre of standoff shortfall costs
 };
 
 /// What the map says at one body position, as the energy model needs it.
 struct PointConditions {
+  /// each rotor's mean ceiling gap and coverage
   std::array<energy::RotorCeiling, energy::EnergyModel::kMaxRotors> rotors{};
-  int rotor_count = 0;
+  int rotor_count = 0;                                ///< rotors in use in `rotors`
   double ground_gap_m = energy::kNoSurface;           ///< area-weighted mean gap of the ground under the discs
   double nearest_ceiling_gap_m = energy::kNoSurface;  ///< rotor plane to the nearest ceiling, any rotor (speed rule)
   double standoff_shortfall_m = 0.0;  ///< how far the standoff preference is from kept here (0 without one)
@@ -72,17 +74,19 @@ PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const
 
 /// The vehicle's velocity along a motion direction at a point.
 struct Velocity {
-  double along_m_s = 0.0;  ///< along the path
-  double horizontal_m_s = 0.0;
-  double climb_m_s = 0.0;  ///< positive up
+  double along_m_s = 0.0;       ///< along the path
+  double horizontal_m_s = 0.0;  ///< horizontal speed
+  double climb_m_s = 0.0;       ///< positive up
 };
 
+/// What a motion costs: length, time, charge and standoff shortfall.
 struct MotionTotals {
-  double length_m = 0.0;
-  double duration_s = 0.0;
-  double charge_ah = 0.0;
+  double length_m = 0.0;      ///< length flown
+  double duration_s = 0.0;    ///< time taken
+  double charge_ah = 0.0;     ///< charge drawn
   double shortfall_m2 = 0.0;  ///< the standoff shortfall integrated along the motion
 
+  /// Adds another motion's totals.
   MotionTotals& operator+=(const MotionTotals& other) {
     length_m += other.length_m;
     duration_s += other.duration_s;
@@ -94,16 +98,19 @@ struct MotionTotals {
 
 /// An objective as a weighted sum of motion totals: cost = per_m L + per_s T + per_ah Q + per_m2 S.
 struct CostWeights {
-  double per_m = 0.0;
-  double per_s = 0.0;
-  double per_ah = 0.0;
+  double per_m = 0.0;             ///< cost per metre flown
+  double per_s = 0.0;             ///< cost per second
+  double per_ah = 0.0;            ///< cost per ampere-hour
   double per_shortfall_m2 = 0.0;  ///< the standoff preference (free mode), set by FlightObjective
+  /// The cost of `totals` under these weights.
   double of(const MotionTotals& totals) const {
     return per_m * totals.length_m + per_s * totals.duration_s + per_ah * totals.charge_ah +
            per_shortfall_m2 * totals.shortfall_m2;
   }
 };
 
+/// Time and charge of motions through the map: the energy model fed the map's gaps under the speed rules. Read only;
+/// safe to share between threads.
 class FlightCostModel {
  public:
   /// Keeps references to `environment` and `energy`: both must outlive the model.
@@ -111,9 +118,13 @@ class FlightCostModel {
   FlightCostModel(const environment::Environment& environment, const energy::EnergyModel& energy,
                   CostModelOptions options);
 
+  /// The map it reads.
   const environment::Environment& environment() const { return environment_; }
+  /// The current model it feeds.
   const energy::EnergyModel& energy() const { return energy_; }
+  /// The options it was built with.
   const CostModelOptions& options() const { return options_; }
+  /// Distance between samples along a motion, m.
   double step_m() const { return step_m_; }
 
   /// Gaps around a body position from the map (ceiling and ground discs); with proximity

@@ -26,7 +26,9 @@ namespace ceilplan::planner {
 /// Its defaults are every front end's (the CLI's flags, Python's keywords), so one query gives
 /// one route whichever asks.
 struct PlanRequest {
+  /// where the route starts, map coordinates
   Eigen::Vector3d start_m = Eigen::Vector3d::Zero();
+  /// where it ends
   Eigen::Vector3d goal_m = Eigen::Vector3d::Zero();
   std::string planner;  ///< empty: defaultPlannerName()
   /// For a sampling search; the deterministic ones run to completion, and so does the
@@ -37,7 +39,7 @@ struct PlanRequest {
   double band_fraction =
       0.0;             ///< share of samples aimed at the ceiling band (0, the default: uniform; docs/planner.md)
   bool refine = true;  ///< shortcuts + NLopt refinement
-  RefinementOptions refinement;
+  RefinementOptions refinement;                      ///< post-processing limits
   LatticeSettings lattice = queryLatticeSettings();  ///< the lattice planners' spacing
   /// Known routes from start to goal (e.g. the free-mode plan): each that is valid under these
   /// rules is post-processed too, and returned if cheaper than what the search found, so a
@@ -45,23 +47,29 @@ struct PlanRequest {
   std::vector<std::vector<Eigen::Vector3d>> candidates;
 };
 
+/// What FlightPlanner::plan returns: the route and what the search took.
 struct PlanResult {
-  std::vector<Eigen::Vector3d> waypoints;
-  std::string planner;
-  double cost = 0.0;         ///< under the planning objective, after post-processing
-  double search_cost = 0.0;  ///< as the planner returned it
-  double search_time_s = 0.0;
-  double total_time_s = 0.0;
-  bool from_candidate = false;  ///< one of PlanRequest::candidates beat the search
+  std::vector<Eigen::Vector3d> waypoints;  ///< the route, start to goal, map coordinates
+  std::string planner;                     ///< the planner that found it
+  double cost = 0.0;                       ///< under the planning objective, after post-processing
+  double search_cost = 0.0;                ///< as the planner returned it
+  double search_time_s = 0.0;              ///< time in the search
+  double total_time_s = 0.0;               ///< time in all, post-processing included
+  bool from_candidate = false;             ///< one of PlanRequest::candidates beat the search
 };
 
+/// Single-query planning through one map under one set of safety rules, cost model and objective (planRoute builds one
+/// per query).
 class FlightPlanner {
  public:
   /// `rules` and `model` must outlive the planner.
   FlightPlanner(const SafetyRules& rules, const FlightCostModel& model, const ObjectiveChoice& objective);
 
+  /// The objective it plans with.
   const FlightObjective& objective() const { return *objective_; }
+  /// The same, shared.
   const std::shared_ptr<FlightObjective>& objectivePtr() const { return objective_; }
+  /// The safety rules it plans under.
   const SafetyRules& rules() const { return rules_; }
 
   /// Shortcuts and NLopt refinement (PlanRequest::refine), then the dense re-check: the
@@ -69,6 +77,7 @@ class FlightPlanner {
   /// result nor the raw path passes the re-check.
   std::vector<Eigen::Vector3d> postProcess(const std::vector<Eigen::Vector3d>& raw, const RefinementOptions& options,
                                            bool refine = true) const;
+  /// OMPL's space information: the state space with the validity checker and motion validator.
   const ompl::base::SpaceInformationPtr& spaceInformation() const { return si_; }
 
   /// Throws ceilplan::InputError for a bad request (start or goal outside the map or invalid,
@@ -79,6 +88,7 @@ class FlightPlanner {
   /// Makes the space sample the ceiling band (share `band_fraction`) until cleared; plan() does
   /// this itself, benchmarks that drive OMPL directly call it.
   void installBandSampler(double band_fraction) const;
+  /// Puts the space's default sampler back.
   void clearBandSampler() const;
 
   /// Checks a point the way plan() checks start and goal; `what` names it in the message.

@@ -18,6 +18,8 @@
 
 namespace ceilplan::planner {
 
+/// ceilplan's lattice A*: the cheapest path over a lattice of valid nodes, deterministic, one query at a time (planner
+/// name "lattice").
 class LatticePlanner : public LatticePlannerBase {
  public:
   /// Throws ceilplan::InputError for bad settings.
@@ -28,9 +30,12 @@ class LatticePlanner : public LatticePlannerBase {
   /// ABORT when no path exists on the lattice and its refinement (then blockage() is set).
   ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition& ptc) override;
   using ompl::base::Planner::solve;
+  /// OMPL: forgets the last search.
   void clear() override;
+  /// OMPL: the last path found, as planner data.
   void getPlannerData(ompl::base::PlannerData& data) const override;
 
+  /// Nodes the last search expanded.
   std::size_t expansions() const { return expansions_; }
 
  private:

@@ -15,11 +15,14 @@
 
 namespace ceilplan::planner {
 
+/// What the lattice planners share: their settings and the blockage they report when no path exists.
 class LatticePlannerBase : public ompl::base::Planner, public BlockageReporter {
  public:
+  /// The lattice settings.
   const LatticeSettings& settings() const { return settings_; }
   /// Throws ceilplan::InputError for a spacing that is not a positive number.
   void setSpacing(double spacing_m);
+  /// The node spacing asked for, m.
   double getSpacing() const { return settings_.spacing_m; }
 
   /// After a search that found no path: where the way is blocked.
@@ -33,9 +36,9 @@ class LatticePlannerBase : public ompl::base::Planner, public BlockageReporter {
   /// Forgets the last search's cost and blockage.
   void forgetResult();
 
-  LatticeSettings settings_;
-  std::atomic<double> best_cost_;
-  std::optional<Blockage> blockage_;
+  LatticeSettings settings_;          ///< the lattice settings
+  std::atomic<double> best_cost_;     ///< the last search's best cost
+  std::optional<Blockage> blockage_;  ///< the last search's blockage, if it found no path
 };
 
 }  // namespace ceilplan::planner

@@ -27,11 +27,14 @@
 
 namespace ceilplan::planner {
 
+/// A route through the roadmap between two places.
 struct RoadmapRoute {
   std::vector<Eigen::Vector3d> waypoints;  ///< the start place, the lattice nodes where the route turns, the goal place
   double cost = 0.0;                       ///< under the objective
 };
 
+/// ceilplan's lattice roadmap: one lattice searched from many places, deterministic (planner name "roadmap", the tours'
+/// default).
 class LatticeRoadmap : public LatticePlannerBase {
  public:
   /// The space's validity checker must be a FlightStateValidityChecker. Throws
@@ -62,14 +65,20 @@ class LatticeRoadmap : public LatticePlannerBase {
   using ompl::base::Planner::solve;
   void clearQuery() override;  ///< keeps the roadmap and the places
   void clear() override;       ///< forgets everything
+  /// OMPL: the roadmap as planner data.
   void getPlannerData(ompl::base::PlannerData& data) const override;
 
+  /// Whether the roadmap has been built.
   bool built() const { return objective_ != nullptr; }
+  /// The places joined to it.
   const std::vector<Eigen::Vector3d>& places() const { return places_m_; }
+  /// Lattice nodes over the map.
   std::size_t nodeCount() const { return node_count_; }
+  /// Lattice nodes that are valid states.
   std::size_t validNodeCount() const { return valid_nodes_.size(); }
   std::size_t edgeCount() const;                                                ///< directed lattice edges
-  std::size_t bridgeVertexCount() const { return bridge_positions_m_.size(); }  // added by refinement
+  std::size_t bridgeVertexCount() const { return bridge_positions_m_.size(); }  ///< added by refinement
+  /// Memory held, bytes.
   std::size_t memoryBytes() const;
 
  private:

@@ -12,12 +12,14 @@
 
 namespace ceilplan::planner {
 
+/// A planning objective by name, with what it needs: the pack's capacity (fec) or the ageing rates (ageing).
 struct ObjectiveChoice {
-  std::string name = "charge";
+  std::string name = "charge";       ///< one of objectiveNames()
   double nominal_capacity_ah = 5.2;  ///< fec
   AgeingRates ageing;                ///< ageing (measureAgeingRates)
 };
 
+/// "length", "time", "charge", "fec", "ageing".
 const std::vector<std::string>& objectiveNames();
 
 /// Throws ceilplan::InputError for an unknown name, listing the known ones.

@@ -12,11 +12,13 @@
 
 namespace ceilplan::planner {
 
+/// The position of an OMPL state of ceilplan's 3-D space.
 inline Eigen::Vector3d toPosition(const ompl::base::State* state) {
   const double* values = state->as<ompl::base::RealVectorStateSpace::StateType>()->values;
   return {values[0], values[1], values[2]};
 }
 
+/// Sets the position of an OMPL state of ceilplan's 3-D space.
 inline void setPosition(ompl::base::State* state, const Eigen::Vector3d& position_m) {
   double* values = state->as<ompl::base::RealVectorStateSpace::StateType>()->values;
   values[0] = position_m.x();

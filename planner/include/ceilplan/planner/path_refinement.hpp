@@ -13,6 +13,7 @@
 
 namespace ceilplan::planner {
 
+/// A polyline path, map coordinates.
 using Waypoints = std::vector<Eigen::Vector3d>;
 
 /// Deterministic greedy shortcutting: from each kept waypoint, jump to the farthest later one
@@ -22,9 +23,9 @@ Waypoints shortcutPath(const Waypoints& path, const SafetyRules& rules, const Fl
 /// No clock: the refinement stops after max_evaluations, so a route does not depend on the
 /// machine's speed or load.
 struct RefinementOptions {
-  int max_evaluations = 600;
-  int max_waypoints = 12;   ///< the path is resampled to at most this many waypoints first
-  double max_move_m = 0.6;  ///< each inner waypoint moves at most this far per axis
+  int max_evaluations = 600;  ///< cost evaluations the refinement may spend
+  int max_waypoints = 12;     ///< the path is resampled to at most this many waypoints first
+  double max_move_m = 0.6;    ///< each inner waypoint moves at most this far per axis
 };
 
 /// Moves the inner waypoints with NLopt's LN_BOBYQA on cost x (1 + number of invalid motions),

@@ -24,8 +24,10 @@ std::vector<std::string> samplingPlannerNames();
 /// A comma-separated list of planner names as a command line gives it ("BITstar,PRMstar"),
 /// empty names skipped; plannerList joins names into one.
 std::vector<std::string> plannerNamesOfList(const std::string& list);
+/// `names` joined with commas.
 std::string plannerList(const std::vector<std::string>& names);
 
+/// What benchmarkPlanners runs: planners, runs, time limit and the log.
 struct PlannerBenchmarkOptions {
   std::vector<std::string> planners = samplingPlannerNames();  ///< any of plannerNames()
   LatticeSettings lattice;                                     ///< for the lattice planners among them
@@ -33,7 +35,7 @@ struct PlannerBenchmarkOptions {
   double time_limit_s = 5.0;                                   ///< per run
   double band_fraction = 0.0;                                  ///< share of samples from the ceiling band (0: uniform)
   bool refine = true;                                          ///< post-process with NLopt refinement, as plan() does
-  std::string experiment = "ceilplan";
+  std::string experiment = "ceilplan";                         ///< experiment name in the log
   /// OMPL's benchmark log (ompl_benchmark_statistics format) is written here; null: none. A stream,
   /// not a file name: the caller writes it with its other outputs, all or nothing.
   std::ostream* log = nullptr;
@@ -49,13 +51,13 @@ struct PlannerBenchmarkOptions {
 /// One planner's runs. Medians are over the solved runs (NaN when none solved); ratios are
 /// against the reference's post-processed cost.
 struct PlannerBenchmarkRow {
-  std::string planner;  ///< its name, without OMPL's "geometric_" prefix
-  std::size_t runs = 0;
-  int solved = 0;
-  double median_first_solution_s;
-  double median_raw_cost_ratio;  ///< the planner's own path, before post-processing
-  double median_cost_ratio;      ///< after shortcuts and refinement
-  double best_cost_ratio;
+  std::string planner;             ///< its name, without OMPL's "geometric_" prefix
+  std::size_t runs = 0;            ///< runs made
+  int solved = 0;                  ///< runs that found a path
+  double median_first_solution_s;  ///< median time to the first solution
+  double median_raw_cost_ratio;    ///< the planner's own path, before post-processing
+  double median_cost_ratio;        ///< after shortcuts and refinement
+  double best_cost_ratio;          ///< the best run's cost ratio
   /// When the planner's own best cost first came within 5 % of the reference's raw (search)
   /// cost; infinite for a run that never did.
   double median_time_to_5pct_s;

@@ -12,18 +12,22 @@
 
 namespace ceilplan::planner {
 
+/// The kinds of planner the factory makes.
 enum class PlannerKind {
   Sampling,  ///< OMPL's anytime planners: random, seeded once per process (seedOmpl), stopped by the clock
   Lattice,   ///< ceilplan's lattice A* (LatticePlanner): deterministic, one query at a time
   Roadmap,   ///< ceilplan's lattice roadmap (LatticeRoadmap): deterministic, many queries on one roadmap
 };
 
+/// A planner the factory knows: its name, kind and one line about it.
 struct PlannerInfo {
-  std::string name;
-  PlannerKind kind;
+  std::string name;     ///< the name the factory takes (e.g. "BITstar", "lattice", "roadmap")
+  PlannerKind kind;     ///< sampling, lattice or roadmap
   std::string summary;  ///< one line, for help texts
 
+  /// Gives the same route every run (the lattice planners).
   bool deterministic() const { return kind != PlannerKind::Sampling; }
+  /// Answers many queries from one build (the roadmap).
   bool multiQuery() const { return kind == PlannerKind::Roadmap; }
 };
 

@@ -23,6 +23,7 @@
 
 namespace ceilplan::planner {
 
+/// Where routes from one origin reach under the safety rules: a lattice flooded from it.
 class ReachableSpace {
  public:
   /// Floods from `origin_m` at `spacing_m` on `workers` threads; `rules` must outlive this.
@@ -32,9 +33,12 @@ class ReachableSpace {
   /// Whether a route from the origin to `body_m` exists through the flooded lattice (or straight).
   bool reaches(const Eigen::Vector3d& body_m) const;
 
+  /// Where the flood started.
   const Eigen::Vector3d& origin_m() const { return origin_m_; }
-  double spacing_m() const { return spacing_m_; }  // as the lattice rounds it to whole voxels
+  double spacing_m() const { return spacing_m_; }  ///< as the lattice rounds it to whole voxels
+  /// The spacing asked for, m.
   double requestedSpacing_m() const { return requested_spacing_m_; }
+  /// Lattice nodes the flood reached.
   std::size_t reachedNodeCount() const { return reached_count_; }
 
  private:

@@ -10,14 +10,20 @@
 
 namespace ceilplan::planner {
 
+/// OMPL informed sampler by rejection from the space's own sampler, so informed planners keep the ceiling band.
 class RejectionBandSampler : public ompl::base::InformedSampler {
  public:
+  /// Samples for `definition`, giving up after `max_calls` draws per sample.
   RejectionBandSampler(const ompl::base::ProblemDefinitionPtr& definition, unsigned int max_calls);
 
+  /// OMPL: a sample whose heuristic cost is below `max_cost`.
   bool sampleUniform(ompl::base::State* state, const ompl::base::Cost& max_cost) override;
+  /// OMPL: a sample whose heuristic cost lies between `min_cost` and `max_cost`.
   bool sampleUniform(ompl::base::State* state, const ompl::base::Cost& min_cost,
                      const ompl::base::Cost& max_cost) override;
+  /// OMPL: no closed-form informed measure.
   bool hasInformedMeasure() const override { return false; }
+  /// OMPL: the whole space's measure.
   double getInformedMeasure(const ompl::base::Cost&) const override { return space_->getMeasure(); }
 
  private:

@@ -17,16 +17,21 @@
 
 namespace ceilplan::planner {
 
+/// What every mode must keep: the vehicle's clearance (Environment validity) and the minimum rotor gap to a ceiling.
 class SafetyRules {
  public:
   /// `environment` must outlive the rules. Throws ceilplan::InputError on a negative or
   /// non-finite gap.
   SafetyRules(const environment::Environment& environment, double min_ceiling_gap_m);
 
+  /// The map the rules apply to.
   const environment::Environment& environment() const { return environment_; }
+  /// The smallest rotor-plane gap to a ceiling allowed, m.
   double minCeilingGap_m() const { return min_ceiling_gap_m_; }
 
+  /// Whether the vehicle may be at `body_m`.
   bool isStateValid(const Eigen::Vector3d& body_m) const;
+  /// Whether the straight motion between two positions is valid, checked in steps.
   bool isMotionValid(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
 
   /// The independent re-check of a finished path, mode-independent (the safety requirement):

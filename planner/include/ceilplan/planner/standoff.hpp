@@ -26,17 +26,20 @@ double standoffAt(const environment::Environment& environment, const Eigen::Vect
 
 /// A stretch of a path where the standoff was not kept.
 struct NarrowedSpan {
-  double from_m = 0.0, to_m = 0.0;                        ///< along the path, from its start
+  double from_m = 0.0, to_m = 0.0;  ///< along the path, from its start
+  /** @var from_m
+   *  Where the span starts, along the path from its start. */
   double min_standoff_m = 0.0;                            ///< the closest the airframe came
   Eigen::Vector3d narrowest_m = Eigen::Vector3d::Zero();  ///< where
 };
 
+/// How far a free-mode path kept the conventional standoff from every structure.
 struct StandoffReport {
-  double standoff_m = 0.0;      ///< the standoff asked for
-  double length_m = 0.0;        ///< of the path
-  double narrowed_m = 0.0;      ///< total length of the spans
-  double min_standoff_m = 0.0;  ///< over the whole path
-  std::vector<NarrowedSpan> spans;
+  double standoff_m = 0.0;          ///< the standoff asked for
+  double length_m = 0.0;            ///< of the path
+  double narrowed_m = 0.0;          ///< total length of the spans
+  double min_standoff_m = 0.0;      ///< over the whole path
+  std::vector<NarrowedSpan> spans;  ///< where the standoff was not kept, in order
 };
 
 /// Where along a path (samples every half voxel) the airframe came closer than `standoff_m` to a

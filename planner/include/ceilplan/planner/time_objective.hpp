@@ -6,8 +6,10 @@
 
 namespace ceilplan::planner {
 
+/// Shortest flight time, s.
 class TimeObjective : public FlightObjective {
  public:
+  /// The objective; `model` must outlive it.
   TimeObjective(const ompl::base::SpaceInformationPtr& si, const FlightCostModel& model)
       : FlightObjective(si, model, CostWeights{0.0, 1.0, 0.0}, "time", "s") {}
 };
