@@ -8,7 +8,11 @@
 
 namespace ceilplan::battery {
 
-enum class Mode { Discharge, Idle, Charge };
+enum class Mode {
+  Discharge,  ///< drawing current from the pack
+  Idle,       ///< no current
+  Charge      ///< putting charge back
+};
 
 std::string toString(Mode mode);
 

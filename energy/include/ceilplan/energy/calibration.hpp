@@ -23,7 +23,14 @@ struct CalibrationSample {
 };
 
 /// An energy-model parameter calibration may fit (parameterName gives its file name).
-enum class FreeParameter { kHoverPowerW, kK1, kK2M, kMotorEfficiency, kDragAreaM2, kPackResistanceOhm };
+enum class FreeParameter {
+  kHoverPowerW,       ///< free-air hover power, W (hover_power_w)
+  kK1,                ///< the ceiling effect's K1 (k1)
+  kK2M,               ///< the ceiling effect's K2, m (k2_m)
+  kMotorEfficiency,   ///< motor and ESC efficiency (motor_efficiency)
+  kDragAreaM2,        ///< fuselage flat-plate drag area, m^2 (drag_area_m2)
+  kPackResistanceOhm  ///< pack internal resistance, ohm (pack_resistance_ohm)
+};
 
 /// The name used in vehicle files and on the command line: hover_power_w, k1, k2_m,
 /// motor_efficiency, drag_area_m2, pack_resistance_ohm.

@@ -60,7 +60,11 @@ struct SurfaceGaps {
 
 /// Why a state is not valid: it lies outside the map, touches occupied space, or touches unknown space the policy
 /// keeps.
-enum class ViolationKind { OutsideMap, Occupied, Unknown };
+enum class ViolationKind {
+  OutsideMap,  ///< the body centre lies outside the map
+  Occupied,    ///< the vehicle with its margins touches occupied space
+  Unknown      ///< it touches unknown space the policy keeps
+};
 
 /// A stretch of a path, by distance along it from its first waypoint.
 struct PathInterval {

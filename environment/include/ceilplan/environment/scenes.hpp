@@ -13,7 +13,12 @@
 namespace ceilplan::environment {
 
 /// The shipped inspection scenes (`ceilplan mapgen`): a bridge, a tunnel, a warehouse, open ground.
-enum class Scene { Bridge, Tunnel, Warehouse, Open };
+enum class Scene {
+  Bridge,     ///< a road bridge from below: deck, girders, cross-frames, piers (48 m by default)
+  Tunnel,     ///< a 40 m road tunnel with an arched crown
+  Warehouse,  ///< a hall with roof trusses, columns and racks
+  Open        ///< the bridge's extent with only the ground and boulders: no ceiling
+};
 
 /// "bridge", "tunnel", "warehouse", "open"; throws ceilplan::InputError for any other name.
 Scene sceneFromName(const std::string& name);

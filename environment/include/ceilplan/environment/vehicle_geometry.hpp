@@ -13,7 +13,10 @@
 namespace ceilplan::environment {
 
 /// Rotor arrangement: X (rotors on the diagonals, the founding paper's frame) or Plus (on the axes).
-enum class RotorLayout { X, Plus };
+enum class RotorLayout {
+  X,    ///< rotors on the diagonals (the founding paper's frame)
+  Plus  ///< rotors on the body axes
+};
 
 /// All lengths in metres, relative to the body centre (x forward, y left, z up).
 struct VehicleGeometry {

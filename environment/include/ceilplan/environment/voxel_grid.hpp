@@ -21,7 +21,11 @@
 namespace ceilplan::environment {
 
 /// A voxel's state: Unknown (no data), Free (known free air) or Occupied.
-enum class CellState : std::uint8_t { Unknown = 0, Free = 1, Occupied = 2 };
+enum class CellState : std::uint8_t {
+  Unknown = 0,  ///< no data
+  Free = 1,     ///< known free air
+  Occupied = 2  ///< occupied
+};
 
 /// A voxel's (i, j, k) index in a grid.
 using Index3 = std::array<int, 3>;

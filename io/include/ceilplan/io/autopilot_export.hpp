@@ -36,8 +36,11 @@ using mission::GeodeticOrigin;
 /// A waypoint of an exported route: the route's own waypoint type.
 using ExportWaypoint = mission::RouteWaypoint;
 
-/// The autopilot a .plan or WPL file is written for: PX4 or ArduPilot (they differ in camera and gimbal commands).
-enum class Autopilot { PX4, ArduPilot };
+/// The autopilot a .plan file is written for: its firmwareType, as QGroundControl reads it.
+enum class Autopilot {
+  PX4,       ///< MAV_AUTOPILOT_PX4
+  ArduPilot  ///< MAV_AUTOPILOT_ARDUPILOTMEGA
+};
 
 /// The route (home, waypoints, cruise speed) plus what the autopilot file needs besides.
 struct AutopilotMission : mission::SortieRoute {

@@ -23,7 +23,10 @@
 namespace ceilplan::io {
 
 /// The frame a trajectory file is written in: the map's ENU, or NED for PX4's TrajectorySetpoint.
-enum class TrajectoryFrame { Enu, Ned };
+enum class TrajectoryFrame {
+  Enu,  ///< the map's frame: x east, y north, z up
+  Ned   ///< north, east, down (PX4's local frame)
+};
 
 /// The column names of a trajectory row in `frame`.
 std::vector<std::string> trajectoryColumns(TrajectoryFrame frame);

@@ -11,7 +11,10 @@ namespace ceilplan::mission {
 
 /// What happens between two sorties: the pack is charged back to the start SOC at its charge
 /// current, or swapped for a charged one (and charged off the aircraft, wearing the same).
-enum class Turnaround { Recharge, Swap };
+enum class Turnaround {
+  Recharge,  ///< charged back on the aircraft at its charge current
+  Swap       ///< swapped for a charged pack (swap_s)
+};
 
 /// The battery a mission flies (a battery file, docs/planner.md "Battery file"): the pack, its SOC limits and what
 /// happens between sorties.

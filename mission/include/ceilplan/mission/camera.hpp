@@ -17,7 +17,10 @@ namespace ceilplan::mission {
 
 /// Hover: the vehicle stops for every photo. OnTheMove: it shoots while flying, no faster than
 /// the motion blur limit allows.
-enum class CaptureStyle { Hover, OnTheMove };
+enum class CaptureStyle {
+  Hover,     ///< stops for every photo
+  OnTheMove  ///< shoots while flying
+};
 
 /// The inspection camera (mission key `camera:`, docs/coverage.md): sensor, lens, gimbal range, capture style.
 struct Camera {

@@ -19,7 +19,11 @@ namespace ceilplan::mission {
 /// Which way a surface faces, from its normal: Down (soffits, ceilings, a tunnel crown) when the
 /// normal points more than 45 deg below level, Up more than 45 deg above, Side otherwise (walls,
 /// girder webs, piers).
-enum class FaceKind { Down, Side, Up };
+enum class FaceKind {
+  Down,  ///< normal more than 45 deg below level: soffits, ceilings
+  Side,  ///< walls, girder webs, piers
+  Up     ///< normal more than 45 deg above level
+};
 /// The kind of face `normal` belongs to.
 FaceKind faceKindOf(const Eigen::Vector3d& normal);
 const char* faceKindName(FaceKind kind);  ///< "down", "side", "up"
@@ -40,7 +44,10 @@ struct FaceSet {
 /// A box, or a prism: a simple polygon in the horizontal plane extruded between two heights.
 struct RegionShape {
   /// Box or Prism.
-  enum class Kind { Box, Prism };
+  enum class Kind {
+    Box,   ///< an axis-aligned box
+    Prism  ///< a horizontal polygon extruded between two heights
+  };
   Kind kind = Kind::Box;                   ///< which shape
   Eigen::AlignedBox3d box;                 ///< Box: the box; Prism: its bounds (set by makePrism)
   std::vector<Eigen::Vector2d> polygon_m;  ///< Prism: vertices in order, not repeated at the end

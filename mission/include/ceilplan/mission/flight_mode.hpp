@@ -10,7 +10,10 @@ namespace ceilplan::mission {
 
 /// Ceiling: hug the structure's underside where it saves charge. Free: the conventional flight, a standoff from every
 /// structure and no proximity effects.
-enum class FlightMode { Ceiling, Free };
+enum class FlightMode {
+  Ceiling,  ///< hug the underside of the structure where it saves charge
+  Free      ///< conventional flight: a standoff from every structure, free-air current
+};
 
 /// "ceiling", "free".
 std::string flightModeName(FlightMode mode);

@@ -14,7 +14,10 @@
 namespace ceilplan::mission {
 
 /// What the vehicle does at a sample: flying a leg, or hovering at a stop (a dwell).
-enum class FlightPhase : std::uint8_t { Leg, Dwell };
+enum class FlightPhase : std::uint8_t {
+  Leg,   ///< flying a leg
+  Dwell  ///< hovering at a stop
+};
 
 /// One sortie as flown, sample by sample, with its turnaround.
 struct SortieRecord {
