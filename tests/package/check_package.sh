@@ -17,6 +17,10 @@ test -f "$share/bridge.yaml"
 echo "== examples against the installed package"
 cmake -S "$source/examples" -B "$work/examples" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/examples" -j2 >/dev/null
+for example in "$source"/examples/*.cpp; do
+  name=$(basename "$example" .cpp)
+  test -x "$work/examples/$name" || { echo "examples/$name.cpp was not built against the package"; exit 1; }
+done
 cd "$work/empty"
 "$work/examples/plan_route" "$share/bridge.bt" -4 0 0.5 10 0 5.5
 "$work/examples/tour_both_modes" "$share/bridge.yaml" "$work/example_out" | tail -3

@@ -1,5 +1,16 @@
 #pragma once
-// Everything ceilplan offers a program, in one header (target ceilplan::ceilplan).
+/// @file
+/// Everything ceilplan offers a program, in one header (target ceilplan::ceilplan).
+
+/// @mainpage ceilplan's C++ API
+/// Mission planning for multirotor UAVs inspecting structures from below. Start from
+/// ceilplan::mission::PlanningContext (a map indexed once for a vehicle and a battery),
+/// ceilplan::mission::planRoute and ceilplan::mission::checkRoute (single routes, results in
+/// ceilplan::mission::RoutePlan and ceilplan::planner::PathEvaluation) and
+/// ceilplan::mission::planTour (a mission's inspection tour, ceilplan::mission::TourResult);
+/// ceilplan::io::readMission reads a mission file. Errors: ceilplan::Error and its subclasses.
+/// The guide with complete programs, the link line and the threading rules is docs/cpp.md in the
+/// source tree; `#include <ceilplan/ceilplan.hpp>` and link `ceilplan::ceilplan`.
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"

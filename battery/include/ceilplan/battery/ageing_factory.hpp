@@ -1,5 +1,6 @@
 #pragma once
-// Makes the ageing models by name, for side-by-side studies.
+/// @file
+/// Makes the ageing models by name, for side-by-side studies.
 
 #include "ceilplan/battery/ageing_model.hpp"
 #include "ceilplan/battery/schmalstieg_ageing.hpp"
@@ -13,18 +14,19 @@
 
 namespace ceilplan::battery {
 
+/// What makeAgeingModel needs to build any model: the study's conditions and each model's constants.
 struct AgeingModelOptions {
-  OperatingConditions conditions;
-  CellVoltageOfSoc cell_voltage_of_soc;  // needed by "schmalstieg" only
-  WoehlerParameters woehler;             // used by "fec" (N100) and "woehler"
-  XuParameters xu;
-  SchmalstiegParameters schmalstieg;
+  OperatingConditions conditions;        ///< temperature and chemistry of the study
+  CellVoltageOfSoc cell_voltage_of_soc;  ///< needed by "schmalstieg" only
+  WoehlerParameters woehler;             ///< used by "fec" (N100) and "woehler"
+  XuParameters xu;                       ///< used by "xu"
+  SchmalstiegParameters schmalstieg;     ///< used by "schmalstieg"
 };
 
-// "fec", "xu", "schmalstieg", "woehler", in that order.
+/// "fec", "xu", "schmalstieg", "woehler", in that order.
 const std::vector<std::string>& ageingModelNames();
 
-// Throws ceilplan::InputError for an unknown name (listing the known ones) or bad options.
+/// Throws ceilplan::InputError for an unknown name (listing the known ones) or bad options.
 std::unique_ptr<AgeingModel> makeAgeingModel(const std::string& name, const AgeingModelOptions& options);
 
 }  // namespace ceilplan::battery

@@ -1,6 +1,7 @@
 #pragma once
-// Coulomb counting and full-equivalent-cycle (FEC) counting over a load profile
-// (Kocer et al. 2019, arXiv 1812.11707, eq. 3-8; docs/battery.md).
+/// @file
+/// Coulomb counting and full-equivalent-cycle (FEC) counting over a load profile
+/// (Kocer et al. 2019, arXiv 1812.11707, eq. 3-8; docs/battery.md).
 
 #include "ceilplan/battery/load_profile.hpp"
 #include "ceilplan/battery/pack.hpp"
@@ -12,35 +13,38 @@
 
 namespace ceilplan::battery {
 
-// One recorded point of a simulation. `current_a` is signed (positive discharging) and holds
-// the current of the segment the point belongs to, so consecutive points draw the load steps.
+/// One recorded point of a simulation. `current_a` is signed (positive discharging) and holds
+/// the current of the segment the point belongs to, so consecutive points draw the load steps.
 struct Sample {
-  double t_s = 0.0;
-  double current_a = 0.0;
-  double soc = 0.0;
-  double fec = 0.0;             // discrete update at mode changes (paper eq. 3-5)
-  double fec_continuous = 0.0;  // running integral (paper eq. 6)
-  Mode mode = Mode::Idle;
+  double t_s = 0.0;             ///< time, s
+  double current_a = 0.0;       ///< pack current, A, positive discharging
+  double soc = 0.0;             ///< state of charge, 0..1
+  double fec = 0.0;             ///< discrete update at mode changes (paper eq. 3-5)
+  double fec_continuous = 0.0;  ///< running integral (paper eq. 6)
+  Mode mode = Mode::Idle;       ///< the segment's mode
 };
 
+/// Where a Simulator stands: time, SOC, FEC and the charge moved so far.
 struct BatteryState {
-  double t_s = 0.0;
-  double soc = 1.0;
-  double min_soc = 1.0;
-  double fec = 0.0;             // booked at each mode change (paper eq. 3-5)
-  double fec_continuous = 0.0;  // FEC(t) = 1/(2 C_nom) * integral |i| dt (paper eq. 6)
-  // The same throughput counted against the usable capacity C_nom * SOH: sum |dSOC| / 2, the
-  // cycles of the faded pack. Equal to the FEC while SOH = 1; never call it FEC.
+  double t_s = 0.0;             ///< time, s
+  double soc = 1.0;             ///< state of charge, 0..1
+  double min_soc = 1.0;         ///< lowest SOC so far
+  double fec = 0.0;             ///< booked at each mode change (paper eq. 3-5)
+  double fec_continuous = 0.0;  ///< FEC(t) = 1/(2 C_nom) * integral |i| dt (paper eq. 6)
+  /// The same throughput counted against the usable capacity C_nom * SOH: sum |dSOC| / 2, the
+  /// cycles of the faded pack. Equal to the FEC while SOH = 1; never call it FEC.
   double faded_pack_cycles = 0.0;
-  double discharge_ah = 0.0;
-  double charge_ah = 0.0;
+  double discharge_ah = 0.0;  ///< charge drawn so far, Ah
+  double charge_ah = 0.0;     ///< charge put back so far, Ah
 };
 
-// Thrown when a segment would take the SOC below the pack's floor (soc_min).
+/// Thrown when a segment would take the SOC below the pack's floor (soc_min).
 class DepletionError : public ceilplan::InfeasibleError {
  public:
+  /// The error `message`, with the SOC the segment would have reached and the floor it crossed.
   DepletionError(const std::string& message, double reached_soc, double floor_soc);
-  double reachedSoc() const { return reached_soc_; }  // the SOC the segment would have reached
+  double reachedSoc() const { return reached_soc_; }  ///< the SOC the segment would have reached
+  /// The pack's SOC floor (soc_min).
   double floorSoc() const { return floor_soc_; }
 
  private:
@@ -48,30 +52,34 @@ class DepletionError : public ceilplan::InfeasibleError {
   double floor_soc_;
 };
 
-// Integrates SOC and FEC segment by segment.
-//
-// Exact scheme (step_s = 0): each constant-current segment in closed form, a stop condition
-// solved for the exact time it is met.
-// Fixed-step scheme (step_s > 0): the paper's scheme. A stop condition is checked at step ends,
-// so a charge that reaches its target inside a step ends with that step (the paper's 43.5 and
-// 40.5 min); the SOC stops at the target, so charge throughput and FEC match the exact scheme.
+/// Integrates SOC and FEC segment by segment.
+///
+/// Exact scheme (step_s = 0): each constant-current segment in closed form, a stop condition
+/// solved for the exact time it is met.
+/// Fixed-step scheme (step_s > 0): the paper's scheme. A stop condition is checked at step ends,
+/// so a charge that reaches its target inside a step ends with that step (the paper's 43.5 and
+/// 40.5 min); the SOC stops at the target, so charge throughput and FEC match the exact scheme.
 class Simulator {
  public:
+  /// A simulator of `pack` at `initial_soc`, exact (step_s 0) or at fixed steps of `step_s`.
   Simulator(const Pack& pack, double initial_soc, double step_s = 0.0);
 
-  // Runs one segment from the current state and returns how long it lasted. Appends the
-  // segment's start point, its step points (fixed step) and its end point to `record`.
-  // Throws DepletionError (state unchanged) if the segment would cross the SOC floor.
+  /// Runs one segment from the current state and returns how long it lasted. Appends the
+  /// segment's start point, its step points (fixed step) and its end point to `record`.
+  /// Throws DepletionError (state unchanged) if the segment would cross the SOC floor.
   double run(const Segment& segment, std::vector<Sample>* record = nullptr);
 
-  // Books the open mode interval into the discrete FEC; call once a profile has ended.
+  /// Books the open mode interval into the discrete FEC; call once a profile has ended.
   void closeModeInterval();
 
-  // Capacity fade: later segments see usable capacity C_nom * SOH (paper eq. 7).
+  /// Capacity fade: later segments see usable capacity C_nom * SOH (paper eq. 7).
   void setStateOfHealth(double state_of_health);
 
+  /// Where the simulation stands.
   const BatteryState& state() const { return state_; }
+  /// The pack simulated.
   const Pack& pack() const { return pack_; }
+  /// The fixed step, s (0: exact).
   double stepS() const { return step_s_; }
 
  private:
@@ -92,7 +100,7 @@ class Simulator {
   double interval_ah_ = 0.0;
 };
 
-// Runs a whole profile from `initial_soc` and closes the last mode interval.
+/// Runs a whole profile from `initial_soc` and closes the last mode interval.
 BatteryState simulate(const Pack& pack, const LoadProfile& profile, double initial_soc, double step_s = 0.0,
                       std::vector<Sample>* record = nullptr);
 

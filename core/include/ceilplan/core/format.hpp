@@ -1,6 +1,7 @@
 #pragma once
-// The one number formatter of ceilplan, for messages, tables and text outputs: never
-// std::to_string's "0.500000".
+/// @file
+/// The one number formatter of ceilplan, for messages, tables and text outputs: never
+/// std::to_string's "0.500000".
 
 #include <Eigen/Core>
 
@@ -8,13 +9,13 @@
 
 namespace ceilplan {
 
-// At most `significant` significant digits, no trailing zeros: "5.2", "0.009655", "1e-09", "nan", "inf".
+/// At most `significant` significant digits, no trailing zeros: "5.2", "0.009655", "1e-09", "nan", "inf".
 std::string formatNumber(double value, int significant = 6);
 
-// Exactly `decimals` decimals: formatFixed(43.5, 2) == "43.50"; from 1e15 on, as formatNumber.
+/// Exactly `decimals` decimals: formatFixed(43.5, 2) == "43.50"; from 1e15 on, as formatNumber.
 std::string formatFixed(double value, int decimals);
 
-// "(x, y, z)" with `decimals` decimals each: formatPoint({1, 2, 3}) == "(1.00, 2.00, 3.00)".
+/// "(x, y, z)" with `decimals` decimals each: formatPoint({1, 2, 3}) == "(1.00, 2.00, 3.00)".
 std::string formatPoint(const Eigen::Vector3d& point, int decimals = 2);
 
 }  // namespace ceilplan

@@ -1,10 +1,11 @@
 #pragma once
-// Candidate camera poses for a region and what each one covers. A pose covers a surface element
-// when the element lies in the central (1 - side overlap) x (1 - front overlap) part of the
-// image, at or beyond the minimum focus distance, at or below the required GSD and incidence,
-// and every voxel on the line of sight is known free (environment/visibility.hpp). The poses
-// are valid states of the vehicle (Environment::isStateValid) between the minimum focus
-// distance and the distance the GSD allows. docs/coverage.md, "Candidate views".
+/// @file
+/// Candidate camera poses for a region and what each one covers. A pose covers a surface element
+/// when the element lies in the central (1 - side overlap) x (1 - front overlap) part of the
+/// image, at or beyond the minimum focus distance, at or below the required GSD and incidence,
+/// and every voxel on the line of sight is known free (environment/visibility.hpp). The poses
+/// are valid states of the vehicle (Environment::isStateValid) between the minimum focus
+/// distance and the distance the GSD allows. docs/coverage.md, "Candidate views".
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/environment.hpp"
@@ -21,86 +22,91 @@
 
 namespace ceilplan::mission {
 
-// One element a pose covers, with how it sees it.
+/// One element a pose covers, with how it sees it.
 struct SeenElement {
-  std::uint32_t element = 0;  // index into RegionSurface::elements
-  float gsd_mm_px = 0.0f;     // at its distance and incidence
-  float incidence_deg = 0.0f;
-  float distance_m = 0.0f;  // camera to the element's centre
+  std::uint32_t element = 0;   ///< index into RegionSurface::elements
+  float gsd_mm_px = 0.0f;      ///< at its distance and incidence
+  float incidence_deg = 0.0f;  ///< line of sight to the surface normal
+  float distance_m = 0.0f;     ///< camera to the element's centre
 };
 
-// What candidate generation tried (for reports and benchmarks).
+/// What candidate generation tried (for reports and benchmarks).
 struct GenerationStats {
-  std::size_t seeds = 0;          // lattice seeds (element, distance level)
-  std::size_t poses_tried = 0;    // admissibility tests
-  std::size_t repair_probes = 0;  // admissible poses tried for elements the lattice left uncovered
-  std::size_t repair_views = 0;   // views added by those probes
+  std::size_t seeds = 0;          ///< lattice seeds (element, distance level)
+  std::size_t poses_tried = 0;    ///< admissibility tests
+  std::size_t repair_probes = 0;  ///< admissible poses tried for elements the lattice left uncovered
+  std::size_t repair_views = 0;   ///< views added by those probes
 };
 
-// Candidate poses and, for each, the elements it covers (compressed rows: poses[i] covers
-// seen[offsets[i]] .. seen[offsets[i + 1] - 1]).
+/// Candidate poses and, for each, the elements it covers (compressed rows: poses[i] covers
+/// seen[offsets[i]] .. seen[offsets[i + 1] - 1]).
 struct CandidateViews {
-  std::vector<CameraPose> poses;
-  std::vector<std::uint32_t> offsets{0};
-  std::vector<SeenElement> seen;
-  std::vector<std::uint8_t> reachable;  // per element: 1 if some candidate covers it
+  std::vector<CameraPose> poses;          ///< the candidate poses
+  std::vector<std::uint32_t> offsets{0};  ///< row starts into `seen`, one more than poses
+  std::vector<SeenElement> seen;          ///< every pose's covered elements, row after row
+  std::vector<std::uint8_t> reachable;    ///< per element: 1 if some candidate covers it
 
+  /// Candidates held.
   std::size_t size() const { return poses.size(); }
+  /// First element `view` covers.
   const SeenElement* begin(std::size_t view) const { return seen.data() + offsets[view]; }
+  /// One past the last element `view` covers.
   const SeenElement* end(std::size_t view) const { return seen.data() + offsets[view + 1]; }
+  /// Appends a candidate with the elements it covers.
   void add(const CameraPose& pose, const std::vector<SeenElement>& covered);
 
-  GenerationStats stats;
+  GenerationStats stats;  ///< what generation tried
 };
 
+/// How candidate views are generated for a region.
 struct ViewGenerationOptions {
-  FlightMode mode = FlightMode::Ceiling;
-  // Free mode: the conventional distance kept from every structure, airframe to surface. A pose
-  // keeps it (body clearance >= collision radius + standoff) where any pose for its seed does;
-  // elsewhere only the poses of largest clearance for that seed are kept.
+  FlightMode mode = FlightMode::Ceiling;  ///< the mode the views are for
+  /// Free mode: the conventional distance kept from every structure, airframe to surface. A pose
+  /// keeps it (body clearance >= collision radius + standoff) where any pose for its seed does;
+  /// elsewhere only the poses of largest clearance for that seed are kept.
   double free_standoff_m = 1.0;
-  // Rotors never come closer than this to the surface above (as the tour's viewpoints).
+  /// Rotors never come closer than this to the surface above (as the tour's viewpoints).
   double min_ceiling_gap_m = 0.03;
-  int distance_levels = 4;          // camera distances per seed, geometric from the GSD's reach down to min focus
-                                    // (and as many within the room in front of the surface, where that is shorter)
-  double seed_spacing_share = 0.5;  // seeds every this share of the covered footprint at each distance
-  double tilt_share = 0.6;          // lattice tilts: this share of the region's max incidence
-  int workers = 2;
-  std::function<void(double)> progress;  // fraction of the visibility work done
-  // Poses only where this holds (a tour's planner::ReachableSpace, when its first stops left a
-  // place no route from home reaches); empty: every admissible pose. An element seen only from
-  // elsewhere counts as unreachable.
+  int distance_levels = 4;          ///< camera distances per seed, geometric from the GSD's reach down to min focus
+                                    ///< (and as many within the room in front of the surface, where that is shorter)
+  double seed_spacing_share = 0.5;  ///< seeds every this share of the covered footprint at each distance
+  double tilt_share = 0.6;          ///< lattice tilts: this share of the region's max incidence
+  int workers = 2;                  ///< threads testing poses
+  std::function<void(double)> progress;  ///< fraction of the visibility work done
+  /// Poses only where this holds (a tour's planner::ReachableSpace, when its first stops left a
+  /// place no route from home reaches); empty: every admissible pose. An element seen only from
+  /// elsewhere counts as unreachable.
   planner::ReachablePredicate reachable;
 };
 
-// The distance levels of a region (largest first): from where the whole covered part of an
-// image meets the GSD down to the minimum focus distance. Throws via checkCameraReaches.
-// With `room_m`, the farthest level is at most that far (never nearer than the nearest level):
-// a coarse GSD whose reach lies beyond the floor keeps its levels where a pose can fit.
+/// The distance levels of a region (largest first): from where the whole covered part of an
+/// image meets the GSD down to the minimum focus distance. Throws via checkCameraReaches.
+/// With `room_m`, the farthest level is at most that far (never nearer than the nearest level):
+/// a coarse GSD whose reach lies beyond the floor keeps its levels where a pose can fit.
 std::vector<double> distanceLevels(const Camera& camera, const CoverageRegion& region, int levels,
                                    double room_m = std::numeric_limits<double>::infinity());
 
-// How far from a region's surface a camera can stand: the median, over its elements, of the run
-// of known free voxels along each element's normal, less how far the inflated airframe and the
-// mount offset reach beyond the camera along it (the body must fit there too); at most `far_m`
-// is looked for.
+/// How far from a region's surface a camera can stand: the median, over its elements, of the run
+/// of known free voxels along each element's normal, less how far the inflated airframe and the
+/// mount offset reach beyond the camera along it (the body must fit there too); at most `far_m`
+/// is looked for.
 double roomInFront_m(const environment::Environment& environment, const Camera& camera, const RegionSurface& surface,
                      double far_m);
 
-// Heading (deg from north, [0, 180)) of the region's long horizontal axis: vertical views are
-// yawed along it, so passes along the region fly along the image height (front overlap).
+/// Heading (deg from north, [0, 180)) of the region's long horizontal axis: vertical views are
+/// yawed along it, so passes along the region fly along the image height (front overlap).
 double regionHeading(const RegionSurface& surface);
 
-// Generates the lattice candidates (straight and tilted views of seed elements at every
-// distance level, raised to hug the structure above in ceiling mode), finds what each covers,
-// then probes every element the lattice left uncovered with a denser set of poses and adds the
-// best one that covers it. Elements still uncovered are unreachable (reachable[e] == 0).
-// Reads the environment only; runs visibility on options.workers threads.
+/// Generates the lattice candidates (straight and tilted views of seed elements at every
+/// distance level, raised to hug the structure above in ceiling mode), finds what each covers,
+/// then probes every element the lattice left uncovered with a denser set of poses and adds the
+/// best one that covers it. Elements still uncovered are unreachable (reachable[e] == 0).
+/// Reads the environment only; runs visibility on options.workers threads.
 CandidateViews generateCandidateViews(const environment::Environment& environment, const Camera& camera,
                                       const CoverageRegion& region, const RegionSurface& surface,
                                       const ViewGenerationOptions& options = {});
 
-// What one pose covers under the same rules (for reports and tests).
+/// What one pose covers under the same rules (for reports and tests).
 std::vector<SeenElement> coveredElements(const environment::VoxelGrid& grid, const Camera& camera,
                                          const CoverageRegion& region, const RegionSurface& surface,
                                          const CameraPose& pose);

@@ -1,6 +1,7 @@
 #pragma once
-// A flown path's current profile as the battery module's load segments, for the founding
-// paper's month-long duty projection (compare, tour).
+/// @file
+/// A flown path's current profile as the battery module's load segments, for the founding
+/// paper's month-long duty projection (compare, tour).
 
 #include "ceilplan/battery/duty_cycle.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
@@ -9,11 +10,11 @@
 
 namespace ceilplan::mission {
 
-// Discharge segments of at most a second each over `samples` (in time order; coulomb counting
-// is linear, so merging keeps charge and FEC exact).
+/// Discharge segments of at most a second each over `samples` (in time order; coulomb counting
+/// is linear, so merging keeps charge and FEC exact).
 battery::LoadProfile dischargeProfile(const std::vector<planner::PathSample>& samples);
 
-// The evaluation's profile, repeated `repeats` times.
+/// The evaluation's profile, repeated `repeats` times.
 battery::LoadProfile flightProfile(const planner::PathEvaluation& evaluation, int repeats);
 
 }  // namespace ceilplan::mission

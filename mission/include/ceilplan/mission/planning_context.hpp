@@ -1,8 +1,9 @@
 #pragma once
-// Everything planning needs, built once per map, vehicle and battery: the map indexed for the
-// vehicle (one index: free mode shares it and only prefers a standoff in its cost), the energy
-// model, the cost models (planning and full) and the safety rules; flight modes are then cheap
-// to add. Shared read-only by every query, leg and command.
+/// @file
+/// Everything planning needs, built once per map, vehicle and battery: the map indexed for the
+/// vehicle (one index: free mode shares it and only prefers a standoff in its cost), the energy
+/// model, the cost models (planning and full) and the safety rules; flight modes are then cheap
+/// to add. Shared read-only by every query, leg and command.
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/core/progress.hpp"
@@ -25,64 +26,74 @@
 
 namespace ceilplan::mission {
 
+/// What a PlanningContext plans with: the objective, speeds, clearances and the map's policies.
 struct PlanningOptions {
-  std::string objective = "charge";  // planner::objectiveNames()
-  std::string ageing_model = "xu";   // of the ageing objective
-  double ageing_dod = 0.0;           // 0: the route's own depth of discharge (straight-line estimate, at least 1 %)
-  planner::FlightSpeeds speeds;
-  double min_ceiling_gap_m = 0.05;  // rotor plane to any ceiling, never less
-  double standoff_m = 1.0;          // free mode: the conventional distance from every structure
-  double temperature_c = 25.0;      // cell temperature for the ageing models
-  environment::EnvironmentOptions environment;
-  environment::UnknownSpace unknown;  // the map index's unknown-space policy
+  std::string objective = "charge";  ///< planner::objectiveNames()
+  std::string ageing_model = "xu";   ///< of the ageing objective
+  double ageing_dod = 0.0;           ///< 0: the route's own depth of discharge (straight-line estimate, at least 1 %)
+  planner::FlightSpeeds speeds;      ///< cruise, inspection, climb and descent speeds, m/s
+  double min_ceiling_gap_m = 0.05;   ///< rotor plane to any ceiling, never less
+  double standoff_m = 1.0;           ///< free mode: the conventional distance from every structure
+  double temperature_c = 25.0;       ///< cell temperature for the ageing models
+  environment::EnvironmentOptions environment;  ///< the map index's sampling and clearance settings
+  environment::UnknownSpace unknown;            ///< the map index's unknown-space policy
 
-  // Throws ceilplan::InputError naming the first bad field.
+  /// Throws ceilplan::InputError naming the first bad field.
   void validate() const;
 };
 
-// The ageing models' options at a cell temperature, with the energy module's LiPo open-circuit
-// voltage curve for Schmalstieg's voltage-dependent terms.
+/// The ageing models' options at a cell temperature, with the energy module's LiPo open-circuit
+/// voltage curve for Schmalstieg's voltage-dependent terms.
 battery::AgeingModelOptions ageingModelOptions(double temperature_c);
 
-// A mission's speeds and the charge objective (what a tour plans with).
+/// A mission's speeds and the charge objective (what a tour plans with).
 PlanningOptions planningOptions(const Mission& mission);
 
+/// A map indexed for one vehicle and battery, with its energy, cost and safety models: built once, shared read-only by
+/// every route, tour and thread (docs/cpp.md).
 class PlanningContext {
  public:
-  // Indexes `map` for the vehicle. Throws ceilplan::InputError for bad options or vehicle.
+  /// Indexes `map` for the vehicle. Throws ceilplan::InputError for bad options or vehicle.
   PlanningContext(environment::OccupancyMap map, Vehicle vehicle, BatterySpec battery, PlanningOptions options,
                   const ProgressCallback& progress = {});
-  // The mission's map (loaded here), vehicle, battery and planningOptions(mission).
+  /// The mission's map (loaded here), vehicle, battery and planningOptions(mission).
   explicit PlanningContext(const Mission& mission, const ProgressCallback& progress = {});
 
+  /// The options the context was built with, validated.
   const PlanningOptions& options() const { return options_; }
+  /// The vehicle it was built for.
   const Vehicle& vehicle() const { return vehicle_; }
+  /// The battery it was built for.
   const BatterySpec& battery() const { return battery_; }
+  /// The map as loaded.
   const environment::OccupancyMap& map() const { return map_; }
+  /// The map indexed for the vehicle: gaps, clearance and validity queries.
   const environment::Environment& environment() const { return *environment_; }
+  /// The vehicle's current model.
   const energy::EnergyModel& energy() const { return *energy_; }
 
-  // The full proximity model at the start SOC: every reported figure comes from it.
+  /// The full proximity model at the start SOC: every reported figure comes from it.
   const planner::FlightCostModel& fullModel() const { return *full_model_; }
-  // The safety rules of every mode: what the dense re-check and `evaluate` apply.
+  /// The safety rules of every mode: what the dense re-check and `evaluate` apply.
   const planner::SafetyRules& baseRules() const { return *base_rules_; }
 
-  // What one mode plans with: the same safety rules in both; free mode's cost ignores proximity
-  // effects and prefers the conventional standoff where it fits (CostModelOptions::standoff_m).
+  /// What one mode plans with: the same safety rules in both; free mode's cost ignores proximity
+  /// effects and prefers the conventional standoff where it fits (CostModelOptions::standoff_m).
   struct Mode {
-    std::unique_ptr<planner::FlightCostModel> model;
-    std::unique_ptr<planner::SafetyRules> rules;
+    std::unique_ptr<planner::FlightCostModel> model;  ///< the mode's cost model
+    std::unique_ptr<planner::SafetyRules> rules;      ///< the safety rules (the same in both modes)
   };
+  /// The cost model and safety rules `mode` plans with, built anew for the caller.
   Mode mode(FlightMode mode) const;
 
-  // The objective (the options', or `name`), with ageing rates measured for the route's
-  // expected depth of discharge. Throws ceilplan::InputError for an unknown name.
+  /// The objective (the options', or `name`), with ageing rates measured for the route's
+  /// expected depth of discharge. Throws ceilplan::InputError for an unknown name.
   planner::ObjectiveChoice objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m,
                                      const std::string& name = {}) const;
 
-  // Where a route from `origin_m` reaches under the safety rules (planner::ReachableSpace at
-  // `spacing_m`): flooded on first use and kept, so the two modes of a tour share one flood.
-  // Safe to call from several threads.
+  /// Where a route from `origin_m` reaches under the safety rules (planner::ReachableSpace at
+  /// `spacing_m`): flooded on first use and kept, so the two modes of a tour share one flood.
+  /// Safe to call from several threads.
   const planner::ReachableSpace& reachableFrom(const Eigen::Vector3d& origin_m, double spacing_m,
                                                int workers = 1) const;
 

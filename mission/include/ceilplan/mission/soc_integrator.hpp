@@ -1,8 +1,9 @@
 #pragma once
-// How every sortie's state of charge is integrated, by the sortie split and by the flight
-// record alike: explicit coulomb counting against the usable capacity, each interval drawing
-// the mean of the currents at its two ends, each current computed at the SOC reached just
-// before it (as planner::evaluatePath does for a single path).
+/// @file
+/// How every sortie's state of charge is integrated, by the sortie split and by the flight
+/// record alike: explicit coulomb counting against the usable capacity, each interval drawing
+/// the mean of the currents at its two ends, each current computed at the SOC reached just
+/// before it (as planner::evaluatePath does for a single path).
 
 #include "ceilplan/battery/pack.hpp"
 
@@ -12,31 +13,37 @@
 
 namespace ceilplan::mission {
 
-// How a load turns into pack current at a state of charge: for a tour, the energy model's Rint
-// pack fed the propulsion power (W). Unset: the load is the current itself (A), whatever the SOC.
+/// How a load turns into pack current at a state of charge: for a tour, the energy model's Rint
+/// pack fed the propulsion power (W). Unset: the load is the current itself (A), whatever the SOC.
 using CurrentAtSoc = std::function<double(double load, double soc)>;
 
-// Hovering is integrated in steps of at most this long.
+/// Hovering is integrated in steps of at most this long.
 inline constexpr double kHoverStepS = 1.0;
 
-// A point of a load profile; t_s from the profile's start.
+/// A point of a load profile; t_s from the profile's start.
 struct LoadSample {
-  double t_s = 0.0;
-  double load = 0.0;
+  double t_s = 0.0;   ///< from the profile's start
+  double load = 0.0;  ///< what is drawn: a current (A) or a power (W), as CurrentAtSoc takes it
 };
 
+/// The state of charge of one pack through a sortie: the one SOC integration tours use (coulomb counting).
 class SocIntegrator {
  public:
+  /// A pack at `start_soc`, loads turned into current by `current_at_soc`.
   SocIntegrator(const battery::Pack& pack, double start_soc, CurrentAtSoc current_at_soc = {});
 
-  // The current a load draws now.
+  /// The current a load draws now.
   double currentFor(double load) const { return current_at_soc_ ? current_at_soc_(load, soc_) : load; }
-  // Moves on by `dt_s` drawing `current_a` (the interval's mean current).
+  /// Moves on by `dt_s` drawing `current_a` (the interval's mean current).
   void advance(double dt_s, double current_a);
 
+  /// State of charge now, 0..1.
   double soc() const { return soc_; }
+  /// Time integrated so far, s.
   double time_s() const { return time_s_; }
+  /// Charge drawn so far, Ah.
   double chargeAh() const { return charge_ah_; }
+  /// Lowest SOC so far.
   double lowestSoc() const { return lowest_soc_; }
 
  private:
@@ -48,14 +55,14 @@ class SocIntegrator {
   double lowest_soc_;
 };
 
-// Called at each sample once the integrator has reached it, with the current drawn there.
+/// Called at each sample once the integrator has reached it, with the current drawn there.
 using SampleVisitor = std::function<void(std::size_t sample, double current_a)>;
 
-// Flies a load profile (at least one sample, times increasing) from the integrator's state.
+/// Flies a load profile (at least one sample, times increasing) from the integrator's state.
 void flyProfile(SocIntegrator& flight, const std::vector<LoadSample>& profile, const SampleVisitor& visit = {});
-// Draws `load` for `duration_s` in steps of at most kHoverStepS; visit(k, current) for k = 0..steps.
+/// Draws `load` for `duration_s` in steps of at most kHoverStepS; visit(k, current) for k = 0..steps.
 void hover(SocIntegrator& flight, double load, double duration_s, const SampleVisitor& visit = {});
-// The number of steps hover() takes.
+/// The number of steps hover() takes.
 std::size_t hoverSteps(double duration_s);
 
 }  // namespace ceilplan::mission

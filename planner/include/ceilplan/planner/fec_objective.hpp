@@ -1,7 +1,8 @@
 #pragma once
-// Minimises full equivalent cycles: the flight's discharge Q and the recharge that puts it back,
-// FEC = (Q + Q) / (2 C_nom) = Q / C_nom (Kocer et al. 2019, arXiv 1812.11707, eq. 6),
-// with C_nom the pack's nominal capacity.
+/// @file
+/// Minimises full equivalent cycles: the flight's discharge Q and the recharge that puts it back,
+/// FEC = (Q + Q) / (2 C_nom) = Q / C_nom (Kocer et al. 2019, arXiv 1812.11707, eq. 6),
+/// with C_nom the pack's nominal capacity.
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/planner/flight_objective.hpp"
@@ -10,8 +11,10 @@
 
 namespace ceilplan::planner {
 
+/// Least full equivalent cycles: the charge drawn over the nominal capacity.
 class FecObjective : public FlightObjective {
  public:
+  /// The objective for a pack of `nominal_capacity_ah` (> 0, else ceilplan::InputError); `model` must outlive it.
   FecObjective(const ompl::base::SpaceInformationPtr& si, const FlightCostModel& model, double nominal_capacity_ah)
       : FlightObjective(si, model, CostWeights{0.0, 0.0, inverseCapacity(nominal_capacity_ah)}, "fec", "FEC") {}
 

@@ -1,12 +1,15 @@
 #pragma once
-// Minimises the path length (m).
+/// @file
+/// Minimises the path length (m).
 
 #include "ceilplan/planner/flight_objective.hpp"
 
 namespace ceilplan::planner {
 
+/// Shortest path, m.
 class LengthObjective : public FlightObjective {
  public:
+  /// The objective; `model` must outlive it.
   LengthObjective(const ompl::base::SpaceInformationPtr& si, const FlightCostModel& model)
       : FlightObjective(si, model, CostWeights{1.0, 0.0, 0.0}, "length", "m") {}
 };

@@ -1,5 +1,6 @@
 #pragma once
-// OMPL's view of SafetyRules for straight motions.
+/// @file
+/// OMPL's view of SafetyRules for straight motions.
 
 #include "ceilplan/planner/safety_rules.hpp"
 
@@ -9,12 +10,14 @@
 
 namespace ceilplan::planner {
 
+/// OMPL motion validator under SafetyRules.
 class FlightMotionValidator : public ompl::base::MotionValidator {
  public:
-  // `rules` must outlive the validator.
+  /// `rules` must outlive the validator.
   FlightMotionValidator(const ompl::base::SpaceInformationPtr& si, const SafetyRules& rules);
+  /// OMPL: whether the straight motion is valid.
   bool checkMotion(const ompl::base::State* from, const ompl::base::State* to) const override;
-  // Reports the last valid state found by bisection-free stepping from `from`.
+  /// Reports the last valid state found by bisection-free stepping from `from`.
   bool checkMotion(const ompl::base::State* from, const ompl::base::State* to,
                    std::pair<ompl::base::State*, double>& last_valid) const override;
 

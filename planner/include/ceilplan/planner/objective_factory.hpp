@@ -1,5 +1,6 @@
 #pragma once
-// The objectives by name: length, time, charge, fec, ageing.
+/// @file
+/// The objectives by name: length, time, charge, fec, ageing.
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/planner/ageing_rates.hpp"
@@ -11,15 +12,17 @@
 
 namespace ceilplan::planner {
 
+/// A planning objective by name, with what it needs: the pack's capacity (fec) or the ageing rates (ageing).
 struct ObjectiveChoice {
-  std::string name = "charge";
-  double nominal_capacity_ah = 5.2;  // fec
-  AgeingRates ageing;                // ageing (measureAgeingRates)
+  std::string name = "charge";       ///< one of objectiveNames()
+  double nominal_capacity_ah = 5.2;  ///< fec
+  AgeingRates ageing;                ///< ageing (measureAgeingRates)
 };
 
+/// "length", "time", "charge", "fec", "ageing".
 const std::vector<std::string>& objectiveNames();
 
-// Throws ceilplan::InputError for an unknown name, listing the known ones.
+/// Throws ceilplan::InputError for an unknown name, listing the known ones.
 std::shared_ptr<FlightObjective> makeObjective(const ObjectiveChoice& choice, const ompl::base::SpaceInformationPtr& si,
                                                const FlightCostModel& model);
 
