@@ -112,6 +112,18 @@ TEST(ParallelFor, OnTheCallingThreadAFailureStopsTheWorkAndIsRethrown) {
   EXPECT_EQ(std::vector<int>(runs.begin() + 6, runs.end()), std::vector<int>(14, 0));
 }
 
+TEST(ParallelFor, AProgressCallbackThatThrowsStopsTheWorkAndIsRethrownAfterTheThreadsJoin) {
+  std::atomic<int> started{0};
+  const auto slow_task = [&](std::size_t) {
+    ++started;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  };
+  const auto cancel = [](double) { throw InputError("cancelled by the caller"); };
+  // Were the threads not joined first, the exception would end the process (std::terminate).
+  EXPECT_THROW(parallelFor(200, 2, slow_task, cancel), InputError);
+  EXPECT_LT(started.load(), 200);  // no new task started after the callback threw
+}
+
 TEST(ParallelFor, TheCallingThreadRunsTheTasksItselfOnlyWhenNoThreadStarts) {
   {
     const ThreadLimit limit(0);
