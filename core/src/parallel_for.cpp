@@ -54,21 +54,20 @@ void parallelFor(std::size_t count, int workers, const std::function<void(std::s
     // The system refused a thread: fewer threads do the work (see the header).
   }
   if (threads.empty()) work(true);
-  // A callback that throws (a user's, e.g. Python's on Ctrl-C) stops the work like a failed
-  // task: the threads must still be joined before its exception leaves.
-  std::exception_ptr progress_failure;
-  while (!threads.empty() && progress && done < count && !failed) {
-    try {
+  // A progress callback that throws cancels the work (a Python callback raising, say): no new
+  // task starts, and its exception is rethrown once the threads have stopped.
+  std::exception_ptr cancelled;
+  try {
+    while (!threads.empty() && progress && done < count && !failed) {
       progress(static_cast<double>(done) / count);
-    } catch (...) {
-      progress_failure = std::current_exception();
-      failed = true;
-      break;
+      std::this_thread::sleep_for(kProgressPeriod);
     }
-    std::this_thread::sleep_for(kProgressPeriod);
+  } catch (...) {
+    cancelled = std::current_exception();
+    failed = true;
   }
   for (std::thread& thread : threads) thread.join();
-  if (progress_failure) std::rethrow_exception(progress_failure);
+  if (cancelled) std::rethrow_exception(cancelled);
   for (const std::exception_ptr& failure : failures)
     if (failure) std::rethrow_exception(failure);
 }

@@ -58,6 +58,14 @@ std::string waypointLabel(const mission::SortieRoute& route, std::size_t k) {
 
 }  // namespace
 
+nlohmann::json routeWaypointsJson(const mission::SortieRoute& route) {
+  const std::vector<double> headings = mission::headingsInEffect_deg(route);
+  nlohmann::json waypoints = nlohmann::json::array();
+  for (std::size_t k = 0; k < route.waypoints.size(); ++k)
+    waypoints.push_back(waypointProperties(route, k, headings[k]));
+  return waypoints;
+}
+
 nlohmann::json routesGeoJson(const std::vector<mission::SortieRoute>& routes, const mission::GeodeticOrigin& origin) {
   validate(routes, origin);
   nlohmann::json features = nlohmann::json::array();

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -203,6 +204,41 @@ StopCounts stopCounts(const mission::TourResult& tour) {
   return counts;
 }
 
+nlohmann::json tourSortiesJson(const mission::TourResult& tour) {
+  nlohmann::json sorties = nlohmann::json::array();
+  for (std::size_t k = 0; k < tour.plan.sorties.size(); ++k) {
+    const mission::Sortie& sortie = tour.plan.sorties[k];
+    nlohmann::json names = nlohmann::json::array(), legs = nlohmann::json::array();
+    for (int target : sortie.targets) names.push_back(tour.names[target]);
+    for (const mission::SortieLeg& leg : sortie.legs) {
+      const mission::TourLeg& flown = tour.legs[leg.from][leg.to];
+      legs.push_back({{"from", tour.names[leg.from]},
+                      {"to", tour.names[leg.to]},
+                      {"charge_ah", leg.charge_ah},
+                      {"duration_s", leg.duration_s},
+                      {"length_m", flown.evaluation.length_m},
+                      {"waypoints", waypointsJson(flown.waypoints)}});
+    }
+    const mission::SortieRoute& route = tour.routes[k];
+    sorties.push_back(
+        {{"targets", names},
+         {"legs", legs},
+         {"takeoff_height_m", route.takeoffHeight_m()},
+         {"landing_height_m", route.endsAtHome() ? nlohmann::json(route.landingHeight_m()) : nlohmann::json()},
+         {"takeoff_s", tour.record.sorties[k].takeoff_s},
+         {"charge_ah", sortie.charge_ah},
+         {"duration_s", sortie.flight_s},
+         {"recharge_s", sortie.recharge_s},
+         {"turnaround_s", sortie.turnaround_s},
+         {"fec", sortie.fec},
+         {"dod", sortie.dod},
+         {"min_soc", sortie.lowest_soc},
+         {"wear", sortie.wear},
+         {"reason", sortie.reason}});
+  }
+  return sorties;
+}
+
 nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission,
                         const Provenance& provenance) {
   nlohmann::json json;
@@ -266,38 +302,7 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
       {"moved_onto_surface_m", "from given_point, inside a structure, to point, on its surface (only where moved)"},
       {"viewpoint_standoff_m", kStandoffMeasures}};
   if (tour.standoff) json["standoff"] = tourStandoffJson(tour, *tour.standoff);
-  nlohmann::json sorties = nlohmann::json::array();
-  for (std::size_t k = 0; k < tour.plan.sorties.size(); ++k) {
-    const mission::Sortie& sortie = tour.plan.sorties[k];
-    nlohmann::json names = nlohmann::json::array(), legs = nlohmann::json::array();
-    for (int target : sortie.targets) names.push_back(tour.names[target]);
-    for (const mission::SortieLeg& leg : sortie.legs) {
-      const mission::TourLeg& flown = tour.legs[leg.from][leg.to];
-      legs.push_back({{"from", tour.names[leg.from]},
-                      {"to", tour.names[leg.to]},
-                      {"charge_ah", leg.charge_ah},
-                      {"duration_s", leg.duration_s},
-                      {"length_m", flown.evaluation.length_m},
-                      {"waypoints", waypointsJson(flown.waypoints)}});
-    }
-    const mission::SortieRoute& route = tour.routes[k];
-    sorties.push_back(
-        {{"targets", names},
-         {"legs", legs},
-         {"takeoff_height_m", route.takeoffHeight_m()},
-         {"landing_height_m", route.endsAtHome() ? nlohmann::json(route.landingHeight_m()) : nlohmann::json()},
-         {"takeoff_s", tour.record.sorties[k].takeoff_s},
-         {"charge_ah", sortie.charge_ah},
-         {"duration_s", sortie.flight_s},
-         {"recharge_s", sortie.recharge_s},
-         {"turnaround_s", sortie.turnaround_s},
-         {"fec", sortie.fec},
-         {"dod", sortie.dod},
-         {"min_soc", sortie.lowest_soc},
-         {"wear", sortie.wear},
-         {"reason", sortie.reason}});
-  }
-  json["sorties"] = sorties;
+  json["sorties"] = tourSortiesJson(tour);
   json["charge_ah"] = tour.plan.charge_ah;
   json["flight_s"] = tour.plan.flight_s;
   json["duration_s"] = tour.plan.duration_s;
@@ -315,29 +320,39 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   return json;
 }
 
+std::vector<TourPathRow> tourPathRows(const mission::TourResult& tour) {
+  std::vector<TourPathRow> rows;
+  for (std::size_t k = 0; k < tour.record.sorties.size(); ++k) {
+    const mission::SortieRecord& sortie = tour.record.sorties[k];
+    const int number = static_cast<int>(k) + 1;
+    for (std::size_t i = 0; i < sortie.samples.size(); ++i) {
+      const planner::PathSample& s = sortie.samples[i];
+      rows.push_back({sortie.takeoff_s + s.t_s, s.position_m, s.speed_m_s, s.ceiling_gap_m, s.current_a, s.soc, number,
+                      s.ground_gap_m, phaseName(sortie.phases[i]), s.assumed_free});
+    }
+    // The pack's recharge to the start SOC, on its own clock: where the wear models see it.
+    const planner::PathSample& landed = sortie.samples.back();
+    rows.push_back({sortie.takeoff_s + landed.t_s + sortie.recharge_s, landed.position_m, 0.0,
+                    std::numeric_limits<double>::infinity(),
+                    -tour.plan.sorties[k].charge_ah * 3600.0 / std::max(sortie.recharge_s, 1e-9), tour.start_soc,
+                    number, std::numeric_limits<double>::infinity(), "recharge", false});
+  }
+  return rows;
+}
+
 void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour,
                       const Provenance& provenance) {
   writeTextAtomically(file, [&](std::ostream& out) {
     out << provenance.csvComment() << '\n'
         << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie,ground_gap_m,phase,assumed_free\n"
         << std::setprecision(12);
-    for (std::size_t k = 0; k < tour.record.sorties.size(); ++k) {
-      const mission::SortieRecord& sortie = tour.record.sorties[k];
-      for (std::size_t i = 0; i < sortie.samples.size(); ++i) {
-        const planner::PathSample& s = sortie.samples[i];
-        out << sortie.takeoff_s + s.t_s << ',' << s.position_m.x() << ',' << s.position_m.y() << ',' << s.position_m.z()
-            << ',' << s.speed_m_s << ',';
-        if (std::isfinite(s.ceiling_gap_m)) out << s.ceiling_gap_m;
-        out << ',' << s.current_a << ',' << s.soc << ',' << k + 1 << ',';
-        if (std::isfinite(s.ground_gap_m)) out << s.ground_gap_m;
-        out << ',' << phaseName(sortie.phases[i]) << ',' << (s.assumed_free ? 1 : 0) << '\n';
-      }
-      // The pack's recharge to the start SOC, on its own clock: where the wear models see it.
-      const planner::PathSample& landed = sortie.samples.back();
-      out << sortie.takeoff_s + landed.t_s + sortie.recharge_s << ',' << landed.position_m.x() << ','
-          << landed.position_m.y() << ',' << landed.position_m.z() << ",0,,"
-          << -tour.plan.sorties[k].charge_ah * 3600.0 / std::max(sortie.recharge_s, 1e-9) << ',' << tour.start_soc
-          << ',' << k + 1 << ",,recharge,0\n";
+    for (const TourPathRow& row : tourPathRows(tour)) {
+      out << row.t_s << ',' << row.position_m.x() << ',' << row.position_m.y() << ',' << row.position_m.z() << ','
+          << row.speed_m_s << ',';
+      if (std::isfinite(row.ceiling_gap_m)) out << row.ceiling_gap_m;
+      out << ',' << row.current_a << ',' << row.soc << ',' << row.sortie << ',';
+      if (std::isfinite(row.ground_gap_m)) out << row.ground_gap_m;
+      out << ',' << row.phase << ',' << (row.assumed_free ? 1 : 0) << '\n';
     }
   });
 }

@@ -115,6 +115,8 @@ def test_coverage_tour_exposes_its_photos_and_coverage(tmp_path):
     assert np.all(np.diff(photos["t_s"]) > 0.0)
     assert np.all(photos["gsd_mm_px"] <= 1.0)
     assert np.all((photos["gimbal_pitch_deg"] >= -30.0) & (photos["gimbal_pitch_deg"] <= 90.0))
+    assert isinstance(photos, ceilplan.Photos) and repr(photos) == f"Photos(photos={n}, regions=['strip'])"
+    assert isinstance(tour.coverage, ceilplan.Coverage) and repr(tour.coverage).startswith(f"Coverage(photos={n}, strip ")
     (region,) = tour.coverage["regions"]
     assert region["name"] == "strip"
     assert region["photos"] == n

@@ -11,9 +11,8 @@ namespace ceilplan {
 
 /// Runs task(i) for every i in [0, count) on `workers` threads (at least one), each taking the
 /// next index in turn. While it waits, the calling thread calls `progress` (if set) with the
-/// share of tasks done, every 100 ms. After a task throws, no new task starts; the exception of
-/// the lowest failing index is rethrown once every thread has stopped. A `progress` that throws
-/// stops the work the same way, and its exception is rethrown once every thread has stopped.
+/// share of tasks done, every 100 ms. After a task or `progress` throws, no new task starts; that
+/// exception (a task's: the lowest failing index's) is rethrown once every thread has stopped.
 /// A thread the system refuses (a limit on processes, threads or memory: ulimit -u, ulimit -v, a
 /// container's pids.max) is not an error: the threads already started share the work, and if
 /// none started the calling thread does it alone, reporting progress between tasks.

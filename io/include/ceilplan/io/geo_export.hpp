@@ -24,6 +24,10 @@ namespace ceilplan::io {
 /// Throws ceilplan::InputError for an invalid route or origin.
 nlohmann::json routesGeoJson(const std::vector<mission::SortieRoute>& routes, const mission::GeodeticOrigin& origin);
 
+/// The route's waypoints with the fields both formats give each (above, without coordinates), in
+/// the map frame: what Python's Tour.sorties carry.
+nlohmann::json routeWaypointsJson(const mission::SortieRoute& route);
+
 /// A KML document `title`: a Folder per sortie with the route as a LineString and a Placemark per
 /// waypoint (name, description, ExtendedData with the same fields as GeoJSON), and home.
 std::string routesKml(const std::vector<mission::SortieRoute>& routes, const mission::GeodeticOrigin& origin,

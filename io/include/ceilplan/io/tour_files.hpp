@@ -65,6 +65,29 @@ StopCounts stopCounts(const mission::TourResult& tour);
 /// Everything of the tour (docs/tours.md, "Outputs"), with the mission, map and vehicle named.
 nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission, const Provenance& provenance);
 
+/// Per sortie as tour.json gives it: targets, legs (from, to, charge_ah, duration_s, length_m,
+/// waypoints), take-off and landing heights, take-off time, charge, flight and turnaround times,
+/// FEC, DoD, lowest SOC, wear and the reason it ends where it does.
+nlohmann::json tourSortiesJson(const mission::TourResult& tour);
+
+/// One row of path.csv: a flown sample on the tour's clock (phase "leg" or "dwell"), or the pack's
+/// recharge after a sortie (phase "recharge": its end, the mean charge current as a negative
+/// current, the start SOC). Gaps are infinite where no surface is within reach.
+struct TourPathRow {
+  double t_s = 0.0;                                           ///< Time on the tour's clock (s).
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();       ///< Body position (m, map frame).
+  double speed_m_s = 0.0;                                     ///< Ground speed (m/s).
+  double ceiling_gap_m = 0.0;                                 ///< Gap from the rotors to the ceiling (m).
+  double current_a = 0.0;                                     ///< Pack current (A); negative while recharging.
+  double soc = 0.0;                                           ///< State of charge (fraction).
+  int sortie = 1;                                             ///< Sortie number, from 1.
+  double ground_gap_m = 0.0;                                  ///< Gap from the rotors to the ground (m).
+  const char* phase = "leg";                                  ///< "leg", "dwell" or "recharge".
+  bool assumed_free = false;                                  ///< In unknown space the policy assumed free.
+};
+/// The rows of path.csv for `tour`, in order.
+std::vector<TourPathRow> tourPathRows(const mission::TourResult& tour);
+
 /// The flight record: a provenance comment line, then
 /// t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie,ground_gap_m,phase with every sample
 /// of every sortie on the tour's clock (phase leg or dwell), and after each sortie a row for the
