@@ -191,28 +191,29 @@ def compare(expected, actual, tolerance, ignores):
     """None if the lines match, else a description of the first difference."""
     expected, actual = normalise(expected, ignores), normalise(actual, ignores)
 
+    furthest = []  # the failure that got furthest through the doc's lines is the one to show
+
+    def failed(i, j, why):
+        if not furthest or (i, j) > furthest[0][:2]:
+            furthest[:] = [(i, j, why)]
+        return False
+
     def match(i, j):
         while i < len(expected):
             if expected[i].strip() == "...":
                 if i + 1 == len(expected):
-                    return None
-                for k in range(j, len(actual) + 1):
-                    if match(i + 1, k) is None:
-                        return None
-                return (i + 1, j, "no later line matches the one after '...'")
+                    return True
+                return any(match(i + 1, k) for k in range(j, len(actual) + 1))
             if j >= len(actual):
-                return (i, j, "output ended")
+                return failed(i, j, "output ended")
             if not line_matches(expected[i], actual[j], tolerance):
-                return (i, j, None)
+                return failed(i, j, None)
             i, j = i + 1, j + 1
-        if j < len(actual):
-            return (i, j, "extra output")
-        return None
+        return j == len(actual) or failed(i, j, "extra output")
 
-    result = match(0, 0)
-    if result is None:
+    if match(0, 0):
         return None
-    i, j, why = result
+    i, j, why = furthest[0]
     want = expected[i] if i < len(expected) else "(end of the block)"
     got = actual[j] if j < len(actual) else "(end of the output)"
     return f"first difference at expected line {i + 1}{' (' + why + ')' if why else ''}:\n" \
