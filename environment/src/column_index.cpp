@@ -99,6 +99,18 @@ ColumnIndex::Boundary ColumnIndex::below(int i, int j, double z_m) const {
   return {face(run->hi), run->state};
 }
 
+ColumnIndex::Boundaries ColumnIndex::around(int i, int j, double z_m) const {
+  if (!inside(i, j)) return {{z_m, CellState::Unknown}, {z_m, CellState::Unknown}};
+  const double t = z_m * inverse_resolution_ - origin_z_;
+  const Run* run = std::partition_point(beginRuns(i, j), endRuns(i, j), [t](const Run& r) { return r.hi <= t; });
+  const Boundary up = run->lo <= t ? Boundary{z_m, run->state} : Boundary{face(run->lo), run->state};
+  // below()'s run, the last to start below t: this one when it does, else the one before,
+  // which exists because the first run starts below everything.
+  const Run* under = run->lo < t ? run : run - 1;
+  const Boundary down = under->hi >= t ? Boundary{z_m, under->state} : Boundary{face(under->hi), under->state};
+  return {up, down};
+}
+
 std::optional<CellState> ColumnIndex::firstBlocking(int i, int j, double bottom_m, double top_m,
                                                     bool unknown_blocks) const {
   if (!(bottom_m < top_m)) return std::nullopt;

@@ -109,12 +109,14 @@ bool Environment::anyColumnUnderCylinder(const Eigen::Vector3d& body_m, Visit&& 
   return false;
 }
 
-double Environment::columnGap(int i, int j, double z_m, Direction direction) const {
-  const ColumnIndex::Boundary boundary =
-      direction == Direction::Up ? columns_->above(i, j, z_m) : columns_->below(i, j, z_m);
+double Environment::surfaceGap(const ColumnIndex::Boundary& boundary, double z_m) const {
   const bool surface =
       boundary.state == CellState::Occupied || (boundary.state == CellState::Unknown && options_.unknown_is_surface);
   return surface ? std::abs(boundary.face_m - z_m) : kInfinity;
+}
+
+double Environment::columnGap(int i, int j, double z_m, Direction direction) const {
+  return surfaceGap(direction == Direction::Up ? columns_->above(i, j, z_m) : columns_->below(i, j, z_m), z_m);
 }
 
 double Environment::ceilingGapAt(const Eigen::Vector3d& point_m) const {
@@ -131,24 +133,51 @@ double Environment::groundGapAt(const Eigen::Vector3d& point_m) const {
 
 SurfaceGaps Environment::ceiling(const Eigen::Vector3d& body_m) const {
   requireInside(body_m, "ceiling gap");
-  return gaps(body_m, Direction::Up);
+  SurfaceGaps up;
+  gaps(body_m, &up, nullptr);
+  return up;
 }
 
 SurfaceGaps Environment::ground(const Eigen::Vector3d& body_m) const {
   requireInside(body_m, "ground gap");
-  return gaps(body_m, Direction::Down);
+  SurfaceGaps down;
+  gaps(body_m, nullptr, &down);
+  return down;
 }
 
-SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction) const {
+Environment::CeilingAndGround Environment::ceilingAndGround(const Eigen::Vector3d& body_m) const {
+  requireInside(body_m, "ceiling gap");
+  CeilingAndGround both;
+  gaps(body_m, &both.ceiling, &both.ground);
+  return both;
+}
+
+void Environment::gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGaps* down) const {
   const GridFrame& frame = grid().frame();
   const double radius = vehicle_.rotor_radius_m;
   const double disc_area = M_PI * radius * radius;
-  const double reach =
-      radius * (direction == Direction::Up ? options_.ceiling_reach_radii : options_.ground_reach_radii);
   const double plane_z = body_m.z() + vehicle_.rotor_plane_height_m;
-
-  SurfaceGaps result{{}, kInfinity, 0.0, kInfinity};
-  double all_covered = 0.0, all_weighted = 0.0;
+  // What one direction gathers: over the rotors, and over the columns under one rotor's disc.
+  struct Side {
+    SurfaceGaps* result = nullptr;
+    double reach = 0.0;
+    double all_covered = 0.0, all_weighted = 0.0;
+    std::array<double, kKeptGaps> kept{};
+    double lowest = kInfinity, highest = -kInfinity;
+  };
+  std::array<Side, 2> sides;
+  sides[0].result = up, sides[0].reach = radius * options_.ceiling_reach_radii;
+  sides[1].result = down, sides[1].reach = radius * options_.ground_reach_radii;
+  for (Side& side : sides)
+    if (side.result) *side.result = SurfaceGaps{{}, kInfinity, 0.0, kInfinity};
+  const auto columnGaps = [&](int i, int j) -> std::array<double, 2> {
+    if (up && down) {
+      const ColumnIndex::Boundaries around = columns_->around(i, j, plane_z);
+      return {surfaceGap(around.above, plane_z), surfaceGap(around.below, plane_z)};
+    }
+    return up ? std::array<double, 2>{columnGap(i, j, plane_z, Direction::Up), kInfinity}
+              : std::array<double, 2>{kInfinity, columnGap(i, j, plane_z, Direction::Down)};
+  };
   for (const Eigen::Vector2d& offset : vehicle_.rotor_positions_m) {
     const Eigen::Vector2d centre = body_m.head<2>() + offset;
     const int i_begin = frame.indexOf(0, centre.x() - radius), i_end = frame.indexOf(0, centre.x() + radius);
@@ -164,45 +193,58 @@ SurfaceGaps Environment::gaps(const Eigen::Vector3d& body_m, Direction direction
         }
       }
     };
-    // Each column's gap is looked up once and kept for the weighing below (on fine maps, past
+    // Each column's gaps are looked up once and kept for the weighing below (on fine maps, past
     // the first kKeptGaps columns, looked up again there).
-    std::array<double, kKeptGaps> kept;
-    double lowest = kInfinity, highest = -kInfinity;
+    for (Side& side : sides) side.lowest = kInfinity, side.highest = -kInfinity;
     forEachColumn([&](int i, int j, int n) {
-      const double gap = columnGap(i, j, plane_z, direction);
-      if (n < kKeptGaps) kept[n] = gap;
-      lowest = std::min(lowest, gap);
-      highest = std::max(highest, gap);
+      const std::array<double, 2> gap = columnGaps(i, j);
+      for (int s = 0; s < 2; ++s) {
+        if (n < kKeptGaps) sides[s].kept[n] = gap[s];
+        sides[s].lowest = std::min(sides[s].lowest, gap[s]);
+        sides[s].highest = std::max(sides[s].highest, gap[s]);
+      }
     });
     // Usually every column under the disc gives the same gap (a flat ceiling, or none): then
     // no area is needed. Otherwise weigh each column by its exact share of the disc.
-    RotorGap rotor{lowest, 0.0, kInfinity};
-    double covered = 0.0, weighted = 0.0;
-    if (lowest == highest) {
-      if (lowest <= reach) {
-        covered = disc_area;
-        weighted = disc_area * lowest;
+    std::array<double, 2> covered{0.0, 0.0}, weighted{0.0, 0.0};
+    std::array<bool, 2> weigh{false, false};
+    for (int s = 0; s < 2; ++s) {
+      if (!sides[s].result) continue;
+      if (sides[s].lowest != sides[s].highest) {
+        weigh[s] = true;
+      } else if (sides[s].lowest <= sides[s].reach) {
+        covered[s] = disc_area;
+        weighted[s] = disc_area * sides[s].lowest;
       }
-    } else {
-      forEachColumn([&](int i, int j, int n) {
-        const double gap = n < kKeptGaps ? kept[n] : columnGap(i, j, plane_z, direction);
-        if (gap > reach) return;
-        const double area = discRectangleOverlap_m2(centre, radius, {frame.faceOf(0, i), frame.faceOf(1, j)},
-                                                    {frame.faceOf(0, i + 1), frame.faceOf(1, j + 1)});
-        covered += area;
-        weighted += area * gap;
-      });
     }
-    rotor.coverage = std::min(covered / disc_area, 1.0);
-    if (covered > 0.0) rotor.mean_gap_m = weighted / covered;
-    result.nearest_gap_m = std::min(result.nearest_gap_m, rotor.nearest_gap_m);
-    result.coverage += rotor.coverage / vehicle_.rotor_positions_m.size();
-    all_covered += covered;
-    all_weighted += weighted;
-    result.rotors.push_back(rotor);
+    if (weigh[0] || weigh[1])
+      forEachColumn([&](int i, int j, int n) {
+        const std::array<double, 2> gap =
+            n < kKeptGaps ? std::array<double, 2>{sides[0].kept[n], sides[1].kept[n]} : columnGaps(i, j);
+        double area = -1.0;  // the column's share of the disc, once either side needs it
+        for (int s = 0; s < 2; ++s) {
+          if (!weigh[s] || gap[s] > sides[s].reach) continue;
+          if (area < 0.0)
+            area = discRectangleOverlap_m2(centre, radius, {frame.faceOf(0, i), frame.faceOf(1, j)},
+                                           {frame.faceOf(0, i + 1), frame.faceOf(1, j + 1)});
+          covered[s] += area;
+          weighted[s] += area * gap[s];
+        }
+      });
+    for (int s = 0; s < 2; ++s) {
+      Side& side = sides[s];
+      if (!side.result) continue;
+      RotorGap rotor{side.lowest, std::min(covered[s] / disc_area, 1.0), kInfinity};
+      if (covered[s] > 0.0) rotor.mean_gap_m = weighted[s] / covered[s];
+      side.result->nearest_gap_m = std::min(side.result->nearest_gap_m, rotor.nearest_gap_m);
+      side.result->coverage += rotor.coverage / vehicle_.rotor_positions_m.size();
+      side.all_covered += covered[s];
+      side.all_weighted += weighted[s];
+      side.result->rotors.push_back(rotor);
+    }
   }
-  if (all_covered > 0.0) result.mean_gap_m = all_weighted / all_covered;
-  return result;
+  for (Side& side : sides)
+    if (side.result && side.all_covered > 0.0) side.result->mean_gap_m = side.all_weighted / side.all_covered;
 }
 
 double Environment::clearance_m(const Eigen::Vector3d& body_m) const {

@@ -86,20 +86,9 @@ GridFrame::GridFrame(double resolution_m, const Index3& origin, const Index3& si
     throw ceilplan::InputError("voxel grid: resolution must be a positive number of metres");
 }
 
-int GridFrame::indexOf(int axis, double coordinate_m) const {
-  // OctoMap's own rule (coordToKey): floor(coordinate * (1 / resolution)).
-  const double global = std::floor(coordinate_m * inverse_resolution_);
-  const double clamped = std::clamp(global - origin_[axis], -1e9, 1e9);  // far outside stays outside, no overflow
-  return static_cast<int>(clamped);
-}
-
 Eigen::AlignedBox3d GridFrame::bounds() const {
   return Eigen::AlignedBox3d(Eigen::Vector3d(faceOf(0, 0), faceOf(1, 0), faceOf(2, 0)),
                              Eigen::Vector3d(faceOf(0, size_[0]), faceOf(1, size_[1]), faceOf(2, size_[2])));
-}
-
-bool GridFrame::contains(const Eigen::Vector3d& point_m) const {
-  return inside(indexOf(0, point_m.x()), indexOf(1, point_m.y()), indexOf(2, point_m.z()));
 }
 
 VoxelGrid::VoxelGrid(const GridFrame& frame) : frame_(frame), cells_(frame.voxelCount(), CellState::Unknown) {}

@@ -669,6 +669,22 @@ class SparseLegs {
     return pairs;
   }
 
+  // Gives the legs `pairs` (stored) their samples again where an estimate dropped them, on the
+  // tour's threads: what the split and the flight record fly.
+  void profile(Pairs pairs) {
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    Pairs bare;
+    std::vector<TourLeg*> cells;
+    for (const auto& [from, to] : pairs) {
+      TourLeg& leg = tour_.legs(from, to);
+      if (leg.evaluation.samples.empty()) bare.emplace_back(from, to), cells.push_back(&leg);
+    }
+    parallelFor(bare.size(), options_.workers, [&](std::size_t k) {
+      cells[k]->evaluation.samples = score_(bare[k].first, bare[k].second, cells[k]->waypoints).samples;
+    });
+  }
+
   // Routes the legs `which` that are estimates: over the roadmap (one search from each place
   // to the estimates out of it), or with a pairwise planner (then post-processed).
   void route(const Pairs& which) {
@@ -727,6 +743,10 @@ class SparseLegs {
     }
     leg.evaluation = score_(from, to, leg.waypoints);
     if (!leg.routed) leg.evaluation.charge_ah *= kBlockedLegFactor;
+    // The order search reads the totals only; about twenty legs are estimated per place, so
+    // their samples would hold most of a large tour's memory. profile() scores them again
+    // (the same samples) where a split needs them.
+    std::vector<planner::PathSample>().swap(leg.evaluation.samples);
     return leg;
   }
 
@@ -763,6 +783,8 @@ class SparseLegs {
     Pairs consecutive;
     for (std::size_t k = 1; k < order.size(); ++k) consecutive.emplace_back(order[k - 1], order[k]);
     estimate(consecutive);
+    profile(consecutive);
+    profile(homeLegs(order, split_points));
     TourCosts costs = tourCosts(tour_, context_);
     const auto add = [&](int from, int to) { costs.legs(from, to) = legCost(tour_.legs.at(from, to).evaluation); };
     for (const auto& [from, to] : consecutive) add(from, to);
@@ -968,6 +990,13 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
                                           std::to_string(to_refine.size()) + " legs"));
     tour.times.refining_s += clock.lap_s();
     order_start_s = processCpuS();
+  }
+
+  if (sparse) {  // the flight record flies the samples of every leg flown
+    Pairs flown;
+    for (const Sortie& sortie : tour.plan.sorties)
+      for (const SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
+    sparse->profile(flown);
   }
 
   // The independent re-check of every leg flown (the planner checked them too).

@@ -118,11 +118,12 @@ PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const
 }
 
 PointConditions FlightCostModel::exactConditionsAt(const Eigen::Vector3d& body_m) const {
-  const environment::SurfaceGaps ceiling = environment_.ceiling(body_m);
   PointConditions conditions;  // rotors and ground default to free air; the speed rule sees the ceiling
   if (options_.proximity_effects) {
-    conditions = surfaceConditions(ceiling, environment_.ground(body_m));
+    const environment::Environment::CeilingAndGround gaps = environment_.ceilingAndGround(body_m);
+    conditions = surfaceConditions(gaps.ceiling, gaps.ground);
   } else {
+    const environment::SurfaceGaps ceiling = environment_.ceiling(body_m);
     conditions.rotor_count = static_cast<int>(ceiling.rotors.size());
     conditions.nearest_ceiling_gap_m = ceiling.nearest_gap_m;
   }

@@ -11,19 +11,22 @@
 #include <ompl/base/PlannerData.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <queue>
 
 namespace ceilplan::planner {
 namespace {
 
-constexpr std::uint32_t kNoSlot = std::numeric_limits<std::uint32_t>::max();
 constexpr float kNoEdge = std::numeric_limits<float>::infinity();
+constexpr float kUncosted = -1.0f;  // no cost is negative
 constexpr int kDirections = 26;
 // Directions 13..25 point "forwards" (lexicographically after the node): each undirected edge
-// is visited once, from its first node, and costed both ways.
+// is costed from its first node, both ways at once.
 constexpr int kFirstForwardDirection = 13;
+constexpr std::uint8_t kUnchecked = 0, kInvalid = 1, kValid = 2;
 
 std::array<int, 3> neighbour(const std::array<int, 3>& at, const std::array<int, 3>& offset) {
   return {at[0] + offset[0], at[1] + offset[1], at[2] + offset[2]};
@@ -31,10 +34,83 @@ std::array<int, 3> neighbour(const std::array<int, 3>& at, const std::array<int,
 
 }  // namespace
 
+namespace detail {
+
+// The lattice with what is checked and costed of it so far, shared by the searches' threads:
+// a byte per node (unchecked, invalid, valid) and the 26 outgoing costs of each node, in chunks
+// of consecutive nodes allocated when a node in them is first costed. Every value is the same
+// whichever thread computes it, so a race only computes one twice.
+class LazyLattice {
+ public:
+  static constexpr std::size_t kChunkNodes = 256;
+
+  LazyLattice(const environment::GridFrame& frame, double spacing_m)
+      : grid(frame, spacing_m),
+        validity_(new std::atomic<std::uint8_t>[grid.nodeCount()]),
+        chunk_count_((grid.nodeCount() + kChunkNodes - 1) / kChunkNodes),
+        chunks_(new std::atomic<std::atomic<float>*>[chunk_count_]) {
+    for (std::size_t n = 0; n < grid.nodeCount(); ++n) validity_[n].store(kUnchecked, std::memory_order_relaxed);
+    for (std::size_t c = 0; c < chunk_count_; ++c) chunks_[c].store(nullptr, std::memory_order_relaxed);
+  }
+  ~LazyLattice() {
+    for (std::size_t c = 0; c < chunk_count_; ++c) delete[] chunks_[c].load(std::memory_order_relaxed);
+  }
+  LazyLattice(const LazyLattice&) = delete;
+  LazyLattice& operator=(const LazyLattice&) = delete;
+
+  std::atomic<std::uint8_t>& validity(std::size_t node) const { return validity_[node]; }
+  std::atomic<float>& cost(std::size_t node, int direction) const {
+    std::atomic<std::atomic<float>*>& slot = chunks_[node / kChunkNodes];
+    std::atomic<float>* chunk = slot.load(std::memory_order_acquire);
+    if (!chunk) {
+      std::atomic<float>* fresh = new std::atomic<float>[kChunkNodes * kDirections];
+      for (std::size_t k = 0; k < kChunkNodes * kDirections; ++k) fresh[k].store(kUncosted, std::memory_order_relaxed);
+      if (slot.compare_exchange_strong(chunk, fresh, std::memory_order_acq_rel, std::memory_order_acquire)) {
+        chunk = fresh;
+      } else {
+        delete[] fresh;  // another thread's chunk won
+      }
+    }
+    return chunk[(node % kChunkNodes) * kDirections + direction];
+  }
+  // Calls visit(cost) for every costed cell.
+  template <typename Visit>
+  void forEachCost(Visit&& visit) const {
+    for (std::size_t c = 0; c < chunk_count_; ++c)
+      if (const std::atomic<float>* chunk = chunks_[c].load(std::memory_order_acquire))
+        for (std::size_t k = 0; k < kChunkNodes * kDirections; ++k) {
+          const float value = chunk[k].load(std::memory_order_relaxed);
+          if (value != kUncosted) visit(value);
+        }
+  }
+  std::size_t validCount() const {
+    std::size_t count = 0;
+    for (std::size_t n = 0; n < grid.nodeCount(); ++n) count += validity_[n].load(std::memory_order_relaxed) == kValid;
+    return count;
+  }
+  std::size_t memoryBytes() const {
+    std::size_t chunks = 0;
+    for (std::size_t c = 0; c < chunk_count_; ++c) chunks += chunks_[c].load(std::memory_order_relaxed) != nullptr;
+    return grid.nodeCount() + chunk_count_ * sizeof(void*) + chunks * kChunkNodes * kDirections * sizeof(float);
+  }
+
+  const LatticeGrid grid;
+  const LatticeDirections directions;
+
+ private:
+  std::unique_ptr<std::atomic<std::uint8_t>[]> validity_;
+  std::size_t chunk_count_;
+  std::unique_ptr<std::atomic<std::atomic<float>*>[]> chunks_;
+};
+
+}  // namespace detail
+
 LatticeRoadmap::LatticeRoadmap(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings)
     : LatticePlannerBase(si, "roadmap", std::move(settings)) {
   specs_.multithreaded = true;
 }
+
+LatticeRoadmap::~LatticeRoadmap() = default;
 
 void LatticeRoadmap::clearQuery() {
   pis_.restart();  // not Planner::clearQuery(), which clears everything
@@ -53,9 +129,9 @@ void LatticeRoadmap::clear() {
 void LatticeRoadmap::dropGraph() {
   objective_ = nullptr;
   node_count_ = 0;
-  slot_.clear();
+  lattice_.reset();
   valid_nodes_.clear();
-  core_costs_.clear();
+  complete_ = false;
   bridge_positions_m_.clear();
   bridge_arcs_.clear();
   node_arcs_.clear();
@@ -66,89 +142,161 @@ void LatticeRoadmap::build(const FlightObjective& objective, std::vector<Eigen::
   for (const Eigen::Vector3d& place : places_m)
     if (!place.allFinite() || !rules_->environment().contains(place))
       throw ceilplan::InputError("a roadmap place lies outside the map");
-  buildGraph(objective, {});
+  startGraph(objective);
   places_m_ = std::move(places_m);
   places_ = joinPlaces(places_m_);
   place_blockages_ = connect(places_m_, places_, ompl::base::plannerNonTerminatingCondition());
   if (settings_.progress) settings_.progress(1.0);
 }
 
-bool LatticeRoadmap::buildGraph(const FlightObjective& objective, const std::function<bool()>& abandon) {
+void LatticeRoadmap::startGraph(const FlightObjective& objective) {
   dropGraph();
   rules_ = &detail::rulesOf(*si_, getName());
   const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
-  node_count_ = lattice.nodeCount();
-  if (node_count_ >= kNoSlot)
+  if (lattice.nodeCount() >= std::numeric_limits<std::uint32_t>::max())
     throw ceilplan::InputError("the map has too many lattice nodes for a " + formatNumber(lattice.spacing_m()) +
                                " m spacing: raise the spacing");
-  // Shares of the build time, roughly as on the shipped bridge: nodes 10 %, edges 80 %, places 10 %.
+  lattice_ = std::make_unique<detail::LazyLattice>(rules_->environment().grid().frame(), settings_.spacing_m);
+  node_count_ = lattice.nodeCount();
+  objective_ = &objective;
+}
+
+void LatticeRoadmap::completeGraph() {
+  if (!built()) throw ceilplan::Error("the roadmap is not built: call build() first");
+  checkEverything({});
+}
+
+bool LatticeRoadmap::checkEverything(const std::function<bool()>& abandon) {
+  if (complete_) return true;
+  // Shares of the time, roughly as on the shipped bridge: nodes 10 %, edges 90 %.
   std::atomic<bool> stop{false};
   const auto report = [&](double share) {
     if (settings_.progress) settings_.progress(share);
     if (abandon && abandon()) stop = true;
   };
-
-  std::vector<char> valid(node_count_, 0);
   parallelFor(
       node_count_, settings_.workers,
       [&](std::size_t id) {
-        if (!stop) valid[id] = rules_->isStateValid(lattice.position(id));
+        if (!stop) nodeValid(static_cast<std::uint32_t>(id));
       },
       [&](double share) { report(0.1 * share); });
-  report(0.1);
-  if (stop) {
-    dropGraph();
-    return false;
-  }
-  slot_.assign(node_count_, kNoSlot);
+  if (stop) return false;
+  std::vector<std::uint32_t> valid;
   for (std::size_t id = 0; id < node_count_; ++id)
-    if (valid[id]) {
-      slot_[id] = static_cast<std::uint32_t>(valid_nodes_.size());
-      valid_nodes_.push_back(static_cast<std::uint32_t>(id));
-    }
-
-  const detail::LatticeDirections directions;
-  const FlightCostModel& model = objective.model();
-  core_costs_.assign(valid_nodes_.size() * kDirections, kNoEdge);
-  // Each (node, direction) cell is written by the one task that owns its edge's first node.
+    if (nodeValid(static_cast<std::uint32_t>(id))) valid.push_back(static_cast<std::uint32_t>(id));
   parallelFor(
-      valid_nodes_.size(), settings_.workers,
+      valid.size(), settings_.workers,
       [&](std::size_t row) {
         if (stop) return;
-        const std::uint32_t id = valid_nodes_[row];
-        const std::array<int, 3> at = lattice.indices(id);
-        const Eigen::Vector3d here = lattice.position(id);
-        for (int d = kFirstForwardDirection; d < kDirections; ++d) {
-          const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
-          if (!lattice.inside(to[0], to[1], to[2])) continue;
-          const std::uint32_t other = slot_[lattice.id(to[0], to[1], to[2])];
-          if (other == kNoSlot) continue;
-          const Eigen::Vector3d there = lattice.position(to[0], to[1], to[2]);
-          if (!rules_->isMotionValid(here, there)) continue;
-          const auto [forth, back] = model.integrateBothWays(
-              here, there, [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
-          core_costs_[row * kDirections + d] = static_cast<float>(objective.weights().of(forth));
-          core_costs_[static_cast<std::size_t>(other) * kDirections + directions.opposite[d]] =
-              static_cast<float>(objective.weights().of(back));
-        }
+        for (int d = kFirstForwardDirection; d < kDirections; ++d) edgeCost(valid[row], d);
       },
-      [&](double share) { report(0.1 + 0.8 * share); });
-  if (stop) {
-    dropGraph();
-    return false;
-  }
-  objective_ = &objective;
-  report(0.9);
+      [&](double share) { report(0.1 + 0.9 * share); });
+  if (stop) return false;
+  valid_nodes_ = std::move(valid);
+  complete_ = true;
   return true;
 }
 
-float LatticeRoadmap::coreCost(std::uint32_t node, int direction) const {
-  const std::uint32_t row = slot_[node];
-  return row == kNoSlot ? kNoEdge : core_costs_[static_cast<std::size_t>(row) * kDirections + direction];
+bool LatticeRoadmap::nodeValid(std::uint32_t node) const {
+  std::atomic<std::uint8_t>& cell = lattice_->validity(node);
+  std::uint8_t state = cell.load(std::memory_order_relaxed);
+  if (state == kUnchecked) {
+    state = rules_->isStateValid(lattice_->grid.position(node)) ? kValid : kInvalid;
+    cell.store(state, std::memory_order_relaxed);
+  }
+  return state == kValid;
+}
+
+float LatticeRoadmap::edgeCost(std::uint32_t node, int direction) const {
+  if (!nodeValid(node)) return kNoEdge;
+  const std::atomic<float>& cell = lattice_->cost(node, direction);
+  float cost = cell.load(std::memory_order_relaxed);
+  if (cost == kUncosted) {
+    costEdgesOf(node);
+    cost = cell.load(std::memory_order_relaxed);
+  }
+  return cost;
+}
+
+void LatticeRoadmap::costEdgesOf(std::uint32_t node) const {
+  const detail::LatticeGrid& lattice = lattice_->grid;
+  const detail::LatticeDirections& directions = lattice_->directions;
+  const FlightCostModel& model = objective_->model();
+  // The node ends all 26 edges: its conditions are found once.
+  const Eigen::Vector3d node_m = lattice.position(node);
+  const PointConditions at_node = model.conditionsAt(node_m);
+  const auto conditions = [&](const Eigen::Vector3d& p) { return p == node_m ? at_node : model.conditionsAt(p); };
+  const std::array<int, 3> at = lattice.indices(node);
+  for (int direction = 0; direction < kDirections; ++direction) {
+    std::atomic<float>& cell = lattice_->cost(node, direction);
+    if (cell.load(std::memory_order_relaxed) != kUncosted) continue;
+    const std::array<int, 3> to = neighbour(at, directions.offsets[direction]);
+    const auto other = lattice.inside(to[0], to[1], to[2]) ? static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]))
+                                                           : std::numeric_limits<std::uint32_t>::max();
+    if (other == std::numeric_limits<std::uint32_t>::max() || !nodeValid(other)) {
+      cell.store(kNoEdge, std::memory_order_relaxed);
+      continue;
+    }
+    // Costed from the edge's first node, as checking every edge at once does, so the values are
+    // the same to the bit however the lattice is explored.
+    const bool forward = direction >= kFirstForwardDirection;
+    const std::uint32_t first = forward ? node : other, second = forward ? other : node;
+    const int first_direction = forward ? direction : directions.opposite[direction];
+    const Eigen::Vector3d here = lattice.position(first), there = lattice.position(second);
+    float forth = kNoEdge, back = kNoEdge;
+    if (rules_->isMotionValid(here, there)) {
+      const auto [forth_totals, back_totals] = model.integrateBothWays(here, there, conditions);
+      forth = static_cast<float>(objective_->weights().of(forth_totals));
+      back = static_cast<float>(objective_->weights().of(back_totals));
+    }
+    lattice_->cost(first, first_direction).store(forth, std::memory_order_relaxed);
+    lattice_->cost(second, directions.opposite[first_direction]).store(back, std::memory_order_relaxed);
+  }
+}
+
+bool LatticeRoadmap::placesJoined(const std::vector<Place>& places) const {
+  if (places.empty()) return true;
+  for (const Place& place : places)
+    if (place.out.empty()) return false;
+  const detail::LatticeGrid& lattice = lattice_->grid;
+  // Nodes known to lie in place 0's part; from each other place, a walk towards it (nearest to
+  // place 0's join first) over the edges it costs on the way, until it meets that part.
+  std::vector<char> joined(node_count_, 0), seen(node_count_, 0);
+  const std::uint32_t home = places.front().out.front().state;
+  const Eigen::Vector3d home_m = lattice.position(home);
+  joined[home] = 1;
+  using Entry = std::pair<double, std::uint32_t>;
+  for (std::size_t p = 1; p < places.size(); ++p) {
+    const std::uint32_t start = places[p].out.front().state;
+    if (joined[start]) continue;
+    std::vector<std::uint32_t> walked{start};
+    seen[start] = 1;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+    open.emplace(0.0, start);
+    bool met = false;
+    while (!open.empty() && !met) {
+      const std::uint32_t node = open.top().second;
+      open.pop();
+      const std::array<int, 3> at = lattice.indices(node);
+      for (int d = 0; d < kDirections && !met; ++d) {
+        if (edgeCost(node, d) == kNoEdge) continue;
+        const std::array<int, 3> to = neighbour(at, lattice_->directions.offsets[d]);
+        const auto next = static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]));
+        if (joined[next]) met = true;
+        if (seen[next]) continue;
+        seen[next] = 1;
+        walked.push_back(next);
+        open.emplace((lattice.position(next) - home_m).squaredNorm(), next);
+      }
+    }
+    if (!met) return false;
+    for (const std::uint32_t node : walked) joined[node] = 1;
+  }
+  return true;
 }
 
 std::vector<LatticeRoadmap::Place> LatticeRoadmap::joinPlaces(const std::vector<Eigen::Vector3d>& places_m) const {
-  const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
+  const detail::LatticeGrid& lattice = lattice_->grid;
   const FlightCostModel& model = objective_->model();
   const auto conditions = [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
   const auto cost = [&](const MotionTotals& totals) { return objective_->weights().of(totals); };
@@ -157,7 +305,7 @@ std::vector<LatticeRoadmap::Place> LatticeRoadmap::joinPlaces(const std::vector<
     const Eigen::Vector3d& centre = places_m[index];
     lattice.forEachNodeNear(centre, [&](std::size_t id) {
       const Eigen::Vector3d p = lattice.position(id);
-      if (slot_[id] == kNoSlot || !rules_->isMotionValid(centre, p)) return;
+      if (!nodeValid(static_cast<std::uint32_t>(id)) || !rules_->isMotionValid(centre, p)) return;
       const auto totals = model.integrateBothWays(centre, p, conditions);
       places[index].out.push_back({static_cast<std::uint32_t>(id), cost(totals.first)});
       places[index].in.push_back({static_cast<std::uint32_t>(id), cost(totals.second)});
@@ -173,8 +321,7 @@ std::uint32_t LatticeRoadmap::addVertex(const Eigen::Vector3d& position_m) {
 }
 
 Eigen::Vector3d LatticeRoadmap::statePosition(std::uint32_t state) const {
-  if (state < node_count_)
-    return detail::LatticeGrid(rules_->environment().grid().frame(), settings_.spacing_m).position(state);
+  if (state < node_count_) return lattice_->grid.position(state);
   return bridge_positions_m_[state - node_count_];
 }
 
@@ -215,10 +362,14 @@ void LatticeRoadmap::addBridge(const std::vector<Eigen::Vector3d>& waypoints, st
 std::vector<std::optional<Blockage>> LatticeRoadmap::connect(const std::vector<Eigen::Vector3d>& places_m,
                                                              std::vector<Place>& places,
                                                              const ompl::base::PlannerTerminationCondition& ptc) {
-  const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
-  const detail::LatticeDirections directions;
   const std::size_t place_count = places_m.size();
   std::vector<std::optional<Blockage>> blockages(place_count);
+  // Usually one part of the lattice holds every place: nothing to refine, and no need to check
+  // the rest of the map. Otherwise the partition below needs every node and edge.
+  if (node_arcs_.empty() && bridge_positions_m_.empty() && placesJoined(places)) return blockages;
+  if (!checkEverything([&ptc] { return ptc(); })) return blockages;
+  const detail::LatticeGrid& lattice = lattice_->grid;
+  const detail::LatticeDirections& directions = lattice_->directions;
   // Parts of the roadmap: lattice nodes, refinement's vertices, then the places.
   std::vector<std::uint32_t> parent;
   const auto root = [&parent](std::uint32_t x) {
@@ -235,7 +386,7 @@ std::vector<std::optional<Blockage>> LatticeRoadmap::connect(const std::vector<E
     for (const std::uint32_t node : valid_nodes_) {
       const std::array<int, 3> at = lattice.indices(node);
       for (int d = kFirstForwardDirection; d < kDirections; ++d)
-        if (coreCost(node, d) != kNoEdge) {
+        if (edgeCost(node, d) != kNoEdge) {
           const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
           unite(node, static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2])));
         }
@@ -254,7 +405,7 @@ std::vector<std::optional<Blockage>> LatticeRoadmap::connect(const std::vector<E
   std::vector<std::uint32_t> rim;
   for (const std::uint32_t node : valid_nodes_) {
     int edges = 0;
-    for (int d = 0; d < kDirections; ++d) edges += coreCost(node, d) != kNoEdge;
+    for (int d = 0; d < kDirections; ++d) edges += edgeCost(node, d) != kNoEdge;
     if (edges < kDirections) rim.push_back(node);
   }
 
@@ -316,14 +467,16 @@ std::optional<Blockage> LatticeRoadmap::blockage(int from, int to) const {
   return place_blockages_[from] ? place_blockages_[from] : place_blockages_[to];
 }
 
+std::size_t LatticeRoadmap::validNodeCount() const { return lattice_ ? lattice_->validCount() : 0; }
+
 std::size_t LatticeRoadmap::edgeCount() const {
-  return static_cast<std::size_t>(
-      std::count_if(core_costs_.begin(), core_costs_.end(), [](float c) { return c != kNoEdge; }));
+  std::size_t edges = 0;
+  if (lattice_) lattice_->forEachCost([&edges](float cost) { edges += cost != kNoEdge; });
+  return edges;
 }
 
 std::size_t LatticeRoadmap::memoryBytes() const {
-  std::size_t bytes = slot_.size() * sizeof(std::uint32_t) + valid_nodes_.size() * sizeof(std::uint32_t) +
-                      core_costs_.size() * sizeof(float);
+  std::size_t bytes = (lattice_ ? lattice_->memoryBytes() : 0) + valid_nodes_.size() * sizeof(std::uint32_t);
   for (const Place& place : places_) bytes += (place.out.size() + place.in.size()) * sizeof(Join);
   bytes += bridge_positions_m_.size() * sizeof(Eigen::Vector3d) + node_arcs_.size() * sizeof(node_arcs_[0]);
   for (const std::vector<Arc>& arcs : bridge_arcs_) bytes += arcs.size() * sizeof(Arc);
@@ -360,8 +513,8 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
   if (targets.empty())
     for (int goal = 0; goal < places; ++goal)
       if (goal != from) targets.push_back(goal);
-  const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
-  const detail::LatticeDirections directions;
+  const detail::LatticeGrid& lattice = lattice_->grid;
+  const detail::LatticeDirections& directions = lattice_->directions;
 
   // States: lattice nodes, refinement's vertices, then the places themselves.
   const std::size_t place_offset = node_count_ + bridge_positions_m_.size();
@@ -445,7 +598,7 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     for (int d = 0; d < kDirections; ++d) {
       const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
       if (!lattice.inside(to[0], to[1], to[2])) continue;
-      const float c = coreCost(node, d);
+      const float c = edgeCost(node, d);
       if (c != kNoEdge) relax(lattice.id(to[0], to[1], to[2]), state, g + c);
     }
     if (!node_arcs_.empty()) {
@@ -484,7 +637,7 @@ ompl::base::PlannerStatus LatticeRoadmap::solve(const ompl::base::PlannerTermina
   const std::optional<detail::LatticeQuery> query = detail::readQuery(*pdef_, failure);
   if (!query) return failure;
   if (objective_ != &objective) {
-    if (!buildGraph(objective, [&ptc] { return ptc(); })) return ompl::base::PlannerStatus::TIMEOUT;
+    startGraph(objective);
     places_ = joinPlaces(places_m_);
   }
   blockage_.reset();

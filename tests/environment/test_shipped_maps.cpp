@@ -97,5 +97,58 @@ TEST(Scenes, TheBridgeDeckUndersideIsSixMetresUpAndTheOpenSceneHasNoCeiling) {
   EXPECT_EQ(ColumnIndex(open).above(i, j, 3.0).state, CellState::Unknown);
 }
 
+void expectSameGaps(const SurfaceGaps& together, const SurfaceGaps& alone, const Eigen::Vector3d& at) {
+  ASSERT_EQ(together.rotors.size(), alone.rotors.size());
+  for (std::size_t r = 0; r < alone.rotors.size(); ++r) {
+    EXPECT_EQ(together.rotors[r].nearest_gap_m, alone.rotors[r].nearest_gap_m) << at.transpose();
+    EXPECT_EQ(together.rotors[r].coverage, alone.rotors[r].coverage) << at.transpose();
+    EXPECT_EQ(together.rotors[r].mean_gap_m, alone.rotors[r].mean_gap_m) << at.transpose();
+  }
+  EXPECT_EQ(together.nearest_gap_m, alone.nearest_gap_m) << at.transpose();
+  EXPECT_EQ(together.coverage, alone.coverage) << at.transpose();
+  EXPECT_EQ(together.mean_gap_m, alone.mean_gap_m) << at.transpose();
+}
+
+// The cost model asks for both gaps at every sample: one search of each column for the two
+// gives what each query alone gives, to the bit, under the deck, its girders and cross-frames,
+// beside the piers, at voxel faces and with unknown space counted as a surface or not.
+TEST(Scenes, TheCeilingAndGroundLookedUpTogetherAreEachLookedUpAlone) {
+  const OccupancyMap map = OccupancyMap::load(kMaps / "bridge.bt");
+  const VehicleGeometry vehicle = io::readVehicle(kMaps / "vehicles/quad.yaml").geometry;
+  const Environment environment(map, vehicle);
+  EnvironmentOptions unknown_surface;
+  unknown_surface.unknown_is_surface = true;
+  const Environment counting_unknown(environment.index(), vehicle, unknown_surface);
+  const ColumnIndex& columns = environment.columns();
+  const GridFrame& frame = environment.grid().frame();
+  const double resolution = frame.resolution_m();
+  int compared = 0, partly_covered = 0;
+  for (double x = -1.97; x < 50.0; x += 0.61)
+    for (double y = -4.93; y < 5.0; y += 0.37)
+      for (double z = 0.3; z < 7.5; z += 0.29) {
+        const Eigen::Vector3d at(x, y, z);
+        if (!environment.contains(at)) continue;
+        for (const Environment* env : {&environment, &counting_unknown}) {
+          const Environment::CeilingAndGround both = env->ceilingAndGround(at);
+          expectSameGaps(both.ceiling, env->ceiling(at), at);
+          expectSameGaps(both.ground, env->ground(at), at);
+          partly_covered += both.ceiling.coverage > 0.0 && both.ceiling.coverage < 1.0;
+        }
+        // Also on a voxel face, where above() and below() treat the boundary differently.
+        const int i = frame.indexOf(0, x), j = frame.indexOf(1, y);
+        for (const double height : {z, std::round(z / resolution) * resolution}) {
+          const ColumnIndex::Boundaries around = columns.around(i, j, height);
+          const ColumnIndex::Boundary above = columns.above(i, j, height), below = columns.below(i, j, height);
+          EXPECT_EQ(around.above.face_m, above.face_m);
+          EXPECT_EQ(around.above.state, above.state);
+          EXPECT_EQ(around.below.face_m, below.face_m);
+          EXPECT_EQ(around.below.state, below.state);
+        }
+        ++compared;
+      }
+  EXPECT_GT(compared, 10000);
+  EXPECT_GT(partly_covered, 100);  // discs over an edge, where each column is weighed
+}
+
 }  // namespace
 }  // namespace ceilplan::environment

@@ -17,7 +17,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace ceilplan::testing {
@@ -120,6 +122,41 @@ TEST(LatticeRoadmap, IsTheSameBuiltOnOneThreadOrThree) {
       EXPECT_EQ(routes_a[to]->waypoints, routes_b[to]->waypoints);
     }
   }
+}
+
+// A 24 m hall with a beam under its ceiling every 2 m and places in its first 6 m. The roadmap
+// checks and costs the lattice where its searches go, on any number of threads at once, and
+// its routes are those of the lattice checked everywhere, to the bit.
+TEST(LatticeRoadmap, ChecksTheLatticeWhereItsSearchesGoAndRoutesAsTheWholeLatticeDoes) {
+  const CeilingScene hall(analyticMap({-0.7, -2.7, 0}, {24.7, 2.7, 3.0}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || c.z() > 2.6 || std::abs(c.y()) > 2.5 || c.x() < -0.5 || c.x() > 24.5) return CellState::Occupied;
+    if (std::fmod(c.x() + 10.0, 2.0) < 0.2 && c.z() > 2.2) return CellState::Occupied;
+    return CellState::Free;
+  }));
+  const std::vector<Eigen::Vector3d> places{
+      {1.1, -1.0, 2.5}, {5.1, 1.0, 2.5}, {3.1, 0.0, 1.0}, {1.1, 1.5, 0.8}, {3.1, -2.0, 2.5}};
+  planner::LatticeRoadmap lazy(hall.planner.spaceInformation(), spacing(0.4, 2));
+  planner::LatticeRoadmap whole(hall.planner.spaceInformation(), spacing(0.4, 2));
+  lazy.build(hall.planner.objective(), places);
+  whole.build(hall.planner.objective(), places);
+  whole.completeGraph();
+  const std::size_t edges_built = lazy.edgeCount();
+  std::vector<std::vector<std::optional<planner::RoadmapRoute>>> routes(places.size());
+  parallelFor(places.size(), 3, [&](std::size_t from) { routes[from] = lazy.routesFrom(static_cast<int>(from)); });
+  for (int from = 0; from < static_cast<int>(places.size()); ++from) {
+    const auto expected = whole.routesFrom(from);
+    for (int to = 0; to < static_cast<int>(places.size()); ++to) {
+      ASSERT_EQ(routes[from][to].has_value(), to != from) << from << " -> " << to;
+      if (to == from) continue;
+      EXPECT_EQ(routes[from][to]->cost, expected[to]->cost) << from << " -> " << to;
+      EXPECT_EQ(routes[from][to]->waypoints, expected[to]->waypoints) << from << " -> " << to;
+    }
+  }
+  // Built: the walk joining the places; searched: the neighbourhood of the places' routes.
+  EXPECT_LT(edges_built, lazy.edgeCount());
+  EXPECT_LT(lazy.edgeCount(), whole.edgeCount() / 2);
+  EXPECT_LT(lazy.validNodeCount(), whole.validNodeCount());
+  EXPECT_LT(lazy.memoryBytes(), whole.memoryBytes());
 }
 
 TEST(LatticeRoadmap, SaysNothingOfAPlaceBehindAWall) {

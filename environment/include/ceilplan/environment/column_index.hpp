@@ -47,6 +47,12 @@ class ColumnIndex {
   Boundary above(int i, int j, double z_m) const;
   /// Going down from z_m (see Boundary).
   Boundary below(int i, int j, double z_m) const;
+  /// Both, from one search of the column: the same as above() and below().
+  struct Boundaries {
+    Boundary above;
+    Boundary below;
+  };
+  Boundaries around(int i, int j, double z_m) const;
 
   /// The state of the lowest voxel of column (i, j) that overlaps the open height interval
   /// (bottom_m, top_m) (touching faces do not count) and blocks: occupied, or unknown when

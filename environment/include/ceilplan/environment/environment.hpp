@@ -136,6 +136,13 @@ class Environment {
   SurfaceGaps ceiling(const Eigen::Vector3d& body_m) const;
   /// The same below every rotor disc (ground effect).
   SurfaceGaps ground(const Eigen::Vector3d& body_m) const;
+  /// Both, each column under a disc looked up once for the two (what the cost model asks at
+  /// every sample): the same as ceiling() and ground().
+  struct CeilingAndGround {
+    SurfaceGaps ceiling;
+    SurfaceGaps ground;
+  };
+  CeilingAndGround ceilingAndGround(const Eigen::Vector3d& body_m) const;
 
   /// Distance from the body centre to the nearest occupied (or, by policy, unknown) voxel
   /// surface; 0 inside one, +inf if there is none. Throws ceilplan::InputError outside the map.
@@ -183,8 +190,10 @@ class Environment {
 
  private:
   enum class Direction { Up, Down };
-  SurfaceGaps gaps(const Eigen::Vector3d& body_m, Direction direction) const;
+  /// The gaps above into `up` and below into `down`, where given.
+  void gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGaps* down) const;
   double columnGap(int i, int j, double z_m, Direction direction) const;
+  double surfaceGap(const ColumnIndex::Boundary& boundary, double z_m) const;
   void requireInside(const Eigen::Vector3d& point_m, const char* query) const;
   std::optional<Violation> exactCylinderViolation(const Eigen::Vector3d& body_m) const;
   /// Calls `visit(i, j)` for every column the inflated cylinder at `body_m` overlaps by more

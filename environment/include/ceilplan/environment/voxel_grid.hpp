@@ -11,7 +11,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -45,8 +47,14 @@ class GridFrame {
   /// Voxels in the grid.
   std::size_t voxelCount() const { return static_cast<std::size_t>(size_[0]) * size_[1] * size_[2]; }
 
-  /// Voxel index along `axis` holding `coordinate_m` (may lie outside [0, size)).
-  int indexOf(int axis, double coordinate_m) const;
+  /// Voxel index along `axis` holding `coordinate_m` (may lie outside [0, size)). Inline: every
+  /// gap and validity query asks it for each column it reads.
+  int indexOf(int axis, double coordinate_m) const {
+    // OctoMap's own rule (coordToKey): floor(coordinate * (1 / resolution)).
+    const double global = std::floor(coordinate_m * inverse_resolution_);
+    const double clamped = std::clamp(global - origin_[axis], -1e9, 1e9);  // far outside stays outside, no overflow
+    return static_cast<int>(clamped);
+  }
   /// Coordinate of the lower face of voxel `index` along `axis` (the upper face is index + 1).
   double faceOf(int axis, int index) const { return (origin_[axis] + index) * resolution_m_; }
   /// Coordinate of the centre of voxel `index` along `axis`.
@@ -66,8 +74,9 @@ class GridFrame {
 
   /// The grid's extent in metres (voxel faces).
   Eigen::AlignedBox3d bounds() const;
-  /// Whether `point_m` lies in the grid's extent.
-  bool contains(const Eigen::Vector3d& point_m) const;
+  bool contains(const Eigen::Vector3d& point_m) const {
+    return inside(indexOf(0, point_m.x()), indexOf(1, point_m.y()), indexOf(2, point_m.z()));
+  }
 
  private:
   double resolution_m_;

@@ -1,8 +1,10 @@
 #pragma once
 /// @file
 /// One roadmap for many queries, as an OMPL planner ("roadmap"): the lattice of LatticePlanner
-/// (LatticeSettings::spacing_m apart, 26-connected) with every node and edge checked and costed
-/// once, both directions of an edge from one pass over its samples, on several threads. Like
+/// (LatticeSettings::spacing_m apart, 26-connected) with each node and edge checked and costed
+/// once, when a search first needs it (both directions of an edge from one pass over its
+/// samples), so the cost follows the searches, not the map; the routes are the same as on the
+/// lattice checked everywhere (completeGraph). Like
 /// PRM it is multi-query: solve() builds it on first use for the problem's objective, and
 /// clearQuery() forgets the query but keeps the roadmap. A tour builds it for a fixed set of
 /// places instead (build) and searches once per place (routesFrom: one Dijkstra search gives
@@ -22,10 +24,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 namespace ceilplan::planner {
+namespace detail {
+class LazyLattice;
+}
 
 /// A route through the roadmap between two places.
 struct RoadmapRoute {
@@ -40,12 +46,18 @@ class LatticeRoadmap : public LatticePlannerBase {
   /// The space's validity checker must be a FlightStateValidityChecker. Throws
   /// ceilplan::InputError for bad settings.
   explicit LatticeRoadmap(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings = {});
+  ~LatticeRoadmap() override;
 
   /// Builds the roadmap for `objective` (which must outlive it), joins `places_m` to it and
   /// refines it until they are joined where the map allows, reporting progress through
-  /// LatticeSettings::progress. Throws ceilplan::InputError for a place outside the map, or a
-  /// map with too many lattice nodes for the spacing.
+  /// LatticeSettings::progress. Checks only the lattice between the places unless they lie in
+  /// parts of it that no lattice edge joins (then every node and edge, which the refinement
+  /// needs). Throws ceilplan::InputError for a place outside the map, or a map with too many
+  /// lattice nodes for the spacing.
   void build(const FlightObjective& objective, std::vector<Eigen::Vector3d> places_m);
+  /// Checks and costs every node and edge now, on LatticeSettings::workers threads: the routes
+  /// stay the same, later searches find every edge costed.
+  void completeGraph();
 
   /// The cheapest roadmap route from place `from` to every place; entry `from`, and places the
   /// roadmap does not join, stay empty. Safe to call from several threads at once.
@@ -74,9 +86,8 @@ class LatticeRoadmap : public LatticePlannerBase {
   const std::vector<Eigen::Vector3d>& places() const { return places_m_; }
   /// Lattice nodes over the map.
   std::size_t nodeCount() const { return node_count_; }
-  /// Lattice nodes that are valid states.
-  std::size_t validNodeCount() const { return valid_nodes_.size(); }
-  std::size_t edgeCount() const;                                                ///< directed lattice edges
+  std::size_t validNodeCount() const;  ///< lattice nodes checked so far and valid
+  std::size_t edgeCount() const;       ///< directed lattice edges costed so far
   std::size_t bridgeVertexCount() const { return bridge_positions_m_.size(); }  ///< added by refinement
   /// Memory held, bytes.
   std::size_t memoryBytes() const;
@@ -99,9 +110,19 @@ class LatticeRoadmap : public LatticePlannerBase {
     float cost;
   };
 
-  /// Checks and costs every node and edge; false when `abandon` stopped it (nothing kept).
-  bool buildGraph(const FlightObjective& objective, const std::function<bool()>& abandon);
+  /// Starts the lattice for `objective`, nothing checked yet.
+  void startGraph(const FlightObjective& objective);
+  /// Every node and edge; false when `abandon` stopped it (what was checked stays).
+  bool checkEverything(const std::function<bool()>& abandon);
   void dropGraph();
+  /// Checked on first use, from any thread: a node's validity, the cost of the edge out of
+  /// `node` in `direction` (+inf where there is none).
+  bool nodeValid(std::uint32_t node) const;
+  float edgeCost(std::uint32_t node, int direction) const;
+  void costEdgesOf(std::uint32_t node) const;  ///< every edge of a valid node not costed yet
+  /// Whether each place's first join lies in the part of the lattice place 0's first join lies
+  /// in: what the refinement's partition finds before it adds anything.
+  bool placesJoined(const std::vector<Place>& places) const;
   std::vector<Place> joinPlaces(const std::vector<Eigen::Vector3d>& places_m) const;
   /// Refines until every place is joined to the others where the map allows; the blockage of
   /// each place left apart (nothing for the others).
@@ -112,7 +133,6 @@ class LatticeRoadmap : public LatticePlannerBase {
                  std::optional<std::uint32_t> to_state, Place* from_place, Place* to_place);
   std::uint32_t addVertex(const Eigen::Vector3d& position_m);
   Eigen::Vector3d statePosition(std::uint32_t state) const;
-  float coreCost(std::uint32_t node, int direction) const;
   /// From place `from` to `goals` (every other place when empty).
   std::vector<std::optional<RoadmapRoute>> search(const std::vector<Eigen::Vector3d>& places_m,
                                                   const std::vector<Place>& places, int from,
@@ -123,9 +143,9 @@ class LatticeRoadmap : public LatticePlannerBase {
   const SafetyRules* rules_ = nullptr;          ///< behind the space's validity checker
   const FlightObjective* objective_ = nullptr;  ///< the roadmap's costs; null until built
   std::size_t node_count_ = 0;
-  std::vector<std::uint32_t> slot_;                       ///< lattice node -> row of core_costs_, or kNoSlot
-  std::vector<std::uint32_t> valid_nodes_;                ///< rows of core_costs_ -> lattice node
-  std::vector<float> core_costs_;                         ///< 26 per valid node, +inf where no valid edge
+  std::unique_ptr<detail::LazyLattice> lattice_;          ///< what is checked and costed so far
+  std::vector<std::uint32_t> valid_nodes_;                ///< every valid node, once checkEverything ran
+  bool complete_ = false;                                 ///< checkEverything ran
   std::vector<Eigen::Vector3d> bridge_positions_m_;       ///< vertices refinement added
   std::vector<std::vector<Arc>> bridge_arcs_;             ///< out of each of them
   std::vector<std::pair<std::uint32_t, Arc>> node_arcs_;  ///< out of lattice nodes, sorted by node
