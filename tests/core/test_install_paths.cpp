@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 // An install's skeleton under a scratch prefix: the data directory that marks it, and an empty bin/.
 fs::path fakeInstall(const std::string& name) {
-  const fs::path prefix = scratchDirectory(name) / "prefix";
+  fs::path prefix = scratchDirectory(name) / "prefix";
   fs::create_directories(prefix / "share/ceilplan/maps");
   fs::create_directories(prefix / "bin");
   return prefix;
