@@ -49,7 +49,9 @@ done
 completion=$root/usr/share/bash-completion/completions/ceilplan
 # shellcheck source=/dev/null
 source "$completion"
-COMP_WORDS=(ceilplan tour --mo) COMP_CWORD=2 _ceilplan
+COMP_WORDS=(ceilplan tour --mo)
+COMP_CWORD=2
+_ceilplan
 [[ ${COMPREPLY[*]} == "--mode" ]] || fail "completion of 'ceilplan tour --mo': ${COMPREPLY[*]}"
 for file in README.md CHANGELOG.md LICENSE docs/tours.md docs/figures/duty_fec_month.png; do
   test -f "$root/usr/share/doc/ceilplan/$file" || fail "no /usr/share/doc/ceilplan/$file"
