@@ -5,6 +5,7 @@
 #include "command_registry.hpp"
 #include "planning_flags.hpp"
 
+#include "ceilplan/core/install_paths.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/plan_files.hpp"
 #include "ceilplan/io/unknown_space_report.hpp"
@@ -39,8 +40,8 @@ void runCompare(const CompareArguments& a) {
   io::writeRouteComparison(out.path(), comparison, a.duty, *context, a.search.plannerName(), a.search.seed,
                            planningProvenance(a.planning, a.search.seed));
   out.commit();
-  print("\nwrote " + a.out +
-        "/{compare.json, ceiling/, free/, map_top.csv, map_side.csv}; figures: scripts/plot-compare " + a.out + "\n");
+  print("\nwrote " + a.out + "/{compare.json, ceiling/, free/, map_top.csv, map_side.csv}; figures: " +
+        plotCommand("plot-compare") + " " + a.out + "\n");
 }
 
 const CommandRegistration registration(42, [](CLI::App& parent) {

@@ -6,6 +6,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/install_paths.hpp"
 #include "ceilplan/io/map_import.hpp"
 #include "ceilplan/io/mesh_file.hpp"
 #include "ceilplan/io/output_set.hpp"
@@ -70,7 +71,7 @@ void runImport(const ImportArguments& args) {
 const CommandRegistration registration(19, [](CLI::App& parent) {
   auto args = std::make_shared<ImportArguments>();
   CLI::App* command = parent.add_subcommand(
-      "import", "Build an OctoMap (.bt) from a point cloud or a mesh of your structure (docs/import.md)");
+      "import", "Build an OctoMap (.bt) from a point cloud or a mesh of your structure (" + docPage("import.md") + ")");
   CLI::Option_group* input = command->add_option_group("input", "What to import: one of");
   CLI::Option* points = input->add_option("--points", args->points, "Point cloud: " + io::pointCloudExtensions());
   input->add_option("--mesh", args->mesh, "Triangle mesh: " + io::meshExtensions());

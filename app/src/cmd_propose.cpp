@@ -8,6 +8,7 @@
 #include "planning_flags.hpp"
 
 #include "ceilplan/core/error.hpp"
+#include "ceilplan/core/install_paths.hpp"
 #include "ceilplan/io/point_text.hpp"
 #include "ceilplan/io/proposal_files.hpp"
 #include "ceilplan/mission/mission_proposal.hpp"
@@ -52,8 +53,8 @@ void runPropose(ProposeArguments a) {
 const CommandRegistration registration(23, [](CLI::App& parent) {
   auto a = std::make_shared<ProposeArguments>();
   CLI::App* command = parent.add_subcommand(
-      "propose",
-      "Propose a coverage mission from a map: its overhead surfaces, a home, and a picture (docs/import.md)");
+      "propose", "Propose a coverage mission from a map: its overhead surfaces, a home, and a picture (" +
+                     docPage("import.md") + ")");
   command->add_option("--map", a->map, "OctoMap file (.bt or .ot), e.g. from ceilplan import")->required();
   command->add_option("--vehicle", a->vehicle, "Vehicle file the mission flies (e.g. maps/vehicles/quad.yaml)")
       ->required();
@@ -67,7 +68,9 @@ const CommandRegistration registration(23, [](CLI::App& parent) {
   command->add_option("--max-regions", a->options.max_regions, "At most this many regions, the largest first")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
-  command->add_option("--camera", a->settings.camera_preset, "Camera preset (docs/coverage.md), on an upward mount")
+  command
+      ->add_option("--camera", a->settings.camera_preset,
+                   "Camera preset (" + docPage("coverage.md") + "), on an upward mount")
       ->capture_default_str();
   command->add_option("--gsd-mm-px", a->settings.gsd_mm_px, "Required ground sample distance")
       ->check(finiteRange(1e-3, 1000.0))

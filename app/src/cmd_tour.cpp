@@ -18,6 +18,7 @@
 
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/install_paths.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
 #include "ceilplan/planner/planner_factory.hpp"
 
@@ -89,7 +90,9 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                                             "Inspect every target of a mission file (point targets, contact grids, "
                                             "surfaces to photograph): stops, legs, order, "
                                             "sorties, autopilot files");
-  command->add_option("--mission", a->mission, "mission file (docs/missions.md)")->required()->check(CLI::ExistingFile);
+  command->add_option("--mission", a->mission, "mission file (" + docPage("missions.md") + ")")
+      ->required()
+      ->check(CLI::ExistingFile);
   command->add_option("--out", a->out, "output directory")->required();
   command
       ->add_option("--mode", a->mode,

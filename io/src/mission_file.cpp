@@ -3,6 +3,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/core/input_file.hpp"
+#include "ceilplan/core/install_paths.hpp"
 #include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/io/coverage_keys.hpp"
 #include "ceilplan/io/dji_wpml.hpp"
@@ -89,8 +90,8 @@ mission::MissionSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
 std::vector<mission::InspectionTarget> readTargets(const Section& root, bool required) {
   if (!root.has("targets")) {
     if (!required) return {};
-    root.fail(
-        "missing key 'targets' (a mission inspects point targets, or surfaces and contact grids: docs/missions.md)");
+    root.fail("missing key 'targets' (a mission inspects point targets, or surfaces and contact grids: " +
+              docPage("missions.md") + ")");
   }
   const YAML::Node list = root.required("targets");
   if (!list.IsSequence() || list.size() == 0) root.fail("'targets' must be a non-empty list");

@@ -1,6 +1,7 @@
 #include "ceilplan/io/tour_files.hpp"
 
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/install_paths.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/coverage_output.hpp"
 #include "ceilplan/io/dji_wpml.hpp"
@@ -565,7 +566,7 @@ std::string tourFilesLine(const std::filesystem::path& dir, const mission::Missi
   } else if (!mission.origin) {
     text += geodeticExportsSkippedLine(mission) + "\n";
   }
-  return text + "figures: scripts/plot-tour " + dir.string() + "\n";
+  return text + "figures: " + plotCommand("plot-tour") + " " + dir.string() + "\n";
 }
 
 std::string tourSummary(const mission::TourResult& tour) {

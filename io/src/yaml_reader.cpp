@@ -3,6 +3,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/core/input_file.hpp"
+#include "ceilplan/core/install_paths.hpp"
 #include "ceilplan/core/printable_text.hpp"
 #include "ceilplan/core/spelling.hpp"
 
@@ -108,7 +109,7 @@ YamlFile::YamlFile(const std::filesystem::path& file, FileKind kind) : path_(fil
     fail("holds " + std::to_string(loaded.documents) + " YAML documents (split by '---'); a " + kindName(kind) +
          " is one document");
   root_ = loaded.first;
-  if (!root_.IsMap()) fail("a " + kindName(kind) + " must be a YAML map of keys (docs/missions.md)");
+  if (!root_.IsMap()) fail("a " + kindName(kind) + " must be a YAML map of keys (" + docPage("missions.md") + ")");
 }
 
 void YamlFile::fail(const std::string& problem) const { throw InputError(path_.string() + ": " + problem); }

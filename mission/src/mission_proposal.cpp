@@ -2,6 +2,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/install_paths.hpp"
 #include "ceilplan/environment/map_builder.hpp"
 #include "ceilplan/environment/surface_elements.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
@@ -296,7 +297,8 @@ MissionProposal proposeMission(const environment::Environment& environment, cons
                                 : std::string(" in the map");
   if (elements.empty())
     throw ceilplan::InputError("no down-facing surface with known free space below it" + where +
-                               ": a scan without sensor origins may have no known free space (docs/import.md)");
+                               ": a scan without sensor origins may have no known free space (" + docPage("import.md") +
+                               ")");
   if (regions.empty())
     throw ceilplan::InputError("no down-facing surface" + where + " has " + formatNumber(proposal.min_room_below_m, 3) +
                                " m of free space below it, the vehicle's height with its margins and a standoff of " +

@@ -7,6 +7,7 @@
 #include "ceilplan/battery/ageing_factory.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/core/install_paths.hpp"
 #include "ceilplan/core/parallel_for.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/flight_planner.hpp"
@@ -145,8 +146,8 @@ std::vector<TourStop> viewpointStops(const std::vector<InspectionTarget>& target
 CoveragePlan planMissionCoverage(const Mission& mission, const PlanningContext& context, FlightMode mode,
                                  const TourOptions& options, const planner::ReachablePredicate& reachable) {
   if (!mission.camera)
-    throw InputError(mission.name() +
-                     ": surfaces are photographed: add a 'camera' (docs/coverage.md, \"Mission keys\")");
+    throw InputError(mission.name() + ": surfaces are photographed: add a 'camera' (" + docPage("coverage.md") +
+                     ", \"Mission keys\")");
   CoveragePlanOptions coverage;
   coverage.views.mode = mode;
   coverage.views.free_standoff_m = context.options().standoff_m;
