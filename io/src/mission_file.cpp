@@ -4,12 +4,12 @@
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/core/input_file.hpp"
 #include "ceilplan/core/printable_text.hpp"
-#include "ceilplan/io/coverage_keys.hpp"
 #include "ceilplan/io/dji_wpml.hpp"
 #include "ceilplan/io/point_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
 
+#include "coverage_keys.hpp"
 #include "yaml_reader.hpp"
 
 #include <set>
@@ -138,14 +138,15 @@ std::filesystem::path existingFile(const Section& root, const std::string& key) 
 
 environment::UnknownSpace readUnknownSpace(const Section& node) {
   node.allowOnly({"policy", "fill_max_m"});
-  environment::UnknownSpace unknown;
-  unknown.policy = environment::unknownPolicyFromName(node.choice("policy", {"occupied", "free", "fill"}, "occupied"));
-  if (node.has("fill_max_m")) {
-    if (unknown.policy != environment::UnknownPolicy::Fill)
-      node.fail("'" + node.keyPath("fill_max_m") + "' applies only to policy: fill");
-    unknown.fill_max_m = node.number("fill_max_m", Range::above(0.0, environment::UnknownSpace::kMaxFill_m, "m"));
+  std::optional<double> fill_max_m;
+  if (node.has("fill_max_m"))
+    fill_max_m = node.number("fill_max_m", Range::above(0.0, environment::UnknownSpace::kMaxFill_m, "m"));
+  try {
+    return environment::parseUnknownSpace(node.text("policy", "occupied"), fill_max_m,
+                                          {"'" + node.keyPath("policy") + "'", "'" + node.keyPath("fill_max_m") + "'"});
+  } catch (const InputError& e) {
+    node.fail(e.what());
   }
-  return unknown;
 }
 
 mission::DjiAircraft readDjiAircraft(const Section& dji) {
@@ -180,7 +181,7 @@ mission::Mission readMission(const std::filesystem::path& file) {
   const Section root(yaml, yaml.root(), "");
   std::vector<std::string> keys{"map",  "vehicle", "battery", "home",       "origin", "speeds",
                                 "mode", "seed",    "unknown", "trajectory", "dji",    "targets"};
-  keys.insert(keys.end(), coverageKeyNames().begin(), coverageKeyNames().end());
+  keys.insert(keys.end(), detail::coverageKeyNames().begin(), detail::coverageKeyNames().end());
   root.allowOnly(keys);
   mission::Mission mission;
   mission.file = file;
@@ -205,14 +206,10 @@ mission::Mission readMission(const std::filesystem::path& file) {
     mission.trajectory_ned = trajectory->choice("frame", {"enu", "ned"}, "enu") == "ned";
   }
   if (const std::optional<Section> dji = root.optionalSection("dji")) mission.dji = readDjiAircraft(*dji);
-  try {
-    CoverageKeys coverage = readCoverageKeys(root.node());
-    mission.camera = std::move(coverage.camera);
-    mission.surfaces = std::move(coverage.surfaces);
-    mission.contact_grids = std::move(coverage.contact_grids);
-  } catch (const InputError& e) {
-    root.fail(e.what());
-  }
+  detail::CoverageKeys coverage = detail::readCoverageKeys(root);
+  mission.camera = std::move(coverage.camera);
+  mission.surfaces = std::move(coverage.surfaces);
+  mission.contact_grids = std::move(coverage.contact_grids);
   mission.targets = readTargets(root, !mission.isCoverage());
   // Contact points are named "<grid>_<k>" and photos "<surface>_photo<k>": point targets keep clear.
   std::vector<std::string> prefixes;
