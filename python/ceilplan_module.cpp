@@ -87,15 +87,7 @@ Eigen::AlignedBox3d cropBox(const std::vector<double>& corners) {
 }
 
 environment::UnknownSpace unknownSpace(const std::string& policy, std::optional<double> fill_max_m) {
-  environment::UnknownSpace unknown;
-  unknown.policy = environment::unknownPolicyFromName(policy);
-  if (fill_max_m) {
-    if (unknown.policy != environment::UnknownPolicy::Fill)
-      throw InputError("unknown_fill_max_m applies only to unknown=\"fill\"");
-    unknown.fill_max_m = *fill_max_m;
-  }
-  unknown.validate();
-  return unknown;
+  return environment::parseUnknownSpace(policy, fill_max_m, {"unknown", "unknown_fill_max_m"});
 }
 
 py::dict gapsDict(const environment::SurfaceGaps& gaps) {
@@ -327,10 +319,11 @@ PYBIND11_MODULE(ceilplan, m) {
              std::optional<double> unknown_fill_max_m) {
             mission::PlanningOptions options;
             options.unknown = unknownSpace(unknown, unknown_fill_max_m);
+            const mission::Vehicle flown = vehicle.value_or(mission::Vehicle::defaultQuad());
+            const mission::BatterySpec pack = io::readBatteryOrDefault(battery.value_or(""), flown);
             py::gil_scoped_release release;  // loading and indexing a map takes seconds
-            return PyEnvironment{std::make_shared<mission::PlanningContext>(
-                environment::OccupancyMap::load(path), vehicle.value_or(mission::Vehicle::defaultQuad()),
-                battery ? io::readBattery(*battery) : mission::BatterySpec{}, options)};
+            return PyEnvironment{std::make_shared<mission::PlanningContext>(environment::OccupancyMap::load(path),
+                                                                            flown, pack, options)};
           },
           py::arg("path"), py::arg("vehicle") = py::none(), py::arg("battery") = py::none(),
           py::arg("unknown") = "occupied", py::arg("unknown_fill_max_m") = py::none())

@@ -124,7 +124,7 @@ std::vector<io::Input> planningInputs(const PlanningFlags& flags) {
 
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags) {
   const mission::Vehicle vehicle = io::readVehicleOrDefault(flags.vehicle);
-  const mission::BatterySpec battery = io::readBatteryOrDefault(flags.battery);
+  const mission::BatterySpec battery = io::readBatteryOrDefault(flags.battery, vehicle, flags.vehicle);
   mission::PlanningOptions options = flags.options;
   options.unknown = flags.unknown.value();
   return std::make_unique<mission::PlanningContext>(environment::OccupancyMap::load(flags.map), vehicle, battery,

@@ -28,9 +28,18 @@ const std::vector<std::string> kBatteryKeys{"capacity_ah", "charge_current_a", "
 // Any place in a map: a kilometre either way (the index refuses maps too large to hold anyway).
 const Range kCoordinateM = Range::closed(-kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
 
+// The vehicle a battery powers, as a message names it.
+std::string vehicleSource(const mission::Vehicle& vehicle, const std::filesystem::path& vehicle_file) {
+  return vehicle_file.empty() ? "the vehicle '" + printableText(vehicle.name, 80) + "'"
+                              : printableText(vehicle_file.string(), 256);
+}
+
 // Reads a battery section; in a mission file the pack and SOC limits of a tour are required,
-// a battery file may leave any of them at the founding paper's values.
-mission::BatterySpec readBatterySection(const Section& section, bool all_required) {
+// a battery file may leave any of them at the founding paper's values. The energy model flies
+// the vehicle's pack, so a cell count that is not the vehicle's is refused (absent, it is the
+// vehicle's).
+mission::BatterySpec readBatterySection(const Section& section, bool all_required, const mission::Vehicle& vehicle,
+                                        const std::filesystem::path& vehicle_file) {
   section.allowOnly(kBatteryKeys);
   mission::BatterySpec spec;
   battery::Pack& pack = spec.pack;
@@ -42,7 +51,13 @@ mission::BatterySpec readBatterySection(const Section& section, bool all_require
              pack.capacity_ah, all_required);
   pack.charge_current_a =
       number("charge_current_a", Range::above(0.0, 1000.0, "A"), pack.charge_current_a, all_required);
-  pack.cell_count = static_cast<int>(section.integer("cell_count", 1, 24, pack.cell_count));
+  const int vehicle_cells = vehicle.energy.pack.cell_count;
+  pack.cell_count = static_cast<int>(section.integer("cell_count", 1, 24, vehicle_cells));
+  if (pack.cell_count != vehicle_cells)
+    section.fail(
+        "'" + section.keyPath("cell_count") + "' is " + std::to_string(pack.cell_count) + " cells, but " +
+        vehicleSource(vehicle, vehicle_file) + " has a " + std::to_string(vehicle_cells) +
+        "-cell pack (power.pack.cell_count): give the vehicle of this battery, or the battery of this vehicle");
   pack.soc_min = section.number("soc_min", Range::below(0.0, 1.0), pack.soc_min);
   pack.state_of_health = section.number("state_of_health", Range::above(0.0, 1.0), pack.state_of_health);
   spec.start_soc = number("start_soc", Range::above(0.0, 1.0), spec.start_soc, all_required);
@@ -188,7 +203,7 @@ mission::Mission readMission(const std::filesystem::path& file) {
   mission.map_file = existingFile(root, "map");
   mission.vehicle_file = existingFile(root, "vehicle");
   mission.vehicle = readVehicle(mission.vehicle_file);
-  mission.battery = readBatterySection(root.section("battery"), true);
+  mission.battery = readBatterySection(root.section("battery"), true, mission.vehicle, mission.vehicle_file);
   mission.home_m = root.vector3("home", kCoordinateM);
   if (const std::optional<Section> origin = root.optionalSection("origin")) mission.origin = readOrigin(*origin);
   if (const std::optional<Section> speeds = root.optionalSection("speeds"))
@@ -223,17 +238,22 @@ mission::Mission readMission(const std::filesystem::path& file) {
   return mission;
 }
 
-mission::BatterySpec readBatteryOrDefault(const std::filesystem::path& file) {
-  return file.empty() ? mission::BatterySpec{} : readBattery(file);
+mission::BatterySpec readBatteryOrDefault(const std::filesystem::path& file, const mission::Vehicle& vehicle,
+                                          const std::filesystem::path& vehicle_file) {
+  if (!file.empty()) return readBattery(file, vehicle, vehicle_file);
+  mission::BatterySpec paper;
+  paper.pack.cell_count = vehicle.energy.pack.cell_count;
+  return paper;
 }
 
-mission::BatterySpec readBattery(const std::filesystem::path& file) {
+mission::BatterySpec readBattery(const std::filesystem::path& file, const mission::Vehicle& vehicle,
+                                 const std::filesystem::path& vehicle_file) {
   const YamlFile yaml(file, FileKind::Battery);
   const Section root(yaml, yaml.root(), "");
   // A mission file serves as a battery file: its other keys are the mission reader's to check.
   if (root.has("battery") && (root.has("targets") || root.has("surfaces") || root.has("contact_grid")))
-    return readBatterySection(root.section("battery"), true);
-  return readBatterySection(root, false);
+    return readBatterySection(root.section("battery"), true, vehicle, vehicle_file);
+  return readBatterySection(root, false, vehicle, vehicle_file);
 }
 
 }  // namespace ceilplan::io

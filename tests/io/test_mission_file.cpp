@@ -224,6 +224,47 @@ TEST(BatteryFile, UnknownKeysAndOutOfRangeNumbersAreRefused) {
             std::string::npos);
 }
 
+// The energy model flies the vehicle's pack: a battery of another cell count (a 6S pack given
+// for the 4S quadrotor) would be planned at 4S without a word, so it is refused, naming both
+// files and both counts. A battery that leaves the count out takes the vehicle's.
+TEST(BatteryFile, ACellCountThatIsNotTheVehiclesIsRefusedNamingBothFiles) {
+  const std::filesystem::path vehicle_file = kMaps / "vehicles/quad.yaml";
+  const mission::Vehicle quad = readVehicle(vehicle_file);
+  ASSERT_EQ(quad.energy.pack.cell_count, 4);
+  const std::filesystem::path dir = testing::scratchDirectory("battery_cells");
+  std::ofstream(dir / "six.yaml") << "capacity_ah: 5.2\ncell_count: 6\n";
+  try {
+    readBattery(dir / "six.yaml", quad, vehicle_file);
+    FAIL() << "a 6S battery for a 4S vehicle was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find((dir / "six.yaml").string() + ": 'cell_count' is 6 cells, but " + vehicle_file.string() +
+                           " has a 4-cell pack"),
+              std::string::npos)
+        << message;
+  }
+  std::ofstream(dir / "four.yaml") << "capacity_ah: 5.2\ncell_count: 4\n";
+  EXPECT_EQ(readBattery(dir / "four.yaml", quad, vehicle_file).pack.cell_count, 4);
+  std::ofstream(dir / "unsaid.yaml") << "capacity_ah: 5.2\n";
+  mission::Vehicle hexa = quad;
+  hexa.energy.pack.cell_count = 6;
+  EXPECT_EQ(readBattery(dir / "unsaid.yaml", hexa).pack.cell_count, 6);
+  EXPECT_EQ(readBatteryOrDefault({}, hexa).pack.cell_count, 6);
+
+  // In a mission file the battery section is checked against the mission's vehicle.
+  const std::filesystem::path mission = variant("six_cells", "capacity_ah: 5.2", "capacity_ah: 5.2\n  cell_count: 6");
+  try {
+    readMission(mission);
+    FAIL() << "a mission with a 6S battery for its 4S vehicle was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(mission.string() + ": 'battery.cell_count' is 6 cells, but " + vehicle_file.string() +
+                           " has a 4-cell pack"),
+              std::string::npos)
+        << message;
+  }
+}
+
 TEST(MissionFile, MissingOriginIsAnErrorOnlyWhenExporting) {
   const std::filesystem::path file = variant("no_origin", "origin: {lat: 52.218, lon: 0.0923, alt: 12.0}", "");
   const mission::Mission mission = readMission(file);
