@@ -377,9 +377,9 @@ PYBIND11_MODULE(ceilplan, m) {
       },
       "Plans one route as `ceilplan plan` does, with its defaults; figures from the full model", py::arg("env"),
       py::arg("start"), py::arg("goal"), py::arg("mode") = "ceiling", py::arg("objective") = "charge",
-      py::arg("planner") = "", py::arg("time_limit_s") = defaults.time_limit_s, py::arg("seed") = 1u,
-      py::arg("lattice_spacing_m") = defaults.lattice.spacing_m, py::arg("band_fraction") = defaults.band_fraction,
-      py::arg("refine") = defaults.refine);
+      py::arg("planner") = "", py::arg("time_limit_s") = defaults.time_limit_s,
+      py::arg("seed") = mission::PlanningOptions{}.seed, py::arg("lattice_spacing_m") = defaults.lattice.spacing_m,
+      py::arg("band_fraction") = defaults.band_fraction, py::arg("refine") = defaults.refine);
 
   m.def(
       "evaluate",
@@ -420,7 +420,7 @@ PYBIND11_MODULE(ceilplan, m) {
                                return names;
                              })
       .def_property_readonly("vehicle", [](const PyMission& self) { return self.mission.vehicle; })
-      .def_property_readonly("seed", [](const PyMission& self) { return self.mission.seed; });
+      .def_property_readonly("seed", [](const PyMission& self) { return self.mission.planning.seed; });
 
   py::class_<PyTour>(m, "Tour", "An inspection tour in one mode")
       .def_property_readonly("mode", [](const PyTour& t) { return mission::flightModeName(t.tour.mode); })
@@ -493,7 +493,7 @@ PYBIND11_MODULE(ceilplan, m) {
             const std::string call = "python: " + t.call + ".write('" + dir.string() +
                                      "', autopilot=" + (export_autopilot ? "True" : "False") + ")";
             const io::Provenance provenance =
-                io::tourProvenance(io::Provenance::of(call), *t.mission, t.tour.options.seed);
+                io::tourProvenance(io::Provenance::of(call), *t.mission, t.tour.planning.seed);
             // The rules of `ceilplan tour --out`: replaced whole, only if ceilplan wrote it (or it is empty).
             io::OutputSet out({{"dir", dir, true}}, {{"the mission's map", t.mission->map_file},
                                                      {"the mission's vehicle", t.mission->vehicle_file}});
@@ -509,25 +509,28 @@ PYBIND11_MODULE(ceilplan, m) {
       "plan_tour",
       [](const PyMission& mission, const std::string& mode, std::optional<std::uint32_t> seed,
          const std::string& planner, const std::string& ageing_model) {
-        auto shared_mission = std::make_shared<const mission::Mission>(mission.mission);
+        // The arguments override the mission's settings (Mission::planning), as the CLI's flags do.
+        auto planned = std::make_shared<mission::Mission>(mission.mission);
+        if (seed) planned->planning.seed = *seed;
+        planned->planning.ageing_model = ageing_model;
+        planned->planning.validate();  // before indexing the map
+        const std::shared_ptr<const mission::Mission> shared_mission = planned;
         mission::TourOptions options;
-        options.seed = seed.value_or(mission.mission.seed);
         options.planner = planner;
-        options.ageing_model = ageing_model;
-        options.validate();  // before indexing the map
+        options.validate();
         const mission::FlightMode flight_mode = mission::flightModeFromName(mode);
         py::gil_scoped_release release;
         auto context = std::make_shared<const mission::PlanningContext>(*shared_mission);
         mission::TourResult tour = mission::planTour(*shared_mission, *context, flight_mode, options);
         const std::string call = "ceilplan.plan_tour(mission, mode='" + mode +
-                                 "', seed=" + std::to_string(options.seed) + ", planner='" + planner +
+                                 "', seed=" + std::to_string(planned->planning.seed) + ", planner='" + planner +
                                  "', ageing_model='" + ageing_model + "')";
         return PyTour{std::move(tour), shared_mission, context, call};
       },
       "Plans the mission's tour in one mode, as `ceilplan tour` does: point targets, contact grids and surfaces to "
       "photograph",
       py::arg("mission"), py::arg("mode") = "ceiling", py::arg("seed") = py::none(), py::arg("planner") = "roadmap",
-      py::arg("ageing_model") = "xu");
+      py::arg("ageing_model") = mission::PlanningOptions{}.ageing_model);
 
   const io::MapImportOptions import_defaults;  // `ceilplan import`'s defaults too
   m.def(

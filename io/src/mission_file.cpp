@@ -86,9 +86,9 @@ mission::GeodeticOrigin readOrigin(const Section& node) {
   return origin;
 }
 
-mission::MissionSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
+planner::FlightSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
   node.allowOnly({"cruise_m_s", "inspection_m_s", "climb_m_s", "descent_m_s"});
-  mission::MissionSpeeds speeds;
+  planner::FlightSpeeds speeds;
   const double min_m_s = planner::FlightSpeeds::kMinSpeed_m_s;
   const Range horizontal = Range::closed(min_m_s, max_speed_m_s, "m/s (the vehicle's max_speed_m_s)");
   const Range vertical =
@@ -97,6 +97,8 @@ mission::MissionSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
   speeds.inspection_m_s = node.number("inspection_m_s", horizontal, speeds.inspection_m_s);
   speeds.climb_m_s = node.number("climb_m_s", vertical, speeds.climb_m_s);
   speeds.descent_m_s = node.number("descent_m_s", vertical, speeds.descent_m_s);
+  // A mission file has no key for the slow zone under a ceiling: never faster than cruise.
+  speeds.near_ceiling_m_s = std::min(speeds.near_ceiling_m_s, speeds.cruise_m_s);
   return speeds;
 }
 
@@ -207,11 +209,11 @@ mission::Mission readMission(const std::filesystem::path& file) {
   mission.home_m = root.vector3("home", kCoordinateM);
   if (const std::optional<Section> origin = root.optionalSection("origin")) mission.origin = readOrigin(*origin);
   if (const std::optional<Section> speeds = root.optionalSection("speeds"))
-    mission.speeds = readSpeeds(*speeds, mission.vehicle.energy.airframe.max_speed_m_s);
+    mission.planning.speeds = readSpeeds(*speeds, mission.vehicle.energy.airframe.max_speed_m_s);
   mission.mode = root.choice("mode", {"ceiling", "free", "both"}, "");
-  mission.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, 1));
+  mission.planning.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, mission.planning.seed));
   if (const std::optional<Section> unknown = root.optionalSection("unknown"))
-    mission.unknown = readUnknownSpace(*unknown);
+    mission.planning.unknown = readUnknownSpace(*unknown);
   if (const std::optional<Section> trajectory = root.optionalSection("trajectory")) {
     trajectory->allowOnly({"rate_hz", "corner_tolerance_m", "stop_turn_deg", "frame"});
     mission::TrajectoryOptions& t = mission.trajectory;

@@ -46,12 +46,12 @@ TEST(MissionFile, ReadsEveryKeyOfTheBridgeMission) {
   EXPECT_DOUBLE_EQ(mission.requireOrigin().latitude_deg, 52.218);
   EXPECT_DOUBLE_EQ(mission.requireOrigin().longitude_deg, 0.0923);
   EXPECT_DOUBLE_EQ(mission.requireOrigin().altitude_m, 12.0);
-  EXPECT_DOUBLE_EQ(mission.speeds.cruise_m_s, 2.0);
-  EXPECT_DOUBLE_EQ(mission.speeds.inspection_m_s, 0.5);
-  EXPECT_DOUBLE_EQ(mission.speeds.climb_m_s, 1.0);
-  EXPECT_DOUBLE_EQ(mission.speeds.descent_m_s, 0.8);
+  EXPECT_DOUBLE_EQ(mission.planning.speeds.cruise_m_s, 2.0);
+  EXPECT_DOUBLE_EQ(mission.planning.speeds.inspection_m_s, 0.5);
+  EXPECT_DOUBLE_EQ(mission.planning.speeds.climb_m_s, 1.0);
+  EXPECT_DOUBLE_EQ(mission.planning.speeds.descent_m_s, 0.8);
   EXPECT_EQ(mission.mode, "ceiling");
-  EXPECT_EQ(mission.seed, 1u);
+  EXPECT_EQ(mission.planning.seed, 1u);
   ASSERT_EQ(mission.targets.size(), 13u);
   EXPECT_EQ(mission.targets[0].name, "deck_bay_06");
   EXPECT_EQ(mission.targets[0].point_m, Eigen::Vector3d(6.0, 0.0, 6.0));

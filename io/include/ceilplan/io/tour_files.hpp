@@ -83,7 +83,8 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
 
 // `ceilplan tour`'s first line: what the mission inspects, the mode ("ceiling", "free" or
 // "both"), the leg planner, the seed and the model whose wear the sortie split minimises.
-std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options);
+std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options,
+                         const mission::PlanningOptions& settings);
 // Its last lines: each directory written (DIR, or DIR/ceiling and DIR/free for both modes) with
 // the files in it (the DJI KMZ only where it was written), the geodetic exports skipped for want
 // of an origin (geodeticExportsSkippedLine), then the command that draws the figures.

@@ -1,15 +1,15 @@
 #pragma once
 // An inspection mission: the map, the vehicle, the battery, home, where the map lies on the
-// Earth, the speed rules and what to inspect: point targets, surfaces to photograph and contact
+// Earth, the planning settings and what to inspect: point targets, surfaces to photograph and contact
 // grids (a coverage mission: docs/coverage.md). Read from a mission file by io::readMission
 // (docs/missions.md).
 
-#include "ceilplan/environment/unknown_space.hpp"
 #include "ceilplan/mission/battery_spec.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
 #include "ceilplan/mission/dji_aircraft.hpp"
 #include "ceilplan/mission/geodetic_origin.hpp"
+#include "ceilplan/mission/planning_options.hpp"
 #include "ceilplan/mission/trajectory.hpp"
 #include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
@@ -24,13 +24,6 @@
 
 namespace ceilplan::mission {
 
-struct MissionSpeeds {
-  double cruise_m_s = 2.0;      // horizontal, in free air
-  double inspection_m_s = 0.5;  // near a target (autopilot files' hover speed)
-  double climb_m_s = 1.0;
-  double descent_m_s = 0.8;
-};
-
 struct Mission {
   std::filesystem::path file;          // the mission file, empty for a mission built in code
   std::filesystem::path map_file;      // the OctoMap (.bt or .ot)
@@ -39,13 +32,13 @@ struct Mission {
   BatterySpec battery;
   Eigen::Vector3d home_m = Eigen::Vector3d::Zero();
   std::optional<GeodeticOrigin> origin;  // needed only to export to an autopilot
-  MissionSpeeds speeds;
-  std::string mode;                   // "ceiling", "free" or "both"; empty: the command decides
-  std::uint32_t seed = 1;             // of every random choice
-  environment::UnknownSpace unknown;  // what the map's unknown voxels count as (docs/environment.md)
-  TrajectoryOptions trajectory;       // time scaling of the flown routes (key `trajectory:`, docs/flying.md)
-  bool trajectory_ned = false;        // trajectory files in NED instead of the map's ENU
-  DjiAircraft dji;                    // the KMZ's aircraft, payload and failsafes (key `dji:`)
+  // Every planning setting: the file's `speeds:`, `seed:` and `unknown:` (what the map's unknown
+  // voxels count as, docs/environment.md), the rest at their defaults; front ends override fields.
+  PlanningOptions planning;
+  std::string mode;              // "ceiling", "free" or "both"; empty: the command decides
+  TrajectoryOptions trajectory;  // time scaling of the flown routes (key `trajectory:`, docs/flying.md)
+  bool trajectory_ned = false;   // trajectory files in NED instead of the map's ENU
+  DjiAircraft dji;               // the KMZ's aircraft, payload and failsafes (key `dji:`)
   std::vector<InspectionTarget> targets;
   // Coverage (docs/coverage.md): surfaces photographed with the camera, contact grids probed.
   std::optional<Camera> camera;  // required by surfaces

@@ -28,6 +28,7 @@ struct FlightSpeeds {
   double near_ceiling_gap_radii = 2.0;  // where the ceiling effect has nearly faded (docs/models.md, "Ceiling effect")
   double climb_m_s = 1.0;               // vertical rate limits
   double descent_m_s = 0.8;
+  double inspection_m_s = 0.5;  // near a target: between a coverage tour's photos, the autopilot files' hover speed
 
   // Throws ceilplan::InputError naming the bad field (a speed under kMinSpeed_m_s, a non-positive
   // slow zone, non-finite, a horizontal
