@@ -49,7 +49,9 @@ contact_grid:
 // map and a point target (so a camera alone is a mission too).
 mission::Mission readKeys(const std::string& yaml) {
   const std::filesystem::path maps = std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps";
-  const std::filesystem::path file = testing::scratchDirectory("coverage_keys") / "mission.yaml";
+  // One directory per test: ctest runs the tests in parallel processes.
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::filesystem::path file = testing::scratchDirectory("coverage_keys_" + test) / "mission.yaml";
   std::ofstream(file) << "map: " << (maps / "bridge.bt").string()
                       << "\nvehicle: " << (maps / "vehicles/quad.yaml").string()
                       << "\nbattery: {capacity_ah: 5.2, start_soc: 0.95, reserve_soc: 0.25, charge_current_a: 10.4}\n"
