@@ -208,15 +208,7 @@ Eigen::AlignedBox3d cropBox(const std::vector<double>& corners) {
 }
 
 environment::UnknownSpace unknownSpace(const std::string& policy, std::optional<double> fill_max_m) {
-  environment::UnknownSpace unknown;
-  unknown.policy = environment::unknownPolicyFromName(policy);
-  if (fill_max_m) {
-    if (unknown.policy != environment::UnknownPolicy::Fill)
-      throw InputError("unknown_fill_max_m applies only to unknown=\"fill\"");
-    unknown.fill_max_m = *fill_max_m;
-  }
-  unknown.validate();
-  return unknown;
+  return environment::parseUnknownSpace(policy, fill_max_m, {"unknown", "unknown_fill_max_m"});
 }
 
 py::dict gapsDict(const environment::SurfaceGaps& gaps) {
@@ -439,7 +431,7 @@ void writeTours(const std::filesystem::path& dir, const std::vector<const PyTour
   const std::string written =
       "python: " + call + ".write('" + dir.string() + "', autopilot=" + (export_autopilot ? "True" : "False") + ")";
   const io::Provenance provenance =
-      io::tourProvenance(io::Provenance::of(written), *first.mission, first.tour.options.seed);
+      io::tourProvenance(io::Provenance::of(written), *first.mission, first.tour.planning.seed);
   io::OutputSet out({{"dir", dir, true}}, {{"the mission's map", first.mission->map_file},
                                            {"the mission's vehicle", first.mission->vehicle_file}});
   const environment::Environment& environment = first.context->environment();
@@ -662,11 +654,12 @@ PYBIND11_MODULE(ceilplan, m) {
              std::optional<double> unknown_fill_max_m, const py::object& progress) {
             mission::PlanningOptions options;
             options.unknown = unknownSpace(unknown, unknown_fill_max_m);
+            const mission::Vehicle flown = vehicle.value_or(mission::Vehicle::defaultQuad());
+            const mission::BatterySpec pack = io::readBatteryOrDefault(battery.value_or(""), flown);
             PythonProgress reporter(progress);
             return reporter.run([&] {  // loading and indexing a map takes seconds
               return PyEnvironment{std::make_shared<mission::PlanningContext>(
-                  environment::OccupancyMap::load(path), vehicle.value_or(mission::Vehicle::defaultQuad()),
-                  battery ? io::readBattery(*battery) : mission::BatterySpec{}, options, reporter.callback())};
+                  environment::OccupancyMap::load(path), flown, pack, options, reporter.callback())};
             });
           },
           "Loads an OctoMap (.bt or .ot) and indexes it for `vehicle` (None: the built-in one) and a battery file "
@@ -739,9 +732,9 @@ PYBIND11_MODULE(ceilplan, m) {
        "post-process the route")
           .c_str(),
       py::arg("env"), py::arg("start"), py::arg("goal"), py::arg("mode") = "ceiling", py::arg("objective") = "charge",
-      py::arg("planner") = "", py::arg("time_limit_s") = defaults.time_limit_s, py::arg("seed") = 1u,
-      py::arg("lattice_spacing_m") = defaults.lattice.spacing_m, py::arg("band_fraction") = defaults.band_fraction,
-      py::arg("refine") = defaults.refine);
+      py::arg("planner") = "", py::arg("time_limit_s") = defaults.time_limit_s,
+      py::arg("seed") = mission::PlanningOptions{}.seed, py::arg("lattice_spacing_m") = defaults.lattice.spacing_m,
+      py::arg("band_fraction") = defaults.band_fraction, py::arg("refine") = defaults.refine);
 
   m.def(
       "evaluate",
@@ -783,7 +776,7 @@ PYBIND11_MODULE(ceilplan, m) {
           "mode", [](const PyMission& self) { return self.mission.mode; },
           "The file's `mode`: 'ceiling', 'free', 'both', or '' (none): what plan_tour plans without a mode")
       .def_property_readonly(
-          "seed", [](const PyMission& self) { return self.mission.seed; },
+          "seed", [](const PyMission& self) { return self.mission.planning.seed; },
           "The seed of the tour's order heuristic (plan_tour's default)")
       .def("__repr__", [](const PyMission& self) {
         const mission::Mission& mission = self.mission;
@@ -791,7 +784,7 @@ PYBIND11_MODULE(ceilplan, m) {
                ", targets=" + std::to_string(mission.targets.size()) +
                ", surfaces=" + std::to_string(mission.surfaces.size()) +
                ", contact_grids=" + std::to_string(mission.contact_grids.size()) +
-               ", mode=" + quoted(py::str(mission.mode)) + ", seed=" + std::to_string(mission.seed) + ")";
+               ", mode=" + quoted(py::str(mission.mode)) + ", seed=" + std::to_string(mission.planning.seed) + ")";
       });
 
   py::class_<PyTour, std::shared_ptr<PyTour>>(m, "Tour",
@@ -914,16 +907,19 @@ PYBIND11_MODULE(ceilplan, m) {
       "plan_tour",
       [](const PyMission& mission, const std::optional<std::string>& mode, std::optional<std::uint32_t> seed,
          const std::string& planner, const std::string& ageing_model, const py::object& progress) -> py::object {
-        auto shared_mission = std::make_shared<const mission::Mission>(mission.mission);
+        // The arguments override the mission's settings (Mission::planning), as the CLI's flags do.
+        auto planned = std::make_shared<mission::Mission>(mission.mission);
+        if (seed) planned->planning.seed = *seed;
+        planned->planning.ageing_model = ageing_model;
+        planned->planning.validate();  // before indexing the map
+        const std::shared_ptr<const mission::Mission> shared_mission = planned;
         mission::TourOptions options;
-        options.seed = seed.value_or(mission.mission.seed);
         options.planner = planner;
-        options.ageing_model = ageing_model;
         options.validate();  // before indexing the map
         const std::string mode_name = mode ? *mode : mission.mission.mode.empty() ? "ceiling" : mission.mission.mode;
         const std::vector<mission::FlightMode> modes = mission::tourFlightModes(mode_name);
         // As `ceilplan tour`: OMPL's generators seeded from the tour seed (only the first seed of a process counts).
-        if (!planner::plannerInfo(options.planner).deterministic()) planner::seedOmpl(options.seed);
+        if (!planner::plannerInfo(options.planner).deterministic()) planner::seedOmpl(planned->planning.seed);
         PythonProgress reporter(progress);
         options.progress = reporter.callback();
         auto [context, tours] = reporter.run([&] {
@@ -934,7 +930,7 @@ PYBIND11_MODULE(ceilplan, m) {
           return std::make_pair(context, std::move(tours));
         });
         const std::string call = "ceilplan.plan_tour(mission, mode='" + mode_name +
-                                 "', seed=" + std::to_string(options.seed) + ", planner='" + planner +
+                                 "', seed=" + std::to_string(planned->planning.seed) + ", planner='" + planner +
                                  "', ageing_model='" + ageing_model + "')";
         std::vector<std::shared_ptr<PyTour>> results;
         for (mission::TourResult& tour : tours) {
@@ -958,7 +954,7 @@ PYBIND11_MODULE(ceilplan, m) {
        "0 to 1, 1 at a stage's end); an exception it raises stops the work and comes out of plan_tour")
           .c_str(),
       py::arg("mission"), py::arg("mode") = py::none(), py::arg("seed") = py::none(), py::arg("planner") = "roadmap",
-      py::arg("ageing_model") = "xu", py::arg("progress") = py::none());
+      py::arg("ageing_model") = mission::PlanningOptions{}.ageing_model, py::arg("progress") = py::none());
 
   const io::MapImportOptions import_defaults;  // `ceilplan import`'s defaults too
   m.def(

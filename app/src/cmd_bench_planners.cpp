@@ -52,15 +52,15 @@ void runBench(const BenchArguments& a) {
   } catch (const InputError&) {
     rethrowWithContext("--planners: ");
   }
-  planner::seedOmpl(a.search.seed);
+  planner::seedOmpl(a.planning.options.seed);
   const auto context = makePlanningContext(a.planning);
-  const io::Provenance provenance = planningProvenance(a.planning, a.search.seed);  // the inputs read, named
+  const io::Provenance provenance = planningProvenance(a.planning, a.planning.options.seed);  // the inputs read, named
   for (const auto& [name, value] : provenance.fields())
     options.log_properties.emplace_back("provenance_" + name, value);
   const mission::PlanningContext::Mode planning = context->mode(mission::flightModeFromName(a.mode));
   const planner::FlightPlanner flight_planner(*planning.rules, *planning.model, context->objective(start, goal));
   print(io::plannerBenchmarkHeadline(a.mode, a.planning.options.objective, flight_planner.objective().unit(), options,
-                                     a.search.seed));
+                                     a.planning.options.seed));
 
   const planner::PlanRequest request = a.search.request(start, goal);
   const planner::PlanResult reference = planner::planLatticeReference(flight_planner, request);
@@ -86,7 +86,7 @@ const CommandRegistration registration(43, [](CLI::App& parent) {
   command->add_option("--start", arguments->start, "start body position x,y,z (m)")->required();
   command->add_option("--goal", arguments->goal, "goal body position x,y,z (m)")->required();
   command->add_option("--mode", arguments->mode)->capture_default_str()->check(CLI::IsMember({"ceiling", "free"}));
-  addSearchOptions(command, arguments->search);
+  addSearchOptions(command, arguments->search, arguments->planning);
   command->add_option("--planners", arguments->planners, "comma-separated planner names (lattice and roadmap too)")
       ->capture_default_str();
   command->add_option("--runs", arguments->runs, "runs per planner")

@@ -28,17 +28,18 @@ struct CompareArguments {
 void runCompare(const CompareArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
   io::OutputSet out(a.out, planningInputs(a.planning));  // checked and staged before any work
-  planner::seedOmpl(a.search.seed);
+  planner::seedOmpl(a.planning.options.seed);
   const auto context = makePlanningContext(a.planning);
-  print("comparing ceiling and free modes: objective " + a.planning.options.objective + ", " + a.search.describe() +
+  print("comparing ceiling and free modes: objective " + a.planning.options.objective + ", " +
+        a.search.describe(a.planning.options.seed) +
         "\nunknown space: " + io::unknownSpaceLine(context->environment()) + "\n");
   const mission::RouteComparison comparison = mission::compareRoutes(*context, a.search.request(start, goal), a.duty);
   if (comparison.ceiling.plan.from_candidate)
     print("ceiling mode found nothing better than the free-mode route: it flies that route, post-processed\n");
   print("\n" + io::routeComparisonTable(comparison, a.duty, context->battery()));
   if (comparison.free.standoff) print("\nfree mode's " + io::standoffLine(*comparison.free.standoff) + "\n");
-  io::writeRouteComparison(out.path(), comparison, a.duty, *context, a.search.plannerName(), a.search.seed,
-                           planningProvenance(a.planning, a.search.seed));
+  io::writeRouteComparison(out.path(), comparison, a.duty, *context, a.search.plannerName(), a.planning.options.seed,
+                           planningProvenance(a.planning, a.planning.options.seed));
   out.commit();
   print("\nwrote " + a.out + "/{compare.json, ceiling/, free/, map_top.csv, map_side.csv}; figures: " +
         plotCommand("plot-compare") + " " + a.out + "\n");
@@ -51,7 +52,7 @@ const CommandRegistration registration(42, [](CLI::App& parent) {
   addPlanningOptions(command, arguments->planning);
   command->add_option("--start", arguments->start, "start body position x,y,z (m)")->required();
   command->add_option("--goal", arguments->goal, "goal body position x,y,z (m)")->required();
-  addSearchOptions(command, arguments->search);
+  addSearchOptions(command, arguments->search, arguments->planning);
   mission::DutyOptions& duty = arguments->duty;
   command
       ->add_option(

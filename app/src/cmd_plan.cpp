@@ -25,15 +25,16 @@ void runPlan(const PlanArguments& a) {
   const Eigen::Vector3d start = parsePoint(a.start, "--start"), goal = parsePoint(a.goal, "--goal");
   const mission::FlightMode mode = mission::flightModeFromName(a.mode);
   io::OutputSet out(a.out, planningInputs(a.planning));  // checked and staged before any work
-  planner::seedOmpl(a.search.seed);                      // before anything makes an OMPL random generator
+  planner::seedOmpl(a.planning.options.seed);            // before anything makes an OMPL random generator
   const auto context = makePlanningContext(a.planning);
   const planner::ObjectiveChoice objective = context->objective(start, goal);
   if (objective.name == "ageing") print(io::ageingObjectiveLine(objective.ageing) + "\n");
-  print("planning " + a.mode + " mode, objective " + a.planning.options.objective + ", " + a.search.describe() +
+  print("planning " + a.mode + " mode, objective " + a.planning.options.objective + ", " +
+        a.search.describe(a.planning.options.seed) +
         "\nunknown space: " + io::unknownSpaceLine(context->environment()) + "\n");
   const mission::RoutePlan route = mission::planRoute(*context, mode, a.search.request(start, goal));
-  io::writeRoutePlan(out.path(), route, *context, a.planning.map, a.search.seed,
-                     planningProvenance(a.planning, a.search.seed));
+  io::writeRoutePlan(out.path(), route, *context, a.planning.map, a.planning.options.seed,
+                     planningProvenance(a.planning, a.planning.options.seed));
   out.commit();
   print(io::routePlanText(route));
   print("wrote " + (out.finalPath() / "plan.json").string() + " and " + (out.finalPath() / "path.csv").string() + "\n");
@@ -50,7 +51,7 @@ const CommandRegistration registration(40, [](CLI::App& parent) {
                    "ceiling: full proximity model; free: proximity ignored, the standoff preferred")
       ->capture_default_str()
       ->check(CLI::IsMember(mission::flightModeNames()));
-  addSearchOptions(command, arguments->search);
+  addSearchOptions(command, arguments->search, arguments->planning);
   command->add_option("--out", arguments->out, "output directory (plan.json, path.csv)")->required();
   command->callback([arguments] { runPlan(*arguments); });
 });

@@ -31,17 +31,24 @@
 namespace ceilplan::app {
 namespace {
 
+// Flags that override a setting of the mission's (Mission::planning) when given.
 struct TourArguments {
   std::string mission, out, mode, autopilot = "px4";
   std::optional<std::uint32_t> seed;
+  std::optional<std::string> ageing_model;
+  std::optional<double> standoff_m;
   bool no_export = false;
-  double standoff_m = 1.0;
-  UnknownSpaceFlags unknown;  // given: overrides the mission's `unknown:`
+  UnknownSpaceFlags unknown;
   mission::TourOptions options;
 };
 
 void runTour(TourArguments a) {
-  const mission::Mission mission = io::readMission(a.mission);
+  mission::Mission mission = io::readMission(a.mission);
+  mission::PlanningOptions& settings = mission.planning;
+  if (a.seed) settings.seed = *a.seed;
+  if (a.ageing_model) settings.ageing_model = *a.ageing_model;
+  if (a.standoff_m) settings.standoff_m = *a.standoff_m;
+  if (a.unknown.given()) settings.unknown = a.unknown.value();
   // Checked and staged before any work; in place only when complete.
   io::OutputSet out(a.out, commandInputs({{"--mission", a.mission},
                                           {"the mission's map", mission.map_file},
@@ -50,24 +57,20 @@ void runTour(TourArguments a) {
   std::optional<io::Autopilot> autopilot;
   if (!a.no_export) autopilot = a.autopilot == "ardupilot" ? io::Autopilot::ArduPilot : io::Autopilot::PX4;
   if (a.mode.empty()) a.mode = mission.mode.empty() ? "ceiling" : mission.mode;
-  a.options.seed = a.seed ? *a.seed : mission.seed;
-  a.options.validate();  // before indexing the map
+  settings.validate();  // before indexing the map
+  a.options.validate();
   // OMPL's generators are seeded once per process from the tour seed; the queries draw from
   // them in scheduling order and stop at a wall-clock limit, so OMPL legs are not bit-reproducible.
-  if (!planner::plannerInfo(a.options.planner).deterministic()) planner::seedOmpl(a.options.seed);
-  mission::PlanningOptions planning = mission::planningOptions(mission);
-  planning.standoff_m = a.standoff_m;
-  if (a.unknown.given()) planning.unknown = a.unknown.value();
+  if (!planner::plannerInfo(a.options.planner).deterministic()) planner::seedOmpl(settings.seed);
   const ProgressCallback progress = terminalProgress();
-  const mission::PlanningContext context(environment::OccupancyMap::load(mission.map_file), mission.vehicle,
-                                         mission.battery, planning, progress);
+  const mission::PlanningContext context(mission, progress);
   const std::vector<mission::FlightMode> modes = mission::tourFlightModes(a.mode);
   a.options.progress = progress;
 
-  const io::Provenance provenance = io::tourProvenance(commandProvenance(), mission, a.options.seed);
+  const io::Provenance provenance = io::tourProvenance(commandProvenance(), mission, settings.seed);
 
-  print(io::tourHeadline(mission, a.mode, a.options) + "unknown space: " + io::unknownSpaceLine(context.environment()) +
-        "\n");
+  print(io::tourHeadline(mission, a.mode, a.options, settings) +
+        "unknown space: " + io::unknownSpaceLine(context.environment()) + "\n");
   std::vector<mission::TourResult> tours;
   for (mission::FlightMode mode : modes) {
     tours.push_back(mission::planTour(mission, context, mode, a.options));
@@ -139,14 +142,14 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
                    "cheaper)")
       ->capture_default_str()
       ->check(CLI::Range(0, 100000));
-  command->add_option("--ageing-model", a->options.ageing_model, "the sortie split minimises this model's wear")
-      ->capture_default_str()
+  command->add_option("--ageing-model", a->ageing_model, "the sortie split minimises this model's wear")
+      ->default_str(mission::PlanningOptions{}.ageing_model)
       ->check(CLI::IsMember(battery::ageingModelNames()));
   a->unknown.addTo(*command);
   command
       ->add_option("--standoff-m", a->standoff_m,
                    "free mode: the conventional distance from every structure, kept where it fits")
-      ->capture_default_str()
+      ->default_str(formatNumber(mission::PlanningOptions{}.standoff_m))
       ->check(nonNegativeFinite());
   command
       ->add_option("--free-standoff-max-m", a->options.free_standoff_max_m,

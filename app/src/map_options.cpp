@@ -2,8 +2,7 @@
 
 #include "cli_checks.hpp"
 
-#include "ceilplan/core/error.hpp"
-#include "ceilplan/core/format.hpp"
+#include <optional>
 
 namespace ceilplan::app {
 
@@ -28,13 +27,9 @@ bool UnknownSpaceFlags::given() const {
 }
 
 environment::UnknownSpace UnknownSpaceFlags::value() const {
-  environment::UnknownSpace unknown;
-  unknown.policy = environment::unknownPolicyFromName(policy_);
-  unknown.fill_max_m = fill_max_m_;
-  if (unknown.policy != environment::UnknownPolicy::Fill && fill_option_ != nullptr && fill_option_->count() > 0)
-    throw ceilplan::InputError("--unknown-fill-max-m applies only to --unknown fill; add --unknown fill or drop it");
-  unknown.validate();
-  return unknown;
+  std::optional<double> fill_max_m;
+  if (fill_option_ != nullptr && fill_option_->count() > 0) fill_max_m = fill_max_m_;
+  return environment::parseUnknownSpace(policy_, fill_max_m, {"--unknown", "--unknown-fill-max-m"});
 }
 
 }  // namespace ceilplan::app

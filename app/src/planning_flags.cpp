@@ -65,13 +65,15 @@ void addPlanningOptions(CLI::App* command, PlanningFlags& flags, bool with_objec
       ->check(finiteRange(-40.0, 80.0));
 }
 
-void addSearchOptions(CLI::App* command, SearchArguments& a) {
+void addSearchOptions(CLI::App* command, SearchArguments& a, PlanningFlags& planning) {
   command->add_option("--planner", a.planner, "planner (default " + planner::defaultPlannerName() + ")")
       ->check(CLI::IsMember(planner::plannerNames()));
   command->add_option("--time-limit-s", a.time_limit_s, "search time per plan, up to a day")
       ->capture_default_str()
       ->check(positiveFinite() & atMost(planner::PlanRequest::kMaxTimeLimit_s));
-  command->add_option("--seed", a.seed, "random seed (> 0)")->capture_default_str()->check(CLI::Range(1u, 4294967295u));
+  command->add_option("--seed", planning.options.seed, "random seed (> 0)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 4294967295u));
   command->add_option("--band-fraction", a.band_fraction, "share of samples aimed under ceilings")
       ->capture_default_str()
       ->check(finiteRange(0.0, 1.0));
@@ -95,7 +97,7 @@ planner::PlanRequest SearchArguments::request(const Eigen::Vector3d& start_m, co
 
 std::string SearchArguments::plannerName() const { return planner.empty() ? planner::defaultPlannerName() : planner; }
 
-std::string SearchArguments::describe() const {
+std::string SearchArguments::describe(std::uint32_t seed) const {
   const std::string name = plannerName();
   // The lattice planners are deterministic and run to completion: no seed, no clock.
   if (planner::plannerInfo(name).deterministic())
@@ -124,7 +126,7 @@ std::vector<io::Input> planningInputs(const PlanningFlags& flags) {
 
 std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlags& flags) {
   const mission::Vehicle vehicle = io::readVehicleOrDefault(flags.vehicle);
-  const mission::BatterySpec battery = io::readBatteryOrDefault(flags.battery);
+  const mission::BatterySpec battery = io::readBatteryOrDefault(flags.battery, vehicle, flags.vehicle);
   mission::PlanningOptions options = flags.options;
   options.unknown = flags.unknown.value();
   return std::make_unique<mission::PlanningContext>(environment::OccupancyMap::load(flags.map), vehicle, battery,

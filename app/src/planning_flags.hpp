@@ -45,7 +45,6 @@ std::unique_ptr<mission::PlanningContext> makePlanningContext(const PlanningFlag
 struct SearchArguments {
   std::string planner;  // empty: the default
   double time_limit_s = planner::PlanRequest{}.time_limit_s;
-  std::uint32_t seed = 1;
   double band_fraction = planner::PlanRequest{}.band_fraction;
   bool no_refine = false;
   double lattice_spacing_m = planner::kQueryLatticeSpacing_m;  // the lattice planners' node spacing
@@ -53,9 +52,10 @@ struct SearchArguments {
   planner::PlanRequest request(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m) const;
   std::string plannerName() const;
   // "planner BITstar, seed 3, 5 s", or for a lattice planner its spacing (it has no seed or clock).
-  std::string describe() const;
+  std::string describe(std::uint32_t seed) const;
 };
-void addSearchOptions(CLI::App* command, SearchArguments& arguments);
+// The search flags, and --seed into the planning options' seed (the one seed setting).
+void addSearchOptions(CLI::App* command, SearchArguments& arguments, PlanningFlags& planning);
 
 // "x,y,z" in metres; throws ceilplan::InputError naming `flag`.
 Eigen::Vector3d parsePoint(const std::string& text, const std::string& flag);

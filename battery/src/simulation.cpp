@@ -22,6 +22,12 @@ std::optional<double> stopSoc(const Segment& segment, const Pack& pack) {
 DepletionError::DepletionError(const std::string& message, double reached_soc, double floor_soc)
     : ceilplan::InfeasibleError(message), reached_soc_(reached_soc), floor_soc_(floor_soc) {}
 
+DepletionError::DepletionError(double reached_soc, double floor_soc)
+    : DepletionError("would take the battery to " + formatNumber(100.0 * reached_soc) + " % SOC, " +
+                         formatNumber(100.0 * (floor_soc - reached_soc)) + " points below its " +
+                         formatNumber(100.0 * floor_soc) + " % floor",
+                     reached_soc, floor_soc) {}
+
 Simulator::Simulator(const Pack& pack, double initial_soc, double step_s) : pack_(pack), step_s_(step_s) {
   pack_.validate();
   if (!(std::isfinite(step_s) && step_s >= 0.0))
@@ -51,7 +57,8 @@ Simulator::Advance Simulator::plan(const Segment& segment, double soc, double ma
       return {time_to_stop_s, *stop, std::abs(*stop - soc) * pack_.usableCapacityAh()};
     }
   }
-  return {max_time_s, soc + soc_rate_per_s * max_time_s, segment.current_a * max_time_s / kSecondsPerHour};
+  const CoulombStep step = coulombStep(soc, -direction * segment.current_a, max_time_s, pack_.usableCapacityAh());
+  return {max_time_s, step.soc_after, std::abs(step.charge_ah)};
 }
 
 void Simulator::enterMode(Mode mode) {
@@ -61,7 +68,7 @@ void Simulator::enterMode(Mode mode) {
 
 void Simulator::closeModeInterval() {
   // dFEC = C_r (t2 - t1) / 2 with C_r the interval's mean |i| / C_nom (paper eq. 3-5).
-  state_.fec += interval_ah_ / (2.0 * pack_.capacity_ah);
+  state_.fec += fullEquivalentCycles(interval_ah_, pack_.capacity_ah);
   interval_ah_ = 0.0;
   interval_mode_.reset();
 }
@@ -70,8 +77,8 @@ void Simulator::apply(const Segment& segment, const Advance& advance) {
   state_.t_s += advance.time_s;
   state_.soc = advance.soc_after;
   state_.min_soc = std::min(state_.min_soc, state_.soc);
-  state_.fec_continuous += advance.charge_moved_ah / (2.0 * pack_.capacity_ah);
-  state_.faded_pack_cycles += advance.charge_moved_ah / (2.0 * pack_.usableCapacityAh());
+  state_.fec_continuous += fullEquivalentCycles(advance.charge_moved_ah, pack_.capacity_ah);
+  state_.faded_pack_cycles += fullEquivalentCycles(advance.charge_moved_ah, pack_.usableCapacityAh());
   interval_ah_ += advance.charge_moved_ah;
   if (segment.mode == Mode::Discharge) state_.discharge_ah += advance.charge_moved_ah;
   if (segment.mode == Mode::Charge) state_.charge_ah += advance.charge_moved_ah;
@@ -86,10 +93,7 @@ double Simulator::run(const Segment& segment, std::vector<Sample>* record) {
   // Refuse a segment that would cross the floor before changing any state.
   const Advance whole = plan(segment, state_.soc, segment.duration_s);
   if (whole.soc_after < pack_.soc_min - 1e-12) {
-    throw DepletionError("would take the battery to " + formatNumber(100.0 * whole.soc_after) + " % SOC, " +
-                             formatNumber(100.0 * (pack_.soc_min - whole.soc_after)) + " points below its " +
-                             formatNumber(100.0 * pack_.soc_min) + " % floor",
-                         whole.soc_after, pack_.soc_min);
+    throw DepletionError(whole.soc_after, pack_.soc_min);
   }
   enterMode(segment.mode);
   if (record) record->push_back(sample(segment));

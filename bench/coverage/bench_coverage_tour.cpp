@@ -72,7 +72,6 @@ mission::FlightMode modeArgument(std::int64_t argument) {
 void runTour(benchmark::State& state, const mission::Mission& mission, const mission::PlanningContext& context,
              mission::FlightMode mode) {
   mission::TourOptions options;
-  options.seed = mission.seed;
   mission::TourResult tour;
   for (auto _ : state) tour = mission::planTour(mission, context, mode, options);
   report(state, tour);
@@ -108,8 +107,7 @@ void BM_LongDeckSoffitTour(benchmark::State& state) {
     scene.bridge_length_m = kLength_m;
     environment::OccupancyMap map(environment::toOcTree(environment::generateScene(environment::Scene::Bridge, scene)),
                                   "bridge 200 m (generated)");
-    return mission::PlanningContext(std::move(map), mission.vehicle, mission.battery,
-                                    mission::planningOptions(mission));
+    return mission::PlanningContext(std::move(map), mission.vehicle, mission.battery, mission.planning);
   }();
   runTour(state, mission, context, modeArgument(state.range(0)));
 }

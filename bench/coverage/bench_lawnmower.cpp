@@ -209,7 +209,6 @@ void BM_Lawnmower(benchmark::State& state) {
   state.counters["sharp_anywhere_pct"] = 100.0 * sharp_m2 / area_m2;
   if (state.range(2) == 0) return;
   mission::TourOptions options;
-  options.seed = mission.seed;
   const mission::TourResult tour = mission::planTour(mission, context, mode, options);
   double tour_covered_m2 = 0.0, tour_area_m2 = 0.0, tour_reachable_covered_m2 = 0.0, tour_reachable_m2 = 0.0;
   for (const mission::RegionCoverageCheck& region : tour.coverage_check->regions) {

@@ -33,7 +33,6 @@ void BM_TwentyTargetBridgeTour(benchmark::State& state) {
   const mission::Mission mission = twentyTargetBridge();
   planner::seedOmpl(1);
   mission::TourOptions options;
-  options.seed = 1;
   for (auto _ : state) {
     const mission::PlanningContext context(mission);
     const mission::TourResult tour = mission::planTour(mission, context, mission::FlightMode::Ceiling, options);

@@ -25,6 +25,24 @@ UnknownPolicy unknownPolicyFromName(const std::string& name) {
   throw ceilplan::InputError("unknown-space policy '" + name + "' is not one of occupied, free, fill");
 }
 
+UnknownSpace parseUnknownSpace(const std::string& policy, std::optional<double> fill_max_m,
+                               const UnknownSpaceKeys& keys) {
+  UnknownSpace unknown;
+  try {
+    unknown.policy = unknownPolicyFromName(policy);
+  } catch (const ceilplan::InputError& e) {
+    throw ceilplan::InputError(keys.policy + ": " + e.what());
+  }
+  if (fill_max_m) {
+    if (unknown.policy != UnknownPolicy::Fill)
+      throw ceilplan::InputError(keys.fill_max + " applies only to " + keys.policy + " fill; add " + keys.policy +
+                                 " fill or drop " + keys.fill_max);
+    unknown.fill_max_m = *fill_max_m;
+  }
+  unknown.validate();
+  return unknown;
+}
+
 std::string unknownPolicyName(UnknownPolicy policy) {
   switch (policy) {
     case UnknownPolicy::Occupied:

@@ -1,93 +1,92 @@
-#include "ceilplan/io/coverage_keys.hpp"
+#include "coverage_keys.hpp"
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
-#include "ceilplan/io/yaml_fields.hpp"
+#include "ceilplan/io/point_text.hpp"
 
-#include <limits>
+#include <algorithm>
 #include <set>
 
-namespace ceilplan::io {
+namespace ceilplan::io::detail {
 namespace {
 
-constexpr double kAny = std::numeric_limits<double>::max();  // finite; the model's validate() checks the range
+const Range kCoordinateM = Range::closed(-kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
 
 // Reruns a model's own checks, naming where in the file the entry sits.
 template <typename Check>
-void checked(const std::string& path, Check&& check) {
+void checked(const Section& at, Check&& check) {
   try {
     check();
-  } catch (const ceilplan::InputError& e) {
-    throw ceilplan::InputError("'" + path + "': " + e.what());
+  } catch (const InputError& e) {
+    at.fail("'" + at.path() + "': " + e.what());
   }
 }
 
-mission::FaceSet readFaces(const YAML::Node& node, const std::string& path) {
-  static const std::vector<std::string> kinds{"down", "side", "up"};
-  if (!node.IsSequence() || node.size() == 0)
-    throw ceilplan::InputError("'" + path + "' must be a non-empty list of down, side, up");
+mission::FaceSet readFaces(const Section& place) {
+  const YAML::Node list = place.required("faces", "down, side and/or up");
+  const std::string path = place.keyPath("faces");
+  if (!list.IsSequence() || list.size() == 0) place.fail("'" + path + "' must be a non-empty list of down, side, up");
   mission::FaceSet faces;
-  for (std::size_t k = 0; k < node.size(); ++k) {
-    const std::string item_path = path + "[" + std::to_string(k) + "]";
-    const std::string kind = text(node[k], item_path);
-    if (kind == "down")
-      faces.down = true;
-    else if (kind == "side")
-      faces.side = true;
-    else if (kind == "up")
-      faces.up = true;
-    else
-      throw ceilplan::InputError("'" + item_path + "' is '" + kind + "', not a face kind (did you mean '" +
-                                 nearestKey(kind, kinds) + "'?); choose down, side or up");
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string kind = place.choiceAt(list[k], path + "[" + std::to_string(k) + "]", {"down", "side", "up"});
+    (kind == "down" ? faces.down : kind == "side" ? faces.side : faces.up) = true;
   }
   return faces;
 }
 
 // `box: {min, max}` or `prism: {polygon: [[x, y], ...], z: [min, max]}`, exactly one.
-mission::RegionShape readShape(const YAML::Node& node, const std::string& path) {
-  const bool box = static_cast<bool>(node["box"]), prism = static_cast<bool>(node["prism"]);
-  if (box == prism)
-    throw ceilplan::InputError("'" + path + "' needs exactly one of 'box' {min, max} and 'prism' {polygon, z}");
-  if (box) {
-    const std::string box_path = keyPath(path, "box");
-    requireKnownKeys(node["box"], {"min", "max"}, box_path);
-    return mission::RegionShape::makeBox(
-        point3(requiredKey(node["box"], "min", box_path), box_path + ".min", kMaxPointCoordinate_m),
-        point3(requiredKey(node["box"], "max", box_path), box_path + ".max", kMaxPointCoordinate_m));
+mission::RegionShape readShape(const Section& place) {
+  if (place.has("box") == place.has("prism"))
+    place.fail("'" + place.path() + "' needs exactly one of 'box' {min, max} and 'prism' {polygon, z}");
+  if (place.has("box")) {
+    const Section box = place.section("box");
+    box.allowOnly({"min", "max"});
+    return mission::RegionShape::makeBox(box.vector3("min", kCoordinateM), box.vector3("max", kCoordinateM));
   }
-  const std::string prism_path = keyPath(path, "prism");
-  requireKnownKeys(node["prism"], {"polygon", "z"}, prism_path);
-  const YAML::Node polygon = requiredKey(node["prism"], "polygon", prism_path);
-  const std::string polygon_path = prism_path + ".polygon";
-  if (!polygon.IsSequence()) throw ceilplan::InputError("'" + polygon_path + "' must be a list of [x, y] vertices");
+  const Section prism = place.section("prism");
+  prism.allowOnly({"polygon", "z"});
+  const YAML::Node polygon = prism.required("polygon");
+  const std::string polygon_path = prism.keyPath("polygon");
+  if (!polygon.IsSequence()) prism.fail("'" + polygon_path + "' must be a list of [x, y] vertices");
   std::vector<Eigen::Vector2d> vertices;
   for (std::size_t k = 0; k < polygon.size(); ++k) {
-    const std::vector<double> xy = numbers(polygon[k], polygon_path + "[" + std::to_string(k) + "]", 2,
-                                           -kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
+    const std::vector<double> xy =
+        prism.numbersAt(polygon[k], polygon_path + "[" + std::to_string(k) + "]", 2, kCoordinateM);
     vertices.emplace_back(xy[0], xy[1]);
   }
-  const std::vector<double> z = numbers(requiredKey(node["prism"], "z", prism_path), prism_path + ".z", 2,
-                                        -kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
+  const std::vector<double> z = prism.numbers("z", 2, kCoordinateM);
   return mission::RegionShape::makePrism(std::move(vertices), z[0], z[1]);
 }
 
 // What surfaces and contact grids share: name, box or prism, faces.
-void readPlace(const YAML::Node& node, const std::string& path, std::string& name, mission::RegionShape& shape,
-               mission::FaceSet& faces) {
-  name = text(requiredKey(node, "name", path), keyPath(path, "name"));
-  shape = readShape(node, path);
-  faces = readFaces(requiredKey(node, "faces", path, "down, side and/or up"), keyPath(path, "faces"));
+void readPlace(const Section& place, std::string& name, mission::RegionShape& shape, mission::FaceSet& faces) {
+  name = place.text("name");
+  if (name.empty()) place.fail("'" + place.keyPath("name") + "' is empty");
+  shape = readShape(place);
+  faces = readFaces(place);
 }
 
 // Overlap in percent; a value in (0, 1] is a fraction written by mistake.
-double readOverlap(const YAML::Node& node, const std::string& path) {
-  const double value = numberIn(node, path, -kAny, kAny, "%");
+double readOverlap(const Section& overlap, const std::string& key, double fallback) {
+  const double value = overlap.number(key, Range::finite("%"), fallback);
+  const std::string path = overlap.keyPath(key);
   if (value > 0.0 && value <= 1.0)
-    throw ceilplan::InputError("'" + path + "' is " + formatNumber(value) +
-                               ": overlap is in percent (write 70 for 70 %), and below 100");
+    overlap.fail("'" + path + "' is " + formatNumber(value) +
+                 ": overlap is in percent (write 70 for 70 %), and below 100");
   if (value < 0.0 || value >= 100.0)
-    throw ceilplan::InputError("'" + path + "' must lie in [0, 100) %, got " + formatNumber(value) +
-                               (value >= 100.0 ? ": photos overlapping 100 % or more never advance" : ""));
+    overlap.fail("'" + path + "' must lie in [0, 100) %, got " + formatNumber(value) +
+                 (value >= 100.0 ? ": photos overlapping 100 % or more never advance" : ""));
   return value;
+}
+
+// A non-empty list under `key` of the root, each entry a map read by `read`.
+template <typename Read>
+void readList(const Section& root, const std::string& key, const std::string& what, Read&& read) {
+  const YAML::Node list = root.node()[key];
+  if (!list) return;
+  if (!list.IsSequence() || list.size() == 0) root.fail("'" + key + "' must be a non-empty list of " + what);
+  for (std::size_t k = 0; k < list.size(); ++k)
+    read(Section(root.file(), list[k], key + "[" + std::to_string(k) + "]"));
 }
 
 }  // namespace
@@ -97,140 +96,108 @@ const std::vector<std::string>& coverageKeyNames() {
   return names;
 }
 
-mission::Camera readCamera(const YAML::Node& node, const std::string& path) {
-  requireKnownKeys(
-      node,
-      {"preset", "sensor_width_mm", "sensor_height_mm", "image_width_px", "image_height_px", "focal_length_mm",
-       "mount_offset_m", "gimbal_pitch_deg", "min_focus_m", "min_photo_interval_s", "capture"},
-      path);
+mission::Camera readCamera(const Section& node) {
+  node.allowOnly({"preset", "sensor_width_mm", "sensor_height_mm", "image_width_px", "image_height_px",
+                  "focal_length_mm", "mount_offset_m", "gimbal_pitch_deg", "min_focus_m", "min_photo_interval_s",
+                  "capture"});
   mission::Camera camera;
-  if (node["preset"]) {
-    const std::string name = text(node["preset"], keyPath(path, "preset"));
+  if (node.has("preset")) {
     std::vector<std::string> names;
     for (const auto& preset : mission::cameraPresets()) names.push_back(preset.camera.name);
-    if (std::find(names.begin(), names.end(), name) == names.end()) {
-      std::string list;
-      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-      throw ceilplan::InputError("'" + keyPath(path, "preset") + "' is '" + name +
-                                 "', no shipped camera (did you mean '" + nearestKey(name, names) +
-                                 "'?); presets: " + list);
-    }
-    camera = mission::cameraPreset(name).camera;
+    camera = mission::cameraPreset(node.choice("preset", names, "")).camera;
   } else {
     for (const char* key : {"sensor_width_mm", "sensor_height_mm", "image_width_px", "image_height_px",
                             "focal_length_mm", "gimbal_pitch_deg", "min_focus_m"})
-      requiredKey(node, key, path, "or give 'preset'");
+      node.required(key, "or give 'preset'");
   }
-  const auto number = [&](const char* key, double& field) {
-    if (node[key]) field = numberIn(node[key], keyPath(path, key), -kAny, kAny, "");
+  const auto number = [&](const char* key, double& field, const char* unit) {
+    field = node.number(key, Range::finite(unit), field);
   };
   const auto pixels = [&](const char* key, int& field) {
-    if (node[key]) field = static_cast<int>(integerIn(node[key], keyPath(path, key), 1, 1000000, "px"));
+    field = static_cast<int>(node.integer(key, 1, 1000000, field));
   };
-  number("sensor_width_mm", camera.sensor_width_mm);
-  number("sensor_height_mm", camera.sensor_height_mm);
+  number("sensor_width_mm", camera.sensor_width_mm, "mm");
+  number("sensor_height_mm", camera.sensor_height_mm, "mm");
   pixels("image_width_px", camera.image_width_px);
   pixels("image_height_px", camera.image_height_px);
-  number("focal_length_mm", camera.focal_length_mm);
-  number("min_focus_m", camera.min_focus_m);
-  number("min_photo_interval_s", camera.min_photo_interval_s);
-  if (node["mount_offset_m"]) camera.mount_offset_m = point3(node["mount_offset_m"], keyPath(path, "mount_offset_m"));
-  if (node["gimbal_pitch_deg"]) {
-    const std::vector<double> pitch =
-        numbers(node["gimbal_pitch_deg"], keyPath(path, "gimbal_pitch_deg"), 2, -kAny, kAny, "deg");
+  number("focal_length_mm", camera.focal_length_mm, "mm");
+  number("min_focus_m", camera.min_focus_m, "m");
+  number("min_photo_interval_s", camera.min_photo_interval_s, "s");
+  if (node.has("mount_offset_m")) {
+    const std::vector<double> offset = node.numbers("mount_offset_m", 3, kCoordinateM);
+    camera.mount_offset_m = {offset[0], offset[1], offset[2]};
+  }
+  if (node.has("gimbal_pitch_deg")) {
+    const std::vector<double> pitch = node.numbers("gimbal_pitch_deg", 2, Range::finite("deg"));
     camera.gimbal_pitch_min_deg = pitch[0];
     camera.gimbal_pitch_max_deg = pitch[1];
   }
-  if (node["capture"]) {
-    const std::string capture_path = keyPath(path, "capture");
-    const YAML::Node capture = node["capture"];
-    requireKnownKeys(capture, {"style", "hover_s", "exposure_s", "blur_limit_px"}, capture_path);
-    const std::string style =
-        text(requiredKey(capture, "style", capture_path, "hover or move"), capture_path + ".style");
-    if (style == "hover")
-      camera.capture = mission::CaptureStyle::Hover;
-    else if (style == "move")
-      camera.capture = mission::CaptureStyle::OnTheMove;
-    else
-      throw ceilplan::InputError("'" + capture_path + ".style' is '" + style + "' (did you mean '" +
-                                 nearestKey(style, {"hover", "move"}) + "'?); choose hover or move");
-    if (capture["hover_s"]) camera.hover_s = numberIn(capture["hover_s"], capture_path + ".hover_s", -kAny, kAny, "");
-    if (capture["exposure_s"])
-      camera.exposure_s = numberIn(capture["exposure_s"], capture_path + ".exposure_s", -kAny, kAny, "");
-    if (capture["blur_limit_px"])
-      camera.blur_limit_px = numberIn(capture["blur_limit_px"], capture_path + ".blur_limit_px", -kAny, kAny, "");
+  if (const std::optional<Section> capture = node.optionalSection("capture")) {
+    capture->allowOnly({"style", "hover_s", "exposure_s", "blur_limit_px"});
+    capture->required("style", "hover or move");
+    camera.capture = capture->choice("style", {"hover", "move"}, "") == "hover" ? mission::CaptureStyle::Hover
+                                                                                : mission::CaptureStyle::OnTheMove;
+    camera.hover_s = capture->number("hover_s", Range::finite("s"), camera.hover_s);
+    camera.exposure_s = capture->number("exposure_s", Range::finite("s"), camera.exposure_s);
+    camera.blur_limit_px = capture->number("blur_limit_px", Range::finite("px"), camera.blur_limit_px);
   }
-  camera.validate();
+  checked(node, [&] { camera.validate(); });
   return camera;
 }
 
-mission::CoverageRegion readSurface(const YAML::Node& node, const std::string& path) {
-  requireKnownKeys(node, {"name", "box", "prism", "faces", "gsd_mm_px", "overlap", "max_incidence_deg"}, path);
+mission::CoverageRegion readSurface(const Section& node) {
+  node.allowOnly({"name", "box", "prism", "faces", "gsd_mm_px", "overlap", "max_incidence_deg"});
   mission::CoverageRegion region;
-  readPlace(node, path, region.name, region.shape, region.faces);
-  region.gsd_mm_px = numberIn(requiredKey(node, "gsd_mm_px", path), keyPath(path, "gsd_mm_px"), -kAny, kAny, "mm/px");
+  readPlace(node, region.name, region.shape, region.faces);
+  region.gsd_mm_px = node.number("gsd_mm_px", Range::finite("mm/px"));
   if (region.gsd_mm_px <= 0.0)
-    throw ceilplan::InputError("'" + keyPath(path, "gsd_mm_px") + "' must be positive, got " +
-                               formatNumber(region.gsd_mm_px));
-  if (node["overlap"]) {
-    const std::string overlap_path = keyPath(path, "overlap");
-    requireKnownKeys(node["overlap"], {"front", "side"}, overlap_path);
-    if (node["overlap"]["front"])
-      region.overlap_front_pct = readOverlap(node["overlap"]["front"], overlap_path + ".front");
-    if (node["overlap"]["side"]) region.overlap_side_pct = readOverlap(node["overlap"]["side"], overlap_path + ".side");
+    node.fail("'" + node.keyPath("gsd_mm_px") + "' must be positive, got " + formatNumber(region.gsd_mm_px));
+  if (const std::optional<Section> overlap = node.optionalSection("overlap")) {
+    overlap->allowOnly({"front", "side"});
+    region.overlap_front_pct = readOverlap(*overlap, "front", region.overlap_front_pct);
+    region.overlap_side_pct = readOverlap(*overlap, "side", region.overlap_side_pct);
   }
-  if (node["max_incidence_deg"])
-    region.max_incidence_deg =
-        numberIn(node["max_incidence_deg"], keyPath(path, "max_incidence_deg"), -kAny, kAny, "deg");
-  checked(path, [&] { region.validate(); });
+  region.max_incidence_deg = node.number("max_incidence_deg", Range::finite("deg"), region.max_incidence_deg);
+  checked(node, [&] { region.validate(); });
   return region;
 }
 
-mission::ContactGrid readContactGrid(const YAML::Node& node, const std::string& path) {
-  requireKnownKeys(node, {"name", "box", "prism", "faces", "spacing_m", "dwell_s", "reach_m"}, path);
+mission::ContactGrid readContactGrid(const Section& node) {
+  node.allowOnly({"name", "box", "prism", "faces", "spacing_m", "dwell_s", "reach_m"});
   mission::ContactGrid grid;
-  readPlace(node, path, grid.name, grid.shape, grid.faces);
-  grid.spacing_m = numberIn(requiredKey(node, "spacing_m", path), keyPath(path, "spacing_m"), -kAny, kAny, "m");
-  grid.dwell_s = numberIn(requiredKey(node, "dwell_s", path), keyPath(path, "dwell_s"), -kAny, kAny, "s");
-  if (node["reach_m"]) grid.reach_m = numberIn(node["reach_m"], keyPath(path, "reach_m"), -kAny, kAny, "m");
-  checked(path, [&] { grid.validate(); });
+  readPlace(node, grid.name, grid.shape, grid.faces);
+  grid.spacing_m = node.number("spacing_m", Range::finite("m"));
+  grid.dwell_s = node.number("dwell_s", Range::finite("s"));
+  grid.reach_m = node.number("reach_m", Range::finite("m"), grid.reach_m);
+  checked(node, [&] { grid.validate(); });
   return grid;
 }
 
-CoverageKeys readCoverageKeys(const YAML::Node& root) {
+CoverageKeys readCoverageKeys(const Section& root) {
   CoverageKeys keys;
-  if (root["camera"]) keys.camera = readCamera(root["camera"], "camera");
+  if (const std::optional<Section> camera = root.optionalSection("camera")) keys.camera = readCamera(*camera);
   std::set<std::string> names;
-  const auto unique = [&](const std::string& name, const std::string& path) {
+  const auto unique = [&](const Section& place, const std::string& name) {
     if (!names.insert(name).second)
-      throw ceilplan::InputError("'" + path + ".name' repeats '" + name +
-                                 "': surfaces and contact grids need distinct names");
+      place.fail("'" + place.keyPath("name") + "' repeats '" + name +
+                 "': surfaces and contact grids need distinct names");
   };
-  if (const YAML::Node list = root["surfaces"]) {
-    if (!list.IsSequence() || list.size() == 0)
-      throw ceilplan::InputError("'surfaces' must be a non-empty list of regions");
-    for (std::size_t k = 0; k < list.size(); ++k) {
-      const std::string path = "surfaces[" + std::to_string(k) + "]";
-      keys.surfaces.push_back(readSurface(list[k], path));
-      unique(keys.surfaces.back().name, path);
-    }
-    if (!keys.camera)
-      throw ceilplan::InputError(
-          "missing key 'camera' (surfaces are photographed: give a 'preset' or the sensor keys)");
+  std::vector<Section> surfaces;
+  readList(root, "surfaces", "regions", [&](const Section& node) {
+    keys.surfaces.push_back(readSurface(node));
+    unique(node, keys.surfaces.back().name);
+    surfaces.push_back(node);
+  });
+  if (!keys.surfaces.empty()) {
+    if (!keys.camera) root.fail("missing key 'camera' (surfaces are photographed: give a 'preset' or the sensor keys)");
     for (std::size_t k = 0; k < keys.surfaces.size(); ++k)
-      checked("surfaces[" + std::to_string(k) + "]",
-              [&] { mission::checkCameraReaches(*keys.camera, keys.surfaces[k]); });
+      checked(surfaces[k], [&] { mission::checkCameraReaches(*keys.camera, keys.surfaces[k]); });
   }
-  if (const YAML::Node list = root["contact_grid"]) {
-    if (!list.IsSequence() || list.size() == 0)
-      throw ceilplan::InputError("'contact_grid' must be a non-empty list of grids");
-    for (std::size_t k = 0; k < list.size(); ++k) {
-      const std::string path = "contact_grid[" + std::to_string(k) + "]";
-      keys.contact_grids.push_back(readContactGrid(list[k], path));
-      unique(keys.contact_grids.back().name, path);
-    }
-  }
+  readList(root, "contact_grid", "grids", [&](const Section& node) {
+    keys.contact_grids.push_back(readContactGrid(node));
+    unique(node, keys.contact_grids.back().name);
+  });
   return keys;
 }
 
-}  // namespace ceilplan::io
+}  // namespace ceilplan::io::detail

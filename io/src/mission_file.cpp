@@ -5,12 +5,12 @@
 #include "ceilplan/core/input_file.hpp"
 #include "ceilplan/core/install_paths.hpp"
 #include "ceilplan/core/printable_text.hpp"
-#include "ceilplan/io/coverage_keys.hpp"
 #include "ceilplan/io/dji_wpml.hpp"
 #include "ceilplan/io/point_text.hpp"
 #include "ceilplan/io/vehicle_file.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
 
+#include "coverage_keys.hpp"
 #include "yaml_reader.hpp"
 
 #include <set>
@@ -29,9 +29,18 @@ const std::vector<std::string> kBatteryKeys{"capacity_ah", "charge_current_a", "
 // Any place in a map: a kilometre either way (the index refuses maps too large to hold anyway).
 const Range kCoordinateM = Range::closed(-kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
 
+// The vehicle a battery powers, as a message names it.
+std::string vehicleSource(const mission::Vehicle& vehicle, const std::filesystem::path& vehicle_file) {
+  return vehicle_file.empty() ? "the vehicle '" + printableText(vehicle.name, 80) + "'"
+                              : printableText(vehicle_file.string(), 256);
+}
+
 // Reads a battery section; in a mission file the pack and SOC limits of a tour are required,
-// a battery file may leave any of them at the founding paper's values.
-mission::BatterySpec readBatterySection(const Section& section, bool all_required) {
+// a battery file may leave any of them at the founding paper's values. The energy model flies
+// the vehicle's pack, so a cell count that is not the vehicle's is refused (absent, it is the
+// vehicle's).
+mission::BatterySpec readBatterySection(const Section& section, bool all_required, const mission::Vehicle& vehicle,
+                                        const std::filesystem::path& vehicle_file) {
   section.allowOnly(kBatteryKeys);
   mission::BatterySpec spec;
   battery::Pack& pack = spec.pack;
@@ -43,7 +52,13 @@ mission::BatterySpec readBatterySection(const Section& section, bool all_require
              pack.capacity_ah, all_required);
   pack.charge_current_a =
       number("charge_current_a", Range::above(0.0, 1000.0, "A"), pack.charge_current_a, all_required);
-  pack.cell_count = static_cast<int>(section.integer("cell_count", 1, 24, pack.cell_count));
+  const int vehicle_cells = vehicle.energy.pack.cell_count;
+  pack.cell_count = static_cast<int>(section.integer("cell_count", 1, 24, vehicle_cells));
+  if (pack.cell_count != vehicle_cells)
+    section.fail(
+        "'" + section.keyPath("cell_count") + "' is " + std::to_string(pack.cell_count) + " cells, but " +
+        vehicleSource(vehicle, vehicle_file) + " has a " + std::to_string(vehicle_cells) +
+        "-cell pack (power.pack.cell_count): give the vehicle of this battery, or the battery of this vehicle");
   pack.soc_min = section.number("soc_min", Range::below(0.0, 1.0), pack.soc_min);
   pack.state_of_health = section.number("state_of_health", Range::above(0.0, 1.0), pack.state_of_health);
   spec.start_soc = number("start_soc", Range::above(0.0, 1.0), spec.start_soc, all_required);
@@ -72,9 +87,9 @@ mission::GeodeticOrigin readOrigin(const Section& node) {
   return origin;
 }
 
-mission::MissionSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
+planner::FlightSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
   node.allowOnly({"cruise_m_s", "inspection_m_s", "climb_m_s", "descent_m_s"});
-  mission::MissionSpeeds speeds;
+  planner::FlightSpeeds speeds;
   const double min_m_s = planner::FlightSpeeds::kMinSpeed_m_s;
   const Range horizontal = Range::closed(min_m_s, max_speed_m_s, "m/s (the vehicle's max_speed_m_s)");
   const Range vertical =
@@ -83,6 +98,8 @@ mission::MissionSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
   speeds.inspection_m_s = node.number("inspection_m_s", horizontal, speeds.inspection_m_s);
   speeds.climb_m_s = node.number("climb_m_s", vertical, speeds.climb_m_s);
   speeds.descent_m_s = node.number("descent_m_s", vertical, speeds.descent_m_s);
+  // A mission file has no key for the slow zone under a ceiling: never faster than cruise.
+  speeds.near_ceiling_m_s = std::min(speeds.near_ceiling_m_s, speeds.cruise_m_s);
   return speeds;
 }
 
@@ -139,14 +156,15 @@ std::filesystem::path existingFile(const Section& root, const std::string& key) 
 
 environment::UnknownSpace readUnknownSpace(const Section& node) {
   node.allowOnly({"policy", "fill_max_m"});
-  environment::UnknownSpace unknown;
-  unknown.policy = environment::unknownPolicyFromName(node.choice("policy", {"occupied", "free", "fill"}, "occupied"));
-  if (node.has("fill_max_m")) {
-    if (unknown.policy != environment::UnknownPolicy::Fill)
-      node.fail("'" + node.keyPath("fill_max_m") + "' applies only to policy: fill");
-    unknown.fill_max_m = node.number("fill_max_m", Range::above(0.0, environment::UnknownSpace::kMaxFill_m, "m"));
+  std::optional<double> fill_max_m;
+  if (node.has("fill_max_m"))
+    fill_max_m = node.number("fill_max_m", Range::above(0.0, environment::UnknownSpace::kMaxFill_m, "m"));
+  try {
+    return environment::parseUnknownSpace(node.text("policy", "occupied"), fill_max_m,
+                                          {"'" + node.keyPath("policy") + "'", "'" + node.keyPath("fill_max_m") + "'"});
+  } catch (const InputError& e) {
+    node.fail(e.what());
   }
-  return unknown;
 }
 
 mission::DjiAircraft readDjiAircraft(const Section& dji) {
@@ -181,22 +199,22 @@ mission::Mission readMission(const std::filesystem::path& file) {
   const Section root(yaml, yaml.root(), "");
   std::vector<std::string> keys{"map",  "vehicle", "battery", "home",       "origin", "speeds",
                                 "mode", "seed",    "unknown", "trajectory", "dji",    "targets"};
-  keys.insert(keys.end(), coverageKeyNames().begin(), coverageKeyNames().end());
+  keys.insert(keys.end(), detail::coverageKeyNames().begin(), detail::coverageKeyNames().end());
   root.allowOnly(keys);
   mission::Mission mission;
   mission.file = file;
   mission.map_file = existingFile(root, "map");
   mission.vehicle_file = existingFile(root, "vehicle");
   mission.vehicle = readVehicle(mission.vehicle_file);
-  mission.battery = readBatterySection(root.section("battery"), true);
+  mission.battery = readBatterySection(root.section("battery"), true, mission.vehicle, mission.vehicle_file);
   mission.home_m = root.vector3("home", kCoordinateM);
   if (const std::optional<Section> origin = root.optionalSection("origin")) mission.origin = readOrigin(*origin);
   if (const std::optional<Section> speeds = root.optionalSection("speeds"))
-    mission.speeds = readSpeeds(*speeds, mission.vehicle.energy.airframe.max_speed_m_s);
+    mission.planning.speeds = readSpeeds(*speeds, mission.vehicle.energy.airframe.max_speed_m_s);
   mission.mode = root.choice("mode", {"ceiling", "free", "both"}, "");
-  mission.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, 1));
+  mission.planning.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, mission.planning.seed));
   if (const std::optional<Section> unknown = root.optionalSection("unknown"))
-    mission.unknown = readUnknownSpace(*unknown);
+    mission.planning.unknown = readUnknownSpace(*unknown);
   if (const std::optional<Section> trajectory = root.optionalSection("trajectory")) {
     trajectory->allowOnly({"rate_hz", "corner_tolerance_m", "stop_turn_deg", "frame"});
     mission::TrajectoryOptions& t = mission.trajectory;
@@ -206,14 +224,10 @@ mission::Mission readMission(const std::filesystem::path& file) {
     mission.trajectory_ned = trajectory->choice("frame", {"enu", "ned"}, "enu") == "ned";
   }
   if (const std::optional<Section> dji = root.optionalSection("dji")) mission.dji = readDjiAircraft(*dji);
-  try {
-    CoverageKeys coverage = readCoverageKeys(root.node());
-    mission.camera = std::move(coverage.camera);
-    mission.surfaces = std::move(coverage.surfaces);
-    mission.contact_grids = std::move(coverage.contact_grids);
-  } catch (const InputError& e) {
-    root.fail(e.what());
-  }
+  detail::CoverageKeys coverage = detail::readCoverageKeys(root);
+  mission.camera = std::move(coverage.camera);
+  mission.surfaces = std::move(coverage.surfaces);
+  mission.contact_grids = std::move(coverage.contact_grids);
   mission.targets = readTargets(root, !mission.isCoverage());
   // Contact points are named "<grid>_<k>" and photos "<surface>_photo<k>": point targets keep clear.
   std::vector<std::string> prefixes;
@@ -227,17 +241,22 @@ mission::Mission readMission(const std::filesystem::path& file) {
   return mission;
 }
 
-mission::BatterySpec readBatteryOrDefault(const std::filesystem::path& file) {
-  return file.empty() ? mission::BatterySpec{} : readBattery(file);
+mission::BatterySpec readBatteryOrDefault(const std::filesystem::path& file, const mission::Vehicle& vehicle,
+                                          const std::filesystem::path& vehicle_file) {
+  if (!file.empty()) return readBattery(file, vehicle, vehicle_file);
+  mission::BatterySpec paper;
+  paper.pack.cell_count = vehicle.energy.pack.cell_count;
+  return paper;
 }
 
-mission::BatterySpec readBattery(const std::filesystem::path& file) {
+mission::BatterySpec readBattery(const std::filesystem::path& file, const mission::Vehicle& vehicle,
+                                 const std::filesystem::path& vehicle_file) {
   const YamlFile yaml(file, FileKind::Battery);
   const Section root(yaml, yaml.root(), "");
   // A mission file serves as a battery file: its other keys are the mission reader's to check.
   if (root.has("battery") && (root.has("targets") || root.has("surfaces") || root.has("contact_grid")))
-    return readBatterySection(root.section("battery"), true);
-  return readBatterySection(root, false);
+    return readBatterySection(root.section("battery"), true, vehicle, vehicle_file);
+  return readBatterySection(root, false, vehicle, vehicle_file);
 }
 
 }  // namespace ceilplan::io

@@ -9,6 +9,7 @@
 #include "ceilplan/io/vehicle_file.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
+#include "ceilplan/planner/flight_cost_model.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -143,6 +144,7 @@ std::string proposedMissionYaml(const mission::MissionProposal& proposal, const 
                                 const fs::path& mission_file, const Provenance& provenance) {
   settings.validate();
   const fs::path mission_dir = fs::absolute(mission_file).parent_path();
+  const planner::FlightSpeeds speeds;  // the defaults, written out to be changed
   std::ostringstream yaml;
   yaml << "# " << printableText(provenance.line(), 4000) << "\n"
        << "# A coverage mission proposed from the map by `ceilplan propose` (docs/import.md): its overhead\n"
@@ -155,7 +157,10 @@ std::string proposedMissionYaml(const mission::MissionProposal& proposal, const 
        << "home: " << flowPoint(proposal.home_m, 3)
        << (proposal.home_given ? "   # as given\n" : "   # proposed: known free space low above the floor\n")
        << "# No origin: a scan has no geodetic frame. Add `origin: {lat, lon, alt}` for autopilot files.\n"
-       << "speeds: {cruise_m_s: 2.0, inspection_m_s: 0.5, climb_m_s: 1.0, descent_m_s: 0.8}\n"
+       << "speeds: {cruise_m_s: " << formatNumber(speeds.cruise_m_s)
+       << ", inspection_m_s: " << formatNumber(speeds.inspection_m_s)
+       << ", climb_m_s: " << formatNumber(speeds.climb_m_s) << ", descent_m_s: " << formatNumber(speeds.descent_m_s)
+       << "}\n"
        << "seed: " << settings.seed << "\n";
   if (settings.unknown.policy != environment::UnknownPolicy::Occupied)
     yaml << "unknown: {policy: " << environment::unknownPolicyName(settings.unknown.policy)

@@ -247,7 +247,7 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   json["map"] = mission.map_file.string();
   json["vehicle"] = mission.vehicle_file.empty() ? "built-in: " + mission.vehicle.name : mission.vehicle_file.string();
   json["mode"] = mission::flightModeName(tour.mode);
-  json["seed"] = tour.options.seed;
+  json["seed"] = tour.planning.seed;
   json["planner"] = tour.options.planner;
   json["ageing_model"] = tour.plan.ageing_model;
   json["order_method"] = tour.order.method;
@@ -364,7 +364,7 @@ std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour,
   std::vector<AutopilotMission> missions;
   for (const mission::SortieRoute& route : tour.routes) {
     missions.push_back(autopilotMission(route, origin, autopilot));
-    missions.back().hover_speed_m_s = mission.speeds.inspection_m_s;
+    missions.back().hover_speed_m_s = mission.planning.speeds.inspection_m_s;
   }
   return missions;
 }
@@ -534,14 +534,14 @@ std::optional<std::string> standoffLimitedLine(const mission::TourResult& tour) 
   return line + "(tour.json: standoff.limited_targets)";
 }
 
-std::string tourHeadline(const mission::Mission& mission, const std::string& mode,
-                         const mission::TourOptions& options) {
+std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options,
+                         const mission::PlanningOptions& settings) {
   std::string inspects = std::to_string(mission.targets.size()) + " targets";
   if (mission.isCoverage())
     inspects += ", " + std::to_string(mission.surfaces.size()) + " surface(s), " +
                 std::to_string(mission.contact_grids.size()) + " contact grid(s)";
   return "tour of " + mission.file.string() + ": " + inspects + ", mode " + mode + ", planner " + options.planner +
-         ", seed " + std::to_string(options.seed) + ", split for least " + options.ageing_model + " wear\n";
+         ", seed " + std::to_string(settings.seed) + ", split for least " + settings.ageing_model + " wear\n";
 }
 
 std::string tourFilesLine(const std::filesystem::path& dir, const mission::Mission& mission,

@@ -40,6 +40,14 @@ std::string shown(const YAML::Node& node) {
 
 }  // namespace
 
+Range Range::finite(std::string unit) {
+  return closed(std::numeric_limits<double>::lowest(), std::numeric_limits<double>::max(), std::move(unit));
+}
+
+bool Range::bounded() const {
+  return min > std::numeric_limits<double>::lowest() || max < std::numeric_limits<double>::max();
+}
+
 bool Range::contains(double value) const {
   if (!std::isfinite(value)) return false;
   if (min_open ? value <= min : value < min) return false;
@@ -171,17 +179,38 @@ YAML::Node Section::required(const std::string& key) const {
 }
 
 double Section::numberAt(const YAML::Node& node, const std::string& path, const Range& range) const {
+  const std::string within = range.bounded() ? " in " + range.describe() : "";
   double value = 0.0;
-  if (!node.IsScalar()) fail("'" + path + "' must be a number in " + range.describe() + ", got " + shown(node));
+  if (!node.IsScalar()) fail("'" + path + "' must be a number" + within + ", got " + shown(node));
   try {
     value = node.as<double>();
   } catch (const YAML::Exception&) {
-    fail("'" + path + "' must be a number in " + range.describe() + ", got " + shown(node));
+    fail("'" + path + "' must be a number" + within + ", got " + shown(node));
   }
   if (!range.contains(value))
-    fail("'" + path + "' must be " + (std::isfinite(value) ? "in " : "a finite number in ") + range.describe() +
+    fail("'" + path + "' must be " + (std::isfinite(value) ? "in " + range.describe() : "a finite number" + within) +
          ", got " + formatNumber(value));
   return value;
+}
+
+std::vector<double> Section::numbersAt(const YAML::Node& node, const std::string& path, std::size_t count,
+                                       const Range& range) const {
+  if (!node.IsSequence() || node.size() != count)
+    fail("'" + path + "' must be a list of " + std::to_string(count) + " numbers, got " + shown(node));
+  std::vector<double> values;
+  for (std::size_t k = 0; k < count; ++k)
+    values.push_back(numberAt(node[k], path + "[" + std::to_string(k) + "]", range));
+  return values;
+}
+
+std::string Section::choiceAt(const YAML::Node& node, const std::string& path,
+                              const std::vector<std::string>& choices) const {
+  if (node.IsScalar() && std::find(choices.begin(), choices.end(), node.Scalar()) != choices.end())
+    return node.Scalar();
+  std::string list;
+  for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
+  fail("'" + path + "' must be one of " + list + ", got " + shown(node) +
+       (node.IsScalar() ? didYouMean(node.Scalar(), choices) : ""));
 }
 
 double Section::number(const std::string& key, const Range& range) const {
@@ -224,21 +253,18 @@ std::string Section::text(const std::string& key, const std::string& fallback) c
 std::string Section::choice(const std::string& key, const std::vector<std::string>& choices,
                             const std::string& fallback) const {
   if (!has(key)) return fallback;
-  const std::string value = text(key);
-  if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
-  std::string list;
-  for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
-  fail("'" + keyPath(key) + "' must be one of " + list + ", got " + shown(node_[key]) + didYouMean(value, choices));
+  text(key);  // a list or a map is "must be text"
+  return choiceAt(node_[key], keyPath(key), choices);
+}
+
+YAML::Node Section::required(const std::string& key, const std::string& hint) const {
+  const YAML::Node node = node_[key];
+  if (!node) fail("missing key '" + keyPath(key) + "' (" + hint + ")");
+  return node;
 }
 
 std::vector<double> Section::numbers(const std::string& key, std::size_t count, const Range& range) const {
-  const YAML::Node node = required(key);
-  if (!node.IsSequence() || node.size() != count)
-    fail("'" + keyPath(key) + "' must be a list of " + std::to_string(count) + " numbers, got " + shown(node));
-  std::vector<double> values;
-  for (std::size_t k = 0; k < count; ++k)
-    values.push_back(numberAt(node[k], keyPath(key) + "[" + std::to_string(k) + "]", range));
-  return values;
+  return numbersAt(required(key), keyPath(key), count, range);
 }
 
 Eigen::Vector3d Section::vector3(const std::string& key, const Range& range) const {

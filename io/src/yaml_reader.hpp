@@ -1,6 +1,7 @@
 #pragma once
-// Strict reading of ceilplan's YAML inputs (mission, vehicle and battery files): every key is
-// known or an error with the nearest valid key, every number has a physical range checked
+// Strict reading of ceilplan's YAML inputs (mission, vehicle, battery and --config files, and a
+// mission's coverage keys, coverage_keys.hpp): the one YAML reader. Every key is known or an
+// error with the nearest valid key, a repeated key is refused, every number has a physical range checked
 // before anything is built, a file of the wrong kind says so, and every error is one line
 // "FILE: 'dotted.key' ..." as a ceilplan::InputError. Private to io/.
 
@@ -32,8 +33,11 @@ struct Range {
   static Range above(double min, double max, std::string unit = "") { return {min, max, std::move(unit), true, false}; }
   // [min, max): e.g. a floor that must stay below 1.
   static Range below(double min, double max, std::string unit = "") { return {min, max, std::move(unit), false, true}; }
+  // Any finite number: for a field whose model checks its own range (mission::Camera::validate).
+  static Range finite(std::string unit = "");
 
   bool contains(double value) const;
+  bool bounded() const;
   std::string describe() const;  // "(0, 1000] Ah"
 };
 
@@ -78,6 +82,7 @@ class Section {
 
   const YamlFile& file() const { return *file_; }
   const YAML::Node& node() const { return node_; }
+  const std::string& path() const { return path_; }  // "battery", "surfaces[0]"; "" for the root
   bool has(const std::string& key) const { return static_cast<bool>(node_[key]); }
   // "battery.capacity_ah" for key "capacity_ah" of section "battery".
   std::string keyPath(const std::string& key) const;
@@ -103,6 +108,8 @@ class Section {
   // One of `choices`, naming them when it is not.
   std::string choice(const std::string& key, const std::vector<std::string>& choices,
                      const std::string& fallback) const;
+  // A required key, or "missing key 'PATH' (HINT)".
+  YAML::Node required(const std::string& key, const std::string& hint) const;
   // [x, y, z], each finite and in `range`.
   Eigen::Vector3d vector3(const std::string& key, const Range& range) const;
   // [a, b] (or longer), each finite and in `range`.
@@ -110,6 +117,9 @@ class Section {
 
   // Checks a node read elsewhere (a list entry) the same way.
   double numberAt(const YAML::Node& node, const std::string& path, const Range& range) const;
+  std::vector<double> numbersAt(const YAML::Node& node, const std::string& path, std::size_t count,
+                                const Range& range) const;
+  std::string choiceAt(const YAML::Node& node, const std::string& path, const std::vector<std::string>& choices) const;
 
   [[noreturn]] void fail(const std::string& problem) const { file_->fail(problem); }
 

@@ -6,6 +6,7 @@
 #include "ceilplan/core/spelling.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
 #include "ceilplan/planner/ageing_rates.hpp"
+#include "ceilplan/planner/flight_planner.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -33,6 +34,8 @@ void PlanningOptions::validate() const {
   requireIn(min_ceiling_gap_m, 0.0, 2.0, "minimum ceiling gap (m)");
   requireIn(standoff_m, 0.0, 20.0, "standoff (m)");
   requireIn(temperature_c, -40.0, 80.0, "cell temperature (C)");
+  battery::makeAgeingModel(ageing_model, ageingModelOptions(temperature_c));  // the models' own temperature range
+  planner::checkSeed(seed);
   unknown.validate();
 }
 
@@ -41,17 +44,6 @@ battery::AgeingModelOptions ageingModelOptions(double temperature_c) {
   options.conditions = battery::OperatingConditions::fromCelsius(temperature_c);
   const energy::LipoOpenCircuitVoltage ocv;  // the energy module's cell curve, for Schmalstieg
   options.cell_voltage_of_soc = [ocv](double soc) { return ocv.cellVoltageV(soc); };
-  return options;
-}
-
-PlanningOptions planningOptions(const Mission& mission) {
-  PlanningOptions options;
-  options.objective = "charge";
-  options.speeds.cruise_m_s = mission.speeds.cruise_m_s;
-  options.speeds.climb_m_s = mission.speeds.climb_m_s;
-  options.speeds.descent_m_s = mission.speeds.descent_m_s;
-  options.speeds.near_ceiling_m_s = std::min(options.speeds.near_ceiling_m_s, mission.speeds.cruise_m_s);
-  options.unknown = mission.unknown;
   return options;
 }
 
@@ -89,7 +81,7 @@ struct PlanningContext::ReachableCache {
 
 PlanningContext::PlanningContext(const Mission& mission, const ProgressCallback& progress)
     : PlanningContext(environment::OccupancyMap::load(mission.map_file), mission.vehicle, mission.battery,
-                      planningOptions(mission), progress) {}
+                      mission.planning, progress) {}
 
 PlanningContext::Mode PlanningContext::mode(FlightMode mode) const {
   Mode result;

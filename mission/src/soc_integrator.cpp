@@ -5,20 +5,6 @@
 
 namespace ceilplan::mission {
 
-SocIntegrator::SocIntegrator(const battery::Pack& pack, double start_soc, CurrentAtSoc current_at_soc)
-    : usable_capacity_ah_(pack.usableCapacityAh()),
-      current_at_soc_(std::move(current_at_soc)),
-      soc_(start_soc),
-      lowest_soc_(start_soc) {}
-
-void SocIntegrator::advance(double dt_s, double current_a) {
-  const double ah = current_a * dt_s / 3600.0;
-  charge_ah_ += ah;
-  soc_ -= ah / usable_capacity_ah_;
-  time_s_ += dt_s;
-  lowest_soc_ = std::min(lowest_soc_, soc_);
-}
-
 void flyProfile(SocIntegrator& flight, const std::vector<LoadSample>& profile, const SampleVisitor& visit) {
   double previous_a = flight.currentFor(profile.front().load);
   if (visit) visit(0, previous_a);

@@ -82,7 +82,7 @@ class SortieBuilder {
     sortie.flight_s = flight.time_s();
     sortie.lowest_soc = flight.lowestSoc();
     sortie.dod = battery_.start_soc - sortie.lowest_soc;
-    sortie.fec = used_ah / battery_.pack.capacity_ah;  // discharge + equal recharge, over 2 C_nom
+    sortie.fec = battery::fullEquivalentCycles(2.0 * used_ah, battery_.pack.capacity_ah);  // and the equal recharge
     sortie.recharge_s = rechargeS(used_ah);
     sortie.turnaround_s = battery_.between_sorties == Turnaround::Swap ? battery_.swap_s : sortie.recharge_s;
     history.back().current_a = -battery_.pack.charge_current_a;

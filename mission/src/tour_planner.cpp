@@ -154,7 +154,7 @@ CoveragePlan planMissionCoverage(const Mission& mission, const PlanningContext& 
   coverage.views.min_ceiling_gap_m = context.options().min_ceiling_gap_m + kViewpointGapMarginM;
   coverage.views.workers = options.workers;
   coverage.views.reachable = reachable;
-  coverage.costs.transit_speed_m_s = mission.speeds.inspection_m_s;
+  coverage.costs.transit_speed_m_s = context.options().speeds.inspection_m_s;
   coverage.costs.workers = options.workers;
   if (options.progress)
     coverage.progress = [&options, mode](const std::string& phase, double share) {
@@ -490,15 +490,15 @@ TourCosts tourCosts(const TourResult& tour, const PlanningContext& context) {
   return costs;
 }
 
-SortieOptions sortieOptions(const TourOptions& options) {
+SortieOptions sortieOptions(const PlanningOptions& settings) {
   SortieOptions sortie_options;
-  sortie_options.ageing_model = options.ageing_model;
-  sortie_options.ageing = ageingModelOptions(options.temperature_c);
+  sortie_options.ageing_model = settings.ageing_model;
+  sortie_options.ageing = ageingModelOptions(settings.temperature_c);
   return sortie_options;
 }
 
 // The visiting order and the sorties for the legs as they are, every pair known.
-void orderAndSplit(TourResult& tour, const PlanningContext& context, const TourOptions& options) {
+void orderAndSplit(TourResult& tour, const PlanningContext& context) {
   TourCosts legs = tourCosts(tour, context);
   const int places = static_cast<int>(tour.places_m.size());
   CostMatrix costs = CostMatrix::Zero(places, places);
@@ -510,10 +510,10 @@ void orderAndSplit(TourResult& tour, const PlanningContext& context, const TourO
       costs(i, j) = visitCost(tour, tour.legs[i][j], j);
     }
   TourOrderOptions order_options;
-  order_options.seed = options.seed;
+  order_options.seed = context.options().seed;
   tour.order = orderTour(costs, order_options);
   const CpuTimer timer(tour.times.split_cpu_s);
-  tour.plan = planSorties(legs, tour.order.targets, context.battery(), sortieOptions(options));
+  tour.plan = planSorties(legs, tour.order.targets, context.battery(), sortieOptions(context.options()));
 }
 
 // Positions 0, n / count, 2 n / count, ... of an order of n.
@@ -623,7 +623,7 @@ class SparseLegs {
       tour_.order = neighbourListTour(
           targets, [this](int from, int to) { return visitCost(from, to); },
           [this](int from, int to) { return visitBound(from, to); }, neighbours_, starts,
-          round == 1 ? options_.order_kicks : 0, options_.seed);
+          round == 1 ? options_.order_kicks : 0, context_.options().seed);
     }
     const std::vector<int>& order = tour_.order.targets;
     // Split points: evenly spaced, at least --split-points of them, more where a stretch between
@@ -796,7 +796,7 @@ class SparseLegs {
 
   SortiePlan split(const std::vector<int>& order, const std::set<int>& split_points) {
     const CpuTimer timer(tour_.times.split_cpu_s);
-    SortieOptions sortie_options = sortieOptions(options_);
+    SortieOptions sortie_options = sortieOptions(context_.options());
     sortie_options.split_points.assign(split_points.begin(), split_points.end());
     return planSorties(splitCosts(order, split_points), order, context_.battery(), sortie_options);
   }
@@ -883,6 +883,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
   TourResult tour;
   tour.mode = mode;
   tour.options = options;
+  tour.planning = context.options();
   tour.start_soc = context.battery().start_soc;
   tour.reserve_soc = context.battery().reserve_soc;
   Stopwatch clock;
@@ -963,7 +964,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
       if (sparse) {
         sparse->orderAndSplit(tour.times.rounds);
       } else {
-        orderAndSplit(tour, context, options);
+        orderAndSplit(tour, context);
       }
       for (const Sortie& sortie : tour.plan.sorties)
         for (const SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
@@ -1023,7 +1024,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
   assignTakeoffAndLanding(tour.routes, context.baseRules());
   tour.trajectories = routeTrajectories(tour.routes, mission, context.baseRules());
   for (const char* model : {"fec", "xu", "woehler", "schmalstieg"})
-    tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(options.temperature_c)));
+    tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(context.options().temperature_c)));
   tour.duty = projectDuty(tour, context.battery(), options);
   releaseUnflownSamples(tour);
   tour.times.record_s = clock.lap_s();
@@ -1041,11 +1042,8 @@ void TourOptions::validate() const {
     throw InputError(
         "tour options: all_pairs_max_places must be at least 2, neighbours and split_points at least 1, "
         "order_kicks at least 0");
-  planner::checkSeed(seed);
   latticeSettings(*this).validate();
-  // Unknown names, a temperature out of the models' range: refused by what will use them.
-  planner::plannerInfo(planner);
-  battery::makeAgeingModel(ageing_model, ageingModelOptions(temperature_c));
+  planner::plannerInfo(planner);  // an unknown name: refused by the factory
   if (free_standoff_max_m && !(*free_standoff_max_m > 0.0 && *free_standoff_max_m <= InspectionTarget::kMaxStandoff_m))
     throw InputError("tour options: free_standoff_max_m must be in (0, " +
                      formatNumber(InspectionTarget::kMaxStandoff_m) + "] m, got " + formatNumber(*free_standoff_max_m));

@@ -39,7 +39,7 @@ std::vector<SortieRoute> sortieRoutes(const SortiePlan& plan, const LegTable& le
     SortieRoute route;
     route.sortie = static_cast<int>(routes.size()) + 1;
     route.home_m = mission.home_m;
-    route.cruise_speed_m_s = mission.speeds.cruise_m_s;
+    route.cruise_speed_m_s = mission.planning.speeds.cruise_m_s;
     for (const SortieLeg& leg : sortie.legs) {
       const TourLeg& flown = legs[leg.from][leg.to];
       const std::vector<double> slowest = slowestPerSegment(flown.waypoints, flown.evaluation);
@@ -118,8 +118,8 @@ void assignTakeoffAndLanding(std::vector<SortieRoute>& routes, const planner::Sa
 std::vector<Trajectory> routeTrajectories(const std::vector<SortieRoute>& routes, const Mission& mission,
                                           const planner::SafetyRules& rules) {
   TrajectoryLimits limits;
-  limits.climb_m_s = mission.speeds.climb_m_s;
-  limits.descent_m_s = mission.speeds.descent_m_s;
+  limits.climb_m_s = mission.planning.speeds.climb_m_s;
+  limits.descent_m_s = mission.planning.speeds.descent_m_s;
   limits.max_acceleration_m_s2 = mission.vehicle.limits.max_acceleration_m_s2;
   limits.max_jerk_m_s3 = mission.vehicle.limits.max_jerk_m_s3;
   limits.max_yaw_rate_deg_s = mission.vehicle.limits.max_yaw_rate_deg_s;

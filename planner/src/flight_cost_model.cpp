@@ -31,7 +31,8 @@ void FlightSpeeds::validate(double max_speed_m_s) const {
   requireAtLeast(near_ceiling_gap_radii, 0.0, "near_ceiling_gap_radii");
   requireAtLeast(climb_m_s, kMinSpeed_m_s, "climb_m_s");
   requireAtLeast(descent_m_s, kMinSpeed_m_s, "descent_m_s");
-  if (cruise_m_s > max_speed_m_s || near_ceiling_m_s > max_speed_m_s)
+  requireAtLeast(inspection_m_s, kMinSpeed_m_s, "inspection_m_s");
+  if (cruise_m_s > max_speed_m_s || near_ceiling_m_s > max_speed_m_s || inspection_m_s > max_speed_m_s)
     throw ceilplan::InputError("speeds: horizontal speeds must not exceed the vehicle's max_speed_m_s (" +
                                formatNumber(max_speed_m_s) + " m/s)");
   // Vertical rates as a mission file allows them (io/): a multirotor climbs far slower than it cruises.

@@ -15,7 +15,8 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
   if (!(max_speed_m_s > 0.0)) throw ceilplan::InputError("the speed cap must be positive");
   if (!(start_soc > 0.0 && start_soc <= 1.0)) throw ceilplan::InputError("start SOC must lie in (0, 1]");
   const environment::Environment& environment = model.environment();
-  battery::Simulator battery(pack, start_soc);
+  pack.validate();
+  battery::CoulombCounter battery(pack, start_soc);
   PathEvaluation result;
   result.min_clearance_m = std::numeric_limits<double>::infinity();
   result.min_ceiling_gap_m = std::numeric_limits<double>::infinity();
@@ -37,7 +38,7 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     sample.ground_gap_m = conditions.ground_gap_m;
     sample.clearance_m = environment.clearance_m(position_m);
     sample.assumed_free = environment.assumesFree(position_m);
-    const energy::CurrentBreakdown terms = model.breakdown(conditions, velocity, battery.state().soc);
+    const energy::CurrentBreakdown terms = model.breakdown(conditions, velocity, battery.soc());
     sample.current_a = terms.current_a;
     sample.power_w = terms.power_w;
     sample.propulsion_power_w = terms.propulsionW();
@@ -60,14 +61,15 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
       if (k > 0) {
         // Trapezoid in distance for time; the interval draws the mean of its ends' currents.
         const double dt = 0.5 * (1.0 / previous.speed_m_s + 1.0 / sample.speed_m_s) * (length / intervals);
-        battery.run(battery::Segment::discharge(0.5 * (previous.current_a + sample.current_a), dt));
+        battery.discharge(0.5 * (previous.current_a + sample.current_a), dt);
+        battery.requireAboveFloor();
         energy_j += 0.5 * (previous.power_w + sample.power_w) * dt;
         result.duration_s += dt;
         const bool near = model.nearCeiling(conditions);
         result.time_under_ceiling_s += (previous_near && near) ? dt : (previous_near || near) ? 0.5 * dt : 0.0;
       }
       sample.t_s = result.duration_s;
-      sample.soc = battery.state().soc;
+      sample.soc = battery.soc();
       result.min_clearance_m = std::min(result.min_clearance_m, sample.clearance_m);
       result.min_ceiling_gap_m = std::min(result.min_ceiling_gap_m, sample.ceiling_gap_m);
       previous_near = model.nearCeiling(conditions);
@@ -82,16 +84,15 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     PointConditions conditions;
     Velocity hovering;
     result.samples.push_back(sampleAt(waypoints_m.front(), Eigen::Vector3d::Zero(), conditions, hovering));
-    result.samples.back().soc = battery.state().soc;
+    result.samples.back().soc = battery.soc();
     result.min_clearance_m = result.samples.back().clearance_m;
     result.min_ceiling_gap_m = result.samples.back().ceiling_gap_m;
   }
-  battery.closeModeInterval();
-  result.charge_ah = battery.state().discharge_ah;
+  result.charge_ah = battery.chargeAh();
   result.energy_wh = energy_j / 3600.0;
-  result.fec = result.charge_ah / pack.capacity_ah;
+  result.fec = battery::fullEquivalentCycles(2.0 * result.charge_ah, pack.capacity_ah);  // and the equal recharge
   result.mean_current_a = result.duration_s > 0.0 ? 3600.0 * result.charge_ah / result.duration_s : 0.0;
-  result.min_soc = battery.state().min_soc;
+  result.min_soc = battery.lowestSoc();
   result.assumed_free_m = environment.assumedFreeAlong(waypoints_m).length_m;
   return result;
 }

@@ -33,9 +33,7 @@ struct PlannedTour {
 PlannedTour planShipped(const std::string& name, FlightMode mode) {
   PlannedTour planned{io::readMission(shipped(name)), nullptr, {}};
   planned.context = std::make_unique<PlanningContext>(planned.mission);
-  TourOptions options;
-  options.seed = planned.mission.seed;
-  planned.tour = planTour(planned.mission, *planned.context, mode, options);
+  planned.tour = planTour(planned.mission, *planned.context, mode);
   return planned;
 }
 

@@ -220,7 +220,7 @@ TEST(MissionProposal, TheMissionFileReadsBackAsTheProposal) {
   EXPECT_EQ(std::filesystem::weakly_canonical(mission.map_file), std::filesystem::weakly_canonical(settings.map_file));
   EXPECT_LT((mission.home_m - proposal.home_m).norm(), 1e-3);
   EXPECT_FALSE(mission.origin.has_value());
-  EXPECT_EQ(mission.unknown, settings.unknown);
+  EXPECT_EQ(mission.planning.unknown, settings.unknown);
   ASSERT_TRUE(mission.camera.has_value());
   EXPECT_EQ(mission.camera->name, "zenmuse_h20_wide");
   EXPECT_EQ(mission.camera->gimbal_pitch_max_deg, 90.0);

@@ -6,7 +6,7 @@
 #include "coverage_fixtures.hpp"
 
 #include "ceilplan/core/format.hpp"
-#include "ceilplan/io/coverage_keys.hpp"
+#include "ceilplan/io/mission_file.hpp"
 #include "ceilplan/mission/contact_points.hpp"
 #include "ceilplan/mission/coverage_check.hpp"
 #include "ceilplan/mission/coverage_plan.hpp"
@@ -21,13 +21,11 @@ namespace {
 struct ShippedMission {
   explicit ShippedMission(const std::string& name)
       : file(testing::shippedFile("coverage/" + name + ".yaml")),
-        root(YAML::LoadFile(file.string())),
-        keys(io::readCoverageKeys(root)),
-        scene(environment::OccupancyMap::load(file.parent_path() / root["map"].as<std::string>())) {}
+        keys(io::readMission(file)),
+        scene(environment::OccupancyMap::load(keys.map_file)) {}
 
   std::filesystem::path file;
-  YAML::Node root;
-  io::CoverageKeys keys;
+  Mission keys;  // its coverage keys: camera, surfaces, contact_grids
   testing::CoverageScene scene;
 };
 

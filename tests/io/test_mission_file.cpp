@@ -46,12 +46,12 @@ TEST(MissionFile, ReadsEveryKeyOfTheBridgeMission) {
   EXPECT_DOUBLE_EQ(mission.requireOrigin().latitude_deg, 52.218);
   EXPECT_DOUBLE_EQ(mission.requireOrigin().longitude_deg, 0.0923);
   EXPECT_DOUBLE_EQ(mission.requireOrigin().altitude_m, 12.0);
-  EXPECT_DOUBLE_EQ(mission.speeds.cruise_m_s, 2.0);
-  EXPECT_DOUBLE_EQ(mission.speeds.inspection_m_s, 0.5);
-  EXPECT_DOUBLE_EQ(mission.speeds.climb_m_s, 1.0);
-  EXPECT_DOUBLE_EQ(mission.speeds.descent_m_s, 0.8);
+  EXPECT_DOUBLE_EQ(mission.planning.speeds.cruise_m_s, 2.0);
+  EXPECT_DOUBLE_EQ(mission.planning.speeds.inspection_m_s, 0.5);
+  EXPECT_DOUBLE_EQ(mission.planning.speeds.climb_m_s, 1.0);
+  EXPECT_DOUBLE_EQ(mission.planning.speeds.descent_m_s, 0.8);
   EXPECT_EQ(mission.mode, "ceiling");
-  EXPECT_EQ(mission.seed, 1u);
+  EXPECT_EQ(mission.planning.seed, 1u);
   ASSERT_EQ(mission.targets.size(), 13u);
   EXPECT_EQ(mission.targets[0].name, "deck_bay_06");
   EXPECT_EQ(mission.targets[0].point_m, Eigen::Vector3d(6.0, 0.0, 6.0));
@@ -222,6 +222,47 @@ TEST(BatteryFile, UnknownKeysAndOutOfRangeNumbersAreRefused) {
   EXPECT_NE(errorFor("two.yaml", "capacity_ah: 3.0\n---\ncapacity_ah: 4.0\n")
                 .find("two.yaml: holds 2 YAML documents (split by '---'); a battery file is one document"),
             std::string::npos);
+}
+
+// The energy model flies the vehicle's pack: a battery of another cell count (a 6S pack given
+// for the 4S quadrotor) would be planned at 4S without a word, so it is refused, naming both
+// files and both counts. A battery that leaves the count out takes the vehicle's.
+TEST(BatteryFile, ACellCountThatIsNotTheVehiclesIsRefusedNamingBothFiles) {
+  const std::filesystem::path vehicle_file = kMaps / "vehicles/quad.yaml";
+  const mission::Vehicle quad = readVehicle(vehicle_file);
+  ASSERT_EQ(quad.energy.pack.cell_count, 4);
+  const std::filesystem::path dir = testing::scratchDirectory("battery_cells");
+  std::ofstream(dir / "six.yaml") << "capacity_ah: 5.2\ncell_count: 6\n";
+  try {
+    readBattery(dir / "six.yaml", quad, vehicle_file);
+    FAIL() << "a 6S battery for a 4S vehicle was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find((dir / "six.yaml").string() + ": 'cell_count' is 6 cells, but " + vehicle_file.string() +
+                           " has a 4-cell pack"),
+              std::string::npos)
+        << message;
+  }
+  std::ofstream(dir / "four.yaml") << "capacity_ah: 5.2\ncell_count: 4\n";
+  EXPECT_EQ(readBattery(dir / "four.yaml", quad, vehicle_file).pack.cell_count, 4);
+  std::ofstream(dir / "unsaid.yaml") << "capacity_ah: 5.2\n";
+  mission::Vehicle hexa = quad;
+  hexa.energy.pack.cell_count = 6;
+  EXPECT_EQ(readBattery(dir / "unsaid.yaml", hexa).pack.cell_count, 6);
+  EXPECT_EQ(readBatteryOrDefault({}, hexa).pack.cell_count, 6);
+
+  // In a mission file the battery section is checked against the mission's vehicle.
+  const std::filesystem::path mission = variant("six_cells", "capacity_ah: 5.2", "capacity_ah: 5.2\n  cell_count: 6");
+  try {
+    readMission(mission);
+    FAIL() << "a mission with a 6S battery for its 4S vehicle was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(mission.string() + ": 'battery.cell_count' is 6 cells, but " + vehicle_file.string() +
+                           " has a 4-cell pack"),
+              std::string::npos)
+        << message;
+  }
 }
 
 TEST(MissionFile, MissingOriginIsAnErrorOnlyWhenExporting) {

@@ -32,7 +32,7 @@ const Mission& corridorMission() {
 // The mission's planning context under `policy` (the mission says fill).
 std::unique_ptr<PlanningContext> contextUnder(environment::UnknownPolicy policy) {
   const Mission& mission = corridorMission();
-  PlanningOptions options = planningOptions(mission);
+  PlanningOptions options = mission.planning;
   options.unknown.policy = policy;
   return std::make_unique<PlanningContext>(environment::OccupancyMap::load(mission.map_file), mission.vehicle,
                                            mission.battery, options);
@@ -59,7 +59,7 @@ std::vector<double> standoffsAlong(const environment::Environment& environment,
 TEST(Geb079Mission, TargetsLieOnScannedSurfacesAndHomeIsValidUnderEveryPolicy) {
   const Mission& mission = corridorMission();
   EXPECT_TRUE(mission.map_file.is_absolute()) << mission.map_file;  // the system's copy, from liboctomap-dev
-  EXPECT_EQ(mission.unknown.policy, environment::UnknownPolicy::Fill);
+  EXPECT_EQ(mission.planning.unknown.policy, environment::UnknownPolicy::Fill);
   EXPECT_EQ(mission.mode, "both");
   EXPECT_GE(mission.targets.size(), 8u);
   for (const environment::UnknownPolicy policy :

@@ -53,7 +53,7 @@ WrittenTour planAndWrite(const Mission& mission, const PlanningContext& context,
   WrittenTour written{planTour(mission, context, FlightMode::Ceiling, options), scratch(name), {}};
   std::filesystem::create_directories(written.dir);
   io::Provenance provenance = io::Provenance::of("test_tour_record");
-  provenance.seed = options.seed;
+  provenance.seed = context.options().seed;
   io::writeTourDirectory(written.dir, written.tour, mission, context.environment(), io::Autopilot::PX4, provenance);
   written.json = readJson(written.dir / "tour.json");
   return written;
@@ -151,7 +151,7 @@ TEST_F(BridgeTour, WearFromPathCsvSocEqualsTheTourJson) {
     samples.push_back({csv.column("t_s")[k], csv.column("soc")[k], csv.column("current_a")[k], 1.0});
   for (const std::string model : {"fec", "xu", "woehler", "schmalstieg"}) {
     const std::unique_ptr<battery::AgeingModel> ageing =
-        battery::makeAgeingModel(model, ageingModelOptions(written_->tour.options.temperature_c));
+        battery::makeAgeingModel(model, ageingModelOptions(written_->tour.planning.temperature_c));
     ageing->addSamples(samples);
     const double expected = written_->json["wear"][model]["cycle_wear"].get<double>();
     EXPECT_NEAR(ageing->cycleWear(), expected, 1e-6 * expected) << model;
@@ -198,12 +198,11 @@ TEST_F(BridgeTour, TheDutyProjectionIsAReportWithItsSettings) {
 void expectSorties(double capacity_ah, std::size_t sorties) {
   Mission mission = io::readMission(kBridge);
   mission.battery.pack.capacity_ah = capacity_ah;
-  const PlanningContext context(mission);
   for (const std::string& model : battery::ageingModelNames()) {
     SCOPED_TRACE(model + ", " + std::to_string(capacity_ah) + " Ah");
-    TourOptions options;
-    options.ageing_model = model;
-    const WrittenTour written = planAndWrite(mission, context, options, "pack_" + model);
+    mission.planning.ageing_model = model;
+    const PlanningContext context(mission);
+    const WrittenTour written = planAndWrite(mission, context, {}, "pack_" + model);
     const std::size_t flown = written.tour.plan.sorties.size();
     if (model == "fec") {
       EXPECT_EQ(flown, sorties);

@@ -6,6 +6,7 @@
 #include "ceilplan/battery/load_profile.hpp"
 #include "ceilplan/battery/pack.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -38,10 +39,30 @@ struct BatteryState {
   double charge_ah = 0.0;     ///< charge put back so far, Ah
 };
 
+/// Full equivalent cycles of `throughput_ah` moved through a pack of `capacity_ah`, in either
+/// direction: FEC = throughput / (2 C_nom) (paper eq. 3-6). A discharge and the equal recharge
+/// that follows it move twice its charge. The one FEC formula: the Simulator, route evaluation
+/// and tours all count with it.
+inline double fullEquivalentCycles(double throughput_ah, double capacity_ah) {
+  return throughput_ah / (2.0 * capacity_ah);
+}
+
+/// One step of coulomb counting (paper eq. 1): `current_a` (positive discharging) drawn for
+/// `dt_s` from `soc` moves `charge_ah` and leaves `soc_after`, against the usable capacity.
+struct CoulombStep {
+  double charge_ah;
+  double soc_after;
+};
+inline CoulombStep coulombStep(double soc, double current_a, double dt_s, double usable_capacity_ah) {
+  const double charge_ah = current_a * dt_s / 3600.0;
+  return {charge_ah, soc - charge_ah / usable_capacity_ah};
+}
+
 /// Thrown when a segment would take the SOC below the pack's floor (soc_min).
 class DepletionError : public ceilplan::InfeasibleError {
  public:
-  /// The error `message`, with the SOC the segment would have reached and the floor it crossed.
+  /// "would take the battery to R % SOC, P points below its F % floor".
+  DepletionError(double reached_soc, double floor_soc);
   DepletionError(const std::string& message, double reached_soc, double floor_soc);
   double reachedSoc() const { return reached_soc_; }  ///< the SOC the segment would have reached
   /// The pack's SOC floor (soc_min).
@@ -98,6 +119,45 @@ class Simulator {
   BatteryState state_;
   std::optional<Mode> interval_mode_;
   double interval_ah_ = 0.0;
+};
+
+/// Explicit coulomb counting of a discharge in steps of any length, each drawing the current the
+/// caller computed for it (the mean of its ends' currents, each at the SOC reached before it):
+/// how route evaluation (planner::evaluatePath) and tours (mission::SocIntegrator) integrate the
+/// state of charge, by coulombStep.
+class CoulombCounter {
+ public:
+  CoulombCounter(const Pack& pack, double start_soc)
+      : usable_capacity_ah_(pack.usableCapacityAh()),
+        floor_soc_(pack.soc_min),
+        soc_(start_soc),
+        lowest_soc_(start_soc) {}
+
+  /// Moves on by `dt_s` drawing `current_a`.
+  void discharge(double current_a, double dt_s) {
+    const CoulombStep step = coulombStep(soc_, current_a, dt_s, usable_capacity_ah_);
+    charge_ah_ += step.charge_ah;
+    soc_ = step.soc_after;
+    time_s_ += dt_s;
+    lowest_soc_ = std::min(lowest_soc_, soc_);
+  }
+  /// Throws DepletionError once the SOC is below the pack's floor.
+  void requireAboveFloor() const {
+    if (soc_ < floor_soc_ - 1e-12) throw DepletionError(soc_, floor_soc_);
+  }
+
+  double soc() const { return soc_; }
+  double time_s() const { return time_s_; }
+  double chargeAh() const { return charge_ah_; }
+  double lowestSoc() const { return lowest_soc_; }
+
+ private:
+  double usable_capacity_ah_;
+  double floor_soc_;
+  double soc_;
+  double time_s_ = 0.0;
+  double charge_ah_ = 0.0;
+  double lowest_soc_;
 };
 
 /// Runs a whole profile from `initial_soc` and closes the last mode interval.

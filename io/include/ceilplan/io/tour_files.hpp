@@ -74,16 +74,16 @@ nlohmann::json tourSortiesJson(const mission::TourResult& tour);
 /// recharge after a sortie (phase "recharge": its end, the mean charge current as a negative
 /// current, the start SOC). Gaps are infinite where no surface is within reach.
 struct TourPathRow {
-  double t_s = 0.0;                                           ///< Time on the tour's clock (s).
-  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();       ///< Body position (m, map frame).
-  double speed_m_s = 0.0;                                     ///< Ground speed (m/s).
-  double ceiling_gap_m = 0.0;                                 ///< Gap from the rotors to the ceiling (m).
-  double current_a = 0.0;                                     ///< Pack current (A); negative while recharging.
-  double soc = 0.0;                                           ///< State of charge (fraction).
-  int sortie = 1;                                             ///< Sortie number, from 1.
-  double ground_gap_m = 0.0;                                  ///< Gap from the rotors to the ground (m).
-  const char* phase = "leg";                                  ///< "leg", "dwell" or "recharge".
-  bool assumed_free = false;                                  ///< In unknown space the policy assumed free.
+  double t_s = 0.0;                                      ///< Time on the tour's clock (s).
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< Body position (m, map frame).
+  double speed_m_s = 0.0;                                ///< Ground speed (m/s).
+  double ceiling_gap_m = 0.0;                            ///< Gap from the rotors to the ceiling (m).
+  double current_a = 0.0;                                ///< Pack current (A); negative while recharging.
+  double soc = 0.0;                                      ///< State of charge (fraction).
+  int sortie = 1;                                        ///< Sortie number, from 1.
+  double ground_gap_m = 0.0;                             ///< Gap from the rotors to the ground (m).
+  const char* phase = "leg";                             ///< "leg", "dwell" or "recharge".
+  bool assumed_free = false;                             ///< In unknown space the policy assumed free.
 };
 /// The rows of path.csv for `tour`, in order.
 std::vector<TourPathRow> tourPathRows(const mission::TourResult& tour);
@@ -121,7 +121,8 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
 
 /// `ceilplan tour`'s first line: what the mission inspects, the mode ("ceiling", "free" or
 /// "both"), the leg planner, the seed and the model whose wear the sortie split minimises.
-std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options);
+std::string tourHeadline(const mission::Mission& mission, const std::string& mode, const mission::TourOptions& options,
+                         const mission::PlanningOptions& settings);
 /// Its last lines: each directory written (DIR, or DIR/ceiling and DIR/free for both modes) with
 /// the files in it (the DJI KMZ only where it was written), the geodetic exports skipped for want
 /// of an origin (geodeticExportsSkippedLine), then the command that draws the figures.

@@ -1,16 +1,15 @@
 #pragma once
-/// @file
 /// An inspection mission: the map, the vehicle, the battery, home, where the map lies on the
-/// Earth, the speed rules and what to inspect: point targets, surfaces to photograph and contact
+/// Earth, the planning settings and what to inspect: point targets, surfaces to photograph and contact
 /// grids (a coverage mission: docs/coverage.md). Read from a mission file by io::readMission
 /// (docs/missions.md).
 
-#include "ceilplan/environment/unknown_space.hpp"
 #include "ceilplan/mission/battery_spec.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
 #include "ceilplan/mission/dji_aircraft.hpp"
 #include "ceilplan/mission/geodetic_origin.hpp"
+#include "ceilplan/mission/planning_options.hpp"
 #include "ceilplan/mission/trajectory.hpp"
 #include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
@@ -25,15 +24,6 @@
 
 namespace ceilplan::mission {
 
-/// The speed rules of a mission (key `speeds:`, docs/missions.md), in m/s.
-struct MissionSpeeds {
-  double cruise_m_s = 2.0;      ///< horizontal, in free air
-  double inspection_m_s = 0.5;  ///< near a target (autopilot files' hover speed)
-  double climb_m_s = 1.0;       ///< vertical, climbing
-  double descent_m_s = 0.8;     ///< vertical, descending
-};
-
-/// A mission file's contents (docs/missions.md): what planTour plans and io::readMission reads.
 struct Mission {
   std::filesystem::path file;          ///< the mission file, empty for a mission built in code
   std::filesystem::path map_file;      ///< the OctoMap (.bt or .ot)
@@ -43,11 +33,11 @@ struct Mission {
   BatterySpec battery;  ///< the battery file's (key `battery:`), or the founding paper's pack
   /// take-off and landing point of every sortie, map coordinates
   Eigen::Vector3d home_m = Eigen::Vector3d::Zero();
-  std::optional<GeodeticOrigin> origin;   ///< needed only to export to an autopilot
-  MissionSpeeds speeds;                   ///< key `speeds:`
+  std::optional<GeodeticOrigin> origin;  ///< needed only to export to an autopilot
+  /// Every planning setting: the file's `speeds:`, `seed:` and `unknown:` (what the map's unknown
+  /// voxels count as, docs/environment.md), the rest at their defaults; front ends override fields.
+  PlanningOptions planning;
   std::string mode;                       ///< "ceiling", "free" or "both"; empty: the command decides
-  std::uint32_t seed = 1;                 ///< of every random choice
-  environment::UnknownSpace unknown;      ///< what the map's unknown voxels count as (docs/environment.md)
   TrajectoryOptions trajectory;           ///< time scaling of the flown routes (key `trajectory:`, docs/flying.md)
   bool trajectory_ned = false;            ///< trajectory files in NED instead of the map's ENU
   DjiAircraft dji;                        ///< the KMZ's aircraft, payload and failsafes (key `dji:`)

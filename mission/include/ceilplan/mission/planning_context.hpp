@@ -13,6 +13,7 @@
 #include "ceilplan/mission/battery_spec.hpp"
 #include "ceilplan/mission/flight_mode.hpp"
 #include "ceilplan/mission/mission.hpp"
+#include "ceilplan/mission/planning_options.hpp"
 #include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
 #include "ceilplan/planner/objective_factory.hpp"
@@ -26,37 +27,16 @@
 
 namespace ceilplan::mission {
 
-/// What a PlanningContext plans with: the objective, speeds, clearances and the map's policies.
-struct PlanningOptions {
-  std::string objective = "charge";  ///< planner::objectiveNames()
-  std::string ageing_model = "xu";   ///< of the ageing objective
-  double ageing_dod = 0.0;           ///< 0: the route's own depth of discharge (straight-line estimate, at least 1 %)
-  planner::FlightSpeeds speeds;      ///< cruise, inspection, climb and descent speeds, m/s
-  double min_ceiling_gap_m = 0.05;   ///< rotor plane to any ceiling, never less
-  double standoff_m = 1.0;           ///< free mode: the conventional distance from every structure
-  double temperature_c = 25.0;       ///< cell temperature for the ageing models
-  environment::EnvironmentOptions environment;  ///< the map index's sampling and clearance settings
-  environment::UnknownSpace unknown;            ///< the map index's unknown-space policy
-
-  /// Throws ceilplan::InputError naming the first bad field.
-  void validate() const;
-};
-
 /// The ageing models' options at a cell temperature, with the energy module's LiPo open-circuit
 /// voltage curve for Schmalstieg's voltage-dependent terms.
 battery::AgeingModelOptions ageingModelOptions(double temperature_c);
 
-/// A mission's speeds and the charge objective (what a tour plans with).
-PlanningOptions planningOptions(const Mission& mission);
-
-/// A map indexed for one vehicle and battery, with its energy, cost and safety models: built once, shared read-only by
-/// every route, tour and thread (docs/cpp.md).
 class PlanningContext {
  public:
   /// Indexes `map` for the vehicle. Throws ceilplan::InputError for bad options or vehicle.
   PlanningContext(environment::OccupancyMap map, Vehicle vehicle, BatterySpec battery, PlanningOptions options,
                   const ProgressCallback& progress = {});
-  /// The mission's map (loaded here), vehicle, battery and planningOptions(mission).
+  /// The mission's map (loaded here), vehicle, battery and settings (Mission::planning).
   explicit PlanningContext(const Mission& mission, const ProgressCallback& progress = {});
 
   /// The options the context was built with, validated.

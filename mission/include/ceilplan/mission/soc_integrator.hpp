@@ -1,14 +1,15 @@
 #pragma once
-/// @file
 /// How every sortie's state of charge is integrated, by the sortie split and by the flight
-/// record alike: explicit coulomb counting against the usable capacity, each interval drawing
-/// the mean of the currents at its two ends, each current computed at the SOC reached just
-/// before it (as planner::evaluatePath does for a single path).
+/// record alike: battery::CoulombCounter, the explicit coulomb counting planner::evaluatePath
+/// uses for a single path, each interval drawing the mean of the currents at its two ends, each
+/// current computed at the SOC reached just before it.
 
 #include "ceilplan/battery/pack.hpp"
+#include "ceilplan/battery/simulation.hpp"
 
 #include <cstddef>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace ceilplan::mission {
@@ -29,30 +30,22 @@ struct LoadSample {
 /// The state of charge of one pack through a sortie: the one SOC integration tours use (coulomb counting).
 class SocIntegrator {
  public:
-  /// A pack at `start_soc`, loads turned into current by `current_at_soc`.
-  SocIntegrator(const battery::Pack& pack, double start_soc, CurrentAtSoc current_at_soc = {});
+  SocIntegrator(const battery::Pack& pack, double start_soc, CurrentAtSoc current_at_soc = {})
+      : counter_(pack, start_soc), current_at_soc_(std::move(current_at_soc)) {}
 
   /// The current a load draws now.
-  double currentFor(double load) const { return current_at_soc_ ? current_at_soc_(load, soc_) : load; }
+  double currentFor(double load) const { return current_at_soc_ ? current_at_soc_(load, soc()) : load; }
   /// Moves on by `dt_s` drawing `current_a` (the interval's mean current).
-  void advance(double dt_s, double current_a);
+  void advance(double dt_s, double current_a) { counter_.discharge(current_a, dt_s); }
 
-  /// State of charge now, 0..1.
-  double soc() const { return soc_; }
-  /// Time integrated so far, s.
-  double time_s() const { return time_s_; }
-  /// Charge drawn so far, Ah.
-  double chargeAh() const { return charge_ah_; }
-  /// Lowest SOC so far.
-  double lowestSoc() const { return lowest_soc_; }
+  double soc() const { return counter_.soc(); }
+  double time_s() const { return counter_.time_s(); }
+  double chargeAh() const { return counter_.chargeAh(); }
+  double lowestSoc() const { return counter_.lowestSoc(); }
 
  private:
-  double usable_capacity_ah_;
+  battery::CoulombCounter counter_;  // the one SOC integration (battery/simulation.hpp)
   CurrentAtSoc current_at_soc_;
-  double soc_;
-  double time_s_ = 0.0;
-  double charge_ah_ = 0.0;
-  double lowest_soc_;
 };
 
 /// Called at each sample once the integrator has reached it, with the current drawn there.

@@ -35,22 +35,20 @@ namespace ceilplan::mission {
 /// The founding paper's 15 missions a day.
 inline constexpr int kDefaultToursPerDay = 15;
 
-/// How planTour plans: leg planner, threads, sortie split, duty projection and large-tour limits.
+/// How a tour searches; the settings it shares with routes (seed, ageing model, temperature,
+/// speeds, standoff, unknown space) are the context's PlanningOptions.
 struct TourOptions {
-  std::uint32_t seed = 1;  ///< the order heuristic's; OMPL's when an OMPL planner plans the legs
   /// The leg planner, by the factory's name: the roadmap (the default) searches one lattice
   /// roadmap from each place, deterministic; the other planners search each pair of places.
   std::string planner = planner::defaultTourPlannerName();
   double time_limit_s = 0.5;                                  ///< pairwise planners: search time per leg
   double lattice_spacing_m = planner::kTourLatticeSpacing_m;  ///< roadmap and lattice: between lattice nodes
   bool straight_when_clear = true;  ///< a pair joined by a valid straight motion skips the search
-  std::string ageing_model = "xu";  ///< the split minimises this model's wear
   /// Free mode keeps each point target's own standoff range. Given, a target whose range holds no
   /// viewpoint keeping the conventional standoff may be seen from up to this far (a conventional
   /// planner with a zoom lens), and is reported so (TourStop::beyond_standoff_range).
   std::optional<double> free_standoff_max_m;
-  int workers = 2;              ///< threads planning legs
-  double temperature_c = 25.0;  ///< cell temperature for the ageing models
+  int workers = 2;  ///< threads planning legs
   /// Duty projection, the founding paper's month: the whole tour is one mission.
   std::optional<int> missions_per_day;  ///< unset: as often as fits in a day, at most kDefaultToursPerDay
   int days = 30;                        ///< length of the duty projection
@@ -71,8 +69,8 @@ struct TourOptions {
   int order_kicks = 0;        ///< large tours: rounds of iterated local search on the order
   ProgressCallback progress;  ///< stages: coverage views, the roadmap, routing, refining
 
-  /// Throws ceilplan::InputError for options no tour can use (seed 0, a lattice spacing out of its
-  /// range, no worker, ...); planTour checks them first, a front end before it indexes the map.
+  /// Throws ceilplan::InputError for options no tour can use (a lattice spacing out of its range,
+  /// no worker, ...); planTour checks them first, a front end before it indexes the map.
   void validate() const;
 };
 
@@ -126,6 +124,7 @@ struct DutyProjection {
 struct TourResult {
   FlightMode mode = FlightMode::Ceiling;  ///< the mode it was planned in
   TourOptions options;                    ///< the options it was planned with
+  PlanningOptions planning;               ///< the settings it was planned with: the context's (seed, ageing model, ...)
   std::vector<std::string> names;         ///< places: 0 home, k the target of stops[k - 1]
   std::vector<Eigen::Vector3d> places_m;  ///< places: 0 home, k the viewpoint of stops[k - 1], map coordinates
   std::vector<TourStop> stops;            ///< the inspection stops: stops[k - 1] is place k
@@ -155,7 +154,8 @@ struct TourResult {
   TourTimes times;  ///< seconds per phase of the planning
 };
 
-/// Plans the mission's tour in one mode with the context's map, vehicle and battery: its point
+/// Plans the mission's tour in one mode with the context's map, vehicle, battery and settings
+/// (PlanningContext::options(): the order's seed, the split's ageing model, ...): its point
 /// targets, contact grid points and, with surfaces, the photos of planCoverage in this mode.
 /// Throws ceilplan::InputError for an invalid home, a target without a viewpoint (named), a bad
 /// camera or region (planCoverage),

@@ -25,11 +25,12 @@ struct FlightSpeeds {
 
   double cruise_m_s = 2.0;        ///< horizontal, in free air
   double near_ceiling_m_s = 1.8;  ///< horizontal, when a rotor is closer than near_ceiling_gap_radii R to a ceiling
-                                  ///< (docs/planner.md: break-even)
+                                  /// (docs/planner.md: break-even)
   double near_ceiling_gap_radii =
-      2.0;                   ///< where the ceiling effect has nearly faded (docs/models.md, "Ceiling effect")
-  double climb_m_s = 1.0;    ///< vertical rate limits
-  double descent_m_s = 0.8;  ///< vertical rate limit, descending
+      2.0;                      ///< where the ceiling effect has nearly faded (docs/models.md, "Ceiling effect")
+  double climb_m_s = 1.0;       ///< vertical rate limits
+  double descent_m_s = 0.8;     ///< vertical rate limit, descending
+  double inspection_m_s = 0.5;  ///< near a target: between a coverage tour's photos, the autopilot files' hover speed
 
   /// Throws ceilplan::InputError naming the bad field (a speed under kMinSpeed_m_s, a non-positive
   /// slow zone, non-finite, a horizontal

@@ -1,0 +1,32 @@
+#pragma once
+// Every setting of planning, once, for routes and tours alike (as Ceres has one Options): a
+// mission file's `speeds:`, `seed:` and `unknown:` keys fill a Mission's (io::readMission), the
+// command line and Python override single fields of it, PlanningContext keeps it (options()),
+// and planRoute and planTour read it there. docs/contributing.md, "Settings".
+
+#include "ceilplan/environment/environment.hpp"
+#include "ceilplan/environment/unknown_space.hpp"
+#include "ceilplan/planner/flight_cost_model.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace ceilplan::mission {
+
+struct PlanningOptions {
+  std::string objective = "charge";  // planner::objectiveNames(); a tour's legs always minimise charge
+  std::string ageing_model = "xu";   // of the ageing objective, and what a tour's sortie split minimises
+  double ageing_dod = 0.0;           // 0: the route's own depth of discharge (straight-line estimate, at least 1 %)
+  planner::FlightSpeeds speeds;      // mission key `speeds:`
+  double min_ceiling_gap_m = 0.05;   // rotor plane to any ceiling, never less
+  double standoff_m = 1.0;           // free mode: the conventional distance from every structure
+  double temperature_c = 25.0;       // cell temperature for the ageing models (objective, sortie split, wear)
+  std::uint32_t seed = 1;            // of every random choice (a tour's order, OMPL's); mission key `seed:`
+  environment::EnvironmentOptions environment;
+  environment::UnknownSpace unknown;  // the map index's unknown-space policy; mission key `unknown:`
+
+  // Throws ceilplan::InputError naming the first bad field.
+  void validate() const;
+};
+
+}  // namespace ceilplan::mission
