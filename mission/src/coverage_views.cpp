@@ -297,7 +297,7 @@ class PoseMaker {
 
   bool admissible(const Eigen::Vector3d& body_m) const {
     return environment_.contains(body_m) && environment_.isStateValid(body_m) &&
-           environment_.ceiling(body_m).nearest_gap_m >= options_.min_ceiling_gap_m;
+           environment_.ceilingGapAtLeast(body_m, options_.min_ceiling_gap_m);
   }
 
   const environment::Environment& environment_;
