@@ -20,6 +20,23 @@ constexpr double kReachMargin_m = 1e-6;   // validReach_m stays this far short o
 
 constexpr int kKeptGaps = 256;  // columns under a rotor disc: 9 for a 10" rotor at 0.1 m, 196 at 0.02 m
 
+// Calls `visit(i, j, n)` for every column the disc of `radius_m` around `centre_m` overlaps with
+// positive area, n counting them, until one returns false; returns whether none did.
+template <class Visit>
+bool forEachDiscColumn(const GridFrame& frame, const Eigen::Vector2d& centre_m, double radius_m, Visit&& visit) {
+  const int i_begin = frame.indexOf(0, centre_m.x() - radius_m), i_end = frame.indexOf(0, centre_m.x() + radius_m);
+  const int j_begin = frame.indexOf(1, centre_m.y() - radius_m), j_end = frame.indexOf(1, centre_m.y() + radius_m);
+  int n = 0;
+  for (int j = j_begin; j <= j_end; ++j) {
+    const double dy = std::max({frame.faceOf(1, j) - centre_m.y(), 0.0, centre_m.y() - frame.faceOf(1, j + 1)});
+    for (int i = i_begin; i <= i_end; ++i) {
+      const double dx = std::max({frame.faceOf(0, i) - centre_m.x(), 0.0, centre_m.x() - frame.faceOf(0, i + 1)});
+      if (dx * dx + dy * dy < radius_m * radius_m && !visit(i, j, n++)) return false;
+    }
+  }
+  return true;
+}
+
 void validateOptions(const EnvironmentOptions& options) {
   if (!(options.ceiling_reach_radii > 0.0) || !std::isfinite(options.ceiling_reach_radii))
     throw ceilplan::InputError("environment options: ceiling reach must be a positive number of rotor radii");
@@ -138,6 +155,16 @@ SurfaceGaps Environment::ceiling(const Eigen::Vector3d& body_m) const {
   return up;
 }
 
+bool Environment::ceilingGapAtLeast(const Eigen::Vector3d& body_m, double gap_m) const {
+  requireInside(body_m, "ceiling gap");
+  const double plane_z = body_m.z() + vehicle_.rotor_plane_height_m;
+  for (const Eigen::Vector2d& offset : vehicle_.rotor_positions_m)
+    if (!forEachDiscColumn(grid().frame(), body_m.head<2>() + offset, vehicle_.rotor_radius_m,
+                           [&](int i, int j, int) { return columnGap(i, j, plane_z, Direction::Up) >= gap_m; }))
+      return false;
+  return true;
+}
+
 SurfaceGaps Environment::ground(const Eigen::Vector3d& body_m) const {
   requireInside(body_m, "ground gap");
   SurfaceGaps down;
@@ -180,18 +207,11 @@ void Environment::gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGa
   };
   for (const Eigen::Vector2d& offset : vehicle_.rotor_positions_m) {
     const Eigen::Vector2d centre = body_m.head<2>() + offset;
-    const int i_begin = frame.indexOf(0, centre.x() - radius), i_end = frame.indexOf(0, centre.x() + radius);
-    const int j_begin = frame.indexOf(1, centre.y() - radius), j_end = frame.indexOf(1, centre.y() + radius);
-    // Calls `visit(i, j, n)` for every column the disc overlaps with positive area, n counting them.
     const auto forEachColumn = [&](auto&& visit) {
-      int n = 0;
-      for (int j = j_begin; j <= j_end; ++j) {
-        const double dy = std::max({frame.faceOf(1, j) - centre.y(), 0.0, centre.y() - frame.faceOf(1, j + 1)});
-        for (int i = i_begin; i <= i_end; ++i) {
-          const double dx = std::max({frame.faceOf(0, i) - centre.x(), 0.0, centre.x() - frame.faceOf(0, i + 1)});
-          if (dx * dx + dy * dy < radius * radius) visit(i, j, n++);
-        }
-      }
+      forEachDiscColumn(frame, centre, radius, [&](int i, int j, int n) {
+        visit(i, j, n);
+        return true;
+      });
     };
     // Each column's gaps are looked up once and kept for the weighing below (on fine maps, past
     // the first kKeptGaps columns, looked up again there).

@@ -83,6 +83,12 @@ bool clearInTree(const octomap::OcTree& tree, const FreeVoxels& free, const Eige
   return free.free(end);
 }
 
+// A photo that sees an element in its frame, facing it, beyond the minimum focus.
+struct Sight {
+  const CameraFrame* frame;
+  double gsd_mm_px;
+};
+
 // Elements grouped by the cube of kTile_m they lie in, so that a photo is tested only against
 // the groups its frustum may reach.
 constexpr double kTile_m = 1.0;
@@ -161,9 +167,12 @@ CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera,
         if (mayProject(frame, wide, high, camera.min_focus_m, tiles[t].centre_m, tile_radius_m)) near.push_back(&frame);
       octomap::KeyRay ray;
       std::size_t cast = 0;
+      std::vector<Sight> finer;  // per element, the sights outside the limits
       for (const std::size_t e : tiles[t].elements) {
         const environment::SurfaceElement& element = surface.elements[e];
         const Eigen::Vector3d end = element.centre_m + element.faceNormal() * offset_m;
+        finer.clear();
+        float& best = result.best_gsd_mm_px[e];
         for (const CameraFrame* frame : near) {
           const auto image = frame->project(element.centre_m);
           if (!image || std::abs(image->right_tan) > wide || std::abs(image->up_tan) > high ||
@@ -173,14 +182,28 @@ CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera,
           const double distance_m = sight.norm();
           const double cos_incidence = -sight.dot(element.normal) / distance_m;
           if (cos_incidence <= 0.0) continue;
+          const double gsd = camera.gsd_mm_px(distance_m, std::acos(std::min(1.0, cos_incidence)));
+          if (gsd > region.gsd_mm_px || cos_incidence < cos_max) {
+            finer.push_back({frame, gsd});
+            continue;
+          }
+          // Within the limits, every photo counts (view_count) and may cover: cast each.
           ++cast;
           if (!clearInTree(tree, free, frame->position_m(), end, ray)) continue;
-          const double gsd = camera.gsd_mm_px(distance_m, std::acos(std::min(1.0, cos_incidence)));
-          result.best_gsd_mm_px[e] = std::min(result.best_gsd_mm_px[e], static_cast<float>(gsd));
-          if (gsd > region.gsd_mm_px || cos_incidence < cos_max) continue;
+          best = std::min(best, static_cast<float>(gsd));
           if (result.view_count[e] < std::numeric_limits<std::uint16_t>::max()) ++result.view_count[e];
           if (std::abs(image->right_tan) <= central_wide && std::abs(image->up_tan) <= central_high)
             result.covered[e] = 1;
+        }
+        // Outside them a photo can only lower the best GSD: finest first, until one is clear or
+        // none is finer than the best already found (the same best GSD as casting them all).
+        std::sort(finer.begin(), finer.end(), [](const Sight& a, const Sight& b) { return a.gsd_mm_px < b.gsd_mm_px; });
+        for (const Sight& sight : finer) {
+          if (static_cast<float>(sight.gsd_mm_px) >= best) break;
+          ++cast;
+          if (!clearInTree(tree, free, sight.frame->position_m(), end, ray)) continue;
+          best = static_cast<float>(sight.gsd_mm_px);
+          break;
         }
       }
       rays += cast;

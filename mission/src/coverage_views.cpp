@@ -297,7 +297,7 @@ class PoseMaker {
 
   bool admissible(const Eigen::Vector3d& body_m) const {
     return environment_.contains(body_m) && environment_.isStateValid(body_m) &&
-           environment_.ceiling(body_m).nearest_gap_m >= options_.min_ceiling_gap_m;
+           environment_.ceilingGapAtLeast(body_m, options_.min_ceiling_gap_m);
   }
 
   const environment::Environment& environment_;
@@ -524,6 +524,45 @@ std::vector<Seed> latticeSeeds(const environment::VoxelGrid& grid, const Camera&
   return seeds;
 }
 
+// Whether any camera might cover `element` (RegionViewer's rule): its line of sight walks
+// face-connected voxels, all free, from the camera's to the one in front of the face, each
+// meeting the segment; the segment lies within the cone of the incidence limit around the normal
+// (within a hundredth of a voxel, the sight's end), and the camera is at least the minimum focus
+// away. Searches those voxels (centres within the cone widened by a half diagonal and that
+// hundredth) from the face outwards for one that far: where none is, no pose covers the element,
+// and the repairs need not probe it (a slot too thin to look into).
+bool mayBeSeen(const environment::VoxelGrid& grid, const environment::SurfaceElement& element, double max_incidence_deg,
+               double min_focus_m) {
+  const environment::GridFrame& frame = grid.frame();
+  const double r = frame.resolution_m();
+  const double half_diagonal_m = 0.5 * std::sqrt(3.0) * r;
+  const double margin_m = half_diagonal_m + 0.02 * r;
+  const double cos_max = std::cos(max_incidence_deg * kDegree), sin_max = std::sin(max_incidence_deg * kDegree);
+  const Eigen::Vector3d end = element.centre_m + element.faceNormal() * (0.01 * r);
+  const environment::Index3 start{frame.indexOf(0, end.x()), frame.indexOf(1, end.y()), frame.indexOf(2, end.z())};
+  if (grid.at(start[0], start[1], start[2]) != environment::CellState::Free) return false;
+  std::unordered_map<std::size_t, bool> seen{{frame.linear(start[0], start[1], start[2]), true}};
+  std::vector<environment::Index3> queue{start};
+  for (std::size_t next = 0; next < queue.size(); ++next)
+    for (int axis = 0; axis < 3; ++axis)
+      for (const int step : {-1, 1}) {
+        environment::Index3 voxel = queue[next];
+        voxel[axis] += step;
+        if (grid.at(voxel[0], voxel[1], voxel[2]) != environment::CellState::Free ||
+            !seen.emplace(frame.linear(voxel[0], voxel[1], voxel[2]), true).second)
+          continue;
+        const Eigen::Vector3d w =
+            Eigen::Vector3d(frame.centreOf(0, voxel[0]), frame.centreOf(1, voxel[1]), frame.centreOf(2, voxel[2])) -
+            element.centre_m;
+        const double along = w.dot(element.normal);
+        // A lower bound on the distance to the cone outside it (its exact value off the apex).
+        if ((w - along * element.normal).norm() * cos_max - along * sin_max > margin_m) continue;
+        if (w.norm() >= min_focus_m - half_diagonal_m) return true;
+        queue.push_back(voxel);
+      }
+  return false;
+}
+
 // Free mode: keep a pose where it keeps the standoff, or where it is of largest clearance
 // (within a tolerance) among the poses covering one of its elements that no standoff-keeping
 // pose covers. Every element stays covered.
@@ -711,6 +750,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   for (std::uint32_t e = 0; e < surface.elements.size(); ++e) {
     if (reached[e]) continue;
     const auto& element = surface.elements[e];
+    if (!mayBeSeen(environment.grid(), element, region.max_incidence_deg, camera.min_focus_m)) continue;
     std::vector<Pose> probes;
     for (const double d : repair_levels)
       for (const double share : {0.0, 0.3, 0.6, 0.95}) {

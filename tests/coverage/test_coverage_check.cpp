@@ -8,6 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace ceilplan::mission {
 namespace {
 
@@ -73,6 +77,62 @@ TEST(CoverageCheck, LinesOfSightPassLargeFreeLeavesAndStopAtUnknownOrOccupiedVox
   occupied.updateNode(0.05, 0.05, 2.45, true);
   ASSERT_TRUE(occupied.isNodeOccupied(occupied.search(0.05, 0.05, 2.45)));
   EXPECT_EQ(photographTheMiddle(occupied, below).regions.at(0).covered.at(0), 0);
+}
+
+// Photos beyond the required GSD or incidence can only lower an element's best GSD, so the check
+// casts them finest first and stops at the first clear one: the figures are what checking each
+// photo alone gives (covered by any, best GSD the least, photos within the limits summed), with
+// fewer rays. Ceiling elements over a patch, photos below at three heights, some behind posts.
+TEST(CoverageCheck, PhotosBeyondTheLimitsAreCastOnlyUntilTheBestGsdIsFound) {
+  octomap::OcTree tree = room();
+  for (const double x : {-0.35, 0.25})
+    for (double z = 2.05; z < 2.9; z += kResolution_m) tree.updateNode(x, 0.05, z, true);
+  RegionSurface surface;
+  for (double x = -0.45; x < 0.5; x += kResolution_m) {
+    environment::SurfaceElement element;
+    element.centre_m = Eigen::Vector3d(x, 0.05, 3.2);
+    element.normal = -Eigen::Vector3d::UnitZ();
+    element.area_m2 = kResolution_m * kResolution_m;
+    element.face = 5;
+    surface.elements.push_back(element);
+  }
+  CoverageRegion region;
+  region.name = "patch";
+  region.faces.down = true;
+  region.gsd_mm_px = 0.45;  // about 1.3 m straight on: the lower photos are beyond it
+  std::vector<CameraPose> photos;
+  for (const double z : {0.4, 1.2, 1.9})
+    for (const double x : {-0.8, -0.3, 0.0, 0.45}) photos.push_back({Eigen::Vector3d(x, 0.05, z), 0.0, 90.0});
+  const Camera camera = testing::upwardCamera();
+  const std::vector<std::uint8_t> reachable(surface.elements.size(), 1);
+  const CoverageCheck all = checkCoverage(tree, camera, {region}, {surface}, {reachable}, photos);
+  const RegionCoverageCheck& checked = all.regions.at(0);
+
+  std::size_t alone_rays = 0;
+  std::vector<std::uint8_t> covered(surface.elements.size(), 0);
+  std::vector<float> best(surface.elements.size(), std::numeric_limits<float>::infinity());
+  std::vector<int> views(surface.elements.size(), 0);
+  for (const CameraPose& photo : photos) {
+    const CoverageCheck alone = checkCoverage(tree, camera, {region}, {surface}, {reachable}, {photo});
+    alone_rays += alone.rays;
+    for (std::size_t e = 0; e < surface.elements.size(); ++e) {
+      covered[e] |= alone.regions.at(0).covered[e];
+      best[e] = std::min(best[e], alone.regions.at(0).best_gsd_mm_px[e]);
+      views[e] += alone.regions.at(0).view_count[e];
+    }
+  }
+  int beyond = 0, blocked = 0;
+  for (std::size_t e = 0; e < surface.elements.size(); ++e) {
+    EXPECT_EQ(checked.covered[e], covered[e]) << e;
+    EXPECT_EQ(checked.best_gsd_mm_px[e], best[e]) << e;
+    EXPECT_EQ(checked.view_count[e], views[e]) << e;
+    beyond += std::isfinite(best[e]) && best[e] > region.gsd_mm_px ? 1 : 0;
+    blocked += std::isfinite(best[e]) ? 0 : 1;
+  }
+  EXPECT_LT(all.rays, alone_rays);
+  EXPECT_GT(beyond, 0) << "some elements are seen only beyond the required GSD";
+  EXPECT_GT(std::count(covered.begin(), covered.end(), 1), 0);
+  EXPECT_EQ(blocked, 0);
 }
 
 }  // namespace

@@ -122,6 +122,36 @@ TEST(CeilingGap, UnknownAboveMeansNoCeilingUnlessTheOptionSaysOtherwise) {
   EXPECT_NEAR(cautious.ceiling({0.0, 0.0, 2.2}).coverage, 1.0, 1e-12);
 }
 
+// The candidate views ask only whether the nearest gap reaches a bound: the same answer as the
+// full query at every height under sloped, stepped and unknown ceilings, bounds on a gap included.
+TEST(CeilingGap, AtLeastAnswersAsTheNearestGapOfTheFullQuery) {
+  const OccupancyMap sloped = room([](double x, double) { return 2.5 + 0.1 * std::floor(x / 0.2); });
+  const OccupancyMap stepped = room([](double x, double y) { return x < 0 ? 3.0 : (y < 0.1 ? 2.6 : 2.8); });
+  const OccupancyMap unknown = analyticMap({-2, -2, 0}, {2, 2, 4}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || (c.x() > 0.3 && c.z() > 2.4)) return CellState::Occupied;
+    return c.z() < 2.5 ? CellState::Free : CellState::Unknown;
+  });
+  EnvironmentOptions cautious;
+  cautious.unknown_is_surface = true;
+  int below = 0, above = 0;
+  for (const OccupancyMap* map : {&sloped, &stepped, &unknown})
+    for (const EnvironmentOptions& options : {EnvironmentOptions{}, cautious}) {
+      const Environment environment(*map, quad(), options);
+      for (double x = -0.6; x <= 0.6; x += 0.037)
+        for (double z = 1.8; z <= 2.4; z += 0.043) {
+          const Eigen::Vector3d body(x, 0.05 - 0.3 * x, z);
+          const double nearest_m = environment.ceiling(body).nearest_gap_m;
+          for (const double bound_m : {0.03, 0.1, 0.25, nearest_m, std::nextafter(nearest_m, kNone)}) {
+            const bool at_least = environment.ceilingGapAtLeast(body, bound_m);
+            EXPECT_EQ(at_least, nearest_m >= bound_m) << body.transpose() << " bound " << bound_m;
+            (at_least ? above : below) += 1;
+          }
+        }
+    }
+  EXPECT_GT(below, 100);
+  EXPECT_GT(above, 100);
+}
+
 TEST(GroundGap, MeasuresDownToTheFloorsUpperFace) {
   const OccupancyMap map = room([](double, double) { return 3.0; });
   const Environment environment(map, quad());
@@ -136,6 +166,7 @@ TEST(Queries, APointOutsideTheMapIsAnErrorThatSaysSo) {
   const Environment environment(map, quad());
   EXPECT_FALSE(environment.contains({2.5, 0, 1}));
   EXPECT_THROW(environment.ceilingGapAt({2.5, 0, 1}), ceilplan::InputError);
+  EXPECT_THROW(environment.ceilingGapAtLeast({2.5, 0, 1}, 0.03), ceilplan::InputError);
   EXPECT_THROW(environment.ground({0, 0, -1}), ceilplan::InputError);
   EXPECT_THROW(environment.clearance_m({0, 9, 1}), ceilplan::InputError);
   try {

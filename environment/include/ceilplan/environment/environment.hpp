@@ -143,6 +143,9 @@ class Environment {
     SurfaceGaps ground;
   };
   CeilingAndGround ceilingAndGround(const Eigen::Vector3d& body_m) const;
+  /// Whether ceiling(body_m).nearest_gap_m >= gap_m: the same columns' gaps, without weighing the
+  /// discs, stopping at the first nearer one. Throws as ceiling() does.
+  bool ceilingGapAtLeast(const Eigen::Vector3d& body_m, double gap_m) const;
 
   /// Distance from the body centre to the nearest occupied (or, by policy, unknown) voxel
   /// surface; 0 inside one, +inf if there is none. Throws ceilplan::InputError outside the map.

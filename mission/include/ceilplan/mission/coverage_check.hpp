@@ -5,7 +5,10 @@
 /// every surface element with the camera model (skipping only the photos whose frustum cannot reach
 /// an element's 1 m cube), and casts each line of sight through the OctoMap tree itself
 /// (OcTree::computeRayKeys, the keys looked up among the tree's known-free leaves, read once), not
-/// through the planner's voxel grid or any of its visibility bookkeeping. docs/coverage.md, "Re-check".
+/// through the planner's voxel grid or any of its visibility bookkeeping. A line of sight is cast
+/// for every photo that sees an element within the required GSD and incidence; the others can only
+/// lower the element's best GSD, so they are cast finest first until one is clear (the same
+/// figures as casting them all). docs/coverage.md, "Re-check".
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/mission/camera.hpp"
