@@ -50,9 +50,10 @@ inline double fullEquivalentCycles(double throughput_ah, double capacity_ah) {
 /// One step of coulomb counting (paper eq. 1): `current_a` (positive discharging) drawn for
 /// `dt_s` from `soc` moves `charge_ah` and leaves `soc_after`, against the usable capacity.
 struct CoulombStep {
-  double charge_ah;
-  double soc_after;
+  double charge_ah;  ///< charge moved, Ah (negative while charging)
+  double soc_after;  ///< SOC after the step (fraction)
 };
+/// The step of `current_a` for `dt_s` from `soc` against `usable_capacity_ah` (CoulombStep).
 inline CoulombStep coulombStep(double soc, double current_a, double dt_s, double usable_capacity_ah) {
   const double charge_ah = current_a * dt_s / 3600.0;
   return {charge_ah, soc - charge_ah / usable_capacity_ah};
@@ -63,6 +64,7 @@ class DepletionError : public ceilplan::InfeasibleError {
  public:
   /// "would take the battery to R % SOC, P points below its F % floor".
   DepletionError(double reached_soc, double floor_soc);
+  /// With its own `message`.
   DepletionError(const std::string& message, double reached_soc, double floor_soc);
   double reachedSoc() const { return reached_soc_; }  ///< the SOC the segment would have reached
   /// The pack's SOC floor (soc_min).
@@ -127,6 +129,7 @@ class Simulator {
 /// state of charge, by coulombStep.
 class CoulombCounter {
  public:
+  /// Counts from `start_soc` against `pack`'s usable capacity and floor.
   CoulombCounter(const Pack& pack, double start_soc)
       : usable_capacity_ah_(pack.usableCapacityAh()),
         floor_soc_(pack.soc_min),
@@ -146,10 +149,10 @@ class CoulombCounter {
     if (soc_ < floor_soc_ - 1e-12) throw DepletionError(soc_, floor_soc_);
   }
 
-  double soc() const { return soc_; }
-  double time_s() const { return time_s_; }
-  double chargeAh() const { return charge_ah_; }
-  double lowestSoc() const { return lowest_soc_; }
+  double soc() const { return soc_; }               ///< SOC now (fraction)
+  double time_s() const { return time_s_; }         ///< time counted, s
+  double chargeAh() const { return charge_ah_; }    ///< charge drawn, Ah
+  double lowestSoc() const { return lowest_soc_; }  ///< the lowest SOC so far
 
  private:
   double usable_capacity_ah_;

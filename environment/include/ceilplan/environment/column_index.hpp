@@ -49,9 +49,10 @@ class ColumnIndex {
   Boundary below(int i, int j, double z_m) const;
   /// Both, from one search of the column: the same as above() and below().
   struct Boundaries {
-    Boundary above;
-    Boundary below;
+    Boundary above;  ///< as above()
+    Boundary below;  ///< as below()
   };
+  /// The boundaries above and below z_m in column (i, j).
   Boundaries around(int i, int j, double z_m) const;
 
   /// The state of the lowest voxel of column (i, j) that overlaps the open height interval

@@ -139,9 +139,10 @@ class Environment {
   /// Both, each column under a disc looked up once for the two (what the cost model asks at
   /// every sample): the same as ceiling() and ground().
   struct CeilingAndGround {
-    SurfaceGaps ceiling;
-    SurfaceGaps ground;
+    SurfaceGaps ceiling;  ///< as ceiling()
+    SurfaceGaps ground;   ///< as ground()
   };
+  /// The ceiling and the ground at `body_m`. Throws as ceiling() does.
   CeilingAndGround ceilingAndGround(const Eigen::Vector3d& body_m) const;
   /// Whether ceiling(body_m).nearest_gap_m >= gap_m: the same columns' gaps, without weighing the
   /// discs, stopping at the first nearer one. Throws as ceiling() does.

@@ -48,18 +48,18 @@ UnknownPolicy unknownPolicyFromName(const std::string& name);
 /// The policy's name: "occupied", "free" or "fill".
 std::string unknownPolicyName(UnknownPolicy policy);
 
-// How a front end spells the policy and the fill size, for messages: the command line's
-// "--unknown" and "--unknown-fill-max-m", a mission file's "'unknown.policy'" and
-// "'unknown.fill_max_m'", Python's "unknown" and "unknown_fill_max_m".
+/// How a front end spells the policy and the fill size, for messages: the command line's
+/// "--unknown" and "--unknown-fill-max-m", a mission file's "'unknown.policy'" and
+/// "'unknown.fill_max_m'", Python's "unknown" and "unknown_fill_max_m".
 struct UnknownSpaceKeys {
-  std::string policy;
-  std::string fill_max;
+  std::string policy;    ///< the policy's name in messages
+  std::string fill_max;  ///< the fill size's name in messages
 };
 
-// The policy named `policy` with fill's largest pocket, `fill_max_m` when given: the one reading
-// of the setting, which the mission file, the command line and Python share. Throws
-// ceilplan::InputError for a name that is not a policy, a fill size without the fill policy, or
-// a fill size out of (0, kMaxFill_m].
+/// The policy named `policy` with fill's largest pocket, `fill_max_m` when given: the one reading
+/// of the setting, which the mission file, the command line and Python share. Throws
+/// ceilplan::InputError for a name that is not a policy, a fill size without the fill policy, or
+/// a fill size out of (0, kMaxFill_m].
 UnknownSpace parseUnknownSpace(const std::string& policy, std::optional<double> fill_max_m,
                                const UnknownSpaceKeys& keys);
 

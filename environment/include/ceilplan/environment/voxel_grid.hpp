@@ -74,6 +74,7 @@ class GridFrame {
 
   /// The grid's extent in metres (voxel faces).
   Eigen::AlignedBox3d bounds() const;
+  /// Whether `point_m` lies in the grid's extent.
   bool contains(const Eigen::Vector3d& point_m) const {
     return inside(indexOf(0, point_m.x()), indexOf(1, point_m.y()), indexOf(2, point_m.z()));
   }

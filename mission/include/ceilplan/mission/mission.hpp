@@ -24,6 +24,7 @@
 
 namespace ceilplan::mission {
 
+/// A mission file's contents (docs/missions.md): what planTour plans and io::readMission reads.
 struct Mission {
   std::filesystem::path file;          ///< the mission file, empty for a mission built in code
   std::filesystem::path map_file;      ///< the OctoMap (.bt or .ot)

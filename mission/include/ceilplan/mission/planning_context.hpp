@@ -31,6 +31,8 @@ namespace ceilplan::mission {
 /// voltage curve for Schmalstieg's voltage-dependent terms.
 battery::AgeingModelOptions ageingModelOptions(double temperature_c);
 
+/// A map indexed for one vehicle and battery, with its energy, cost and safety models and the
+/// planning settings: built once, shared read-only by every route, tour and thread (docs/cpp.md).
 class PlanningContext {
  public:
   /// Indexes `map` for the vehicle. Throws ceilplan::InputError for bad options or vehicle.

@@ -30,6 +30,7 @@ struct LoadSample {
 /// The state of charge of one pack through a sortie: the one SOC integration tours use (coulomb counting).
 class SocIntegrator {
  public:
+  /// From `start_soc`; `current_at_soc` (if set) turns a load into the current at the SOC reached.
   SocIntegrator(const battery::Pack& pack, double start_soc, CurrentAtSoc current_at_soc = {})
       : counter_(pack, start_soc), current_at_soc_(std::move(current_at_soc)) {}
 
@@ -38,10 +39,10 @@ class SocIntegrator {
   /// Moves on by `dt_s` drawing `current_a` (the interval's mean current).
   void advance(double dt_s, double current_a) { counter_.discharge(current_a, dt_s); }
 
-  double soc() const { return counter_.soc(); }
-  double time_s() const { return counter_.time_s(); }
-  double chargeAh() const { return counter_.chargeAh(); }
-  double lowestSoc() const { return counter_.lowestSoc(); }
+  double soc() const { return counter_.soc(); }              ///< SOC now (fraction)
+  double time_s() const { return counter_.time_s(); }        ///< time integrated, s
+  double chargeAh() const { return counter_.chargeAh(); }    ///< charge drawn, Ah
+  double lowestSoc() const { return counter_.lowestSoc(); }  ///< the lowest SOC so far
 
  private:
   battery::CoulombCounter counter_;  // the one SOC integration (battery/simulation.hpp)
