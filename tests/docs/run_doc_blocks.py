@@ -46,7 +46,8 @@ COMMAND_START = re.compile(r"^(build/|scripts/|bench/|tests/|ceilplan |mkdir |cm
 SYNOPSIS = re.compile(r"^ceilplan [a-z-]+ .*(\[--|[A-Z]{3,})")
 MARKER = re.compile(r"^<!-- doc-test: ([a-z-]+)(?:[= ](.*?))? -->$")
 NUMBER = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?")
-KNOWN_MARKERS = {"table", "long", "skip", "file", "append-to", "check", "setup", "tolerance", "ignore", "cpp-args"}
+KNOWN_MARKERS = {"table", "long", "skip", "file", "append-to", "check", "setup", "tolerance", "ignore", "cpp-args",
+                 "exit"}
 
 
 class Block:
@@ -114,7 +115,7 @@ def classify(blocks):
             block.kind = "session"
         elif block.lang == "sh":
             block.kind = "sh"
-        elif block.lang in ("python", "cpp", "json", "yaml", "table"):
+        elif block.lang in ("python", "cpp", "json", "yaml", "table", "cmake"):
             block.kind = block.lang
         elif block.lang == "" and previous is not None and previous.kind == "python" and previous.output is None:
             block.kind = "output"
@@ -357,6 +358,29 @@ class Runner:
                 self.fail(block, block.line, f"ceilplan {command} --help",
                           f"the synopsis shows {flag}, which `ceilplan {command} --help` does not list")
 
+    def run_cmake(self, block):
+        """A CMake project that uses the package: configured against the installed prefix, with an
+        empty program for each source it names (`NAME.cpp`, or foreach(VAR a b c) over VAR.cpp), so
+        that find_package's version check and the targets it links are what is tested."""
+        if not self.args.prefix:
+            raise Failure(f"{block.where()}: cmake blocks need --prefix (the installed package)")
+        project = os.path.join(self.scratch, f".cmake_{block.line}")
+        os.makedirs(project)
+        text = "\n".join(block.lines)
+        sources = set(re.findall(r"\b(\w+)\.cpp\b", text))
+        for variable, items in re.findall(r"foreach\((\w+)\s+([^)]*)\)", text):
+            if "${" + variable + "}.cpp" in text:
+                sources.update(items.split())
+        for name in sources:
+            with open(os.path.join(project, name + ".cpp"), "w") as f:
+                f.write("int main() { return 0; }\n")
+        with open(os.path.join(project, "CMakeLists.txt"), "w") as f:
+            f.write(text + "\n")
+        code, out, _ = self.shell(f"cmake -S {project} -B {project}/build -DCMAKE_PREFIX_PATH={self.args.prefix} 2>&1")
+        if code:
+            self.fail(block, block.line, "(cmake block)", "configuring it against the installed package failed:\n    "
+                      + "\n    ".join(out.strip().splitlines()[-8:]))
+
     def run_table(self, block):
         command = block.marker("table")
         if not command:
@@ -472,7 +496,9 @@ class Runner:
                 self.cpp_results[block.line] = "compiles with warnings:\n    " + "\n    ".join(errors[:6])
             elif has_main:
                 code, out, _ = self.shell(f".cpp/build/{name}")
-                self.cpp_results[block.line] = None if code == 0 else f"exit code {code}: {out[-500:]}"
+                expected = int(block.marker("exit") or 0)  # a program showing an error exits with its code
+                self.cpp_results[block.line] = (None if code == expected else
+                                                f"exit code {code} (expected {expected}): {out[-500:]}")
             else:
                 self.cpp_results[block.line] = None
 
@@ -504,7 +530,8 @@ class Runner:
         # kind: (what runs it, what it counts as)
         kinds = {"session": (self.run_session, "run"), "sh": (self.run_sh, "run"),
                  "python": (self.run_python_block, "run"), "cpp": (self.run_cpp_block, "compiled"),
-                 "synopsis": (self.run_synopsis, "synopsis"), "table": (self.run_table, "checked")}
+                 "synopsis": (self.run_synopsis, "synopsis"), "table": (self.run_table, "checked"),
+                 "cmake": (self.run_cmake, "checked")}
         for block in self.blocks:
             if block.kind in ("text", "output"):
                 self.counts["text"] += 1
