@@ -575,6 +575,10 @@ def main():
     parser.add_argument("--verbose", action="store_true", help="print each command and its time")
     parser.add_argument("file")
     args = parser.parse_args()
+    # The blocks run in a scratch directory: paths given relative to here must not move with them.
+    for name in ("source", "build", "prefix", "file"):
+        if getattr(args, name):
+            setattr(args, name, os.path.abspath(getattr(args, name)))
     relative = os.path.relpath(os.path.abspath(args.file), os.path.abspath(args.source))
     with open(args.file) as f:
         text = f.read()
