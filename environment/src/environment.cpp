@@ -91,6 +91,9 @@ Environment::Environment(const OccupancyMap& map, VehicleGeometry vehicle, Envir
                          const std::function<void(double)>& progress)
     : Environment(map, std::move(vehicle), options, MapIndexOptions{UnknownSpace{}, options.workers}, progress) {}
 
+// By value like the other constructors; not moved on, because validated() reads it in the same call
+// and the order in which the delegated call's arguments are built is unspecified.
+// NOLINTNEXTLINE(performance-unnecessary-value-param)
 Environment::Environment(const OccupancyMap& map, VehicleGeometry vehicle, EnvironmentOptions options,
                          const MapIndexOptions& index_options, const std::function<void(double)>& progress)
     : Environment((validated(vehicle), validateOptions(options),  // before the work starts

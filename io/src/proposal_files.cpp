@@ -129,7 +129,7 @@ mission::MissionProposal proposeMissionFiles(ProposalRequest& request, Provenanc
                                                                             if (progress) progress(indexing, f);
                                                                           }),
                                              vehicle);
-  const mission::MissionProposal proposal = mission::proposeMission(environment, request.options, progress);
+  mission::MissionProposal proposal = mission::proposeMission(environment, request.options, progress);
   writeTextAtomically(outputs.path(request.picture_flag), [&](std::ostream& svg) {
     svg << proposalPictureSvg(environment.grid(), proposal, request.settings.map_file.string());
   });

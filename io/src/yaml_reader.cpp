@@ -122,8 +122,8 @@ YamlFile::YamlFile(const std::filesystem::path& file, FileKind kind) : path_(fil
 
 void YamlFile::fail(const std::string& problem) const { throw InputError(path_.string() + ": " + problem); }
 
-Section::Section(const YamlFile& file, YAML::Node node, std::string path)
-    : file_(&file), node_(std::move(node)), path_(std::move(path)) {
+Section::Section(const YamlFile& file, const YAML::Node& node, std::string path)
+    : file_(&file), node_(node), path_(std::move(path)) {
   if (!node_.IsMap()) fail("'" + path_ + "' must be a map of keys");
   // yaml-cpp keeps a repeated key and answers with its first value: refuse it, as a typo.
   std::vector<std::string> keys;

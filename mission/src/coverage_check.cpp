@@ -107,6 +107,7 @@ std::vector<Tile> tilesOf(const RegionSurface& surface) {
         .push_back(e);
   }
   std::vector<Tile> tiles;
+  tiles.reserve(cells.size());
   for (auto& [cell, elements] : cells)
     tiles.push_back(
         {(Eigen::Vector3d(cell[0], cell[1], cell[2]) + Eigen::Vector3d::Constant(0.5)) * kTile_m, std::move(elements)});
@@ -137,6 +138,7 @@ CoverageCheck checkCoverage(const octomap::OcTree& tree, const Camera& camera,
   if (surfaces.size() != regions.size() || reachable.size() != regions.size())
     throw ceilplan::InputError("coverage check: one surface and one reachability list per region");
   std::vector<CameraFrame> frames;
+  frames.reserve(photos.size());
   for (const CameraPose& pose : photos) frames.emplace_back(camera, pose);
   const double offset_m = 0.01 * tree.getResolution();
   const FreeVoxels free(tree);
