@@ -498,6 +498,7 @@ std::vector<Seed> latticeSeeds(const environment::VoxelGrid& grid, const Camera&
       if (found == best.end() || offset < found->second.first) best[key] = {offset, e};
     }
     std::vector<std::uint32_t> chosen;
+    chosen.reserve(best.size());
     for (const auto& entry : best) chosen.push_back(entry.second.second);
     std::sort(chosen.begin(), chosen.end());
     // Each seed's aim, snapped to the edges of its flat patch; one seed per distinct aim.
@@ -609,6 +610,7 @@ std::vector<double> distanceLevels(const Camera& camera, const CoverageRegion& r
   const double far_m = std::max(near_m, std::min(reach_m, room_m));
   std::vector<double> distances;
   const int count = std::max(1, levels);
+  distances.reserve(static_cast<std::size_t>(count));
   for (int k = 0; k < count; ++k)
     distances.push_back(count == 1 ? far_m : far_m * std::pow(near_m / far_m, static_cast<double>(k) / (count - 1)));
   return distances;

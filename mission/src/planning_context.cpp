@@ -27,7 +27,7 @@ void PlanningOptions::validate() const {
   const auto& objectives = planner::objectiveNames();
   if (std::find(objectives.begin(), objectives.end(), objective) == objectives.end())
     throw InputError("unknown objective '" + objective + "'");
-  const auto models = battery::ageingModelNames();
+  const auto& models = battery::ageingModelNames();
   if (std::find(models.begin(), models.end(), ageing_model) == models.end())
     throw InputError("unknown ageing model '" + ageing_model + "'");
   requireIn(ageing_dod, 0.0, 1.0, "ageing depth of discharge");

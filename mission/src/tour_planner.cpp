@@ -258,6 +258,7 @@ FlightRecord recordFlight(const TourResult& tour, const PlanningContext& context
       const SortieLeg& leg = sortie.legs[step];
       const std::vector<planner::PathSample>& samples = tour.legs[leg.from][leg.to].evaluation.samples;
       std::vector<LoadSample> loads;
+      loads.reserve(samples.size());
       for (const planner::PathSample& s : samples) loads.push_back({s.t_s, s.propulsion_power_w});
       flyProfile(flight, loads, [&](std::size_t k, double current_a) {
         add(samples[k], current_a, FlightPhase::Leg, static_cast<int>(step));

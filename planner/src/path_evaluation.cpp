@@ -45,7 +45,8 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     return sample;
   };
   for (std::size_t s = 0; s + 1 < waypoints_m.size(); ++s) {
-    const Eigen::Vector3d from = waypoints_m[s], delta = waypoints_m[s + 1] - from;
+    const Eigen::Vector3d& from = waypoints_m[s];
+    const Eigen::Vector3d delta = waypoints_m[s + 1] - from;
     const double length = delta.norm();
     if (length == 0.0) continue;
     const Eigen::Vector3d direction = delta / length;
