@@ -29,6 +29,7 @@ PyObject* missing_file_error = nullptr;  // ceilplan.MissingFileError: also a Fi
 
 // Raises an InputFileError as ceilplan.MissingFileError or ceilplan.InputFileError, its message
 // the library's and its errno the reason's.
+// NOLINTNEXTLINE(performance-unnecessary-value-param): pybind11's ExceptionTranslator takes it by value
 void translateInputFileError(std::exception_ptr failure) {
   try {
     if (failure) std::rethrow_exception(failure);
@@ -177,6 +178,7 @@ py::object result(const char* type, const py::dict& fields) {
 template <class Named>
 std::vector<std::string> namesOf(const std::vector<Named>& items) {
   std::vector<std::string> names;
+  names.reserve(items.size());
   for (const Named& item : items) names.push_back(item.name);
   return names;
 }
@@ -261,6 +263,7 @@ py::object sampleColumns(const std::vector<io::TourPathRow>& rows, bool tour) {
 
 py::object routeSamples(const std::vector<planner::PathSample>& samples) {
   std::vector<io::TourPathRow> rows;
+  rows.reserve(samples.size());
   for (const planner::PathSample& s : samples)
     rows.push_back({s.t_s, s.position_m, s.speed_m_s, s.ceiling_gap_m, s.current_a, s.soc, 1, s.ground_gap_m, "leg",
                     s.assumed_free});
@@ -649,8 +652,8 @@ PYBIND11_MODULE(ceilplan, m) {
   py::class_<PyEnvironment>(m, "Environment", "A map indexed for a vehicle and a battery")
       .def_static(
           "load",
-          [](const std::filesystem::path& path, std::optional<mission::Vehicle> vehicle,
-             std::optional<std::filesystem::path> battery, const std::string& unknown,
+          [](const std::filesystem::path& path, const std::optional<mission::Vehicle>& vehicle,
+             const std::optional<std::filesystem::path>& battery, const std::string& unknown,
              std::optional<double> unknown_fill_max_m, const py::object& progress) {
             mission::PlanningOptions options;
             options.unknown = unknownSpace(unknown, unknown_fill_max_m);
@@ -740,6 +743,7 @@ PYBIND11_MODULE(ceilplan, m) {
       "evaluate",
       [](const PyEnvironment& env, const std::vector<std::vector<double>>& path) {
         std::vector<Eigen::Vector3d> waypoints;
+        waypoints.reserve(path.size());
         for (const auto& p : path) waypoints.push_back(point(p, "path point"));
         const mission::RouteCheck check = [&] {
           py::gil_scoped_release release;
@@ -925,6 +929,7 @@ PYBIND11_MODULE(ceilplan, m) {
         auto [context, tours] = reporter.run([&] {
           auto context = std::make_shared<const mission::PlanningContext>(*shared_mission, options.progress);
           std::vector<mission::TourResult> tours;
+          tours.reserve(modes.size());
           for (mission::FlightMode flight_mode : modes)
             tours.push_back(mission::planTour(*shared_mission, *context, flight_mode, options));
           return std::make_pair(context, std::move(tours));
@@ -963,7 +968,7 @@ PYBIND11_MODULE(ceilplan, m) {
          const std::optional<std::filesystem::path>& mesh, const std::optional<std::filesystem::path>& origins,
          double resolution_m, const std::string& crs, double max_range_m, std::optional<double> free_distance_m,
          const std::string& free_region, std::optional<double> margin_m, const std::string& interior,
-         bool skip_non_finite, const std::optional<std::vector<double>>& crop) {
+         bool skip_non_finite, const std::optional<std::vector<double>>& crop, const py::object& progress) {
         io::MapImportOptions options;
         options.points = points.value_or("");
         options.mesh = mesh.value_or("");
@@ -984,10 +989,8 @@ PYBIND11_MODULE(ceilplan, m) {
         // The rules of `ceilplan import --out`: never replaces an input; the map and its summary appear together.
         io::OutputSet outputs({{"out", out}, {"out's summary", summary}},
                               {{"points", options.points}, {"origins", options.origins}, {"mesh", options.mesh}});
-        const io::MapImport imported = [&] {
-          py::gil_scoped_release release;
-          return io::importMap(options);
-        }();
+        PythonProgress reporter(progress);
+        const io::MapImport imported = reporter.run([&] { return io::importMap(options, reporter.callback()); });
         const io::Provenance provenance = io::Provenance::of("python: ceilplan.import_map('" + out.string() + "', ...)")
                                               .input("points", options.points)
                                               .input("origins", options.origins)
@@ -1004,12 +1007,13 @@ PYBIND11_MODULE(ceilplan, m) {
       "with origins, the longest ray carved (0: no limit); free_distance_m: without origins, how far from the data "
       "space is assumed free; free_region: 'between' or 'box'; margin_m: around the data; interior: a mesh's inside, "
       "'auto', 'solid', 'hollow' or 'shell'; skip_non_finite: drop NaN points; crop: (xmin, ymin, zmin, xmax, ymax, "
-      "zmax) m",
+      "zmax) m; progress: None or a callable progress(stage, fraction) (see plan_tour)",
       py::arg("out"), py::kw_only(), py::arg("points") = py::none(), py::arg("mesh") = py::none(),
       py::arg("origins") = py::none(), py::arg("resolution_m") = import_defaults.resolution_m, py::arg("crs") = "",
       py::arg("max_range_m") = import_defaults.max_range_m, py::arg("free_distance_m") = py::none(),
       py::arg("free_region") = import_defaults.free_region, py::arg("margin_m") = py::none(),
-      py::arg("interior") = import_defaults.interior, py::arg("skip_non_finite") = false, py::arg("crop") = py::none());
+      py::arg("interior") = import_defaults.interior, py::arg("skip_non_finite") = false, py::arg("crop") = py::none(),
+      py::arg("progress") = py::none());
 
   const battery::DutyStudyOptions paper;  // the defaults of the study and of `ceilplan duty`
   m.def(
@@ -1017,7 +1021,8 @@ PYBIND11_MODULE(ceilplan, m) {
       [](const std::vector<double>& flight_currents_a, double capacity_ah, double charge_current_a, double flight_s,
          double idle_s, double charge_max_s, double soc_start, int missions_per_day, int days,
          std::optional<double> years, double step_s, const std::vector<std::string>& models, double temperature_c,
-         const std::string& chemistry, double end_of_life_soh, double woehler_n100, double woehler_k) {
+         const std::string& chemistry, double end_of_life_soh, double woehler_n100, double woehler_k,
+         const py::object& progress) {
         battery::DutyStudyOptions options;
         options.flight_currents_a = flight_currents_a;
         options.pack.capacity_ah = capacity_ah;
@@ -1037,10 +1042,9 @@ PYBIND11_MODULE(ceilplan, m) {
         options.woehler.cycles_at_full_depth = woehler_n100;
         options.woehler.exponent = woehler_k;
         options.cell_voltage_of_soc = energy::lipoCellVoltageOfSoc();
-        const battery::DutyStudyResult study = [&] {
-          py::gil_scoped_release release;
-          return battery::runDutyStudy(options);
-        }();
+        PythonProgress reporter(progress);
+        options.progress = reporter.callback();
+        const battery::DutyStudyResult study = reporter.run([&] { return battery::runDutyStudy(options); });
         return dutyStudyResult(options, study);
       },
       ("The founding paper's duty study (DutyStudy), as `ceilplan duty` runs it with the same defaults (times in "
@@ -1049,7 +1053,7 @@ PYBIND11_MODULE(ceilplan, m) {
        "table. models: any of " +
        oneOf(battery::ageingModelNames()) +
        "; years: the projection's span (None: days); woehler_n100, woehler_k: the Woehler curve's cycles at full "
-       "depth and exponent")
+       "depth and exponent; progress: None or a callable progress(stage, fraction) (see plan_tour)")
           .c_str(),
       py::arg("flight_currents_a") = paper.flight_currents_a, py::arg("capacity_ah") = paper.pack.capacity_ah,
       py::arg("charge_current_a") = paper.pack.charge_current_a, py::arg("flight_s") = paper.flight_s,
@@ -1058,17 +1062,18 @@ PYBIND11_MODULE(ceilplan, m) {
       py::arg("days") = paper.days, py::arg("years") = py::none(), py::arg("step_s") = paper.step_s,
       py::arg("models") = paper.ageing_models, py::arg("temperature_c") = paper.temperature_c,
       py::arg("chemistry") = paper.chemistry, py::arg("end_of_life_soh") = paper.end_of_life_soh,
-      py::arg("woehler_n100") = paper.woehler.cycles_at_full_depth, py::arg("woehler_k") = paper.woehler.exponent);
+      py::arg("woehler_n100") = paper.woehler.cycles_at_full_depth, py::arg("woehler_k") = paper.woehler.exponent,
+      py::arg("progress") = py::none());
 
   const mission::ProposalOptions proposal_defaults;
   const io::ProposalSettings settings_defaults;
   m.def(
       "propose",
       [](const std::filesystem::path& map, const std::filesystem::path& vehicle, const std::filesystem::path& out,
-         std::optional<std::filesystem::path> picture, std::optional<std::vector<double>> home,
-         std::optional<std::vector<double>> crop, double min_area_m2, int max_regions, const std::string& camera,
+         const std::optional<std::filesystem::path>& picture, const std::optional<std::vector<double>>& home,
+         const std::optional<std::vector<double>>& crop, double min_area_m2, int max_regions, const std::string& camera,
          double gsd_mm_px, double overlap_front, double overlap_side, std::uint32_t seed, const std::string& unknown,
-         std::optional<double> unknown_fill_max_m) {
+         std::optional<double> unknown_fill_max_m, const py::object& progress) {
         io::ProposalRequest request;
         request.mission_file = out;
         request.picture_file = picture.value_or(std::filesystem::path());
@@ -1088,10 +1093,9 @@ PYBIND11_MODULE(ceilplan, m) {
         request.settings.unknown = unknownSpace(unknown, unknown_fill_max_m);
         const std::string call =
             "python: ceilplan.propose('" + map.string() + "', '" + vehicle.string() + "', '" + out.string() + "')";
-        const mission::MissionProposal proposal = [&] {
-          py::gil_scoped_release release;
-          return io::proposeMissionFiles(request, io::Provenance::of(call));
-        }();
+        PythonProgress reporter(progress);
+        const mission::MissionProposal proposal = reporter.run(
+            [&] { return io::proposeMissionFiles(request, io::Provenance::of(call), reporter.callback()); });
         py::list regions;
         for (const mission::ProposedRegion& region : proposal.regions) {
           py::dict d;
@@ -1122,7 +1126,8 @@ PYBIND11_MODULE(ceilplan, m) {
        "(x, y, z) m (None: proposed); crop: (xmin, ymin, zmin, xmax, ymax, zmax) m; camera: a preset, " +
        cameraPresetNames() +
        "; gsd_mm_px: the required ground sampling distance; overlap_front, overlap_side: percent; unknown: "
-       "'occupied', 'free' or 'fill' (unknown_fill_max_m with 'fill')")
+       "'occupied', 'free' or 'fill' (unknown_fill_max_m with 'fill'); progress: None or a callable progress(stage, "
+       "fraction) (see plan_tour)")
           .c_str(),
       py::arg("map"), py::arg("vehicle"), py::arg("out"), py::arg("picture") = py::none(), py::arg("home") = py::none(),
       py::arg("crop") = py::none(), py::arg("min_area_m2") = proposal_defaults.min_region_area_m2,
@@ -1130,5 +1135,5 @@ PYBIND11_MODULE(ceilplan, m) {
       py::arg("gsd_mm_px") = settings_defaults.gsd_mm_px,
       py::arg("overlap_front") = settings_defaults.overlap_front_pct,
       py::arg("overlap_side") = settings_defaults.overlap_side_pct, py::arg("seed") = settings_defaults.seed,
-      py::arg("unknown") = "occupied", py::arg("unknown_fill_max_m") = py::none());
+      py::arg("unknown") = "occupied", py::arg("unknown_fill_max_m") = py::none(), py::arg("progress") = py::none());
 }

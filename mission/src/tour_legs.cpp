@@ -10,6 +10,7 @@ enum class Rework { Route, Refine };
 void rework(LegTable& legs, const std::vector<std::pair<int, int>>& which, const LegRework& make,
             const LegScorer& score, int workers, const FractionCallback& progress, Rework kind) {
   std::vector<TourLeg*> cells;
+  cells.reserve(which.size());
   for (const auto& [from, to] : which) cells.push_back(&legs(from, to));  // stored before the threads start
   parallelFor(
       which.size(), workers,
@@ -33,6 +34,7 @@ LegTable planLegsByPair(int place_count, const PairPlanner& plan, const LegScore
     for (int j = i + 1; j < place_count; ++j) pairs.emplace_back(i, j);
   LegTable legs(place_count);
   std::vector<std::pair<TourLeg*, TourLeg*>> cells;
+  cells.reserve(pairs.size());
   for (const auto& [i, j] : pairs) cells.emplace_back(&legs(i, j), &legs(j, i));  // stored before the threads start
   parallelFor(
       pairs.size(), workers,

@@ -109,7 +109,7 @@ void writeFixtures(const fs::path& dir) {
 // Built under a private name and renamed into place: parallel test processes race safely.
 const fs::path& fixtures() {
   static const fs::path dir = [] {
-    const fs::path final_dir = fs::path(CEILPLAN_TEST_TMP) / "hostile_fixtures_v2";
+    fs::path final_dir = fs::path(CEILPLAN_TEST_TMP) / "hostile_fixtures_v2";
     if (fs::exists(final_dir / "mission.yaml")) return final_dir;
     const fs::path staging = fs::path(CEILPLAN_TEST_TMP) / ("hostile_fixtures_v2.build" + std::to_string(::getpid()));
     fs::remove_all(staging);
@@ -129,7 +129,7 @@ const fs::path& fixtures() {
 // for ever. Kept apart from {fx} and {dir}, whose snapshots read every file.
 const fs::path& fifos() {
   static const fs::path dir = [] {
-    const fs::path fifo_dir = fs::path(CEILPLAN_TEST_TMP) / "hostile_fifos_v1";
+    fs::path fifo_dir = fs::path(CEILPLAN_TEST_TMP) / "hostile_fifos_v1";
     fs::create_directories(fifo_dir);
     for (const char* name : {"map.bt", "mission.yaml", "vehicle.yaml", "battery.yaml", "config.yaml", "in.csv",
                              "points.xyz", "points.pcd", "mesh.stl", "origins.csv"})
@@ -684,10 +684,10 @@ std::vector<Case> csvCases() {
        "'\\x1B[31m1\\x07' is not a number", "'\\x1B]0;x\\x07' is not a number"},
       {"binary",
        std::string("\x7f"
-                   "ELF\x02\x01\x01\x00\x03,\x04\n\x05",
+                   "ELF\x02\x01\x01\x00\x03,\x04\n\x05\x00",
                    14),
        std::string("\x7f"
-                   "ELF\x02\x01\x01\x00\x03,\x04\n\x05",
+                   "ELF\x02\x01\x01\x00\x03,\x04\n\x05\x00",
                    14),
        2, "the header holds control characters", "the header holds control characters",
        "the header holds control characters ('\\x7FELF"},
@@ -720,8 +720,8 @@ std::vector<Case> csvCases() {
   for (const std::string flag : {"rainflow --csv", "calibrate --data"}) {
     const std::string name = flag.substr(0, flag.find(' '));
     const std::string tail = name == "rainflow" ? " --column soc --json {out}" : " --out {out}";
-    rows.push_back({"csv_directory_" + name, flag + " {fx}/adir" + tail, 2, "directory"});
-    rows.push_back({"csv_missing_" + name, flag + " {fx}/none.csv" + tail, 2, "none.csv"});
+    rows.push_back({"csv_directory_" + name, (flag + " {fx}/adir").append(tail), 2, "directory"});
+    rows.push_back({"csv_missing_" + name, (flag + " {fx}/none.csv").append(tail), 2, "none.csv"});
   }
   rows.push_back(
       {"csv_directory_evaluate", "evaluate --map {fx}/room.bt --path {fx}/adir --json {out}", 2, "directory"});
@@ -1521,7 +1521,7 @@ TEST(OutputRulesReruns, StagingLeftByAKilledRunIsNeverMergedAndIsRemoved) {
     return id;
   }();
   const auto stale = [&](const std::string& suffix, const std::string& owner) {
-    const fs::path staging = dir / ("out.tmp-ceilplan-" + suffix);
+    fs::path staging = dir / ("out.tmp-ceilplan-" + suffix);
     writeFile(staging / "out" / "stale.csv", "from a killed run");
     writeFile(staging / "out.owner", owner + "\n");
     return staging;
@@ -1562,7 +1562,7 @@ TEST(OutputRulesDiskFull, NoOutputOfTheSetAppears) {
       {"bench_planners", replaced(kBench, "--runs 1", "--runs 10") + " --json {small}/b.json --log {small}/b.log"},
   };
   for (const auto& [name, args] : runs) {
-    if (name == "bench_planners") writeFile(small / "filler", std::string(48 * 1024, 'x'));
+    if (name == "bench_planners") writeFile(small / "filler", std::string(std::size_t{48} * 1024, 'x'));
     const auto before = lstatSnapshot(small);
     const CommandResult r =
         runCeilplan(substituted(args, {{"{fx}", fixtures().string()}, {"{small}", small.string()}}));

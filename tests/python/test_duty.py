@@ -106,3 +106,10 @@ def test_bad_options_raise_value_errors_and_a_depleted_pack_is_infeasible():
         ceilplan.duty(models=["rainbow"])
     with pytest.raises(ceilplan.InfeasibleError, match="case 9.50 A: mission 3 of day 1"):
         ceilplan.duty(charge_max_s=600.0, models=[])
+
+
+def test_progress_reports_each_case_of_the_study():
+    stages = set()
+    ceilplan.duty(days=1, progress=lambda stage, fraction: stages.add(stage))
+    assert any(stage.startswith("duty ") for stage in stages)
+    assert len({stage for stage in stages if stage.startswith("duty ")}) == 2  # the paper's two flight currents

@@ -75,3 +75,21 @@ def test_bad_options_are_refused_before_anything_is_written(tmp_path, options, s
     assert says in str(refused.value)
     assert isinstance(refused.value, ValueError)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["box.obj"]
+
+
+def test_progress_reports_the_import_and_an_exception_from_it_cancels_with_nothing_written(tmp_path):
+    mesh = write_obj(tmp_path / "box.obj", QUADS)
+    reports = []
+    ceilplan.import_map(tmp_path / "box.bt", mesh=mesh, resolution_m=0.1,
+                        progress=lambda stage, fraction: reports.append((stage, fraction)))
+    assert reports and all(isinstance(stage, str) and 0.0 <= fraction <= 1.0 for stage, fraction in reports)
+
+    class Stop(Exception):
+        pass
+
+    def stop(stage, fraction):
+        raise Stop(stage)
+
+    with pytest.raises(Stop):
+        ceilplan.import_map(tmp_path / "again.bt", mesh=mesh, resolution_m=0.1, progress=stop)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["box.bt", "box.bt.json", "box.obj"]

@@ -47,3 +47,11 @@ def test_bad_values_and_missing_files_write_nothing(tmp_path):
     with pytest.raises(FileNotFoundError):
         ceilplan.propose(tmp_path / "none.bt", QUAD, out)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_progress_reports_indexing_and_the_proposal(tmp_path):
+    stages = []
+    ceilplan.propose(WAREHOUSE, QUAD, tmp_path / "proposed.yaml", max_regions=1, gsd_mm_px=6.0,
+                     progress=lambda stage, fraction: stages.append(stage))
+    assert any(stage.startswith("indexing ") for stage in stages)
+    assert "finding overhead surfaces" in stages
