@@ -585,7 +585,9 @@ PYBIND11_MODULE(ceilplan, m) {
                 "next), gimbal_pitch_deg (+90 straight up, None: unchanged), take_photo, contact_reading, "
                 "height_above_home_m, index, sortie, kind), takeoff_height_m, landing_height_m (None: does not end "
                 "at home), takeoff_s (on the tour's clock), charge_ah, duration_s (take-off to landing), recharge_s, "
-                "turnaround_s, fec, dod, min_soc (at landing), wear (the split's ageing model), reason",
+                "turnaround_s, fec, dod, min_soc (at landing), wear (the split's ageing model), reason; with a "
+                "calibrated vehicle also p_land_above_reserve, soc_p01 (1st-percentile landing SOC), "
+                "landing_soc_std and sampled_landing (docs/tours.md, \"Landing confidence\")",
                 sortieSummary);
   addResultType(m, "Leg",
                 "One leg of a Sortie (a dict): from, to (place names), charge_ah, duration_s, length_m, waypoints "

@@ -40,7 +40,8 @@ void runCalibrate(const CalibrateOptions& options) {
 
   print(io::calibrationText(vehicle.name, options.data_path, samples.size(), result));
   io::writeCalibratedVehicle(out.path("--out"), options.vehicle_path, result.parameters,
-                             io::calibratedVehicleComment(options.data_path, samples.size(), result, provenance));
+                             io::calibratedVehicleComment(options.data_path, samples.size(), result, provenance),
+                             result.uncertainty);
   if (!options.json_path.empty())
     io::writeJsonFile(
         out.path("--json"),

@@ -275,6 +275,17 @@ std::string fitFailure(const Problem& problem, const std::vector<double>& start_
          "data, or fit fewer parameters with --fit";
 }
 
+// Whether x is a least-squares optimum by the relative offset criterion (Bates & Watts 1988,
+// section 2.2.3): the residuals are orthogonal to the Jacobian's columns, |J^T r| <= 1e-4 |J| |r|.
+// On noisy data L-BFGS's line search may give up there (a generic NLopt failure) with x at the
+// optimum it cannot improve.
+bool atLeastSquaresOptimum(const Problem& problem, const std::vector<double>& x) {
+  const Eigen::VectorXd r = problem.residuals(x);
+  const Eigen::MatrixXd j = problem.jacobian(x);
+  const double scale = j.norm() * r.norm();
+  return std::isfinite(scale) && scale > 0.0 && (j.transpose() * r).norm() <= 1e-4 * scale;
+}
+
 // Refuses when the Jacobian at the fit has a column of zeros or a (near) flat direction.
 void checkIdentifiable(const Problem& problem, const std::vector<FreeParameter>& free, const Eigen::MatrixXd& j) {
   const double rows = static_cast<double>(j.rows());
@@ -301,7 +312,70 @@ void checkIdentifiable(const Problem& problem, const std::vector<FreeParameter>&
   throw ceilplan::InputError(message);
 }
 
+Eigen::VectorXd residualsFor(const EnergyParameters& p, const std::vector<CalibrationSample>& samples) {
+  const EnergyModel model(p);
+  Eigen::VectorXd r(static_cast<Eigen::Index>(samples.size()));
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    r[static_cast<Eigen::Index>(i)] = evaluate(model, samples[i]) - samples[i].current_a;
+  return r;
+}
+
+// Gauss-Newton covariance at the optimum (Bates & Watts 1988, section 2.3): the Jacobian in the
+// parameters' own units, so that the covariance is the one a user reads against the values.
+FitUncertainty fitUncertainty(const EnergyParameters& fitted, const std::vector<CalibrationSample>& samples,
+                              const std::vector<FittedParameter>& parameters) {
+  FitUncertainty u;
+  const Eigen::VectorXd r = residualsFor(fitted, samples);
+  const auto n = static_cast<double>(samples.size());
+  const auto p = static_cast<double>(parameters.size());
+  u.samples = static_cast<int>(samples.size());
+  u.residual_rms_a = std::sqrt(r.squaredNorm() / n);
+  u.residual_std_a = std::sqrt(r.squaredNorm() / (n - p));  // calibrate refuses n <= p
+  for (const FittedParameter& f : parameters)
+    if (f.atBound()) {
+      u.unavailable = parameterName(f.parameter) + " ended at " +
+                      (f.value <= f.lower * (1 + 1e-6) ? "the lower" : "the upper") + " end of its range (" +
+                      formatNumber(f.value) +
+                      "), where the fit's covariance does not describe its uncertainty; fix it instead of fitting it";
+      return u;
+    }
+  Eigen::MatrixXd j(r.size(), static_cast<Eigen::Index>(parameters.size()));
+  for (std::size_t c = 0; c < parameters.size(); ++c) {
+    const FittedParameter& f = parameters[c];
+    const double step = kCovarianceRelativeStep * std::fabs(f.value);
+    j.col(static_cast<Eigen::Index>(c)) = (residualsFor(withParameter(fitted, f.parameter, f.value + step), samples) -
+                                           residualsFor(withParameter(fitted, f.parameter, f.value - step), samples)) /
+                                          (2.0 * step);
+  }
+  const Eigen::MatrixXd normal = j.transpose() * j;
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(normal);
+  if (!lu.isInvertible()) {
+    u.unavailable = "the fit's J^T J is singular: the data do not separate the fitted parameters; fit fewer (--fit)";
+    return u;
+  }
+  const Eigen::MatrixXd covariance = u.residual_std_a * u.residual_std_a * lu.inverse();
+  for (std::size_t a = 0; a < parameters.size(); ++a) {
+    u.parameters.push_back(parameters[a].parameter);
+    const auto ia = static_cast<Eigen::Index>(a);
+    u.standard_errors.push_back(std::sqrt(std::max(0.0, covariance(ia, ia))));
+    u.covariance.emplace_back();
+    for (std::size_t b = 0; b < parameters.size(); ++b)
+      u.covariance.back().push_back(covariance(ia, static_cast<Eigen::Index>(b)));
+  }
+  return u;
+}
+
 }  // namespace
+
+EnergyParameters withParameter(const EnergyParameters& parameters, FreeParameter parameter, double value) {
+  EnergyParameters copy = parameters;
+  slot(copy, parameter) = value;
+  return copy;
+}
+
+double parameterValue(const EnergyParameters& parameters, FreeParameter parameter) {
+  return valueOf(parameters, parameter);
+}
 
 std::string parameterName(FreeParameter parameter) {
   switch (parameter) {
@@ -383,7 +457,7 @@ CalibrationResult calibrate(const EnergyParameters& start, const std::vector<Cal
   } catch (const nlopt::roundoff_limited&) {
     // Converged as far as floating point allows: x holds the best point found.
   } catch (const std::exception& e) {
-    throw ceilplan::Error(fitFailure(problem, problem.startX(), samples, e));
+    if (!atLeastSquaresOptimum(problem, x)) throw ceilplan::Error(fitFailure(problem, problem.startX(), samples, e));
   }
 
   checkIdentifiable(problem, free, problem.jacobian(x));
@@ -399,6 +473,7 @@ CalibrationResult calibrate(const EnergyParameters& start, const std::vector<Cal
         {free[j], slot(result.parameters, free[j]), range.lower, range.upper, valueOf(start, free[j])});
   }
   result.evaluations = problem.evaluations();
+  result.uncertainty = fitUncertainty(result.parameters, samples, result.fitted);
   return result;
 }
 

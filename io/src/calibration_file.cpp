@@ -59,8 +59,20 @@ nlohmann::json calibrationReportJson(const std::filesystem::path& data, std::siz
                       {"allowed_max", f.upper},
                       {"start", f.start},
                       {"at_bound", f.atBound()}});
+  const energy::FitUncertainty& u = result.uncertainty;
+  nlohmann::json uncertainty = {{"residual_std_a", u.residual_std_a}, {"residual_rms_a", u.residual_rms_a}};
+  if (u.hasCovariance()) {
+    nlohmann::json names = nlohmann::json::array();
+    for (energy::FreeParameter parameter : u.parameters) names.push_back(energy::parameterName(parameter));
+    uncertainty["parameters"] = names;
+    uncertainty["standard_errors"] = u.standard_errors;
+    uncertainty["covariance"] = u.covariance;
+  } else {
+    uncertainty["unavailable"] = u.unavailable;
+  }
   return {{"data", data.string()},
           {"samples", samples},
+          {"uncertainty", uncertainty},
           {"rmse_a", result.rmse_a},
           {"max_abs_error_a", result.max_abs_error_a},
           {"evaluations", result.evaluations},

@@ -23,9 +23,9 @@ using detail::Range;
 using detail::Section;
 using detail::YamlFile;
 
-const std::vector<std::string> kBatteryKeys{"capacity_ah", "charge_current_a", "cell_count",
-                                            "soc_min",     "state_of_health",  "start_soc",
-                                            "reserve_soc", "between_sorties",  "swap_s"};
+const std::vector<std::string> kBatteryKeys{"capacity_ah",     "charge_current_a",  "cell_count",  "soc_min",
+                                            "state_of_health", "start_soc",         "reserve_soc", "between_sorties",
+                                            "swap_s",          "reserve_confidence"};
 // Any place in a map: a kilometre either way (the index refuses maps too large to hold anyway).
 const Range kCoordinateM = Range::closed(-kMaxPointCoordinate_m, kMaxPointCoordinate_m, "m");
 
@@ -66,6 +66,13 @@ mission::BatterySpec readBatterySection(const Section& section, bool all_require
   if (section.choice("between_sorties", {"recharge", "swap"}, "recharge") == "swap")
     spec.between_sorties = mission::Turnaround::Swap;
   spec.swap_s = section.number("swap_s", Range::closed(0.0, 86400.0, "s"), spec.swap_s);
+  if (section.has("reserve_confidence")) {
+    spec.reserve_confidence = section.number("reserve_confidence", Range{0.0, 1.0, "", true, true});
+    if (!vehicle.calibration)
+      section.fail("'" + section.keyPath("reserve_confidence") + "' needs a calibrated vehicle, and " +
+                   vehicleSource(vehicle, vehicle_file) +
+                   " has no 'calibration:' block: fit it with ceilplan calibrate (docs/energy.md) or remove the key");
+  }
   if (spec.reserve_soc >= spec.start_soc)
     section.fail("'" + section.keyPath("reserve_soc") + "' " + formatNumber(spec.reserve_soc) + " is not below '" +
                  section.keyPath("start_soc") + "' " + formatNumber(spec.start_soc) + ": no sortie could fly");

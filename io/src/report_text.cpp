@@ -114,6 +114,16 @@ std::string calibrationText(const std::string& vehicle, const std::filesystem::p
   for (const energy::FittedParameter& f : result.fitted)
     out += printed("%-20s %14.6g %14.6g %14.6g %14.6g%s\n", energy::parameterName(f.parameter).c_str(), f.value,
                    f.lower, f.upper, f.start, f.atBound() ? "  (at its bound)" : "");
+  const energy::FitUncertainty& u = result.uncertainty;
+  out += printed("residual    std %.5f A, RMS %.5f A (n - p = %d)\n", u.residual_std_a, u.residual_rms_a,
+                 u.samples - static_cast<int>(result.fitted.size()));
+  if (!u.hasCovariance()) return out + "uncertainty not reported: " + u.unavailable + "\n";
+  out += printed("%-20s %14s %14s\n", "parameter", "std_error", "relative");
+  for (std::size_t k = 0; k < u.parameters.size(); ++k) {
+    const double value = energy::parameterValue(result.parameters, u.parameters[k]);
+    out += printed("%-20s %14.4g %13.3g%%\n", energy::parameterName(u.parameters[k]).c_str(), u.standard_errors[k],
+                   value != 0.0 ? 100.0 * u.standard_errors[k] / std::fabs(value) : 0.0);
+  }
   return out;
 }
 

@@ -236,6 +236,18 @@ nlohmann::json tourSortiesJson(const mission::TourResult& tour) {
          {"min_soc", sortie.lowest_soc},
          {"wear", sortie.wear},
          {"reason", sortie.reason}});
+    if (sortie.landing) {
+      nlohmann::json& entry = sorties.back();
+      entry["p_land_above_reserve"] = sortie.landing->p_land_above_reserve;
+      entry["soc_p01"] = sortie.landing->soc_p01;
+      entry["landing_soc_std"] = sortie.landing->soc_std;
+      if (const auto& sampled = sortie.sampled_landing)
+        entry["sampled_landing"] = {{"draws", sampled->draws},
+                                    {"seed", sampled->seed},
+                                    {"p_land_above_reserve", sampled->p_land_above_reserve},
+                                    {"standard_error", sampled->standardError()},
+                                    {"soc_p01", sampled->soc_p01}};
+    }
   }
   return sorties;
 }
@@ -569,6 +581,22 @@ std::string tourFilesLine(const std::filesystem::path& dir, const mission::Missi
   return text + "figures: " + plotCommand("plot-tour") + " " + dir.string() + "\n";
 }
 
+namespace {
+
+// "lands above the reserve with probability 0.9993 (landing SOC 1st percentile 31.2 %; sampled:
+// 0.999 +- 0.001 over 1000 draws, seed 1)".
+std::string landingLine(const mission::Sortie& s) {
+  std::string line = "lands above the reserve with probability " + formatNumber(s.landing->p_land_above_reserve, 4) +
+                     " (landing SOC 1st percentile " + formatFixed(100.0 * s.landing->soc_p01, 1) + " %";
+  if (s.sampled_landing)
+    line += "; sampled: " + formatNumber(s.sampled_landing->p_land_above_reserve, 4) + " +- " +
+            formatNumber(s.sampled_landing->standardError(), 2) + " over " + std::to_string(s.sampled_landing->draws) +
+            " draws, seed " + std::to_string(s.sampled_landing->seed);
+  return line + ")";
+}
+
+}  // namespace
+
 std::string tourSummary(const mission::TourResult& tour) {
   std::ostringstream out;
   char line[600];
@@ -582,6 +610,7 @@ std::string tourSummary(const mission::TourResult& tour) {
                   k + 1, s.targets.size(), s.charge_ah, s.flight_s, 100.0 * s.dod, 100.0 * s.lowest_soc,
                   s.reason.c_str());
     out << line;
+    if (s.landing) out << "    " << landingLine(s) << '\n';
   }
   std::snprintf(line, sizeof line, "  total %.4f Ah, %.1f s in the air", tour.plan.charge_ah, tour.plan.flight_s);
   out << line;

@@ -23,6 +23,15 @@ ReportPlan tourReportPlan(const mission::TourResult& tour) {
                   {"in the air", formatFixed(tour.plan.flight_s, 1) + " s"},
                   {"FEC", formatNumber(tour.plan.fec, 5)},
                   {"lowest SOC", formatFixed(100 * tour.plan.min_soc, 1) + " %"}};
+  // With a calibrated vehicle: the least likely sortie's odds of landing above the reserve.
+  std::optional<mission::LandingOdds> worst;
+  for (const mission::Sortie& sortie : tour.plan.sorties)
+    if (sortie.landing && (!worst || sortie.landing->p_land_above_reserve < worst->p_land_above_reserve))
+      worst = sortie.landing;
+  if (worst) {
+    plan.summary.emplace_back("P(land above reserve), least sortie", formatNumber(worst->p_land_above_reserve, 4));
+    plan.summary.emplace_back("its 1st-percentile landing SOC", formatFixed(100 * worst->soc_p01, 1) + " %");
+  }
   return plan;
 }
 

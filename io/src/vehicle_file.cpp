@@ -9,6 +9,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <Eigen/Dense>
+
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -152,6 +155,52 @@ void readPower(const Section& root, energy::EnergyParameters& p) {
   }
 }
 
+// calibration: {samples, residual_rms_a, residual_std_a, parameters: [names], covariance: [[...]]},
+// as writeCalibratedVehicle writes it; the covariance must be symmetric and positive semidefinite.
+energy::FitUncertainty readCalibration(const Section& s) {
+  s.allowOnly({"samples", "residual_rms_a", "residual_std_a", "parameters", "covariance"});
+  energy::FitUncertainty u;
+  u.samples = static_cast<int>(s.integer("samples", 2, 1000000000));
+  u.residual_rms_a = s.number("residual_rms_a", Range::closed(0.0, 1000.0, "A"));
+  u.residual_std_a = s.number("residual_std_a", Range::closed(0.0, 1000.0, "A"));
+  if (s.has("parameters") != s.has("covariance"))
+    s.fail("give 'calibration.parameters' and 'calibration.covariance' together (as ceilplan calibrate writes them)");
+  if (!s.has("parameters")) return u;
+  const YAML::Node names = s.required("parameters");
+  if (!names.IsSequence() || names.size() == 0)
+    s.fail("'calibration.parameters' must list the fitted parameters' names");
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::string path = "calibration.parameters[" + std::to_string(k) + "]";
+    if (!names[k].IsScalar()) s.fail("'" + path + "' must be a parameter name");
+    try {
+      u.parameters.push_back(energy::parseFreeParameter(names[k].as<std::string>()));
+    } catch (const InputError& e) {
+      s.fail("'" + path + "': " + e.what());
+    }
+    for (std::size_t j = 0; j < k; ++j)
+      if (u.parameters[j] == u.parameters[k])
+        s.fail("'" + path + "' repeats " + energy::parameterName(u.parameters[k]));
+  }
+  const std::size_t p = u.parameters.size();
+  const YAML::Node rows = s.required("covariance");
+  if (!rows.IsSequence() || rows.size() != p)
+    s.fail("'calibration.covariance' must have one row per parameter (" + std::to_string(p) + ")");
+  Eigen::MatrixXd c(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p));
+  for (std::size_t i = 0; i < p; ++i) {
+    const std::vector<double> row =
+        s.numbersAt(rows[i], "calibration.covariance[" + std::to_string(i) + "]", p, Range::finite());
+    for (std::size_t j = 0; j < p; ++j) c(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = row[j];
+    u.covariance.push_back(row);
+  }
+  const double scale = c.cwiseAbs().maxCoeff();
+  if (!(c - c.transpose()).isZero(1e-9 * scale)) s.fail("'calibration.covariance' must be symmetric");
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(c);
+  if (eigen.eigenvalues().minCoeff() < -1e-9 * scale)
+    s.fail("'calibration.covariance' must be positive semidefinite (a covariance matrix)");
+  for (std::size_t i = 0; i < p; ++i) u.standard_errors.push_back(std::sqrt(u.covariance[i][i]));
+  return u;
+}
+
 // The shortest decimal that reads back as the same double (yaml-cpp would always write 17 digits).
 std::string shortestNumber(double value) {
   char text[32];
@@ -199,7 +248,8 @@ mission::Vehicle readVehicleOrDefault(const std::filesystem::path& file) {
 mission::Vehicle readVehicle(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Vehicle);
   const Section root(yaml, yaml.root(), "");
-  root.allowOnly({"name", "mass_kg", "rotors", "airframe", "clearance", "max_speed_m_s", "power", "limits"});
+  root.allowOnly(
+      {"name", "mass_kg", "rotors", "airframe", "clearance", "max_speed_m_s", "power", "limits", "calibration"});
   const std::string name = root.text("name", file.stem().string());
   try {
     environment::VehicleGeometry shape;
@@ -221,6 +271,8 @@ mission::Vehicle readVehicle(const std::filesystem::path& file) {
       l.max_yaw_rate_deg_s =
           limits->number("max_yaw_rate_deg_s", Range::above(0.0, 720.0, "deg/s"), l.max_yaw_rate_deg_s);
     }
+    if (const std::optional<Section> calibration = root.optionalSection("calibration"))
+      vehicle.calibration = readCalibration(*calibration);
     return vehicle;
   } catch (const InputError& e) {
     const std::string message = e.what();
@@ -230,7 +282,8 @@ mission::Vehicle readVehicle(const std::filesystem::path& file) {
 }
 
 void writeCalibratedVehicle(const std::filesystem::path& out, const std::filesystem::path& source,
-                            const energy::EnergyParameters& p, const std::string& comment) {
+                            const energy::EnergyParameters& p, const std::string& comment,
+                            const std::optional<energy::FitUncertainty>& calibration) {
   YAML::Node document;
   if (source.empty()) {
     document = defaultVehicleDocument();
@@ -260,6 +313,26 @@ void writeCalibratedVehicle(const std::filesystem::path& out, const std::filesys
   power["pack"]["resistance_ohm"] = shortestNumber(p.pack.resistance_ohm);
   power["pack"]["avionics_current_a"] = shortestNumber(p.pack.avionics_current_a);
   document["power"] = power;
+  document.remove("calibration");  // the source's describes other constants
+  if (calibration) {
+    YAML::Node block(YAML::NodeType::Map);
+    block["samples"] = calibration->samples;
+    block["residual_rms_a"] = shortestNumber(calibration->residual_rms_a);
+    block["residual_std_a"] = shortestNumber(calibration->residual_std_a);
+    if (calibration->hasCovariance()) {
+      YAML::Node names(YAML::NodeType::Sequence);
+      names.SetStyle(YAML::EmitterStyle::Flow);
+      for (energy::FreeParameter parameter : calibration->parameters) names.push_back(energy::parameterName(parameter));
+      block["parameters"] = names;
+      for (const std::vector<double>& row : calibration->covariance) {
+        YAML::Node line(YAML::NodeType::Sequence);
+        line.SetStyle(YAML::EmitterStyle::Flow);
+        for (double value : row) line.push_back(shortestNumber(value));
+        block["covariance"].push_back(line);
+      }
+    }
+    document["calibration"] = block;
+  }
   writeTextAtomically(out, [&](std::ostream& stream) {
     YAML::Emitter emitter;
     emitter << YAML::Comment(comment) << YAML::Newline << document;

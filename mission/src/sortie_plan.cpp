@@ -22,6 +22,12 @@ std::string percent(double fraction) {
   return text;
 }
 
+// "the 25 % reserve", or "the 25 % reserve with probability 0.99".
+std::string reserveText(const BatterySpec& battery) {
+  return "the " + percent(battery.reserve_soc) + " reserve" +
+         (battery.reserve_confidence ? " with probability " + formatNumber(*battery.reserve_confidence) : "");
+}
+
 void requireFiniteNonNegative(double value, const std::string& what) {
   if (!std::isfinite(value) || value < 0.0)
     throw ceilplan::InputError(what + " must be finite and non-negative, got " + formatNumber(value));
@@ -69,12 +75,14 @@ class SortieBuilder {
     auto fly = [&](int to) {
       const double charge0_ah = flight.chargeAh(), t0_s = flight.time_s();
       flyLeg(flight, at, to, &history);
+      if (legs_.uncertainty) sortie.sensitivity += legs_.legs.find(at, to)->sensitivity;
       sortie.legs.push_back({at, to, flight.chargeAh() - charge0_ah, flight.time_s() - t0_s});
       at = to;
     };
     for (int target : sortie.targets) {
       fly(target);
       dwellAt(flight, target, &history);
+      if (legs_.uncertainty) sortie.sensitivity += legs_.dwells[target].sensitivity;
     }
     fly(0);
     const double used_ah = flight.chargeAh();
@@ -87,8 +95,15 @@ class SortieBuilder {
     sortie.turnaround_s = battery_.between_sorties == Turnaround::Swap ? battery_.swap_s : sortie.recharge_s;
     history.back().current_a = -battery_.pack.charge_current_a;
     history.push_back({sortie.flight_s + sortie.recharge_s, battery_.start_soc, -battery_.pack.charge_current_a});
+    if (legs_.uncertainty)
+      sortie.landing = landingOdds(sortie.lowest_soc, sortie.sensitivity, *legs_.uncertainty,
+                                   battery_.pack.usableCapacityAh(), battery_.reserve_soc);
     return sortie;
   }
+
+  // The sensitivity of flying from `from` to `to`, and of the dwell at a target.
+  const ChargeSensitivity& legSensitivity(int from, int to) const { return legs_.legs.find(from, to)->sensitivity; }
+  const ChargeSensitivity& dwellSensitivity(int target) const { return legs_.dwells[target].sensitivity; }
 
   double rechargeS(double used_ah) const { return used_ah / battery_.pack.charge_current_a * kSecondsPerHour; }
 
@@ -139,7 +154,8 @@ std::string splitReason(const TourCosts& legs, const BatterySpec& battery, const
   const std::string head = "split after '" + legs.names[sortie.targets.back()] + "': ";
   if (!merged_feasible)
     return head + "one sortie on through '" + legs.names[next.targets.back()] + "' would land at " +
-           percent(merged.lowest_soc) + " SOC, below the " + percent(battery.reserve_soc) + " reserve";
+           percent(merged.lowest_soc) + " SOC, " + (battery.reserve_confidence ? "short of " : "below ") +
+           reserveText(battery);
   const double soh = battery.pack.state_of_health;
   const double two = wearOf(prototype, sortie, soh) + wearOf(prototype, next, soh);
   const double one = wearOf(prototype, merged, soh);
@@ -228,6 +244,10 @@ std::vector<int> stretchStarts(const std::vector<int>& split_points, int n) {
 void checkTour(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery) {
   legs.validate();
   battery.validate();
+  if (battery.reserve_confidence && !legs.uncertainty)
+    throw ceilplan::InputError(
+        "a reserve confidence needs the calibrated vehicle's uncertainty (its 'calibration:' block, written by "
+        "ceilplan calibrate)");
   const int n = static_cast<int>(order.size());
   if (n != legs.targetCount())
     throw ceilplan::InputError("the visiting order lists " + std::to_string(n) + " targets, the tour has " +
@@ -242,12 +262,28 @@ void checkTour(const TourCosts& legs, const std::vector<int>& order, const Batte
 // At or above the reserve, but for rounding.
 bool aboveReserve(const BatterySpec& battery, double soc) { return soc >= battery.reserve_soc - 1e-12; }
 
+// The per-sortie feasibility test: the planned landing SOC above the reserve and, with a
+// reserve confidence, above the effective reserve its uncertainty asks for (landing_confidence.hpp).
+bool landsAboveReserve(const TourCosts& legs, const BatterySpec& battery, double landing_soc,
+                       const ChargeSensitivity& sensitivity) {
+  if (!aboveReserve(battery, landing_soc)) return false;
+  if (!battery.reserve_confidence) return true;
+  return landing_soc >= effectiveReserveSoc(battery.reserve_soc, *battery.reserve_confidence, sensitivity,
+                                            *legs.uncertainty, battery.pack.usableCapacityAh()) -
+                            1e-12;
+}
+
+bool landsAboveReserve(const TourCosts& legs, const BatterySpec& battery, const Sortie& sortie) {
+  return landsAboveReserve(legs, battery, sortie.lowest_soc, sortie.sensitivity);
+}
+
 // Whether one sortie flies each stretch between `starts` (stretchStarts) alone.
-std::vector<std::uint8_t> stretchesFly(const SortieBuilder& builder, const std::vector<int>& order,
-                                       const std::vector<int>& starts, const BatterySpec& battery) {
+std::vector<std::uint8_t> stretchesFly(const TourCosts& legs, const SortieBuilder& builder,
+                                       const std::vector<int>& order, const std::vector<int>& starts,
+                                       const BatterySpec& battery) {
   std::vector<std::uint8_t> flies(starts.size() - 1, 0);
   for (std::size_t b = 0; b + 1 < starts.size(); ++b)
-    flies[b] = aboveReserve(battery, builder.build(order, starts[b], starts[b + 1] - 1).lowest_soc);
+    flies[b] = landsAboveReserve(legs, battery, builder.build(order, starts[b], starts[b + 1] - 1));
   return flies;
 }
 
@@ -275,7 +311,7 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
       battery::makeAgeingModel(options.ageing_model, options.ageing);
   const SortieBuilder builder(legs, battery);
   const auto above = [&](double soc) { return aboveReserve(battery, soc); };
-  auto feasible = [&](const Sortie& sortie) { return above(sortie.lowest_soc); };
+  auto feasible = [&](const Sortie& sortie) { return landsAboveReserve(legs, battery, sortie); };
   const double soh = battery.pack.state_of_health;
 
   // Sorties start at `starts` (every position by default); best[e] covers order[0..starts[e]-1].
@@ -284,7 +320,7 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
   const int stretches = static_cast<int>(starts.size()) - 1;
   std::vector<Best> best(stretches + 1);
   best[0].wear = 0.0;
-  const std::vector<std::uint8_t> stretch_flies = stretchesFly(builder, order, starts, battery);
+  const std::vector<std::uint8_t> stretch_flies = stretchesFly(legs, builder, order, starts, battery);
 
   if (every_position) {
     // Every candidate sortie flown in full and priced by its whole SOC history: O(N^2) sorties.
@@ -300,17 +336,24 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
     // no longer sortie can fly, so the search from that start ends: O(P x L) flying.
     for (int b = 0; b < stretches; ++b) {
       SocIntegrator flight = builder.takeoff();
+      ChargeSensitivity sensitivity;
       int at = 0;
       for (int e = b + 1; e <= stretches; ++e) {
         for (int p = starts[e - 1]; p < starts[e]; ++p) {
           builder.flyLeg(flight, at, order[p]);
           builder.dwellAt(flight, order[p]);
+          if (legs.uncertainty) {
+            sensitivity += builder.legSensitivity(at, order[p]);
+            sensitivity += builder.dwellSensitivity(order[p]);
+          }
           at = order[p];
         }
         if (!above(flight.lowestSoc())) break;
         SocIntegrator home = flight;
         builder.flyLeg(home, at, 0);
-        if (!above(home.lowestSoc())) continue;
+        ChargeSensitivity home_sensitivity = sensitivity;
+        if (legs.uncertainty) home_sensitivity += builder.legSensitivity(at, 0);
+        if (!landsAboveReserve(legs, battery, home.lowestSoc(), home_sensitivity)) continue;
         if (std::isfinite(best[b].wear))
           offer(best[e], best[b], turningPointWear(*prototype, battery, home, builder.rechargeS(home.chargeAh()), soh),
                 b);
@@ -329,8 +372,8 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
     const int first = starts[first_unreachable], last = starts[first_unreachable + 1] - 1;
     const Sortie alone = builder.build(order, first, last);
     throw ceilplan::InfeasibleError("no single sortie can reach, inspect and return from " +
-                                    targetList(legs, unreachable) + " above the " + percent(battery.reserve_soc) +
-                                    " reserve (home -> '" + legs.names[order[first]] +
+                                    targetList(legs, unreachable) + " above " + reserveText(battery) + " (home -> '" +
+                                    legs.names[order[first]] +
                                     (last > first ? "' ... '" + legs.names[order[last]] : "") + "' -> home lands at " +
                                     percent(alone.lowest_soc) + "); move home closer or use a larger pack");
   }
@@ -353,8 +396,7 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
       sortie.reason = splitReason(legs, battery, *prototype, sortie, next, merged, feasible(merged));
     } else {
       sortie.reason = std::string(chosen.size() == 2 ? "one sortie flies the whole tour" : "last sortie") +
-                      ": lands at " + percent(sortie.lowest_soc) + " SOC, above the " + percent(battery.reserve_soc) +
-                      " reserve";
+                      ": lands at " + percent(sortie.lowest_soc) + " SOC, above " + reserveText(battery);
     }
     plan.charge_ah += sortie.charge_ah;
     plan.flight_s += sortie.flight_s;
@@ -371,7 +413,7 @@ std::vector<int> stretchesNoSortieFlies(const TourCosts& legs, const std::vector
                                         const BatterySpec& battery, const std::vector<int>& split_points) {
   checkTour(legs, order, battery);
   const std::vector<int> starts = stretchStarts(split_points, static_cast<int>(order.size()));
-  const std::vector<std::uint8_t> flies = stretchesFly(SortieBuilder(legs, battery), order, starts, battery);
+  const std::vector<std::uint8_t> flies = stretchesFly(legs, SortieBuilder(legs, battery), order, starts, battery);
   std::vector<int> failing;
   for (std::size_t b = 0; b < flies.size(); ++b)
     if (!flies[b]) failing.push_back(starts[b]);

@@ -216,12 +216,30 @@ std::vector<TourStop> chooseStops(const Mission& mission, const PlanningContext&
   return stops;
 }
 
-LegCost legCost(const planner::PathEvaluation& evaluation) {
+// Free air at `speed_m_s` and the start SOC: where a leg without samples (an estimate's totals)
+// is taken to fly for its sensitivity to the calibrated parameters.
+planner::PathSample freeAirCondition(const PlanningContext& context, double speed_m_s) {
+  planner::PathSample condition;
+  condition.ceiling_gap_m = energy::kNoSurface;
+  condition.ground_gap_m = energy::kNoSurface;
+  condition.speed_m_s = speed_m_s;
+  condition.soc = context.battery().start_soc;
+  return condition;
+}
+
+LegCost legCost(const planner::PathEvaluation& evaluation, const PlanningContext& context) {
   LegCost cost;
   cost.charge_ah = evaluation.charge_ah;
   cost.duration_s = evaluation.duration_s;
   cost.mean_current_a = evaluation.mean_current_a;
   for (const planner::PathSample& s : evaluation.samples) cost.load_profile.push_back({s.t_s, s.propulsion_power_w});
+  if (const auto& fit = context.vehicle().calibration) {
+    const double speed_m_s = evaluation.duration_s > 0.0 ? evaluation.length_m / evaluation.duration_s : 0.0;
+    cost.sensitivity = evaluation.samples.size() >= 2
+                           ? pathChargeSensitivity(context.energy(), evaluation.samples, *fit)
+                           : steadyChargeSensitivity(context.energy(), freeAirCondition(context, speed_m_s),
+                                                     evaluation.charge_ah, evaluation.duration_s, *fit);
+  }
   return cost;
 }
 
@@ -277,6 +295,18 @@ FlightRecord recordFlight(const TourResult& tour, const PlanningContext& context
     record.sorties.push_back(std::move(sortie_record));
   }
   return record;
+}
+
+// The Monte Carlo check of each sortie's landing odds, over its flight record.
+void checkLandings(TourResult& tour, const PlanningContext& context, const TourOptions& options) {
+  const auto& fit = context.vehicle().calibration;
+  if (!fit || options.landing_draws <= 0) return;
+  for (std::size_t s = 0; s < tour.plan.sorties.size(); ++s) {
+    Sortie& sortie = tour.plan.sorties[s];
+    sortie.sampled_landing = sampleLanding(context.energy(), tour.record.sorties[s].samples, sortie.lowest_soc,
+                                           context.battery().pack.usableCapacityAh(), context.battery().reserve_soc,
+                                           *fit, options.landing_draws, context.options().seed);
+  }
 }
 
 // The founding paper's month, for the tour as one mission: each sortie's recorded current,
@@ -481,12 +511,16 @@ TourCosts tourCosts(const TourResult& tour, const PlanningContext& context) {
   TourCosts costs;
   costs.names = tour.names;
   costs.current_at_soc = packCurrent(context.energy());
+  costs.uncertainty = context.vehicle().calibration;
   const int places = static_cast<int>(tour.places_m.size());
   costs.legs = PairTable<LegCost>(places);
   costs.dwells.assign(places, {});
   for (int k = 1; k < places; ++k) {
     const TourStop& stop = tour.stops[k - 1];
-    costs.dwells[k] = {stop.target.dwell_s, stop.viewpoint.dwell_current_a, stop.hover.propulsion_power_w};
+    costs.dwells[k] = {stop.target.dwell_s, stop.viewpoint.dwell_current_a, stop.hover.propulsion_power_w, {}};
+    if (costs.uncertainty)
+      costs.dwells[k].sensitivity = steadyChargeSensitivity(
+          context.energy(), stop.hover, stop.viewpoint.dwell_charge_ah, stop.target.dwell_s, *costs.uncertainty);
   }
   return costs;
 }
@@ -506,7 +540,7 @@ void orderAndSplit(TourResult& tour, const PlanningContext& context) {
   for (int i = 0; i < places; ++i)
     for (int j = 0; j < places; ++j) {
       if (i == j) continue;
-      legs.legs(i, j) = legCost(tour.legs[i][j].evaluation);
+      legs.legs(i, j) = legCost(tour.legs[i][j].evaluation, context);
       // The charge matrix orders by what a visit costs: the leg into a target and its dwell.
       costs(i, j) = visitCost(tour, tour.legs[i][j], j);
     }
@@ -788,7 +822,9 @@ class SparseLegs {
     profile(consecutive);
     profile(homeLegs(order, split_points));
     TourCosts costs = tourCosts(tour_, context_);
-    const auto add = [&](int from, int to) { costs.legs(from, to) = legCost(tour_.legs.at(from, to).evaluation); };
+    const auto add = [&](int from, int to) {
+      costs.legs(from, to) = legCost(tour_.legs.at(from, to).evaluation, context_);
+    };
     for (const auto& [from, to] : consecutive) add(from, to);
     for (const auto& [from, to] : homeLegs(order, split_points)) add(from, to);
     last_split_points_ = split_points;
@@ -1017,6 +1053,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
   if (mode == FlightMode::Free)
     tour.standoff = measureTourStandoff(tour, context.environment(), context.options().standoff_m);
   tour.record = recordFlight(tour, context);
+  checkLandings(tour, context, options);
   std::vector<RouteStop> route_stops;
   for (const TourStop& stop : tour.stops)
     route_stops.push_back({stop.target.name, stop.target.point_m, stop.target.dwell_s, stop.yaw_deg,

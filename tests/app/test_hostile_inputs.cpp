@@ -437,6 +437,10 @@ std::vector<Case> yamlCases() {
   const auto vehicle = [](const std::string& from, const std::string& to) {
     return std::vector<std::pair<std::string, std::string>>{{"v.yaml", replaced(vehicleText(), from, to)}};
   };
+  // The mission's battery asking for a landing confidence of `value`.
+  const auto confidence = [&](const std::string& value) {
+    return mission("capacity_ah: 5.2", "capacity_ah: 5.2, reserve_confidence: " + value);
+  };
   const std::string with_vehicle = kPlan + " --vehicle {dir}/v.yaml --out {out}";
   const std::string with_battery = kPlan + " --battery {dir}/b.yaml --out {out}";
   const auto battery = [](const std::string& text) {
@@ -456,6 +460,17 @@ std::vector<Case> yamlCases() {
       {"mission_capacity_tiny", kTour, 2, "'battery.capacity_ah' must be in [0.01, 1000] Ah, got 1e-300", Out::Absent,
        mission("capacity_ah: 5.2", "capacity_ah: 1e-300")},
       {"mission_capacity_text", kTour, 2, "got 'lots'", Out::Absent, mission("capacity_ah: 5.2", "capacity_ah: lots")},
+      {"mission_reserve_confidence_one", kTour, 2, "'battery.reserve_confidence' must be in (0, 1), got 1", Out::Absent,
+       confidence("1")},
+      {"mission_reserve_confidence_zero", kTour, 2, "'battery.reserve_confidence' must be in (0, 1), got 0",
+       Out::Absent, confidence("0")},
+      {"mission_reserve_confidence_percent", kTour, 2, "'battery.reserve_confidence' must be in (0, 1), got 99",
+       Out::Absent, confidence("99")},
+      {"mission_reserve_confidence_text", kTour, 2, "got 'high'", Out::Absent, confidence("high")},
+      {"mission_reserve_confidence_uncalibrated", kTour, 2,
+       "vehicle.yaml has no 'calibration:' block: fit it with ceilplan calibrate", Out::Absent, confidence("0.99")},
+      {"mission_reserve_confidence_misspelt", kTour, 2, "did you mean 'reserve_confidence'?", Out::Absent,
+       mission("capacity_ah: 5.2", "capacity_ah: 5.2, reserve_confidense: 0.99")},
       {"mission_capacity_list", kTour, 2, "got a list", Out::Absent,
        mission("capacity_ah: 5.2", "capacity_ah: [1, 2]")},
       {"mission_key_misspelt", kTour, 2, "unknown key 'battery.capacity_a'; did you mean 'capacity_ah'?", Out::Absent,
@@ -542,6 +557,19 @@ std::vector<Case> yamlCases() {
       {"vehicle_second_document", with_vehicle, 2,
        "v.yaml: holds 2 YAML documents (split by '---'); a vehicle file is one document", Out::Absent,
        vehicle("mass_kg: 1.4", "mass_kg: 1.4\n---\nmass_kg: 2.0")},
+      {"vehicle_calibration_without_covariance_rows", with_vehicle, 2,
+       "give 'calibration.parameters' and 'calibration.covariance' together", Out::Absent,
+       vehicle("mass_kg: 1.4",
+               "mass_kg: 1.4\ncalibration: {samples: 50, residual_rms_a: 0.1, residual_std_a: 0.1, parameters: [k1]}")},
+      {"vehicle_calibration_negative_variance", with_vehicle, 2,
+       "'calibration.covariance' must be positive semidefinite", Out::Absent,
+       vehicle("mass_kg: 1.4",
+               "mass_kg: 1.4\ncalibration: {samples: 50, residual_rms_a: 0.1, residual_std_a: 0.1, "
+               "parameters: [k1], covariance: [[-1]]}")},
+      {"vehicle_calibration_unknown_parameter", with_vehicle, 2, "unknown calibration parameter 'k3'", Out::Absent,
+       vehicle("mass_kg: 1.4",
+               "mass_kg: 1.4\ncalibration: {samples: 50, residual_rms_a: 0.1, residual_std_a: 0.1, "
+               "parameters: [k3], covariance: [[1]]}")},
       {"vehicle_is_a_fifo", kPlan + " --vehicle {fifo}/vehicle.yaml --out {out}", 2,
        "vehicle.yaml: is a FIFO (named pipe), not a vehicle file"},
       // battery files

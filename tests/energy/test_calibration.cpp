@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -179,4 +181,81 @@ TEST(Calibration, MessagesPrintNumbersThroughTheOneFormatter) {
   for (auto& s : free_air) s.current_a = 9.5;
   EXPECT_NE(refusal(free_air, {FreeParameter::kK1}).find("within 2.5 rotor radii"), std::string::npos)
       << refusal(free_air, {FreeParameter::kK1});  // std::to_string said "2.500000"
+}
+
+namespace {
+
+// The hover data set with Gaussian noise of `sigma_a` on every current, drawn with `seed`.
+std::vector<CalibrationSample> noisy(const std::vector<CalibrationSample>& clean, double sigma_a, unsigned seed) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> noise(0.0, sigma_a);
+  std::vector<CalibrationSample> samples = clean;
+  for (CalibrationSample& s : samples) s.current_a += noise(random);
+  return samples;
+}
+
+}  // namespace
+
+// Gauss-Newton's covariance is a specification of how far a fit's estimates scatter: over
+// repeated fits of independently noisy data (same conditions, seeds 1..kFits), the spread of each
+// estimate equals its reported standard error. With kFits = 60 the sample standard deviation of a
+// normal variable is within +-20 % of the truth with > 99 % probability (its relative standard
+// error is 1 / sqrt(2 (kFits - 1)) = 9.2 %, so 20 % is 2.2 of them); a 25 % tolerance also covers
+// the linearisation.
+TEST(CalibrationUncertainty, StandardErrorsMatchTheSpreadOfRepeatedFits) {
+  constexpr int kFits = 60;
+  constexpr double kSigmaA = 0.05;
+  // Three copies of each condition: 120 samples, 3 parameters.
+  std::vector<CalibrationSample> clean;
+  for (int copy = 0; copy < 3; ++copy) {
+    const auto once = synthetic(truth(false), false);
+    clean.insert(clean.end(), once.begin(), once.end());
+  }
+  const std::vector<FreeParameter> free{FreeParameter::kHoverPowerW, FreeParameter::kK1, FreeParameter::kK2M};
+  std::vector<std::vector<double>> estimates(free.size());
+  std::vector<double> reported(free.size(), 0.0);
+  double residual_std_sum_a = 0.0;
+  for (int fit = 0; fit < kFits; ++fit) {
+    const CalibrationResult result =
+        calibrate(paperQuadParameters(), noisy(clean, kSigmaA, static_cast<unsigned>(fit + 1)), free);
+    ASSERT_TRUE(result.uncertainty.hasCovariance()) << result.uncertainty.unavailable;
+    ASSERT_EQ(result.uncertainty.parameters, free);
+    for (std::size_t k = 0; k < free.size(); ++k) {
+      estimates[k].push_back(result.fitted[k].value);
+      reported[k] += result.uncertainty.standard_errors[k] / kFits;
+      EXPECT_DOUBLE_EQ(result.uncertainty.standard_errors[k] * result.uncertainty.standard_errors[k],
+                       result.uncertainty.covariance[k][k]);
+    }
+    residual_std_sum_a += result.uncertainty.residual_std_a;
+  }
+  for (std::size_t k = 0; k < free.size(); ++k) {
+    double mean = 0.0;
+    for (double v : estimates[k]) mean += v / kFits;
+    double variance = 0.0;
+    for (double v : estimates[k]) variance += (v - mean) * (v - mean) / (kFits - 1);
+    EXPECT_NEAR(std::sqrt(variance) / reported[k], 1.0, 0.25) << parameterName(free[k]);
+  }
+  // s = sqrt(RSS / (n - p)) estimates the noise's sigma: its mean over the fits within 3 %.
+  EXPECT_NEAR(residual_std_sum_a / kFits, kSigmaA, 0.03 * kSigmaA);
+}
+
+TEST(CalibrationUncertainty, AParameterAtItsBoundGetsAReasonNotNaN) {
+  // Currents no hover power within the range reaches: hover_power_w ends at its upper bound.
+  auto samples = synthetic(truth(false), false);
+  for (CalibrationSample& s : samples) s.current_a *= 20.0;
+  const CalibrationResult result = calibrate(paperQuadParameters(), samples, {FreeParameter::kHoverPowerW});
+  ASSERT_TRUE(result.fitted[0].atBound());
+  EXPECT_FALSE(result.uncertainty.hasCovariance());
+  EXPECT_NE(result.uncertainty.unavailable.find("hover_power_w ended at the upper end of its range"), std::string::npos)
+      << result.uncertainty.unavailable;
+  EXPECT_TRUE(std::isfinite(result.uncertainty.residual_std_a));
+}
+
+TEST(CalibrationUncertainty, AnExactFitHasZeroSpreadAndFiniteCovariance) {
+  const auto samples = synthetic(truth(false), false);
+  const CalibrationResult result =
+      calibrate(paperQuadParameters(), samples, identifiableParameters(paperQuadParameters(), samples));
+  ASSERT_TRUE(result.uncertainty.hasCovariance());
+  EXPECT_LT(result.uncertainty.residual_std_a, 1e-5);
+  for (double se : result.uncertainty.standard_errors) EXPECT_TRUE(std::isfinite(se));
 }

@@ -63,6 +63,14 @@ energy::CalibrationResult twoParameterFit() {
   result.max_abs_error_a = 0.1;
   result.evaluations = 42;
   result.fitted = {{energy::FreeParameter::kK1, 2.0, 1.0, 4.0, 1.5}, {energy::FreeParameter::kK2M, 0.5, 0.1, 0.5, 0.2}};
+  result.parameters.ceiling.k1 = 2.0;
+  result.parameters.ceiling.k2_m = 0.5;
+  result.uncertainty.samples = 17;
+  result.uncertainty.residual_rms_a = 0.05;
+  result.uncertainty.residual_std_a = 0.052;
+  result.uncertainty.parameters = {energy::FreeParameter::kK1, energy::FreeParameter::kK2M};
+  result.uncertainty.covariance = {{0.01, 0.0}, {0.0, 0.0025}};
+  result.uncertainty.standard_errors = {0.1, 0.05};
   return result;
 }
 
@@ -78,6 +86,10 @@ TEST(CalibrationFile, ReportNamesEachFittedParameterAndWhetherItHitItsBound) {
   EXPECT_FALSE(report["fitted"][0]["at_bound"].get<bool>());
   EXPECT_EQ(report["fitted"][1]["parameter"], "k2_m");
   EXPECT_TRUE(report["fitted"][1]["at_bound"].get<bool>());
+  EXPECT_EQ(report["uncertainty"]["residual_std_a"].get<double>(), 0.052);
+  EXPECT_EQ(report["uncertainty"]["parameters"][1], "k2_m");
+  EXPECT_EQ(report["uncertainty"]["standard_errors"][1].get<double>(), 0.05);
+  EXPECT_EQ(report["uncertainty"]["covariance"][0][0].get<double>(), 0.01);
   const Provenance provenance = Provenance::of("ceilplan calibrate --data data.csv");
   EXPECT_EQ(calibratedVehicleComment("data.csv", 17, result, provenance),
             "Calibrated by `ceilplan calibrate` from data.csv (17 samples; fitted k1, k2_m; RMSE 0.05 A).\n" +
@@ -91,7 +103,11 @@ TEST(CalibrationFile, TheTerminalTextListsEachParameterAndMarksThoseAtTheirBound
             "rmse_a      0.05000   (largest error 0.10000 A, 42 model evaluations)\n"
             "parameter                    fitted    allowed_min    allowed_max          start\n"
             "k1                                2              1              4            1.5\n"
-            "k2_m                            0.5            0.1            0.5            0.2  (at its bound)\n");
+            "k2_m                            0.5            0.1            0.5            0.2  (at its bound)\n"
+            "residual    std 0.05200 A, RMS 0.05000 A (n - p = 15)\n"
+            "parameter                 std_error       relative\n"
+            "k1                              0.1             5%\n"
+            "k2_m                           0.05            10%\n");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 
 namespace ceilplan::io {
 namespace {
@@ -127,6 +128,52 @@ TEST(VehicleFile, CalibratedVehicleOfTheBuiltInOneReadsBack) {
   const mission::Vehicle read = readVehicle(out);
   EXPECT_EQ(read.energy.rotor.hover_power_w, parameters.rotor.hover_power_w);
   EXPECT_EQ(read.geometry.collision_radius_m, mission::Vehicle::defaultQuad().geometry.collision_radius_m);
+}
+
+TEST(VehicleFile, TheCalibrationBlockRoundTripsAndIsReadStrictly) {
+  const std::filesystem::path dir = testing::scratchDirectory("vehicle_calibration_block");
+  energy::FitUncertainty calibration;
+  calibration.samples = 120;
+  calibration.residual_rms_a = 0.049;
+  calibration.residual_std_a = 0.05;
+  calibration.parameters = {energy::FreeParameter::kHoverPowerW, energy::FreeParameter::kK1};
+  calibration.covariance = {{0.25, -0.01}, {-0.01, 0.04}};
+  calibration.standard_errors = {0.5, 0.2};
+  writeCalibratedVehicle(dir / "calibrated.yaml", {}, mission::Vehicle::defaultQuad().energy, "test", calibration);
+  const mission::Vehicle read = readVehicle(dir / "calibrated.yaml");
+  ASSERT_TRUE(read.calibration.has_value());
+  EXPECT_EQ(read.calibration->samples, 120);
+  EXPECT_EQ(read.calibration->residual_std_a, 0.05);
+  EXPECT_EQ(read.calibration->residual_rms_a, 0.049);
+  EXPECT_EQ(read.calibration->parameters, calibration.parameters);
+  EXPECT_EQ(read.calibration->covariance, calibration.covariance);
+  EXPECT_EQ(read.calibration->standard_errors, calibration.standard_errors);
+  // Calibrating a calibrated vehicle again replaces its block rather than keeping the old one.
+  writeCalibratedVehicle(dir / "again.yaml", dir / "calibrated.yaml", read.energy, "test");
+  EXPECT_FALSE(readVehicle(dir / "again.yaml").calibration.has_value());
+
+  std::ifstream written(dir / "calibrated.yaml");
+  const std::string text((std::istreambuf_iterator<char>(written)), std::istreambuf_iterator<char>());
+  const auto refused = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    if (at == std::string::npos) return std::string("(no '" + from + "' in the file)");
+    std::string variant = text;
+    variant.replace(at, from.size(), to);
+    const std::filesystem::path file = dir / "variant.yaml";
+    std::ofstream(file) << variant;
+    try {
+      readVehicle(file);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_NE(refused("[hover_power_w, k1]", "[hover_power_w, k9]").find("calibration.parameters[1]"), std::string::npos);
+  EXPECT_NE(refused("[hover_power_w, k1]", "[k1, k1]").find("repeats k1"), std::string::npos);
+  EXPECT_NE(refused("[-0.01, 0.04]", "[-0.02, 0.04]").find("must be symmetric"), std::string::npos);
+  EXPECT_NE(refused("[0.25, -0.01]", "[-0.25, -0.01]").find("positive semidefinite"), std::string::npos);
+  EXPECT_NE(refused("residual_std_a:", "residual_sd_a:").find("residual_sd_a"), std::string::npos);
+  EXPECT_NE(refused("[-0.01, 0.04]", "[-0.01]").find("calibration.covariance[1]"), std::string::npos);
 }
 
 }  // namespace

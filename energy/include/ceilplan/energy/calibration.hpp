@@ -50,6 +50,28 @@ struct FittedParameter {
   bool atBound() const { return value <= lower * (1 + 1e-6) || value >= upper * (1 - 1e-6); }
 };
 
+/// How well the data pin the fitted parameters down (Gauss-Newton at the optimum, docs/models.md
+/// "Calibration uncertainty"): cov = s^2 (J^T J)^-1 with s^2 = RSS / (n - p) and J the residuals'
+/// Jacobian in the parameters' own units (central differences, relative step
+/// kCovarianceRelativeStep). Empty `parameters` when it could not be computed: `unavailable` says why.
+struct FitUncertainty {
+  std::vector<FreeParameter> parameters;        ///< in the order of the rows of `covariance`
+  std::vector<double> standard_errors;          ///< sqrt of the covariance's diagonal, in each parameter's unit
+  std::vector<std::vector<double>> covariance;  ///< p x p, in the parameters' units
+  double residual_rms_a = 0.0;                  ///< root-mean-square residual current
+  double residual_std_a = 0.0;                  ///< s = sqrt(RSS / (n - p)), the residual current's standard deviation
+  int samples = 0;                              ///< n, the samples fitted
+  std::string unavailable;  ///< why there is no covariance (a parameter at its bound); empty when there is
+
+  /// True when the covariance is there.
+  bool hasCovariance() const { return !parameters.empty(); }
+};
+
+/// Relative step of the central differences the covariance's Jacobian is taken with: a
+/// parameter's value times this (small enough for the model's curvature, large enough against
+/// the residuals' rounding).
+constexpr double kCovarianceRelativeStep = 1e-5;
+
 /// What calibrate returns: the fitted parameters and how well they fit the samples.
 struct CalibrationResult {
   EnergyParameters parameters;          ///< the start with the fitted values put in
@@ -57,7 +79,13 @@ struct CalibrationResult {
   double rmse_a = 0.0;                  ///< root-mean-square current error over the samples
   double max_abs_error_a = 0.0;         ///< largest current error over the samples
   int evaluations = 0;                  ///< model evaluations the fit took
+  FitUncertainty uncertainty;           ///< the fitted parameters' covariance and the residual spread
 };
+
+/// A copy of `parameters` with the calibration parameter `parameter` set to `value`.
+EnergyParameters withParameter(const EnergyParameters& parameters, FreeParameter parameter, double value);
+/// The value of the calibration parameter `parameter` in `parameters`.
+double parameterValue(const EnergyParameters& parameters, FreeParameter parameter);
 
 /// The parameters the data can speak to: hover_power_w always; k1 and k2_m when some sample
 /// has a ceiling within the taper end; motor_efficiency when climb_m_s varies; drag_area_m2

@@ -8,6 +8,7 @@
 #include "ceilplan/mission/vehicle.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace ceilplan::io {
@@ -23,8 +24,10 @@ mission::Vehicle readVehicleOrDefault(const std::filesystem::path& file);
 /// Writes a vehicle file with the energy model's constants replaced by explicit values of
 /// `parameters` (power.* and max_speed_m_s; hover power and K1, K2 rather than the anchors they
 /// were solved from), every other key of `source` kept; with no `source`, the built-in vehicle.
-/// `comment` goes on top. Written atomically.
+/// `comment` goes on top; `calibration` (when given) is written under the key `calibration:`
+/// (its residual spread, and the covariance when it has one). Written atomically.
 void writeCalibratedVehicle(const std::filesystem::path& out, const std::filesystem::path& source,
-                            const energy::EnergyParameters& parameters, const std::string& comment);
+                            const energy::EnergyParameters& parameters, const std::string& comment,
+                            const std::optional<energy::FitUncertainty>& calibration = std::nullopt);
 
 }  // namespace ceilplan::io

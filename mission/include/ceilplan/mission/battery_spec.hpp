@@ -5,6 +5,7 @@
 
 #include "ceilplan/battery/pack.hpp"
 
+#include <optional>
 #include <string>
 
 namespace ceilplan::mission {
@@ -24,11 +25,14 @@ struct BatterySpec {
   double reserve_soc = 0.25;                          ///< and lands with at least this much
   Turnaround between_sorties = Turnaround::Recharge;  ///< recharge or swap between sorties
   double swap_s = 120.0;                              ///< landing to take-off with a swapped pack
+  /// With it, every sortie must land above reserve_soc with this probability, in (0, 1), under
+  /// the calibrated vehicle's uncertainty (mission key battery.reserve_confidence, docs/tours.md).
+  std::optional<double> reserve_confidence;
   std::string description =
       "built-in: the founding paper's 4S 5.2 Ah pack at 95 %";  ///< for reports: where it came from
 
   /// Throws ceilplan::InputError for a bad pack, an SOC outside [0, 1], a start SOC at or below
-  /// the pack's floor, or a reserve at or above the start SOC.
+  /// the pack's floor, a reserve at or above the start SOC, or a reserve confidence outside (0, 1).
   void validate() const;
 };
 

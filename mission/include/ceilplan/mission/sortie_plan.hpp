@@ -10,6 +10,7 @@
 #include "ceilplan/battery/pack.hpp"
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/mission/battery_spec.hpp"
+#include "ceilplan/mission/landing_confidence.hpp"
 #include "ceilplan/mission/pair_table.hpp"
 #include "ceilplan/mission/soc_integrator.hpp"
 
@@ -28,13 +29,16 @@ struct LegCost {
   /// What the leg draws over [0, duration_s], turned into current at the SOC the sortie has
   /// reached there (TourCosts::current_at_soc). Empty: mean_current_a throughout, as a current.
   std::vector<LoadSample> load_profile;
+  /// How the leg's charge moves with the calibrated parameters; empty: TourCosts has no uncertainty.
+  ChargeSensitivity sensitivity;
 };
 
 /// Hovering at a target's viewpoint for its inspection.
 struct Dwell {
-  double duration_s = 0.0;     ///< hover time
-  double current_a = 0.0;      ///< at the start SOC: what orders the tour
-  std::optional<double> load;  ///< what hovering draws (current_at_soc); unset: current_a, as a current
+  double duration_s = 0.0;        ///< hover time
+  double current_a = 0.0;         ///< at the start SOC: what orders the tour
+  std::optional<double> load;     ///< what hovering draws (current_at_soc); unset: current_a, as a current
+  ChargeSensitivity sensitivity;  ///< as LegCost::sensitivity
 };
 
 /// Everything indexed like the tour's cost matrix: 0 is home, 1..N the targets.
@@ -45,6 +49,9 @@ struct TourCosts {
   PairTable<LegCost> legs;
   std::vector<Dwell> dwells;    ///< dwells[0] is ignored
   CurrentAtSoc current_at_soc;  ///< unset: loads are currents
+  /// The calibration's uncertainty the sensitivities refer to: with BatterySpec::reserve_confidence,
+  /// a sortie must land above the reserve with that probability (landing_confidence.hpp).
+  std::optional<energy::FitUncertainty> uncertainty;
 
   /// Targets, home left out.
   int targetCount() const { return static_cast<int>(names.size()) - 1; }
@@ -91,6 +98,10 @@ struct Sortie {
   double wear = 0.0;                   ///< the ageing model's cycle wear of this sortie, fresh pack
   std::string reason;                  ///< why it ends where it does, one sentence
   std::vector<SocSample> soc_history;  ///< leg and dwell boundaries, profile samples, recharge end
+  ChargeSensitivity sensitivity;       ///< of its legs and dwells (with TourCosts::uncertainty)
+  std::optional<LandingOdds> landing;  ///< the odds of landing above the reserve (with TourCosts::uncertainty)
+  /// planTour's Monte Carlo check of `landing` over the flight record (TourOptions::landing_draws).
+  std::optional<SampledLanding> sampled_landing;
 };
 
 /// A tour's sorties and their totals (planSorties).

@@ -49,6 +49,9 @@ struct TourOptions {
   /// planner with a zoom lens), and is reported so (TourStop::beyond_standoff_range).
   std::optional<double> free_standoff_max_m;
   int workers = 2;  ///< threads planning legs
+  /// With a calibrated vehicle, each sortie's landing odds are checked by this many Monte Carlo
+  /// draws (Sortie::sampled_landing, seeded with the planning seed); 0: not checked.
+  int landing_draws = 1000;
   /// Duty projection, the founding paper's month: the whole tour is one mission.
   std::optional<int> missions_per_day;  ///< unset: as often as fits in a day, at most kDefaultToursPerDay
   int days = 30;                        ///< length of the duty projection

@@ -5,9 +5,11 @@
 /// (rotor discs, collision cylinder, clearance margins) and the energy model its airframe,
 /// rotor power and pack electrics: two views of the same rotors, checked to agree.
 
+#include "ceilplan/energy/calibration.hpp"
 #include "ceilplan/energy/energy_parameters.hpp"
 #include "ceilplan/environment/vehicle_geometry.hpp"
 
+#include <optional>
 #include <string>
 
 namespace ceilplan::mission {
@@ -27,6 +29,9 @@ struct Vehicle {
   environment::VehicleGeometry geometry;  ///< rotor discs, collision cylinder, clearance margins
   energy::EnergyParameters energy;        ///< mass, rotor spacing, power model, pack electrics
   MotionLimits limits;                    ///< vehicle file key `limits:`
+  /// How well `calibrate` pinned the energy constants down (vehicle file key `calibration:`,
+  /// docs/energy.md): what a mission's battery.reserve_confidence needs. Unset: not calibrated.
+  std::optional<energy::FitUncertainty> calibration;
 
   /// The default vehicle, equal to maps/vehicles/quad.yaml (a test reads the file and compares):
   /// the founding paper's quadrotor, 1.4 kg, 10-inch propellers on a 450 mm X frame, 9.5 A in
