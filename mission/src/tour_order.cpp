@@ -422,7 +422,7 @@ TourOrder heldKarpTour(const CostMatrix& costs) {
   std::vector<int> order;
   for (std::size_t set = all; last >= 0;) {
     order.push_back(last + 1);
-    const int before = previous[set * n + last];
+    const int before = previous[set * n + last];  // NOLINT(bugprone-signed-char-misuse): -1 marks the first target
     set &= ~(std::size_t{1} << last);
     last = before;
   }
