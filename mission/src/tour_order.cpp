@@ -178,10 +178,11 @@ class NeighbourWalk {
       for (int& value : c) value = cut(random);
       std::sort(c, c + 3);
     } while (c[0] == c[1] || c[1] == c[2]);
+    const std::vector<int> before = nodes_;
     std::vector<int> part(nodes_.begin() + base + c[0], nodes_.begin() + base + c[2]);
     std::rotate(part.begin(), part.begin() + (c[1] - c[0]), part.end());
     std::copy(part.begin(), part.end(), nodes_.begin() + base + c[0]);
-    refresh();
+    relink(before);
   }
 
  private:
@@ -195,11 +196,49 @@ class NeighbourWalk {
 
   void refresh() {
     const int legs = static_cast<int>(nodes_.size()) - 1;
+    out_.assign(legs, 0.0);
+    back_.assign(legs, 0.0);
+    for (int k = 0; k < legs; ++k) {
+      out_[k] = legAt(k, k + 1);
+      back_[k] = legAt(k + 1, k);
+    }
+    sumAndPlace();
+  }
+
+  // After a move turned `before` into nodes_: each leg's cost taken from the walk before where
+  // it joined the same two places (either way), asked only for the new ones. A cost asked is
+  // a map lookup through a std::function, and a large tour makes thousands of moves: asking
+  // every leg again made the search grow with the square of the places. The sums are the same
+  // to the bit (the same values added in the same order).
+  void relink(const std::vector<int>& before) {
+    const int legs = static_cast<int>(nodes_.size()) - 1;
+    std::vector<double> out(legs), back(legs);
+    for (int k = 0; k < legs; ++k) {
+      const int from = nodes_[k], to = nodes_[k + 1];
+      const int was = k == 0 ? 0 : position_[from];  // home leaves from position 0 only
+      if (before[was + 1] == to) {
+        out[k] = out_[was];
+        back[k] = back_[was];
+      } else if (was > 0 && before[was - 1] == to) {
+        out[k] = back_[was - 1];
+        back[k] = out_[was - 1];
+      } else {
+        out[k] = leg(from, to);
+        back[k] = leg(to, from);
+      }
+    }
+    out_ = std::move(out);
+    back_ = std::move(back);
+    sumAndPlace();
+  }
+
+  void sumAndPlace() {
+    const int legs = static_cast<int>(nodes_.size()) - 1;
     forward_.assign(legs + 1, 0.0);
     backward_.assign(legs + 1, 0.0);
     for (int k = 0; k < legs; ++k) {
-      forward_[k + 1] = forward_[k] + legAt(k, k + 1);
-      backward_[k + 1] = backward_[k] + legAt(k + 1, k);
+      forward_[k + 1] = forward_[k] + out_[k];
+      backward_[k + 1] = backward_[k] + back_[k];
     }
     for (int k = 1; k <= targetCount(); ++k) position_[nodes_[k]] = k;
   }
@@ -229,8 +268,9 @@ class NeighbourWalk {
       if (lowest(a, c) + against(i, j) + lowest(b, d) >= before - threshold()) return false;
       const double after = leg(a, c) + against(i, j) + leg(b, d);
       if (after >= before - threshold()) return false;
+      const std::vector<int> walk = nodes_;
       std::reverse(nodes_.begin() + i, nodes_.begin() + j + 1);
-      refresh();
+      relink(walk);
       return true;
     };
     for (int c : (*neighbours_)[nodes_[i - 1]])  // new leg nodes_[i - 1] -> c
@@ -277,8 +317,8 @@ class NeighbourWalk {
                 moved.push_back(nodes_[k]);
                 if (k == p) moved.insert(moved.end(), stretch.begin(), stretch.end());
               }
-              nodes_ = std::move(moved);
-              refresh();
+              std::swap(nodes_, moved);
+              relink(moved);
               return true;
             }
     }
@@ -290,6 +330,8 @@ class NeighbourWalk {
   const std::vector<std::vector<int>>* neighbours_;
   std::vector<int> nodes_;
   std::vector<int> position_;  // of each target in nodes_
+  std::vector<double> out_;    // out_[k]: the leg nodes_[k] -> nodes_[k + 1]
+  std::vector<double> back_;   // back_[k]: the leg nodes_[k + 1] -> nodes_[k]
   std::vector<double> forward_;
   std::vector<double> backward_;
 };
@@ -380,7 +422,7 @@ TourOrder heldKarpTour(const CostMatrix& costs) {
   std::vector<int> order;
   for (std::size_t set = all; last >= 0;) {
     order.push_back(last + 1);
-    const int before = previous[set * n + last];
+    const int before = previous[set * n + last];  // NOLINT(bugprone-signed-char-misuse): -1 marks the first target
     set &= ~(std::size_t{1} << last);
     last = before;
   }

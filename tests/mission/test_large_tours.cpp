@@ -116,6 +116,36 @@ TEST(LargeTours, NeighbourListSearchImprovesOnItsStartAndBoundsOnlySaveWork) {
   }
 }
 
+// A move changes two or three legs of the walk: the search prices those, not the whole walk
+// again (which made it grow with the square of the places), and the cost it reports is still
+// the walk's legs summed afresh in order, to the bit.
+TEST(LargeTours, NeighbourListSearchAsksTheLegsAMoveChangesNotTheWholeWalk) {
+  double calls_per_target[2] = {0.0, 0.0};
+  const int sizes[2] = {400, 3200};
+  for (int k = 0; k < 2; ++k) {
+    const int targets = sizes[k];
+    // The same density of places at both sizes: a strip as long as the tour.
+    std::vector<Eigen::Vector3d> places = randomPlaces(targets + 1, 11);
+    for (auto& p : places) p.x() *= targets / 50.0;
+    CountedCosts counted{places};
+    const std::vector<std::vector<int>> neighbours = nearestPlaces(places, 8);
+    const std::vector<int> start = nearestNeighbourOrder(places, neighbours);
+    const TourOrder order =
+        neighbourListTour(targets, counted.cost(), [&](int from, int to) { return (places[to] - places[from]).norm(); },
+                          neighbours, {start});
+    double sum = 0.0;
+    int at = 0;
+    for (int target : order.targets) sum += legCost(places, at, target), at = target;
+    sum += legCost(places, at, 0);
+    EXPECT_EQ(order.cost, sum) << targets << " targets";
+    calls_per_target[k] = static_cast<double>(counted.exact_calls) / targets;
+  }
+  // Eight times the places: 3.5 times the calls per target (the sweeps' own growth); asking the
+  // whole walk again after every move made it 5.8 times (1522 and 8888 calls per target).
+  EXPECT_LT(calls_per_target[1], 4.5 * calls_per_target[0])
+      << calls_per_target[0] << " and " << calls_per_target[1] << " calls per target";
+}
+
 TEST(LargeTours, NeighbourListSearchRefusesBadInput) {
   const std::vector<Eigen::Vector3d> places = randomPlaces(5, 1);
   const std::vector<std::vector<int>> neighbours = nearestPlaces(places, 2);
