@@ -15,6 +15,7 @@
 #include <ctime>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -60,17 +61,18 @@ void BM_DeckTourScaling(benchmark::State& state) {
                            io::Provenance::of("bench_tour_scaling"));
     const double end_s = processCpuS();
     const mission::TourTimes& t = tour.times;
-    state.counters["cpu_s"] = end_s - start_s;
-    state.counters["map_s"] = context_s;
-    state.counters["stops_s"] = t.stops_cpu_s;
-    state.counters["legs_s"] = t.legs_cpu_s;
-    state.counters["order_s"] = t.order_cpu_s;
-    state.counters["routing_s"] = t.routing_cpu_s;
-    state.counters["refining_s"] = t.refining_cpu_s;
-    state.counters["record_s"] = t.record_cpu_s;
-    state.counters["write_s"] = end_s - write_start_s;
-    state.counters["charge_ah"] = tour.plan.charge_ah;
-    state.counters["sorties"] = static_cast<double>(tour.plan.sorties.size());
+    const std::pair<const char*, double> counters[] = {{"cpu_s", end_s - start_s},
+                                                       {"map_s", context_s},
+                                                       {"stops_s", t.stops_cpu_s},
+                                                       {"legs_s", t.legs_cpu_s},
+                                                       {"order_s", t.order_cpu_s},
+                                                       {"routing_s", t.routing_cpu_s},
+                                                       {"refining_s", t.refining_cpu_s},
+                                                       {"record_s", t.record_cpu_s},
+                                                       {"write_s", end_s - write_start_s},
+                                                       {"charge_ah", tour.plan.charge_ah},
+                                                       {"sorties", static_cast<double>(tour.plan.sorties.size())}};
+    for (const auto& [name, value] : counters) state.counters[name] = value;
   }
   std::filesystem::remove_all(out);
 }
