@@ -23,6 +23,12 @@ using namespace ceilplan;
 
 double processCpuS() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
+// Offsets 0, 0.6, -0.6, 1.2, -1.2 m for index 0, 1, 2, 3, 4.
+double gridOffset_m(int index) {
+  const int step = (index + 1) / 2;
+  return 0.6 * static_cast<double>(step) * (index % 2 == 1 ? 1.0 : -1.0);
+}
+
 // The bridge mission with `count` targets on the deck's underside (z = 6 m), spread over its 36
 // panels (12 bays between cross-frames, 3 lanes between girders) and within each panel on a
 // 5 x 3 grid 0.6 m apart, panel by panel: 20 targets lie in 20 panels, 400 fill them all.
@@ -35,8 +41,7 @@ mission::Mission deckTargets(int count) {
     const int panel = k % kPanels, slot = k / kPanels;
     const int bay = panel % kBays, lane = panel / kBays;
     // Slot 0 at the panel's centre, then out along the bay and across the lane.
-    const double along_m = 0.6 * ((slot % 5 + 1) / 2) * (slot % 5 % 2 ? 1.0 : -1.0);
-    const double across_m = 0.6 * ((slot / 5 % 3 + 1) / 2) * (slot / 5 % 3 % 2 ? 1.0 : -1.0);
+    const double along_m = gridOffset_m(slot % 5), across_m = gridOffset_m(slot / 5 % 3);
     mission::InspectionTarget target;
     target.name = "deck_" + std::to_string(k);
     target.point_m = Eigen::Vector3d(2.0 + 4.0 * bay + along_m, lanes_m[lane] + across_m, 6.0);
