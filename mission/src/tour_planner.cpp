@@ -61,9 +61,17 @@ class Stopwatch {
     start_ = now;
     return seconds;
   }
+  // The wall time since the last lap, and adds the process's CPU time since then to `cpu_s`.
+  double lap_s(double& cpu_s) {
+    const double now_cpu_s = processCpuS();
+    cpu_s += now_cpu_s - start_cpu_s_;
+    start_cpu_s_ = now_cpu_s;
+    return lap_s();
+  }
 
  private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  double start_cpu_s_ = processCpuS();
 };
 
 // The rotors stay this much farther from the surface at a viewpoint than the planner's
@@ -932,7 +940,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
     tour.names.push_back(stop.target.name);
     tour.places_m.push_back(stop.viewpoint.position_m);
   }
-  tour.times.stops_s = clock.lap_s();
+  tour.times.stops_s = clock.lap_s(tour.times.stops_cpu_s);
 
   const battery::Pack& pack = context.battery().pack;
   // On the move, the legs from photo to photo are flown no faster than the slower one allows.
@@ -964,7 +972,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
     sparse = std::make_unique<SparseLegs>(tour, context, mode, options, score);
     sparse->estimateNeighbours();
   }
-  tour.times.legs_s = clock.lap_s();
+  tour.times.legs_s = clock.lap_s(tour.times.legs_cpu_s);
 
   // Order and split with the legs as they are, post-process the raw legs the plan flies (a
   // large tour routes the estimates among them first), and again until the plan flies
@@ -993,7 +1001,6 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
     raw.erase(std::unique(raw.begin(), raw.end()), raw.end());
     return raw;
   };
-  double order_start_s = processCpuS();
   for (;;) {
     ++tour.times.rounds;
     Pairs flown;
@@ -1015,20 +1022,18 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
       }
       if (unrefined(flown).empty()) throw;
     }
-    tour.times.order_s += clock.lap_s();
-    tour.times.order_cpu_s += processCpuS() - order_start_s;
+    tour.times.order_s += clock.lap_s(tour.times.order_cpu_s);
     const Pairs raw_legs = unrefined(flown);
     if (raw_legs.empty()) break;
     if (sparse) {
       sparse->route(raw_legs);
-      tour.times.routing_s += clock.lap_s();
+      tour.times.routing_s += clock.lap_s(tour.times.routing_cpu_s);
     }
     const Pairs to_refine = unrefined(raw_legs);
     refineLegs(tour.legs, to_refine, refine, score, options.workers,
                stageProgress(options, flightModeName(tour.mode) + " mode: refining " +
                                           std::to_string(to_refine.size()) + " legs"));
-    tour.times.refining_s += clock.lap_s();
-    order_start_s = processCpuS();
+    tour.times.refining_s += clock.lap_s(tour.times.refining_cpu_s);
   }
 
   if (sparse) {  // the flight record flies the samples of every leg flown
@@ -1065,7 +1070,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
     tour.wear.push_back(planWear(tour.plan, model, ageingModelOptions(context.options().temperature_c)));
   tour.duty = projectDuty(tour, context.battery(), options);
   releaseUnflownSamples(tour);
-  tour.times.record_s = clock.lap_s();
+  tour.times.record_s = clock.lap_s(tour.times.record_cpu_s);
   if (tour.coverage) {
     recordPhotos(tour, mission, context, options);
     tour.times.coverage_check_s = clock.lap_s();

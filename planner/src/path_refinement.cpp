@@ -3,8 +3,10 @@
 #include <nlopt.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <unordered_map>
 
 namespace ceilplan::planner {
 
@@ -51,12 +53,61 @@ double pathLength(const Waypoints& path) {
   return length;
 }
 
+bool invalidMotion(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const SafetyRules& rules) {
+  return !rules.isStateValid(to) || !rules.isMotionValid(from, to);
+}
+
 int invalidMotions(const Waypoints& path, const SafetyRules& rules) {
   int invalid = 0;
-  for (std::size_t k = 1; k < path.size(); ++k)
-    if (!rules.isStateValid(path[k]) || !rules.isMotionValid(path[k - 1], path[k])) ++invalid;
+  for (std::size_t k = 1; k < path.size(); ++k) invalid += invalidMotion(path[k - 1], path[k], rules);
   return invalid;
 }
+
+// The cost and validity of each segment a refinement evaluated, by its ends: BOBYQA's first
+// 2n + 1 evaluations move one coordinate each, so all but two segments of such a candidate were
+// costed before. The same values, summed in the same order, as pathCost and invalidMotions.
+class SegmentMemo {
+ public:
+  SegmentMemo(const SafetyRules& rules, const FlightObjective& objective) : rules_(rules), objective_(objective) {}
+
+  // pathCost(path) x (1 + invalidMotions(path)).
+  double penalisedCost(const Waypoints& path) {
+    double cost = 0.0;
+    int invalid = 0;
+    for (std::size_t k = 1; k < path.size(); ++k) {
+      const Segment& segment = of(path[k - 1], path[k]);
+      cost += segment.cost;
+      invalid += segment.invalid;
+    }
+    return cost * (1.0 + invalid);
+  }
+
+ private:
+  struct Segment {
+    double cost;
+    bool invalid;
+  };
+  using Ends = std::array<double, 6>;
+  struct Hash {
+    std::size_t operator()(const Ends& ends) const {
+      std::size_t hash = 0;
+      for (const double value : ends) hash = hash * 1000003u ^ std::hash<double>()(value);
+      return hash;
+    }
+  };
+
+  const Segment& of(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+    const Ends ends{from.x(), from.y(), from.z(), to.x(), to.y(), to.z()};
+    auto found = segments_.find(ends);
+    if (found == segments_.end())
+      found = segments_.emplace(ends, Segment{objective_.motionCost(from, to), invalidMotion(from, to, rules_)}).first;
+    return found->second;
+  }
+
+  const SafetyRules& rules_;
+  const FlightObjective& objective_;
+  std::unordered_map<Ends, Segment, Hash> segments_;
+};
 
 }  // namespace
 
@@ -85,10 +136,11 @@ Waypoints refinePath(const Waypoints& path, const SafetyRules& rules, const Flig
       candidate[w + 1] = Eigen::Vector3d(values[3 * w], values[3 * w + 1], values[3 * w + 2]);
     return candidate;
   };
+  SegmentMemo memo(rules, objective);
   const auto penalised = [&](const Waypoints& candidate) {
     for (const Eigen::Vector3d& p : candidate)
       if (!box.contains(p)) return 1e30;
-    return objective.pathCost(candidate) * (1.0 + invalidMotions(candidate, rules));
+    return memo.penalisedCost(candidate);
   };
   const std::function<double(const double*)> evaluate = [&](const double* values) { return penalised(toPath(values)); };
 

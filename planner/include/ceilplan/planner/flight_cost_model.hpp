@@ -195,9 +195,15 @@ class FlightCostModel {
       totals_.length_m = length_m;
     }
     void add(const PointConditions& conditions) {
-      const Velocity velocity = model_.velocityAt(conditions, direction_);
-      const double s_per_m = 1.0 / velocity.along_m_s;
-      const double as_per_m = model_.currentA(conditions, velocity, model_.options_.planning_soc) * s_per_m;
+      // In free air, or under a flat ceiling, neighbouring samples see the same conditions and
+      // so draw the same current: the energy model is asked once for them.
+      if (!started_ || !sameConditions(conditions, previous_conditions_)) {
+        const Velocity velocity = model_.velocityAt(conditions, direction_);
+        s_per_m_ = 1.0 / velocity.along_m_s;
+        as_per_m_ = model_.currentA(conditions, velocity, model_.options_.planning_soc) * s_per_m_;
+        previous_conditions_ = conditions;
+      }
+      const double s_per_m = s_per_m_, as_per_m = as_per_m_;
       if (started_) {
         totals_.duration_s += 0.5 * (previous_s_per_m_ + s_per_m) * interval_m_;
         totals_.charge_ah += 0.5 * (previous_as_per_m_ + as_per_m) * interval_m_ / 3600.0;
@@ -211,12 +217,24 @@ class FlightCostModel {
     const MotionTotals& totals() const { return totals_; }
 
    private:
+    // Whether the speed rule and the energy model see the same at both (standoff aside).
+    static bool sameConditions(const PointConditions& a, const PointConditions& b) {
+      if (a.rotor_count != b.rotor_count || a.ground_gap_m != b.ground_gap_m ||
+          a.nearest_ceiling_gap_m != b.nearest_ceiling_gap_m)
+        return false;
+      for (std::size_t r = 0; r < a.rotors.size(); ++r)  // the energy model reads its own rotor count
+        if (a.rotors[r].gap_m != b.rotors[r].gap_m || a.rotors[r].coverage != b.rotors[r].coverage) return false;
+      return true;
+    }
+
     const FlightCostModel& model_;
     Eigen::Vector3d direction_;
     double interval_m_;
     MotionTotals totals_;
     bool started_ = false;
     double previous_s_per_m_ = 0.0, previous_as_per_m_ = 0.0, previous_shortfall_m_ = 0.0;
+    PointConditions previous_conditions_;  ///< those s_per_m_ and as_per_m_ were found for
+    double s_per_m_ = 0.0, as_per_m_ = 0.0;
   };
 
   /// Visits the sample points of a motion in order, from_m first and to_m last.
