@@ -729,6 +729,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   std::vector<std::vector<Pose>> seed_poses(seeds.size());
   std::vector<std::vector<std::vector<SeenElement>>> seed_covered(seeds.size());
   std::vector<std::size_t> seed_tried(seeds.size(), 0);
+  std::vector<std::size_t> seed_straight(seeds.size(), 0);  // poses of the straight view, raised included
   parallelFor(
       seeds.size(), options.workers,
       [&](std::size_t s) {
@@ -736,6 +737,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
         const double d = seeds[s].distance_m;
         maker.around(element, seeds[s].aim_m, d, 0.0, 1, seeds[s].level_yaw_deg, seed_poses[s], seed_tried[s]);
         const std::size_t straight = seed_poses[s].size();
+        seed_straight[s] = straight;
         double straight_area_m2 = 0.0;
         for (std::size_t p = 0; p < straight; ++p) {
           seed_covered[s].emplace_back();
@@ -766,8 +768,9 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
     views.stats.poses_tried += seed_tried[s];
     for (std::size_t p = 0; p < seed_poses[s].size(); ++p)
       if (!seed_covered[s][p].empty()) {
-        // The tiling's station is the straight view itself: p == 0 unless it was refused.
-        const bool station = p == 0 && !seed_poses[s][p].raised;
+        // The tiling's station is the straight view itself, if it was admissible (not a raised
+        // or a tilted view).
+        const bool station = p < seed_straight[s] && !seed_poses[s][p].raised;
         pose_tiling.push_back(station ? seeds[s].tiling : -1);
         pose_across.push_back(seeds[s].across ? 1 : 0);
         poses.push_back(seed_poses[s][p]);

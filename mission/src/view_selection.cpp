@@ -275,7 +275,7 @@ SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double
   if (views.tilings.empty()) return result;
   // The greedy takes the single view of best ratio first, and the views around it then leave
   // slivers that cost whole photos; the cheapest tiling of every flat patch, completed by the
-  // greedy, covers each patch as a survey would. Whichever cover costs less is kept. The views
+  // greedy, covers each patch as a survey would. The better cover is kept (below). The views
   // kept for the tilings only (the second image orientation's) join that cover alone, so the
   // first is the cover of the other candidates as it was without them.
   const std::vector<std::uint32_t> start = cheapestTilings(views, area, cost);
@@ -293,7 +293,10 @@ SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double
         }
     return total;
   };
-  if (!(tiled.cost < result.cost) && !(coveredArea(tiled) > coveredArea(result) * (1.0 + 1e-12))) {
+  // The tilings are there to save photos: their cover is kept when it takes fewer for less charge
+  // (the estimate alone picked one more photo on the tunnel crown, whose tour then cost more).
+  const bool fewer_for_less = tiled.chosen.size() < result.chosen.size() && tiled.cost < result.cost;
+  if (!fewer_for_less && !(coveredArea(tiled) > coveredArea(result) * (1.0 + 1e-12))) {
     result.evaluations = tiled.evaluations;
     return result;
   }

@@ -60,8 +60,8 @@ struct SetCoverResult {
 /// Covers every element some candidate covers (elements no candidate covers are ignored), at
 /// least cost. `area` is each element's weight, `cost` each candidate's (both positive). Where
 /// `views` has tilings, the greedy also runs from the cheapest tiling of each flat patch (cost per
-/// area its views cover), and the cheaper of the two covers is kept. Deterministic: ties go to
-/// the lower candidate index.
+/// area its views cover), and that cover is kept when it takes fewer views for less cost (or
+/// covers more). Deterministic: ties go to the lower candidate index.
 SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double>& area,
                            const std::vector<double>& cost, const SetCoverOptions& options = {});
 
