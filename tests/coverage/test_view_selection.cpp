@@ -16,6 +16,7 @@ CandidateViews sets(const std::vector<std::vector<std::uint32_t>>& elements) {
   CandidateViews views;
   for (const auto& list : elements) {
     std::vector<SeenElement> covered;
+    covered.reserve(list.size());
     for (const std::uint32_t e : list) covered.push_back({e, 1.0f, 0.0f, 1.0f});
     views.add(CameraPose{}, covered);
   }
