@@ -12,9 +12,10 @@
 //   of home and back are routed in the mode; all at the model's speeds, a hover stop per photo.
 //   Sorties may start at each lane's first photo and are split by planSorties, as a tour's are.
 //   BM_Lawnmower/MISSION/MODE/TOUR/GSD: MISSION 0 bridge soffit, 1 tunnel crown, 2 warehouse roof
-//   (maps/coverage/*.yaml); MODE 0 ceiling, 1 free; TOUR 1 also plans ceilplan's own tour of the
-//   mission in that mode and reports its figures beside the lawnmower's (tour_*); every region at
-//   GSD / 100 mm/px.
+//   (maps/coverage/*.yaml), 3 the full bridge soffit (bridge_soffit.yaml with its box widened to every
+//   downward face of the superstructure, as bench_coverage_tour's BM_FullBridgeSoffitTour); MODE 0 ceiling, 1 free;
+//   TOUR 1 also plans ceilplan's own tour of the mission in that mode and reports its figures beside the lawnmower's
+//   (tour_*); every region at GSD / 100 mm/px.
 
 #include "ceilplan/io/coverage_output.hpp"
 #include "ceilplan/io/mission_file.hpp"
@@ -38,7 +39,8 @@ namespace {
 
 using namespace ceilplan;
 
-const char* const kMissions[] = {"bridge_soffit", "tunnel_crown", "warehouse_ceiling"};
+const char* const kMissions[] = {"bridge_soffit", "tunnel_crown", "warehouse_ceiling", "bridge_soffit"};
+constexpr int kFullSoffit = 3;  // kMissions' bridge_soffit with the full soffit's box
 
 struct Lawnmower {
   std::vector<mission::CameraPose> photos;  // flying order
@@ -160,6 +162,8 @@ void BM_Lawnmower(benchmark::State& state) {
   const mission::FlightMode mode = state.range(1) == 0 ? mission::FlightMode::Ceiling : mission::FlightMode::Free;
   mission::Mission mission =
       io::readMission(std::filesystem::path(CEILPLAN_SOURCE_DIR) / "maps/coverage" / (name + ".yaml"));
+  if (state.range(0) == kFullSoffit)
+    mission.surfaces.at(0).shape = mission::RegionShape::makeBox({-2.0, -5.5, 4.95}, {50.0, 5.5, 6.05});
   for (mission::CoverageRegion& region : mission.surfaces)
     region.gsd_mm_px = static_cast<double>(state.range(3)) / 100.0;
   const mission::PlanningContext context(mission);
@@ -186,7 +190,7 @@ void BM_Lawnmower(benchmark::State& state) {
     fly_s = std::chrono::duration<double>(t1 - t0).count();
     check = mission::checkCoverage(context.map().tree(), camera, mission.surfaces, surfaces, reachable, mower.photos);
   }
-  state.SetLabel(name + " " + mission::flightModeName(mode));
+  state.SetLabel((state.range(0) == kFullSoffit ? "full_" + name : name) + " " + mission::flightModeName(mode));
   state.counters["gsd_mm_px"] = mission.surfaces.at(0).gsd_mm_px;
   // Sharp anywhere: at or below the GSD somewhere in a frame, overlap aside; what covered_pct
   // lacks beyond it, the lanes' covered parts left between them.
@@ -225,7 +229,7 @@ void BM_Lawnmower(benchmark::State& state) {
   state.counters["tour_reachable_covered_pct"] = 100.0 * tour_reachable_covered_m2 / tour_reachable_m2;
 }
 BENCHMARK(BM_Lawnmower)
-    ->ArgsProduct({{0, 1, 2}, {0, 1}, {0, 1}, {200, 100, 50, 30}})
+    ->ArgsProduct({{0, 1, 2, kFullSoffit}, {0, 1}, {0, 1}, {200, 100, 50, 30}})
     ->Iterations(1)
     ->UseRealTime()
     ->Unit(benchmark::kSecond);

@@ -165,6 +165,7 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> tangents(const Eigen::Vector3d& norm
 struct Pose {
   CameraPose pose;
   double clearance_m = 0.0;  // free mode only
+  bool raised = false;       // ceiling mode: raised under the structure above
 };
 
 // Camera poses looking at an element, checked against the vehicle and the map.
@@ -183,11 +184,13 @@ class PoseMaker {
   bool free() const { return options_.mode == FlightMode::Free; }
   double requiredClearance_m() const { return required_clearance_m_; }
 
-  // The camera at `camera_m` looking at `target_m`: the pose if the gimbal can point there
-  // and the body is admissible.
-  std::optional<Pose> looking(const Eigen::Vector3d& camera_m, const Eigen::Vector3d& target_m,
+  double levelYaw_deg() const { return level_yaw_deg_; }
+
+  // The camera at `camera_m` looking at `target_m` (yawed to `level_yaw_deg` when it looks
+  // straight up or down): the pose if the gimbal can point there and the body is admissible.
+  std::optional<Pose> looking(const Eigen::Vector3d& camera_m, const Eigen::Vector3d& target_m, double level_yaw_deg,
                               std::size_t& tried) const {
-    const auto [yaw, pitch] = yawPitchOf(target_m - camera_m, level_yaw_deg_);
+    const auto [yaw, pitch] = yawPitchOf(target_m - camera_m, level_yaw_deg);
     if (!camera_.pitchReachable(pitch)) return std::nullopt;
     const Eigen::Vector3d body_m = camera_m - cameraPosition(camera_, Eigen::Vector3d::Zero(), yaw);
     ++tried;
@@ -200,7 +203,7 @@ class PoseMaker {
   // camera re-aimed at `aim_m` on the surface of normal `normal`; none unless it rose and still
   // sees the aim within focus, GSD, incidence and gimbal limits.
   std::optional<Pose> raised(const Pose& pose, const Eigen::Vector3d& aim_m, const Eigen::Vector3d& normal,
-                             std::size_t& tried) const {
+                             double level_yaw_deg, std::size_t& tried) const {
     const Eigen::Vector3d low = pose.pose.body_m;
     const double resolution_m = environment_.grid().frame().resolution_m();
     const environment::GridFrame& frame = environment_.grid().frame();
@@ -222,7 +225,7 @@ class PoseMaker {
     // Re-aim; a horizontal mount offset moves the camera with the yaw, so settle it twice.
     double yaw = pose.pose.yaw_deg, pitch = pose.pose.gimbal_pitch_deg;
     for (int round = 0; round < 2; ++round)
-      std::tie(yaw, pitch) = yawPitchOf(aim_m - cameraPosition(camera_, at(top_m), yaw), level_yaw_deg_);
+      std::tie(yaw, pitch) = yawPitchOf(aim_m - cameraPosition(camera_, at(top_m), yaw), level_yaw_deg);
     const Eigen::Vector3d sight = aim_m - cameraPosition(camera_, at(top_m), yaw);
     const double distance_m = sight.norm();
     const double cos_incidence = -sight.dot(normal) / distance_m;
@@ -230,14 +233,15 @@ class PoseMaker {
         cos_incidence < std::cos(region_.max_incidence_deg * kDegree) ||
         camera_.gsd_mm_px(distance_m, std::acos(std::min(1.0, cos_incidence))) > region_.gsd_mm_px)
       return std::nullopt;
-    return Pose{{at(top_m), yaw, std::clamp(pitch, camera_.gimbal_pitch_min_deg, camera_.gimbal_pitch_max_deg)}, 0.0};
+    return Pose{
+        {at(top_m), yaw, std::clamp(pitch, camera_.gimbal_pitch_min_deg, camera_.gimbal_pitch_max_deg)}, 0.0, true};
   }
 
   // Poses looking at `aim_m` on the surface of `element` from `distance_m` along its normal,
   // tilted by `tilt_rad` towards each of `directions` tangent directions (one straight view when
-  // the tilt is 0), raised too in ceiling mode.
+  // the tilt is 0), raised too in ceiling mode; a straight view takes `level_yaw_deg`.
   void around(const environment::SurfaceElement& element, const Eigen::Vector3d& aim_m, double distance_m,
-              double tilt_rad, int directions, std::vector<Pose>& out, std::size_t& tried) const {
+              double tilt_rad, int directions, double level_yaw_deg, std::vector<Pose>& out, std::size_t& tried) const {
     const auto [t1, t2] = tangents(element.normal, heading_);
     const int count = tilt_rad == 0.0 ? 1 : directions;
     // At a tilt, the aim seen at the image centre meets the GSD nearer.
@@ -248,11 +252,12 @@ class PoseMaker {
       const double phi = 2.0 * M_PI * k / count;
       const Eigen::Vector3d direction =
           element.normal * std::cos(tilt_rad) + (t1 * std::cos(phi) + t2 * std::sin(phi)) * std::sin(tilt_rad);
-      const auto pose = looking(aim_m + d * direction, aim_m, tried);
+      const auto pose = looking(aim_m + d * direction, aim_m, level_yaw_deg, tried);
       if (!pose) continue;
       if (seesAim(*pose, aim_m) && reachable(*pose)) out.push_back(*pose);
       if (!free())
-        if (const auto up = raised(*pose, aim_m, element.normal, tried); up && seesAim(*up, aim_m) && reachable(*up))
+        if (const auto up = raised(*pose, aim_m, element.normal, level_yaw_deg, tried);
+            up && seesAim(*up, aim_m) && reachable(*up))
           out.push_back(*up);
     }
   }
@@ -314,7 +319,13 @@ struct Seed {
   std::uint32_t element;
   double distance_m;
   Eigen::Vector3d aim_m;  // on the element's face plane
+  double level_yaw_deg;   // a straight up or down view's yaw
+  int tiling = -1;        // the pattern tiling it belongs to, if any
+  bool across = false;    // a pattern across the region's heading: its views are for the tilings only
 };
+
+// A pattern tiling's flat patch, as seeds are generated (Tiling::patch).
+using TilingPatches = std::vector<std::uint32_t>;
 
 // How far the flat patch of an element's face extends from its centre along `direction` (unit,
 // in the face's plane), up to `limit_m`: faces of the same orientation, in the same plane,
@@ -399,64 +410,77 @@ std::vector<std::vector<std::uint32_t>> flatPatches(const environment::VoxelGrid
   return patches;
 }
 
-// The pattern: per flat patch and distance level (those at least half the farthest), a lawnmower tiling of the patch's
-// extent in the straight view's image axes, lanes and stations evenly spaced with the first and last covering parts
-// ending at the patch's edges, as a survey tool lays out passes. Each station aims at its point on the patch's plane;
-// stations over no element of the patch are dropped.
+// The pattern: per flat patch, distance level (those at least half the farthest) and image orientation, a lawnmower
+// tiling of the patch's extent in the straight view's image axes, lanes and stations evenly spaced with the first and
+// last covering parts ending at the patch's edges, as a survey tool lays out passes. Each station aims at its point on
+// the patch's plane; stations over no element of the patch are dropped. Up and down faces are tiled both with the
+// image's height along the region's heading and across it: which one needs fewer stations depends on how the patch's
+// sides divide by the covered part's (a 3.8 x 2.4 m deck bay takes 5 x 2 photos one way and 3 x 3 the other at
+// 1 mm/px). Each tiling is numbered; `tiling_patch` receives its patch.
 std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
-                               const RegionSurface& surface, const std::vector<double>& levels, double heading_deg) {
+                               const RegionSurface& surface, const std::vector<double>& levels, double heading_deg,
+                               TilingPatches& tiling_patch) {
   const double r = grid.frame().resolution_m();
-  const std::vector<CameraFrame> frames = straightFrames(camera, heading_deg);
+  const double yaws_deg[2] = {heading_deg, std::fmod(heading_deg + 90.0, 360.0)};
+  const std::vector<CameraFrame> frames[2] = {straightFrames(camera, yaws_deg[0]), straightFrames(camera, yaws_deg[1])};
   std::vector<Seed> seeds;
-  for (const std::vector<std::uint32_t>& patch : flatPatches(grid, surface)) {
+  const std::vector<std::vector<std::uint32_t>> patches = flatPatches(grid, surface);
+  for (std::uint32_t p = 0; p < patches.size(); ++p) {
+    const std::vector<std::uint32_t>& patch = patches[p];
     const auto& first = surface.elements[patch.front()];
-    const CameraFrame& straight = frames[first.face];
-    Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
-    std::set<std::pair<long, long>> cells;  // the patch's faces in image-axis voxel units
-    for (const std::uint32_t e : patch) {
-      const Eigen::Vector2d at(surface.elements[e].centre_m.dot(straight.right()),
-                               surface.elements[e].centre_m.dot(straight.up()));
-      lo = lo.cwiseMin(at);
-      hi = hi.cwiseMax(at);
-      cells.emplace(std::lround(at.x() / r), std::lround(at.y() / r));
-    }
-    lo -= Eigen::Vector2d::Constant(0.5 * r);
-    hi += Eigen::Vector2d::Constant(0.5 * r);
-    const double plane = first.centre_m.dot(straight.forward());
-    for (const double d : levels) {
-      if (d < kPatternLevelShare * levels.front()) continue;
-      const Eigen::Vector2d span(2.0 * d * camera.halfWidthTan() * region.widthShare(),
-                                 2.0 * d * camera.halfHeightTan() * region.heightShare());
-      int count[2];
-      for (int axis = 0; axis < 2; ++axis)
-        count[axis] = std::max(1, static_cast<int>(std::ceil((hi[axis] - lo[axis]) / span[axis] - 1e-9)));
-      for (int j = 0; j < count[1]; ++j)
-        for (int i = 0; i < count[0]; ++i) {
-          Eigen::Vector2d at;
-          const int index[2] = {i, j};
-          for (int axis = 0; axis < 2; ++axis)
-            at[axis] = count[axis] == 1 ? 0.5 * (lo[axis] + hi[axis])
-                                        : lo[axis] + 0.5 * span[axis] +
-                                              (hi[axis] - lo[axis] - span[axis]) * index[axis] / (count[axis] - 1);
-          // The nearest face of the patch within a voxel, else no station here.
-          std::uint32_t nearest = patch.front();
-          bool found = false;
-          for (long dj = -1; dj <= 1 && !found; ++dj)
-            for (long di = -1; di <= 1 && !found; ++di)
-              found = cells.count({std::lround(at.x() / r) + di, std::lround(at.y() / r) + dj}) > 0;
-          if (!found) continue;
-          double best = INFINITY;
-          for (const std::uint32_t e : patch) {
-            const Eigen::Vector3d& c = surface.elements[e].centre_m;
-            const double offset = (Eigen::Vector2d(c.dot(straight.right()), c.dot(straight.up())) - at).squaredNorm();
-            if (offset < best) {
-              best = offset;
-              nearest = e;
+    const bool vertical = first.face >= 4;  // faces 4 and 5 are +z and -z
+    for (int orientation = 0; orientation < (vertical ? 2 : 1); ++orientation) {
+      const CameraFrame& straight = frames[orientation][first.face];
+      Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
+      std::set<std::pair<long, long>> cells;  // the patch's faces in image-axis voxel units
+      for (const std::uint32_t e : patch) {
+        const Eigen::Vector2d at(surface.elements[e].centre_m.dot(straight.right()),
+                                 surface.elements[e].centre_m.dot(straight.up()));
+        lo = lo.cwiseMin(at);
+        hi = hi.cwiseMax(at);
+        cells.emplace(std::lround(at.x() / r), std::lround(at.y() / r));
+      }
+      lo -= Eigen::Vector2d::Constant(0.5 * r);
+      hi += Eigen::Vector2d::Constant(0.5 * r);
+      const double plane = first.centre_m.dot(straight.forward());
+      for (const double d : levels) {
+        if (d < kPatternLevelShare * levels.front()) continue;
+        const int tiling = static_cast<int>(tiling_patch.size());
+        tiling_patch.push_back(p);
+        const Eigen::Vector2d span(2.0 * d * camera.halfWidthTan() * region.widthShare(),
+                                   2.0 * d * camera.halfHeightTan() * region.heightShare());
+        int count[2];
+        for (int axis = 0; axis < 2; ++axis)
+          count[axis] = std::max(1, static_cast<int>(std::ceil((hi[axis] - lo[axis]) / span[axis] - 1e-9)));
+        for (int j = 0; j < count[1]; ++j)
+          for (int i = 0; i < count[0]; ++i) {
+            Eigen::Vector2d at;
+            const int index[2] = {i, j};
+            for (int axis = 0; axis < 2; ++axis)
+              at[axis] = count[axis] == 1 ? 0.5 * (lo[axis] + hi[axis])
+                                          : lo[axis] + 0.5 * span[axis] +
+                                                (hi[axis] - lo[axis] - span[axis]) * index[axis] / (count[axis] - 1);
+            // The nearest face of the patch within a voxel, else no station here.
+            std::uint32_t nearest = patch.front();
+            bool found = false;
+            for (long dj = -1; dj <= 1 && !found; ++dj)
+              for (long di = -1; di <= 1 && !found; ++di)
+                found = cells.count({std::lround(at.x() / r) + di, std::lround(at.y() / r) + dj}) > 0;
+            if (!found) continue;
+            double best = INFINITY;
+            for (const std::uint32_t e : patch) {
+              const Eigen::Vector3d& c = surface.elements[e].centre_m;
+              const double offset = (Eigen::Vector2d(c.dot(straight.right()), c.dot(straight.up())) - at).squaredNorm();
+              if (offset < best) {
+                best = offset;
+                nearest = e;
+              }
             }
+            seeds.push_back({nearest, d,
+                             at.x() * straight.right() + at.y() * straight.up() + plane * straight.forward(),
+                             yaws_deg[orientation], tiling, orientation == 1});
           }
-          seeds.push_back(
-              {nearest, d, at.x() * straight.right() + at.y() * straight.up() + plane * straight.forward()});
-        }
+      }
     }
   }
   return seeds;
@@ -519,7 +543,7 @@ std::vector<Seed> latticeSeeds(const environment::VoxelGrid& grid, const Camera&
       }
       const auto key =
           std::make_tuple(std::lround(aim.x() * 1e3), std::lround(aim.y() * 1e3), std::lround(aim.z() * 1e3));
-      if (aims.emplace(key, true).second) seeds.push_back({e, d, aim});
+      if (aims.emplace(key, true).second) seeds.push_back({e, d, aim, heading_deg});
     }
   }
   return seeds;
@@ -697,20 +721,23 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
 
   // The lattice: every seed's poses and what each covers, in seed order whatever the workers.
   // Pattern seeds first: the selection breaks ties by candidate index.
-  std::vector<Seed> seeds = patternSeeds(environment.grid(), camera, region, surface, levels, heading);
+  TilingPatches tiling_patch;
+  std::vector<Seed> seeds = patternSeeds(environment.grid(), camera, region, surface, levels, heading, tiling_patch);
   const std::vector<Seed> lattice =
       latticeSeeds(environment.grid(), camera, region, surface, levels, options.seed_spacing_share, heading);
   seeds.insert(seeds.end(), lattice.begin(), lattice.end());
   std::vector<std::vector<Pose>> seed_poses(seeds.size());
   std::vector<std::vector<std::vector<SeenElement>>> seed_covered(seeds.size());
   std::vector<std::size_t> seed_tried(seeds.size(), 0);
+  std::vector<std::size_t> seed_straight(seeds.size(), 0);  // poses of the straight view, raised included
   parallelFor(
       seeds.size(), options.workers,
       [&](std::size_t s) {
         const auto& element = surface.elements[seeds[s].element];
         const double d = seeds[s].distance_m;
-        maker.around(element, seeds[s].aim_m, d, 0.0, 1, seed_poses[s], seed_tried[s]);
+        maker.around(element, seeds[s].aim_m, d, 0.0, 1, seeds[s].level_yaw_deg, seed_poses[s], seed_tried[s]);
         const std::size_t straight = seed_poses[s].size();
+        seed_straight[s] = straight;
         double straight_area_m2 = 0.0;
         for (std::size_t p = 0; p < straight; ++p) {
           seed_covered[s].emplace_back();
@@ -722,7 +749,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
         // Tilted views where the straight one is not admissible or sees less than its whole
         // covered part (an edge, an occluder, a narrow strip): in the open they add nothing.
         if (straight == 0 || straight_area_m2 < kOpenShare * viewer.openArea_m2(d)) {
-          maker.around(element, seeds[s].aim_m, d, tilt, 4, seed_poses[s], seed_tried[s]);
+          maker.around(element, seeds[s].aim_m, d, tilt, 4, seeds[s].level_yaw_deg, seed_poses[s], seed_tried[s]);
           for (std::size_t p = straight; p < seed_poses[s].size(); ++p) {
             seed_covered[s].emplace_back();
             viewer.covered(seed_poses[s][p].pose, seed_covered[s].back());
@@ -735,19 +762,28 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   views.stats.seeds = seeds.size();
   std::vector<Pose> poses;
   std::vector<std::vector<SeenElement>> covered;
+  std::vector<int> pose_tiling;           // per pose, the tiling it is a station of (its straight view), or -1
+  std::vector<std::uint8_t> pose_across;  // per pose, 1 if from a pattern across the heading
   for (std::size_t s = 0; s < seeds.size(); ++s) {
     views.stats.poses_tried += seed_tried[s];
     for (std::size_t p = 0; p < seed_poses[s].size(); ++p)
       if (!seed_covered[s][p].empty()) {
+        // The tiling's station is the straight view itself, if it was admissible (not a raised
+        // or a tilted view).
+        const bool station = p < seed_straight[s] && !seed_poses[s][p].raised;
+        pose_tiling.push_back(station ? seeds[s].tiling : -1);
+        pose_across.push_back(seeds[s].across ? 1 : 0);
         poses.push_back(seed_poses[s][p]);
         covered.push_back(std::move(seed_covered[s][p]));
       }
   }
 
-  // Repairs: probe every element the lattice left uncovered from denser distances and tilts.
+  // Repairs: probe every element the lattice left uncovered from denser distances and tilts (the
+  // views across the heading aside: a cover without them must find its own).
   std::vector<std::uint8_t> reached(surface.elements.size(), 0);
-  for (const auto& list : covered)
-    for (const SeenElement& seen : list) reached[seen.element] = 1;
+  for (std::size_t v = 0; v < covered.size(); ++v)
+    if (!pose_across[v])
+      for (const SeenElement& seen : covered[v]) reached[seen.element] = 1;
   std::vector<double> repair_levels = distanceLevels(camera, region, kRepairLevels);
   for (std::uint32_t e = 0; e < surface.elements.size(); ++e) {
     if (reached[e]) continue;
@@ -757,7 +793,8 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
     for (const double d : repair_levels)
       for (const double share : {0.0, 0.3, 0.6, 0.95}) {
         const double probe_tilt = std::min(region.max_incidence_deg * share, 80.0) * kDegree;
-        maker.around(element, element.centre_m, d, probe_tilt, kRepairDirections, probes, views.stats.poses_tried);
+        maker.around(element, element.centre_m, d, probe_tilt, kRepairDirections, maker.levelYaw_deg(), probes,
+                     views.stats.poses_tried);
       }
     views.stats.repair_probes += probes.size();
     std::vector<Pose> seeing;
@@ -783,6 +820,8 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
       for (const SeenElement& seen : list) reached[seen.element] = 1;
       poses.push_back(probe);
       covered.push_back(std::move(list));
+      pose_tiling.push_back(-1);
+      pose_across.push_back(0);
       ++views.stats.repair_views;
     }
   }
@@ -790,8 +829,19 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   const std::vector<bool> keep =
       maker.free() ? freeModeKeep(poses, covered, surface.elements.size(), maker.requiredClearance_m())
                    : std::vector<bool>(poses.size(), true);
+  views.tilings.resize(tiling_patch.size());
+  for (std::size_t t = 0; t < tiling_patch.size(); ++t) views.tilings[t].patch = tiling_patch[t];
   for (std::size_t v = 0; v < poses.size(); ++v)
-    if (keep[v]) views.add(poses[v].pose, covered[v]);
+    if (keep[v]) {
+      if (pose_tiling[v] >= 0) views.tilings[pose_tiling[v]].views.push_back(static_cast<std::uint32_t>(views.size()));
+      views.tiling_only.push_back(pose_across[v]);
+      views.add(poses[v].pose, covered[v]);
+    }
+  views.tilings.erase(std::remove_if(views.tilings.begin(), views.tilings.end(),
+                                     [](const Tiling& tiling) { return tiling.views.empty(); }),
+                      views.tilings.end());
+  for (std::size_t v = 0; v < covered.size(); ++v)
+    for (const SeenElement& seen : covered[v]) reached[seen.element] = 1;
   views.reachable = std::move(reached);
   return views;
 }

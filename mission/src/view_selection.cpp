@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <queue>
 
 namespace ceilplan::mission {
@@ -13,8 +14,13 @@ namespace {
 class LocalImprovement {
  public:
   LocalImprovement(const CandidateViews& views, const std::vector<double>& cost, std::vector<std::uint8_t>& chosen,
-                   std::size_t element_count)
-      : views_(views), cost_(cost), chosen_(chosen), count_(element_count, 0), chosen_of_(element_count) {
+                   std::size_t element_count, bool tiling_only_allowed)
+      : views_(views),
+        cost_(cost),
+        chosen_(chosen),
+        count_(element_count, 0),
+        chosen_of_(element_count),
+        tiling_only_allowed_(tiling_only_allowed) {
     for (std::uint32_t v = 0; v < views.size(); ++v)
       if (chosen_[v]) choose(v, true);
   }
@@ -37,7 +43,7 @@ class LocalImprovement {
     std::vector<std::uint8_t> marked(views_.size(), 0);
     std::vector<std::uint32_t> neighbours, dropped;
     for (std::uint32_t w = 0; w < views_.size(); ++w) {
-      if (chosen_[w]) continue;
+      if (chosen_[w] || (!tiling_only_allowed_ && views_.tilingOnly(w))) continue;
       neighbours.clear();
       double neighbours_cost = 0.0;
       for (const SeenElement* s = views_.begin(w); s != views_.end(w); ++s)
@@ -113,6 +119,7 @@ class LocalImprovement {
   std::vector<std::uint8_t>& chosen_;
   std::vector<int> count_;
   std::vector<std::vector<std::uint32_t>> chosen_of_;  // per element, the chosen views covering it
+  bool tiling_only_allowed_;                           // whether views kept for the tilings may be added
 };
 
 }  // namespace
@@ -143,20 +150,23 @@ std::vector<ViewCost> viewCosts(const planner::FlightCostModel& model, const Cam
   return costs;
 }
 
-SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double>& area,
-                           const std::vector<double>& cost, const SetCoverOptions& options) {
-  if (cost.size() != views.size())
-    throw ceilplan::InputError("view selection: " + std::to_string(cost.size()) + " costs for " +
-                               std::to_string(views.size()) + " candidates");
-  for (const double c : cost)
-    if (!(std::isfinite(c) && c > 0.0))
-      throw ceilplan::InputError("view selection: every cost must be positive and finite");
-  for (const SeenElement& seen : views.seen)
-    if (seen.element >= area.size())
-      throw ceilplan::InputError("view selection: a candidate covers an unknown element");
+namespace {
 
+// Greedy by cost per newly covered area from the views `start` (chosen first, whatever their
+// ratio), then local improvement; the views kept for the tilings only when starting from them.
+SetCoverResult greedyCover(const CandidateViews& views, const std::vector<double>& area,
+                           const std::vector<double>& cost, const SetCoverOptions& options,
+                           const std::vector<std::uint32_t>& start) {
+  const bool tiling_only_allowed = !start.empty();
   SetCoverResult result;
   std::vector<std::uint8_t> covered(area.size(), 0), chosen(views.size(), 0);
+  const auto take = [&](std::uint32_t v) {
+    chosen[v] = 1;
+    result.greedy_cost += cost[v];
+    ++result.greedy_views;
+    for (const SeenElement* s = views.begin(v); s != views.end(v); ++s) covered[s->element] = 1;
+  };
+  for (const std::uint32_t v : start) take(v);
   const auto gainOf = [&](std::uint32_t v) {
     double gain = 0.0;
     for (const SeenElement* s = views.begin(v); s != views.end(v); ++s)
@@ -174,6 +184,7 @@ SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double
   };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   for (std::uint32_t v = 0; v < views.size(); ++v) {
+    if (chosen[v] || (!tiling_only_allowed && views.tilingOnly(v))) continue;
     const double gain = gainOf(v);
     ++result.evaluations;
     if (gain > 0.0) queue.push({cost[v] / gain, v});
@@ -189,13 +200,10 @@ SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double
       queue.push(fresh);
       continue;
     }
-    chosen[top.view] = 1;
-    result.greedy_cost += cost[top.view];
-    ++result.greedy_views;
-    for (const SeenElement* s = views.begin(top.view); s != views.end(top.view); ++s) covered[s->element] = 1;
+    take(top.view);
   }
 
-  LocalImprovement improve(views, cost, chosen, area.size());
+  LocalImprovement improve(views, cost, chosen, area.size(), tiling_only_allowed);
   for (int round = 0; round < options.improvement_rounds; ++round) {
     const std::size_t removed = improve.removeRedundant();
     const std::size_t exchanges = improve.exchange();
@@ -210,6 +218,90 @@ SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double
       result.cost += cost[v];
     }
   return result;
+}
+
+// Per flat patch, the views of its tiling of least cost per area covered (the area its views
+// cover together, wherever it lies), ties to the first.
+std::vector<std::uint32_t> cheapestTilings(const CandidateViews& views, const std::vector<double>& area,
+                                           const std::vector<double>& cost) {
+  std::vector<std::uint8_t> seen(area.size(), 0);
+  std::map<std::uint32_t, std::pair<double, const Tiling*>> best;  // per patch: cost per area, tiling
+  for (const Tiling& tiling : views.tilings) {
+    double tiling_cost = 0.0, tiling_area = 0.0;
+    for (const std::uint32_t v : tiling.views) {
+      tiling_cost += cost[v];
+      for (const SeenElement* s = views.begin(v); s != views.end(v); ++s)
+        if (!seen[s->element]) {
+          seen[s->element] = 1;
+          tiling_area += area[s->element];
+        }
+    }
+    for (const std::uint32_t v : tiling.views)
+      for (const SeenElement* s = views.begin(v); s != views.end(v); ++s) seen[s->element] = 0;
+    if (!(tiling_area > 0.0)) continue;
+    const double ratio = tiling_cost / tiling_area;
+    const auto found = best.find(tiling.patch);
+    if (found == best.end() || ratio < found->second.first) best[tiling.patch] = {ratio, &tiling};
+  }
+  std::vector<std::uint32_t> start;
+  for (const auto& entry : best)
+    start.insert(start.end(), entry.second.second->views.begin(), entry.second.second->views.end());
+  std::sort(start.begin(), start.end());
+  start.erase(std::unique(start.begin(), start.end()), start.end());
+  return start;
+}
+
+}  // namespace
+
+SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double>& area,
+                           const std::vector<double>& cost, const SetCoverOptions& options) {
+  if (cost.size() != views.size())
+    throw ceilplan::InputError("view selection: " + std::to_string(cost.size()) + " costs for " +
+                               std::to_string(views.size()) + " candidates");
+  for (const double c : cost)
+    if (!(std::isfinite(c) && c > 0.0))
+      throw ceilplan::InputError("view selection: every cost must be positive and finite");
+  for (const SeenElement& seen : views.seen)
+    if (seen.element >= area.size())
+      throw ceilplan::InputError("view selection: a candidate covers an unknown element");
+  for (const Tiling& tiling : views.tilings)
+    for (const std::uint32_t v : tiling.views)
+      if (v >= views.size()) throw ceilplan::InputError("view selection: a tiling names an unknown candidate");
+  if (!views.tiling_only.empty() && views.tiling_only.size() != views.size())
+    throw ceilplan::InputError("view selection: " + std::to_string(views.tiling_only.size()) +
+                               " tiling-only flags for " + std::to_string(views.size()) + " candidates");
+
+  SetCoverResult result = greedyCover(views, area, cost, options, {});
+  if (views.tilings.empty()) return result;
+  // The greedy takes the single view of best ratio first, and the views around it then leave
+  // slivers that cost whole photos; the cheapest tiling of every flat patch, completed by the
+  // greedy, covers each patch as a survey would. The better cover is kept (below). The views
+  // kept for the tilings only (the second image orientation's) join that cover alone, so the
+  // first is the cover of the other candidates as it was without them.
+  const std::vector<std::uint32_t> start = cheapestTilings(views, area, cost);
+  SetCoverResult tiled = greedyCover(views, area, cost, options, start);
+  tiled.evaluations += result.evaluations;
+  // The first cover lacks what only the tilings' own views see, if anything: then it is no cover.
+  const auto coveredArea = [&](const SetCoverResult& cover) {
+    std::vector<std::uint8_t> covered(area.size(), 0);
+    double total = 0.0;
+    for (const std::uint32_t v : cover.chosen)
+      for (const SeenElement* s = views.begin(v); s != views.end(v); ++s)
+        if (!covered[s->element]) {
+          covered[s->element] = 1;
+          total += area[s->element];
+        }
+    return total;
+  };
+  // The tilings are there to save photos: their cover is kept when it takes fewer for less charge
+  // (the estimate alone picked one more photo on the tunnel crown, whose tour then cost more).
+  const bool fewer_for_less = tiled.chosen.size() < result.chosen.size() && tiled.cost < result.cost;
+  if (!fewer_for_less && !(coveredArea(tiled) > coveredArea(result) * (1.0 + 1e-12))) {
+    result.evaluations = tiled.evaluations;
+    return result;
+  }
+  tiled.tiling_views = start.size();
+  return tiled;
 }
 
 }  // namespace ceilplan::mission

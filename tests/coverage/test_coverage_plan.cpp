@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <set>
 
@@ -173,6 +174,32 @@ TEST(CoveragePlan, OnTheMoveNeitherStopsNorBlurs) {
     EXPECT_GT(photo.max_speed_m_s, 0.0);
     EXPECT_LE(photo.max_speed_m_s, 0.05 + 1e-12);
   }
+}
+
+// Every flat patch of the ceiling is tiled as a survey would fly it, with straight-up views in two
+// image orientations a quarter turn apart; the second orientation's views are kept for the cover
+// that starts from the tilings (docs/coverage.md, "Seeds" and "Set cover").
+TEST(CoveragePlan, FlatPatchesAreTiledInBothImageOrientations) {
+  const CoverageRegion region = ceiling();
+  const RegionSurface surface = extractRegionSurface(room().environment.grid(), region.shape, region.faces, "ceiling");
+  const CandidateViews views =
+      generateCandidateViews(room().environment, testing::upwardCamera(), region, surface, ViewGenerationOptions{});
+  ASSERT_EQ(views.tiling_only.size(), views.size());
+  const double heading_deg = regionHeading(surface);
+  int along = 0, across = 0;
+  for (const Tiling& tiling : views.tilings) {
+    ASSERT_FALSE(tiling.views.empty());
+    const bool turned = views.tilingOnly(tiling.views.front());
+    for (const std::uint32_t v : tiling.views) {
+      EXPECT_EQ(views.tilingOnly(v), turned) << "view " << v;
+      EXPECT_NEAR(views.poses[v].gimbal_pitch_deg, 90.0, 1e-9) << "view " << v;
+      const double turn_deg = std::fmod(std::abs(views.poses[v].yaw_deg - heading_deg), 180.0);
+      EXPECT_NEAR(std::min(turn_deg, 180.0 - turn_deg), turned ? 90.0 : 0.0, 1e-6) << "view " << v;
+    }
+    ++(turned ? across : along);
+  }
+  EXPECT_GT(along, 0);
+  EXPECT_GT(across, 0);
 }
 
 TEST(CoveragePlan, RefusesBadInputBeforeTheMapWork) {

@@ -1,6 +1,7 @@
 // The set cover: on random instances it covers every coverable element, never costs more than
 // the greedy it starts from, stays within the greedy guarantee of the optimum found by brute
-// force, and is deterministic; hand-made instances check the lazy greedy and the exchanges.
+// force, and is deterministic; hand-made instances check the lazy greedy, the exchanges and the
+// start from a flat patch's lawnmower tiling.
 
 #include "ceilplan/mission/view_selection.hpp"
 
@@ -15,6 +16,7 @@ CandidateViews sets(const std::vector<std::vector<std::uint32_t>>& elements) {
   CandidateViews views;
   for (const auto& list : elements) {
     std::vector<SeenElement> covered;
+    covered.reserve(list.size());
     for (const std::uint32_t e : list) covered.push_back({e, 1.0f, 0.0f, 1.0f});
     views.add(CameraPose{}, covered);
   }
@@ -96,12 +98,58 @@ TEST(ViewSelection, ExchangesReplaceViewsMadeRedundant) {
   EXPECT_EQ(result.chosen, (std::vector<std::uint32_t>{3, 4}));
 }
 
+// Six elements in a row, one flat patch: a tiling of two views end to end (0: elements 0-2,
+// 1: 3-5), a view centred on the row (2: 1-4, the best ratio) and two edge slivers (3: 0, 4: 5).
+CandidateViews rowWithATiling() {
+  CandidateViews views = sets({{0, 1, 2}, {3, 4, 5}, {1, 2, 3, 4}, {0}, {5}});
+  views.tilings.push_back({0, {0, 1}});
+  return views;
+}
+
+TEST(ViewSelection, AWholeTilingBeatsTheGreedysSlivers) {
+  // Greedy takes the centred view (1.0 for 4 elements), then each sliver (0.6 for 1) rather than
+  // a tiling view (1.0 for 1): 2.2, and no exchange helps (a tiling view frees one sliver only).
+  const std::vector<double> area(6, 1.0), cost{1.0, 1.0, 1.0, 0.6, 0.6};
+  CandidateViews plain = rowWithATiling();
+  plain.tilings.clear();
+  const SetCoverResult greedy = chooseViews(plain, area, cost);
+  EXPECT_EQ(greedy.chosen, (std::vector<std::uint32_t>{2, 3, 4}));
+  EXPECT_NEAR(greedy.cost, 2.2, 1e-12);
+  EXPECT_EQ(greedy.tiling_views, 0u);
+  // Started from the patch's tiling, the cover is the tiling: 2.0.
+  const SetCoverResult tiled = chooseViews(rowWithATiling(), area, cost);
+  EXPECT_EQ(tiled.chosen, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_NEAR(tiled.cost, 2.0, 1e-12);
+  EXPECT_EQ(tiled.tiling_views, 2u);
+}
+
+TEST(ViewSelection, ATilingDearerThanTheGreedysCoverIsNotKept) {
+  // Slivers at 0.4: the greedy's cover costs 1.8, less than the tiling's 2.0.
+  const SetCoverResult result = chooseViews(rowWithATiling(), std::vector<double>(6, 1.0), {1.0, 1.0, 1.0, 0.4, 0.4});
+  EXPECT_EQ(result.chosen, (std::vector<std::uint32_t>{2, 3, 4}));
+  EXPECT_NEAR(result.cost, 1.8, 1e-12);
+  EXPECT_EQ(result.tiling_views, 0u);
+}
+
+TEST(ViewSelection, OfAPatchsTilingsTheCheapestPerAreaIsTaken) {
+  // A second tiling of the patch, three views (5-7) of 0.7 covering the row: 2.1 against 2.0.
+  CandidateViews views = sets({{0, 1, 2}, {3, 4, 5}, {1, 2, 3, 4}, {0}, {5}, {0, 1}, {2, 3}, {4, 5}});
+  views.tilings = {{0, {5, 6, 7}}, {0, {0, 1}}};
+  const SetCoverResult result =
+      chooseViews(views, std::vector<double>(6, 1.0), {1.0, 1.0, 1.0, 0.6, 0.6, 0.7, 0.7, 0.7});
+  EXPECT_EQ(result.chosen, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_EQ(result.tiling_views, 2u);
+}
+
 TEST(ViewSelection, RefusesBadCosts) {
   const CandidateViews views = sets({{0}});
   EXPECT_THROW(chooseViews(views, {1.0}, {0.0}), ceilplan::InputError);
   EXPECT_THROW(chooseViews(views, {1.0}, {NAN}), ceilplan::InputError);
   EXPECT_THROW(chooseViews(views, {1.0}, {1.0, 2.0}), ceilplan::InputError);
   EXPECT_THROW(chooseViews(sets({{3}}), {1.0}, {1.0}), ceilplan::InputError);
+  CandidateViews unknown_tiling = sets({{0}});
+  unknown_tiling.tilings.push_back({0, {1}});
+  EXPECT_THROW(chooseViews(unknown_tiling, {1.0}, {1.0}), ceilplan::InputError);
 }
 
 }  // namespace

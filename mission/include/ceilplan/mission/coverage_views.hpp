@@ -38,6 +38,13 @@ struct GenerationStats {
   std::size_t repair_views = 0;   ///< views added by those probes
 };
 
+/// One lawnmower tiling of a flat patch: the straight views of its evenly spaced lanes and
+/// stations at one distance level and image orientation (docs/coverage.md, "Seeds").
+struct Tiling {
+  std::uint32_t patch = 0;           ///< the flat patch it tiles (numbered per region)
+  std::vector<std::uint32_t> views;  ///< its candidates (those admissible), ascending
+};
+
 /// Candidate poses and, for each, the elements it covers (compressed rows: poses[i] covers
 /// seen[offsets[i]] .. seen[offsets[i + 1] - 1]).
 struct CandidateViews {
@@ -45,9 +52,15 @@ struct CandidateViews {
   std::vector<std::uint32_t> offsets{0};  ///< row starts into `seen`, one more than poses
   std::vector<SeenElement> seen;          ///< every pose's covered elements, row after row
   std::vector<std::uint8_t> reachable;    ///< per element: 1 if some candidate covers it
+  std::vector<Tiling> tilings;            ///< the lawnmower tilings among the candidates
+  /// Per candidate: 1 if only a cover started from the tilings may take it (the views of up and
+  /// down patches' second image orientation, across the region's heading); empty: none.
+  std::vector<std::uint8_t> tiling_only;
 
   /// Candidates held.
   std::size_t size() const { return poses.size(); }
+  /// Whether only a cover started from the tilings may take `view`.
+  bool tilingOnly(std::size_t view) const { return !tiling_only.empty() && tiling_only[view] != 0; }
   /// First element `view` covers.
   const SeenElement* begin(std::size_t view) const { return seen.data() + offsets[view]; }
   /// One past the last element `view` covers.

@@ -54,11 +54,14 @@ struct SetCoverResult {
   std::size_t evaluations = 0;        ///< gains computed by the lazy greedy (plain greedy: views x rounds)
   std::size_t removed = 0;            ///< views dropped as redundant
   std::size_t exchanges = 0;          ///< views added where the views they made redundant cost more
+  std::size_t tiling_views = 0;  ///< views of whole lawnmower tilings the greedy started from (0: it started empty)
 };
 
 /// Covers every element some candidate covers (elements no candidate covers are ignored), at
-/// least cost. `area` is each element's weight, `cost` each candidate's (both positive).
-/// Deterministic: ties go to the lower candidate index.
+/// least cost. `area` is each element's weight, `cost` each candidate's (both positive). Where
+/// `views` has tilings, the greedy also runs from the cheapest tiling of each flat patch (cost per
+/// area its views cover), and that cover is kept when it takes fewer views for less cost (or
+/// covers more). Deterministic: ties go to the lower candidate index.
 SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double>& area,
                            const std::vector<double>& cost, const SetCoverOptions& options = {});
 
