@@ -169,8 +169,8 @@ Velocity FlightCostModel::hoverAt(const PointConditions& conditions) const {
 }
 
 Eigen::Vector2d FlightCostModel::airVelocityAt(const PointConditions& conditions) const {
-  // "Under overhead structure": where the map shows a ceiling within the rotors' reach.
-  const bool sheltered = std::isfinite(conditions.nearest_ceiling_gap_m);
+  // "Under overhead structure": where the speed rule sees a ceiling, in both modes alike.
+  const bool sheltered = nearCeiling(conditions);
   return sheltered ? Eigen::Vector2d((1.0 - options_.wind.sheltered_fraction) * air_velocity_m_s_) : air_velocity_m_s_;
 }
 

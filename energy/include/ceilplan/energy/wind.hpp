@@ -19,8 +19,9 @@ struct Wind {
   double from_deg = 0.0;
   /// Gusts above the mean, >= 0: not flown by the mean-wind plan; for the reserve's confidence.
   double gust_m_s = 0.0;
-  /// [open] Share of the wind's speed taken away under overhead structure (where a rotor sees a
-  /// ceiling), in [0, 1]; 0 by default (docs/models.md, "Calibration parameters at a glance").
+  /// [open] Share of the wind's speed taken away under overhead structure (where a planner's speed
+  /// rule sees a ceiling close above), in [0, 1]; 0 by default (docs/models.md, "Calibration
+  /// parameters at a glance").
   double sheltered_fraction = 0.0;
 
   /// Throws ceilplan::InputError naming the first bad field.

@@ -156,7 +156,7 @@ class FlightCostModel {
   /// Hovering at a point: no ground speed, the local wind as headwind.
   Velocity hoverAt(const PointConditions& conditions) const;
   /// The air's horizontal velocity at a point, m/s: the wind, less its sheltered fraction where
-  /// a rotor sees a ceiling.
+  /// the speed rule sees a ceiling (nearCeiling).
   Eigen::Vector2d airVelocityAt(const PointConditions& conditions) const;
 
   /// Pack current at a point for a velocity and state of charge.
