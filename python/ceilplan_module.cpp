@@ -10,6 +10,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
+#include <algorithm>
 
 #include <cerrno>
 #include <cmath>
@@ -211,6 +212,35 @@ Eigen::AlignedBox3d cropBox(const std::vector<double>& corners) {
 
 environment::UnknownSpace unknownSpace(const std::string& policy, std::optional<double> fill_max_m) {
   return environment::parseUnknownSpace(policy, fill_max_m, {"unknown", "unknown_fill_max_m"});
+}
+
+// A mission's `wind:` as Python sees it: a dict with the file's keys.
+py::dict windDict(const energy::Wind& wind) {
+  py::dict d;
+  d["speed_m_s"] = wind.speed_m_s;
+  d["from_deg"] = wind.from_deg;
+  d["gust_m_s"] = wind.gust_m_s;
+  d["sheltered_fraction"] = wind.sheltered_fraction;
+  return d;
+}
+
+// The same dict back, strict as the file's key: speed_m_s and from_deg required, no other key.
+energy::Wind windOf(const py::dict& d) {
+  energy::Wind wind;
+  const std::vector<std::string> keys{"speed_m_s", "from_deg", "gust_m_s", "sheltered_fraction"};
+  for (const auto& [key, value] : d) {
+    const std::string name = py::str(key);
+    if (std::find(keys.begin(), keys.end(), name) == keys.end())
+      throw InputError("wind: unknown key '" + name + "' (keys: speed_m_s, from_deg, gust_m_s, sheltered_fraction)");
+  }
+  for (const char* required : {"speed_m_s", "from_deg"})
+    if (!d.contains(required)) throw InputError(std::string("wind: missing key '") + required + "'");
+  wind.speed_m_s = d["speed_m_s"].cast<double>();
+  wind.from_deg = d["from_deg"].cast<double>();
+  if (d.contains("gust_m_s")) wind.gust_m_s = d["gust_m_s"].cast<double>();
+  if (d.contains("sheltered_fraction")) wind.sheltered_fraction = d["sheltered_fraction"].cast<double>();
+  wind.validate();
+  return wind;
 }
 
 py::dict gapsDict(const environment::SurfaceGaps& gaps) {
@@ -784,6 +814,11 @@ PYBIND11_MODULE(ceilplan, m) {
       .def_property_readonly(
           "seed", [](const PyMission& self) { return self.mission.planning.seed; },
           "The seed of the tour's order heuristic (plan_tour's default)")
+      .def_property(
+          "wind", [](const PyMission& self) { return windDict(self.mission.planning.wind); },
+          [](PyMission& self, const py::dict& wind) { self.mission.planning.wind = windOf(wind); },
+          "The file's `wind:` as a dict {speed_m_s, from_deg, gust_m_s, sheltered_fraction} (calm: speed_m_s 0); "
+          "settable with the same keys (speed_m_s and from_deg required), checked as the file's key is")
       .def("__repr__", [](const PyMission& self) {
         const mission::Mission& mission = self.mission;
         return "Mission(" + quoted(py::str(mission.file.string())) +
@@ -912,10 +947,12 @@ PYBIND11_MODULE(ceilplan, m) {
   m.def(
       "plan_tour",
       [](const PyMission& mission, const std::optional<std::string>& mode, std::optional<std::uint32_t> seed,
-         const std::string& planner, const std::string& ageing_model, const py::object& progress) -> py::object {
+         const std::string& planner, const std::string& ageing_model, const std::optional<py::dict>& wind,
+         const py::object& progress) -> py::object {
         // The arguments override the mission's settings (Mission::planning), as the CLI's flags do.
         auto planned = std::make_shared<mission::Mission>(mission.mission);
         if (seed) planned->planning.seed = *seed;
+        if (wind) planned->planning.wind = windOf(*wind);
         planned->planning.ageing_model = ageing_model;
         planned->planning.validate();  // before indexing the map
         const std::shared_ptr<const mission::Mission> shared_mission = planned;
@@ -956,12 +993,15 @@ PYBIND11_MODULE(ceilplan, m) {
        " (the default 'roadmap' is deterministic). ageing_model: the model whose "
        "wear the sortie split minimises, " +
        oneOf(battery::ageingModelNames()) +
-       ". progress: None, or a callable progress(stage, fraction) called with the GIL held from the calling thread, "
+       ". wind: None (the mission's `wind:`), or a dict {speed_m_s, from_deg, gust_m_s, sheltered_fraction} as "
+       "Mission.wind takes. progress: None, or a callable progress(stage, fraction) called with the GIL held from the "
+       "calling thread, "
        "several times a second, while the library works (stage e.g. 'ceiling mode: building the roadmap', fraction "
        "0 to 1, 1 at a stage's end); an exception it raises stops the work and comes out of plan_tour")
           .c_str(),
       py::arg("mission"), py::arg("mode") = py::none(), py::arg("seed") = py::none(), py::arg("planner") = "roadmap",
-      py::arg("ageing_model") = mission::PlanningOptions{}.ageing_model, py::arg("progress") = py::none());
+      py::arg("ageing_model") = mission::PlanningOptions{}.ageing_model, py::arg("wind") = py::none(),
+      py::arg("progress") = py::none());
 
   const io::MapImportOptions import_defaults;  // `ceilplan import`'s defaults too
   m.def(

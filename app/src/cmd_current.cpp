@@ -6,6 +6,7 @@
 
 #include "ceilplan/energy/ceiling_gap_sweep.hpp"
 #include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/energy/wind.hpp"
 #include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/output_set.hpp"
 #include "ceilplan/io/report_json.hpp"
@@ -28,6 +29,7 @@ struct CurrentOptions {
   std::optional<double> ground_gap_m;
   double coverage = 1.0;
   double speed_m_s = 0.0;
+  double headwind_m_s = 0.0;
   double climb_m_s = 0.0;
   std::optional<double> soc;
   std::string vehicle_path;
@@ -43,6 +45,7 @@ void runCurrent(const CurrentOptions& options) {
   energy::FlightCondition flight;
   flight.ground_gap_m = options.ground_gap_m.value_or(energy::kNoSurface);
   flight.speed_m_s = options.speed_m_s;
+  flight.headwind_m_s = options.headwind_m_s;
   flight.climb_m_s = options.climb_m_s;
   flight.soc = options.soc.value_or(vehicle.energy.reference_soc);
   const double gap_m = options.gap_m.value_or(energy::kNoSurface);
@@ -75,7 +78,13 @@ const CommandRegistration registration(30, [](CLI::App& parent) {
   command->add_option("--ground-gap-m", options->ground_gap_m, "rotor plane to ground (m); absent: no ground");
   command->add_option("--coverage", options->coverage, "fraction of each rotor disc under the ceiling, 0..1")
       ->capture_default_str();
-  command->add_option("--speed-m-s", options->speed_m_s, "horizontal speed (m/s)")->capture_default_str();
+  command->add_option("--speed-m-s", options->speed_m_s, "horizontal ground speed (m/s)")->capture_default_str();
+  command
+      ->add_option("--headwind-m-s", options->headwind_m_s,
+                   "wind along the track (m/s), positive against the motion, negative a tailwind; the power sees "
+                   "the airspeed |speed + headwind|")
+      ->capture_default_str()
+      ->check(finiteRange(-energy::Wind::kMaxSpeed_m_s, energy::Wind::kMaxSpeed_m_s));
   constexpr double kMaxRate_m_s = planner::FlightSpeeds::kMaxVerticalSpeed_m_s;  // as a mission file allows
   command->add_option("--climb-m-s", options->climb_m_s, "climb rate (m/s), negative in descent")
       ->capture_default_str()

@@ -72,10 +72,17 @@ EnergyModel::EnergyModel(const EnergyParameters& parameters)
 void EnergyModel::checkFlight(const FlightCondition& flight) const {
   checkGap("ground gap", flight.ground_gap_m);
   if (!(flight.speed_m_s >= 0.0)) refuse("speed", flight.speed_m_s, "m/s must be >= 0");
-  if (flight.speed_m_s > parameters_.airframe.max_speed_m_s) {
+  if (!std::isfinite(flight.headwind_m_s)) refuse("headwind", flight.headwind_m_s, "m/s must be finite");
+  if (!std::isfinite(flight.crosswind_m_s)) refuse("crosswind", flight.crosswind_m_s, "m/s must be finite");
+  const double airspeed_m_s = flight.airspeedM_s();
+  if (airspeed_m_s > parameters_.airframe.max_speed_m_s) {
     std::ostringstream message;
-    message << "speed " << flight.speed_m_s << " m/s is beyond the vehicle's max_speed_m_s ("
-            << parameters_.airframe.max_speed_m_s << " m/s)";
+    if (flight.headwind_m_s == 0.0 && flight.crosswind_m_s == 0.0)
+      message << "speed " << flight.speed_m_s << " m/s";
+    else
+      message << "airspeed " << airspeed_m_s << " m/s (ground speed " << flight.speed_m_s << " m/s, headwind "
+              << flight.headwind_m_s << " m/s, crosswind " << flight.crosswind_m_s << " m/s)";
+    message << " is beyond the vehicle's max_speed_m_s (" << parameters_.airframe.max_speed_m_s << " m/s)";
     throw ceilplan::InputError(message.str());
   }
   if (!std::isfinite(flight.climb_m_s)) refuse("climb rate", flight.climb_m_s, "m/s must be finite");
@@ -124,7 +131,8 @@ CurrentBreakdown EnergyModel::breakdown(const RotorCeiling* rotors, int rotor_co
 
 CurrentBreakdown EnergyModel::combine(double ceiling_factor, double induced_power_factor, double ground_factor,
                                       const FlightCondition& flight) const {
-  const double v = flight.speed_m_s;
+  // Forward-flight power is a function of airspeed (docs/models.md, "Wind").
+  const double v = flight.airspeedM_s();
   const double induced_shaft_w = induced_power_factor * rotor_power_.inducedPowerW(v);
   const double profile_shaft_w = rotor_power_.profilePowerW(v);
   const double parasitic_shaft_w = rotor_power_.parasiticPowerW(v);

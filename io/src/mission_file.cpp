@@ -110,6 +110,23 @@ planner::FlightSpeeds readSpeeds(const Section& node, double max_speed_m_s) {
   return speeds;
 }
 
+// The wind: calm unless given. Its speed plus the fastest horizontal speed must stay within the
+// vehicle's max_speed_m_s, the fastest airspeed the energy model answers for.
+energy::Wind readWind(const Section& node, const planner::FlightSpeeds& speeds, double max_speed_m_s) {
+  node.allowOnly({"speed_m_s", "from_deg", "gust_m_s", "sheltered_fraction"});
+  energy::Wind wind;
+  wind.speed_m_s = node.number("speed_m_s", Range::closed(0.0, energy::Wind::kMaxSpeed_m_s, "m/s"));
+  wind.from_deg = node.number("from_deg", Range::below(0.0, 360.0, "deg (where it blows from, clockwise from north)"));
+  wind.gust_m_s = node.number("gust_m_s", Range::closed(0.0, energy::Wind::kMaxSpeed_m_s, "m/s"), wind.gust_m_s);
+  wind.sheltered_fraction = node.number("sheltered_fraction", Range::closed(0.0, 1.0), wind.sheltered_fraction);
+  try {
+    planner::checkAirspeedLimit(wind, speeds, max_speed_m_s);
+  } catch (const InputError& e) {
+    node.fail(e.what());
+  }
+  return wind;
+}
+
 // Point targets: required unless the mission inspects surfaces or contact grids.
 std::vector<mission::InspectionTarget> readTargets(const Section& root, bool required) {
   if (!root.has("targets")) {
@@ -204,8 +221,8 @@ mission::DjiAircraft readDjiAircraft(const Section& dji) {
 mission::Mission readMission(const std::filesystem::path& file) {
   const YamlFile yaml(file, FileKind::Mission);
   const Section root(yaml, yaml.root(), "");
-  std::vector<std::string> keys{"map",  "vehicle", "battery", "home",       "origin", "speeds",
-                                "mode", "seed",    "unknown", "trajectory", "dji",    "targets"};
+  std::vector<std::string> keys{"map",  "vehicle", "battery", "home",       "origin", "speeds", "mode",
+                                "seed", "unknown", "wind",    "trajectory", "dji",    "targets"};
   keys.insert(keys.end(), detail::coverageKeyNames().begin(), detail::coverageKeyNames().end());
   root.allowOnly(keys);
   mission::Mission mission;
@@ -222,6 +239,8 @@ mission::Mission readMission(const std::filesystem::path& file) {
   mission.planning.seed = static_cast<std::uint32_t>(root.integer("seed", 1, 4294967295LL, mission.planning.seed));
   if (const std::optional<Section> unknown = root.optionalSection("unknown"))
     mission.planning.unknown = readUnknownSpace(*unknown);
+  if (const std::optional<Section> wind = root.optionalSection("wind"))
+    mission.planning.wind = readWind(*wind, mission.planning.speeds, mission.vehicle.energy.airframe.max_speed_m_s);
   if (const std::optional<Section> trajectory = root.optionalSection("trajectory")) {
     trajectory->allowOnly({"rate_hz", "corner_tolerance_m", "stop_turn_deg", "frame"});
     mission::TrajectoryOptions& t = mission.trajectory;

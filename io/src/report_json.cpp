@@ -34,6 +34,8 @@ nlohmann::json flightConditionJson(const std::string& vehicle, double coverage, 
           {"coverage", coverage},
           {"ground_gap_m", finiteOrNull(flight.ground_gap_m)},
           {"speed_m_s", flight.speed_m_s},
+          {"headwind_m_s", flight.headwind_m_s},
+          {"airspeed_m_s", flight.airspeedM_s()},
           {"climb_m_s", flight.climb_m_s}};
 }
 

@@ -78,9 +78,13 @@ std::string mapStatisticsText(const std::string& map, const environment::MapStat
 
 std::string flightConditionText(const std::string& vehicle, double coverage, const std::optional<double>& ground_gap_m,
                                 const energy::FlightCondition& flight) {
+  // The wind only where there is some, so still-air output reads as it always has.
+  const std::string wind = flight.headwind_m_s == 0.0 ? std::string()
+                                                      : printed("  headwind %.3g m/s (airspeed %.3g m/s)",
+                                                                flight.headwind_m_s, flight.airspeedM_s());
   return printed("vehicle               %s\n", vehicle.c_str()) +
-         printed("soc %.3f  coverage %.3f  ground gap %s  speed %.3g m/s  climb %.3g m/s\n", flight.soc, coverage,
-                 gapText(ground_gap_m).c_str(), flight.speed_m_s, flight.climb_m_s);
+         printed("soc %.3f  coverage %.3f  ground gap %s  speed %.3g m/s%s  climb %.3g m/s\n", flight.soc, coverage,
+                 gapText(ground_gap_m).c_str(), flight.speed_m_s, wind.c_str(), flight.climb_m_s);
 }
 
 std::string currentBreakdownText(const std::optional<double>& ceiling_gap_m, const energy::CurrentBreakdown& b) {

@@ -32,6 +32,30 @@ std::string format(const char* pattern, double value) {
   return text;
 }
 
+// "a 8.0 m/s wind from 090 deg": how the outputs name the wind a tour was planned in.
+std::string windText(const energy::Wind& wind) {
+  char text[96];
+  std::snprintf(text, sizeof text, "a %.1f m/s wind from %03.0f deg", wind.speed_m_s, wind.from_deg);
+  return text;
+}
+
+// Whether ceiling mode still draws less charge than free mode in the wind given (none: still air).
+std::string windVerdict(const mission::TourResult& ceiling, const mission::TourResult& free) {
+  const energy::Wind& wind = ceiling.planning.wind;
+  if (wind.calm()) return "";
+  const double saved_ah = free.plan.charge_ah - ceiling.plan.charge_ah;
+  const double saved_pct = reductionPct(ceiling.plan.charge_ah, free.plan.charge_ah);
+  char line[200];
+  if (saved_ah > 0.0)
+    std::snprintf(line, sizeof line, "ceiling mode saves %.4f Ah (%.2f %%) against free mode in %s\n", saved_ah,
+                  saved_pct, windText(wind).c_str());
+  else
+    std::snprintf(line, sizeof line,
+                  "ceiling mode's advantage does not survive %s: it draws %.4f Ah (%.2f %%) more than free mode\n",
+                  windText(wind).c_str(), -saved_ah, -saved_pct);
+  return line;
+}
+
 const char* phaseName(mission::FlightPhase phase) { return phase == mission::FlightPhase::Leg ? "leg" : "dwell"; }
 
 nlohmann::json dutyJson(const mission::DutyProjection& duty, const mission::TourOptions& options) {
@@ -260,6 +284,11 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   json["vehicle"] = mission.vehicle_file.empty() ? "built-in: " + mission.vehicle.name : mission.vehicle_file.string();
   json["mode"] = mission::flightModeName(tour.mode);
   json["seed"] = tour.planning.seed;
+  if (!tour.planning.wind.calm())  // still air leaves tour.json as it was
+    json["wind"] = {{"speed_m_s", tour.planning.wind.speed_m_s},
+                    {"from_deg", tour.planning.wind.from_deg},
+                    {"gust_m_s", tour.planning.wind.gust_m_s},
+                    {"sheltered_fraction", tour.planning.wind.sheltered_fraction}};
   json["planner"] = tour.options.planner;
   json["ageing_model"] = tour.plan.ageing_model;
   json["order_method"] = tour.order.method;
@@ -459,6 +488,7 @@ std::string comparisonTable(const mission::TourResult& ceiling, const mission::T
       if (!tour->duty.result)
         out << "duty projection, " << mission::flightModeName(tour->mode) << " mode: " << tour->duty.note << '\n';
   }
+  out << windVerdict(ceiling, free);
   return out.str();
 }
 
@@ -552,8 +582,10 @@ std::string tourHeadline(const mission::Mission& mission, const std::string& mod
   if (mission.isCoverage())
     inspects += ", " + std::to_string(mission.surfaces.size()) + " surface(s), " +
                 std::to_string(mission.contact_grids.size()) + " contact grid(s)";
+  const std::string wind = settings.wind.calm() ? "" : ", in " + windText(settings.wind);
   return "tour of " + mission.file.string() + ": " + inspects + ", mode " + mode + ", planner " + options.planner +
-         ", seed " + std::to_string(settings.seed) + ", split for least " + settings.ageing_model + " wear\n";
+         ", seed " + std::to_string(settings.seed) + ", split for least " + settings.ageing_model + " wear" + wind +
+         "\n";
 }
 
 std::string tourFilesLine(const std::filesystem::path& dir, const mission::Mission& mission,

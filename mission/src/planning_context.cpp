@@ -37,6 +37,7 @@ void PlanningOptions::validate() const {
   battery::makeAgeingModel(ageing_model, ageingModelOptions(temperature_c));  // the models' own temperature range
   planner::checkSeed(seed);
   unknown.validate();
+  wind.validate();
 }
 
 battery::AgeingModelOptions ageingModelOptions(double temperature_c) {
@@ -59,6 +60,7 @@ PlanningContext::PlanningContext(environment::OccupancyMap map, Vehicle vehicle,
   battery_.validate();
   energy_ = std::make_unique<energy::EnergyModel>(vehicle_.energy);
   options_.speeds.validate(energy_->maxSpeedM_s());  // before the map is indexed
+  planner::checkAirspeedLimit(options_.wind, options_.speeds, energy_->maxSpeedM_s());
   const std::string stage = "indexing " + map_.name();
   environment_ = std::make_unique<environment::Environment>(
       map_, vehicle_.geometry, options_.environment,
@@ -68,6 +70,7 @@ PlanningContext::PlanningContext(environment::OccupancyMap map, Vehicle vehicle,
   planner::CostModelOptions full;
   full.speeds = options_.speeds;
   full.planning_soc = battery_.start_soc;
+  full.wind = options_.wind;
   full_model_ = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, full);
   base_rules_ = std::make_unique<planner::SafetyRules>(*environment_, options_.min_ceiling_gap_m);
   reachable_ = std::make_shared<ReachableCache>();

@@ -96,7 +96,7 @@ planner::PathSample hoverSample(const PlanningContext& context, const Eigen::Vec
   hover.ground_gap_m = conditions.ground_gap_m;
   hover.clearance_m = context.environment().clearance_m(position_m);
   hover.propulsion_power_w =
-      model.breakdown(conditions, planner::Velocity{}, context.battery().start_soc).propulsionW();
+      model.breakdown(conditions, model.hoverAt(conditions), context.battery().start_soc).propulsionW();
   return hover;
 }
 

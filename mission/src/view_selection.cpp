@@ -143,8 +143,8 @@ std::vector<ViewCost> viewCosts(const planner::FlightCostModel& model, const Cam
       cost.speed_m_s = std::min(cost.speed_m_s, spacing_m / camera.min_photo_interval_s);
     cost.stop_s = camera.stopPerPhoto_s();
     cost.transit_s = spacing_m / cost.speed_m_s;
-    cost.hover_current_a =
-        model.currentA(model.conditionsAt(views.poses[v].body_m), planner::Velocity{}, model.options().planning_soc);
+    const planner::PointConditions conditions = model.conditionsAt(views.poses[v].body_m);
+    cost.hover_current_a = model.currentA(conditions, model.hoverAt(conditions), model.options().planning_soc);
     cost.charge_ah = cost.hover_current_a * (cost.stop_s + cost.transit_s) / 3600.0;
   });
   return costs;

@@ -47,10 +47,22 @@ void FlightSpeeds::validate(double max_speed_m_s) const {
         " rotor radii (the ceiling effect has faded by 2.5), got " + formatNumber(near_ceiling_gap_radii));
 }
 
+void checkAirspeedLimit(const energy::Wind& wind, const FlightSpeeds& speeds, double max_speed_m_s) {
+  wind.validate();
+  const double fastest_m_s = std::max({speeds.cruise_m_s, speeds.near_ceiling_m_s, speeds.inspection_m_s});
+  if (wind.speed_m_s + fastest_m_s > max_speed_m_s)
+    throw ceilplan::InputError("wind: speed_m_s " + formatNumber(wind.speed_m_s) + " plus the fastest speed " +
+                               formatNumber(fastest_m_s) + " m/s exceeds the vehicle's max_speed_m_s (" +
+                               formatNumber(max_speed_m_s) +
+                               " m/s), the fastest airspeed the energy model answers for: fly slower or in less wind");
+}
+
 FlightCostModel::FlightCostModel(const environment::Environment& environment, const energy::EnergyModel& energy,
                                  CostModelOptions options)
     : environment_(environment), energy_(energy), options_(options) {
   options_.speeds.validate(energy_.maxSpeedM_s());
+  checkAirspeedLimit(options_.wind, options_.speeds, energy_.maxSpeedM_s());
+  air_velocity_m_s_ = options_.wind.airVelocityM_s();
   if (!(options_.planning_soc > 0.0 && options_.planning_soc <= 1.0))
     throw ceilplan::InputError("planning SOC must lie in (0, 1], got " + formatNumber(options_.planning_soc));
   if (!(std::isfinite(options_.step_m) && options_.step_m >= 0.0))
@@ -142,7 +154,24 @@ Velocity FlightCostModel::velocityAt(const PointConditions& conditions, const Ei
   if (vertical > 0.0) along = std::min(along, speeds.climb_m_s / vertical);
   if (vertical < 0.0) along = std::min(along, speeds.descent_m_s / -vertical);
   // Guard the energy model's speed limit against rounding at the horizontal extreme.
-  return {along, std::min(along * horizontal, horizontal_limit), along * vertical};
+  Velocity velocity{along, std::min(along * horizontal, horizontal_limit), along * vertical, {}};
+  if (!options_.wind.calm())
+    velocity.wind = energy::relativeWind(
+        airVelocityAt(conditions),
+        horizontal > 0.0 ? Eigen::Vector2d(direction_m.head<2>() / horizontal) : Eigen::Vector2d::Zero());
+  return velocity;
+}
+
+Velocity FlightCostModel::hoverAt(const PointConditions& conditions) const {
+  Velocity velocity;
+  if (!options_.wind.calm()) velocity.wind = energy::relativeWind(airVelocityAt(conditions), Eigen::Vector2d::Zero());
+  return velocity;
+}
+
+Eigen::Vector2d FlightCostModel::airVelocityAt(const PointConditions& conditions) const {
+  // "Under overhead structure": where the speed rule sees a ceiling, in both modes alike.
+  const bool sheltered = nearCeiling(conditions);
+  return sheltered ? Eigen::Vector2d((1.0 - options_.wind.sheltered_fraction) * air_velocity_m_s_) : air_velocity_m_s_;
 }
 
 namespace {
@@ -152,6 +181,8 @@ energy::FlightCondition flightCondition(const PointConditions& conditions, const
   flight.speed_m_s = velocity.horizontal_m_s;
   flight.climb_m_s = velocity.climb_m_s;
   flight.soc = soc;
+  flight.headwind_m_s = velocity.wind.headwind_m_s;
+  flight.crosswind_m_s = velocity.wind.crosswind_m_s;
   return flight;
 }
 }  // namespace
@@ -196,9 +227,13 @@ double FlightCostModel::minCostPerMetre(const CostWeights& weights) const {
   const FlightSpeeds& speeds = options_.speeds;
   // Directions: a dense fan of elevation angles plus the corners where the horizontal limit and
   // the climb or descent limit bind together (the fastest directions, where the minimum sits).
+  // In wind the cost depends on the heading too: a coarser fan of elevations at every 5 degrees
+  // of heading, with a wider margin for what it misses.
+  const bool calm = options_.wind.calm();
+  const int fan = calm ? 3600 : 360;
+  const int headings = calm ? 1 : 72;
   std::vector<double> elevations;
-  constexpr int kFan = 3600;
-  for (int k = 0; k <= kFan; ++k) elevations.push_back(-M_PI / 2 + M_PI * k / kFan);
+  for (int k = 0; k <= fan; ++k) elevations.push_back(-M_PI / 2 + M_PI * k / fan);
   for (const double horizontal : {speeds.cruise_m_s, speeds.near_ceiling_m_s}) {
     elevations.push_back(std::atan2(speeds.climb_m_s, horizontal));
     elevations.push_back(-std::atan2(speeds.descent_m_s, horizontal));
@@ -206,15 +241,20 @@ double FlightCostModel::minCostPerMetre(const CostWeights& weights) const {
   double minimum = std::numeric_limits<double>::infinity();
   for (const double gap : {0.0, energy::kNoSurface}) {  // both sides of the speed rule
     best.nearest_ceiling_gap_m = gap;
-    for (const double elevation : elevations) {
-      const Eigen::Vector3d direction(std::cos(elevation), 0.0, std::sin(elevation));
-      const Velocity velocity = velocityAt(best, direction);
-      minimum =
-          std::min(minimum, costPerMetre(weights, currentA(best, velocity, options_.planning_soc), velocity.along_m_s));
+    for (int h = 0; h < headings; ++h) {
+      const double heading = 2.0 * M_PI * h / headings;
+      for (const double elevation : elevations) {
+        const Eigen::Vector3d direction(std::cos(elevation) * std::cos(heading),
+                                        std::cos(elevation) * std::sin(heading), std::sin(elevation));
+        const Velocity velocity = velocityAt(best, direction);
+        minimum = std::min(minimum,
+                           costPerMetre(weights, currentA(best, velocity, options_.planning_soc), velocity.along_m_s));
+      }
     }
   }
-  // Between fan directions the cost per metre is smooth; 0.5 % covers what the fan can miss.
-  return 0.995 * minimum;
+  // Between fan directions the cost per metre is smooth; 0.5 % (2 % for the wind's coarser fan)
+  // covers what the fan can miss.
+  return (calm ? 0.995 : 0.98) * minimum;
 }
 
 }  // namespace ceilplan::planner

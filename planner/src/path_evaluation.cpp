@@ -28,10 +28,11 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     PathSample sample;
     sample.position_m = position_m;
     conditions = model.exactConditionsAt(position_m);
-    if (!direction.isZero()) velocity = model.velocityAt(conditions, direction);
+    velocity = direction.isZero() ? model.hoverAt(conditions) : model.velocityAt(conditions, direction);
     if (velocity.along_m_s > max_speed_m_s) {
+      // Slower along the same track: the wind against it is the same.
       const double slower = max_speed_m_s / velocity.along_m_s;
-      velocity = {max_speed_m_s, velocity.horizontal_m_s * slower, velocity.climb_m_s * slower};
+      velocity = {max_speed_m_s, velocity.horizontal_m_s * slower, velocity.climb_m_s * slower, velocity.wind};
     }
     sample.speed_m_s = velocity.along_m_s;
     sample.ceiling_gap_m = conditions.nearest_ceiling_gap_m;

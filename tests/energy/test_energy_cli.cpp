@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 
 using ceilplan::testing::readWholeFile;
 using ceilplan::testing::runCeilplan;
@@ -174,4 +175,42 @@ TEST_F(CalibrateCommand, EchoesNoRawBytesFromABadFile) {
   EXPECT_NE(result.exit_code, 0);
   EXPECT_NE(result.err.find("'\\x1B]0;owned\\x07' is not a number"), std::string::npos) << result.err;
   EXPECT_EQ(result.err.find('\x1b'), std::string::npos) << "raw escape echoed";
+}
+
+namespace {
+
+// The lines `current` prints from "ceiling gap" on: the current and its parts, not the condition.
+std::string printedBreakdown(const std::string& arguments) {
+  const auto result = runCeilplan("current " + arguments);
+  EXPECT_EQ(result.exit_code, 0) << arguments << "\n" << result.err;
+  const std::size_t start = result.out.find("ceiling gap");
+  EXPECT_NE(start, std::string::npos) << result.out;
+  return start == std::string::npos ? result.out : result.out.substr(start);
+}
+
+}  // namespace
+
+// No ceiling and no ground gap: the proximity terms are off, so only the airspeed differs.
+TEST_F(CurrentCommand, AHeadwindPrintsTheCurrentOfFlyingThatMuchFasterInStillAir) {
+  for (const auto& [speed, headwind, sum] : {std::tuple{"3", "4", "7"}, std::tuple{"0", "5", "5"},
+                                             std::tuple{"6", "-2.5", "3.5"}, std::tuple{"0", "8", "8"}}) {
+    const std::string windy = printedBreakdown(std::string("--speed-m-s ") + speed + " --headwind-m-s " + headwind);
+    EXPECT_EQ(windy, printedBreakdown(std::string("--speed-m-s ") + sum))
+        << speed << " m/s into " << headwind << " m/s against " << sum << " m/s in still air";
+    EXPECT_NE(windy, printedBreakdown(std::string("--speed-m-s ") + speed)) << "the wind changed nothing";
+  }
+}
+
+TEST_F(CurrentCommand, ShowsTheHeadwindAndAirspeedOnlyWhenThereIsWind) {
+  const auto windy = runCeilplan("current --speed-m-s 2 --headwind-m-s 3");
+  EXPECT_NE(windy.out.find("headwind 3 m/s (airspeed 5 m/s)"), std::string::npos) << windy.out;
+  EXPECT_EQ(runCeilplan("current --speed-m-s 2").out.find("headwind"), std::string::npos);
+  const nlohmann::json report = currentJson("--speed-m-s 2 --headwind-m-s -1.5", "tailwind");
+  EXPECT_DOUBLE_EQ(report["airspeed_m_s"].get<double>(), 0.5) << report.dump();
+}
+
+TEST_F(CurrentCommand, RefusesAHeadwindThatIsNoNumberOrTakesTheAirspeedBeyondTheLimit) {
+  expectOneLineError("current --headwind-m-s nan", "--headwind-m-s");
+  expectOneLineError("current --headwind-m-s 1e9", "--headwind-m-s");
+  expectOneLineError("current --speed-m-s 10 --headwind-m-s 10", "airspeed 20 m/s");
 }

@@ -35,3 +35,17 @@ def test_a_map_that_is_not_a_regular_file_is_refused_without_blocking(tmp_path, 
     result = subprocess.run([sys.executable, "-c", script, str(path)], capture_output=True, text=True, timeout=60)
     assert result.returncode == 2, result.stderr
     assert says in result.stdout
+
+
+def test_a_missions_wind_reads_and_sets_as_the_files_key():
+    mission = ceilplan.Mission.load(os.path.join(os.environ["CEILPLAN_SOURCE_DIR"], "maps", "bridge.yaml"))
+    assert mission.wind == {"speed_m_s": 0.0, "from_deg": 0.0, "gust_m_s": 0.0, "sheltered_fraction": 0.0}
+    mission.wind = {"speed_m_s": 8, "from_deg": 90, "gust_m_s": 3}
+    assert mission.wind["speed_m_s"] == 8.0 and mission.wind["from_deg"] == 90.0 and mission.wind["gust_m_s"] == 3.0
+    with pytest.raises(ceilplan.InputError, match="unknown key 'gusts'"):
+        mission.wind = {"speed_m_s": 8, "from_deg": 90, "gusts": 3}
+    with pytest.raises(ceilplan.InputError, match="from_deg must be in"):
+        mission.wind = {"speed_m_s": 8, "from_deg": 360}
+    with pytest.raises(ceilplan.InputError, match="missing key 'from_deg'"):
+        mission.wind = {"speed_m_s": 8}
+    assert mission.wind["from_deg"] == 90.0  # a refused wind leaves the last one

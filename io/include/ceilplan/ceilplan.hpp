@@ -24,6 +24,7 @@
 
 #include "ceilplan/energy/energy_model.hpp"
 #include "ceilplan/energy/lipo_open_circuit_voltage.hpp"
+#include "ceilplan/energy/wind.hpp"
 
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"

@@ -9,6 +9,7 @@
 #include "ceilplan/energy/pack_electrics.hpp"
 #include "ceilplan/energy/rotary_wing_power.hpp"
 
+#include <cmath>
 #include <limits>
 
 namespace ceilplan::energy {
@@ -22,12 +23,21 @@ struct RotorCeiling {
   double coverage = 1.0;      ///< fraction of the rotor disc under the ceiling, 0..1
 };
 
-/// The flight state besides the ceiling: ground gap, speeds and state of charge.
+/// The flight state besides the ceiling: ground gap, speeds, wind and state of charge.
 struct FlightCondition {
   double ground_gap_m = kNoSurface;  ///< rotor plane to ground, >= 0
-  double speed_m_s = 0.0;            ///< horizontal, 0..max_speed_m_s
+  double speed_m_s = 0.0;            ///< horizontal ground speed, >= 0
   double climb_m_s = 0.0;            ///< vertical, positive up
   double soc = 0.65;                 ///< state of charge, 0..1
+  double headwind_m_s = 0.0;         ///< wind along the track, positive against the motion (energy/wind.hpp)
+  double crosswind_m_s = 0.0;        ///< wind across the track
+
+  /// What the forward-flight power sees: |ground velocity - wind|, 0..max_speed_m_s. With no
+  /// wind it is speed_m_s exactly.
+  double airspeedM_s() const {
+    const double along_m_s = speed_m_s + headwind_m_s;
+    return crosswind_m_s == 0.0 ? std::abs(along_m_s) : std::hypot(along_m_s, crosswind_m_s);
+  }
 };
 
 /// Powers are electrical, at the pack terminals; they add up to power_w.
@@ -51,7 +61,7 @@ struct CurrentBreakdown {
 
 /// Immutable once built: every evaluation is const, allocation-free and safe to call from
 /// many threads at once. Evaluations throw ceilplan::InputError on bad input (negative or
-/// NaN gap, coverage outside [0, 1], speed beyond the vehicle's limit, ...).
+/// NaN gap, coverage outside [0, 1], an airspeed beyond the vehicle's limit, ...).
 class EnergyModel {
  public:
   static constexpr int kMaxRotors = 16;  ///< the most rotors a vehicle may have
@@ -75,7 +85,7 @@ class EnergyModel {
   int rotorCount() const noexcept { return parameters_.airframe.rotor_count; }
   /// Rotor radius, m.
   double rotorRadiusM() const noexcept { return parameters_.airframe.rotor_radius_m; }
-  /// Fastest horizontal speed the model answers for.
+  /// Fastest horizontal airspeed the model answers for.
   double maxSpeedM_s() const noexcept { return parameters_.airframe.max_speed_m_s; }
   /// The ceiling effect's thrust ratio.
   const CeilingEffect& ceilingEffect() const noexcept { return ceiling_; }

@@ -5,6 +5,7 @@
 /// command line and Python override single fields of it, PlanningContext keeps it (options()),
 /// and planRoute and planTour read it there. docs/contributing.md, "Settings".
 
+#include "ceilplan/energy/wind.hpp"
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/unknown_space.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
@@ -28,6 +29,7 @@ struct PlanningOptions {
   std::uint32_t seed = 1;            ///< of every random choice (a tour's order, OMPL's); mission key `seed:`
   environment::EnvironmentOptions environment;  ///< how gaps and clearance are measured
   environment::UnknownSpace unknown;            ///< the map index's unknown-space policy; mission key `unknown:`
+  energy::Wind wind;                            ///< the air the mission flies in (calm: still air); mission key `wind:`
 
   /// Throws ceilplan::InputError naming the first bad field.
   void validate() const;

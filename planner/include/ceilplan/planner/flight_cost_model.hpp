@@ -7,6 +7,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/energy/wind.hpp"
 #include "ceilplan/environment/environment.hpp"
 
 #include <Eigen/Core>
@@ -39,6 +40,11 @@ struct FlightSpeeds {
   void validate(double max_speed_m_s) const;
 };
 
+/// Throws ceilplan::InputError when the wind's speed plus the fastest horizontal speed of `speeds`
+/// exceeds `max_speed_m_s`, the energy model's limit: a motion into the wind would ask it for an
+/// airspeed it does not answer for. Checked before planning (docs/energy.md, "Wind").
+void checkAirspeedLimit(const energy::Wind& wind, const FlightSpeeds& speeds, double max_speed_m_s);
+
 /// How a FlightCostModel predicts a motion's time and charge.
 struct CostModelOptions {
   FlightSpeeds speeds;  ///< the speed rules
@@ -56,6 +62,7 @@ struct CostModelOptions {
   /// standoff where it fits, the largest that fits where it does not (docs/planner.md, "Free mode").
   double standoff_m = 0.0;
   double standoff_weight = 100.0;  ///< metres of level cruise each metre of standoff shortfall costs
+  energy::Wind wind;               ///< the air the motions are flown in (calm: still air)
 };
 
 /// What the map says at one body position, as the energy model needs it.
@@ -73,11 +80,12 @@ struct PointConditions {
 /// nearest rotor-plane gap above. The one mapping from environment to energy model.
 PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const environment::SurfaceGaps& ground);
 
-/// The vehicle's velocity along a motion direction at a point.
+/// The vehicle's velocity along a motion direction at a point, and the wind it meets there.
 struct Velocity {
   double along_m_s = 0.0;       ///< along the path
-  double horizontal_m_s = 0.0;  ///< horizontal speed
+  double horizontal_m_s = 0.0;  ///< horizontal ground speed
   double climb_m_s = 0.0;       ///< positive up
+  energy::RelativeWind wind;    ///< the wind against the horizontal track (none in still air)
 };
 
 /// What a motion costs: length, time, charge and standoff shortfall.
@@ -145,6 +153,11 @@ class FlightCostModel {
   /// Velocity along unit `direction_m` at a point: as fast as the horizontal speed rule and the
   /// climb or descent rate both allow.
   Velocity velocityAt(const PointConditions& conditions, const Eigen::Vector3d& direction_m) const;
+  /// Hovering at a point: no ground speed, the local wind as headwind.
+  Velocity hoverAt(const PointConditions& conditions) const;
+  /// The air's horizontal velocity at a point, m/s: the wind, less its sheltered fraction where
+  /// the speed rule sees a ceiling (nearCeiling).
+  Eigen::Vector2d airVelocityAt(const PointConditions& conditions) const;
 
   /// Pack current at a point for a velocity and state of charge.
   double currentA(const PointConditions& conditions, const Velocity& velocity, double soc) const;
@@ -252,8 +265,9 @@ class FlightCostModel {
   double standoffShortfall_m(const Eigen::Vector3d& body_m) const;
 
   double near_ceiling_gap_m_;
-  double free_air_clearance_m_;  ///< beyond it from the body centre, no surface can affect a rotor
-  double airframe_radius_m_;     ///< the airframe's bounding sphere, which the standoff is kept from
+  double free_air_clearance_m_;       ///< beyond it from the body centre, no surface can affect a rotor
+  double airframe_radius_m_;          ///< the airframe's bounding sphere, which the standoff is kept from
+  Eigen::Vector2d air_velocity_m_s_;  ///< the wind in free air
 };
 
 template <typename ConditionsAt>
