@@ -44,7 +44,9 @@ class ViewpointSearch {
 
   // Every lattice point at `step_m` spacing within `reach_m` of `centre_m`. With `hug`, the top
   // admissible point of each lattice column is also tried as high as it stays admissible.
-  void scan(const Eigen::Vector3d& centre_m, double step_m, double reach_m, bool hug) {
+  // By value: the refining pass scans around best(), which the scan itself moves.
+  // NOLINTNEXTLINE(performance-unnecessary-value-param)
+  void scan(const Eigen::Vector3d centre_m, double step_m, double reach_m, bool hug) {
     const int n = static_cast<int>(std::ceil(reach_m / step_m));
     for (int k = -n; k <= n; ++k)
       for (int j = -n; j <= n; ++j)

@@ -95,8 +95,10 @@ TEST(ReportJson, ACurrentReportKeepsTheConditionAndEveryTermOfTheBreakdown) {
   flight.soc = 0.7;
   flight.speed_m_s = 2.0;
   const nlohmann::json json = currentReportJson("quad", 0.05, 0.8, flight, b);
-  EXPECT_EQ(json.size(), 6u + 1u + 11u);  // the condition, gap_m and the breakdown
+  EXPECT_EQ(json.size(), 8u + 1u + 11u);  // the condition with its wind, gap_m and the breakdown
   EXPECT_EQ(json["vehicle"], "quad");
+  EXPECT_EQ(json["headwind_m_s"].get<double>(), 0.0);
+  EXPECT_EQ(json["airspeed_m_s"].get<double>(), 2.0);  // still air: the ground speed
   EXPECT_EQ(json["soc"].get<double>(), 0.7);
   EXPECT_EQ(json["coverage"].get<double>(), 0.8);
   EXPECT_TRUE(json["ground_gap_m"].is_null());  // no ground

@@ -166,12 +166,12 @@ TourCosts lineTour(int targets) {
   for (int k = 1; k <= targets; ++k) tour.names.push_back("t" + std::to_string(k));
   const int places = targets + 1;
   tour.legs = PairTable<LegCost>(places);
-  tour.dwells.assign(places, Dwell{60.0, 10.0, std::nullopt});
+  tour.dwells.assign(places, Dwell{60.0, 10.0, std::nullopt, {}});
   for (int i = 0; i < places; ++i)
     for (int j = 0; j < places; ++j) {
       if (i == j) continue;
       const double metres = std::abs(i - j) * 2.0;
-      tour.legs(i, j) = {0.003 * metres, metres, 0.003 * metres * 3600 / metres, {}};
+      tour.legs(i, j) = {0.003 * metres, metres, 0.003 * metres * 3600 / metres, {}, {}};
     }
   return tour;
 }

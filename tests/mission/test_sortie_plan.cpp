@@ -26,7 +26,7 @@ TourCosts lineTour(const std::vector<double>& positions, double ah_per_m, double
   tour.names.push_back("home");
   for (std::size_t k = 1; k < n; ++k) tour.names.push_back("t" + std::to_string(k));
   tour.legs = PairTable<LegCost>(static_cast<int>(n));
-  tour.dwells.assign(n, Dwell{dwell_s, dwell_a, std::nullopt});
+  tour.dwells.assign(n, Dwell{dwell_s, dwell_a, std::nullopt, {}});
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j) {
       const double metres = std::fabs(x[j] - x[i]);
@@ -135,7 +135,7 @@ TEST(SortiePlan, DynamicProgrammeFindsTheLeastWearSplit) {
     std::vector<double> x(6);
     for (double& v : x) v = position(random);
     TourCosts tour = lineTour(x, 0.01, 0, 10);
-    for (std::size_t k = 1; k < tour.dwells.size(); ++k) tour.dwells[k] = {dwell(random), 12.0, std::nullopt};
+    for (std::size_t k = 1; k < tour.dwells.size(); ++k) tour.dwells[k] = {dwell(random), 12.0, std::nullopt, {}};
     for (const std::string name : {"woehler", "xu"}) {
       const SortiePlan plan = planSorties(tour, inOrder(6), kBattery, model(name));
       for (const Sortie& sortie : plan.sorties) EXPECT_GE(sortie.lowest_soc, 0.25 - 1e-12);
@@ -165,8 +165,8 @@ TEST(SortiePlan, ALoadProfileIsIntegratedAtTheSocTheSortieHasReached) {
     for (int to = 0; to < rising.legs.placeCount(); ++to)
       if (LegCost* leg = rising.legs.find(from, to); leg && leg->duration_s > 0)
         leg->load_profile = {{0, 10}, {leg->duration_s, 10}};
-  rising.dwells[1] = {120, 0, 10.0};
-  rising.dwells[2] = {120, 0, 10.0};
+  rising.dwells[1] = {120, 0, 10.0, {}};
+  rising.dwells[2] = {120, 0, 10.0, {}};
   const Sortie sortie = planSorties(rising, {1, 2}, kBattery, model("fec")).sorties[0];
   ASSERT_EQ(sortie.legs.size(), 3u);
   // home->t1 and t1->t2 are both 50 m; the second starts after a dwell, at a lower SOC.
@@ -210,7 +210,7 @@ TEST(SortiePlan, NamesTargetsNoSortieCanReach) {
   // Well-formed input asking for the impossible: infeasible (exit code 3), not bad input.
   // t2 dwells for 4 Ah on its own: beyond any single sortie.
   TourCosts tour = lineTour({5, 10, 15}, 0.01, 60, 10);
-  tour.dwells[2] = {1440, 10, std::nullopt};
+  tour.dwells[2] = {1440, 10, std::nullopt, {}};
   try {
     planSorties(tour, inOrder(3), kBattery);
     FAIL() << "expected an error";

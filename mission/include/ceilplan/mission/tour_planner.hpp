@@ -112,9 +112,13 @@ struct TourTimes {
   double record_s = 0.0;     ///< dense re-check, flight record, wear, duty
   double coverage_check_s = 0.0;  ///< the independent re-check of the photos flown
   int rounds = 0;                 ///< order-split-refine rounds
-  /// CPU time of every thread in the phases above (a loaded machine stretches their wall times):
-  /// what a phase costs, as benchmarks compare it.
-  double stops_cpu_s = 0.0, legs_cpu_s = 0.0, routing_cpu_s = 0.0, refining_cpu_s = 0.0, record_cpu_s = 0.0;
+  // CPU time of every thread in the phases above (a loaded machine stretches their wall times):
+  // what a phase costs, as benchmarks compare it.
+  double stops_cpu_s = 0.0;     ///< CPU time of stops_s, every thread
+  double legs_cpu_s = 0.0;      ///< CPU time of legs_s, every thread
+  double routing_cpu_s = 0.0;   ///< CPU time of routing_s, every thread
+  double refining_cpu_s = 0.0;  ///< CPU time of refining_s, every thread
+  double record_cpu_s = 0.0;    ///< CPU time of record_s, every thread
 };
 
 /// The founding paper's month for a tour: a report, never a reason to abort the plan.
