@@ -217,7 +217,7 @@ TEST(LandingConfidenceBridge, EverySortieLandsAboveTheReserveWithTheAskedProbabi
 // gust term is small, and the sampled check, which flies each drawn wind speed, holds the
 // linearisation to account up to 1 m/s of gusts and shows where it no longer holds
 // (docs/models.md, "Landing confidence").
-TEST(LandingConfidenceBridge, InGustsEverySortieStillLandsAboveTheReserveWithTheAskedProbabilityAndSamplingAgrees) {
+TEST(LandingConfidenceBridge, InGustsTheLinearisedOddsMeetTheConfidenceAndSamplingAgreesUpToOneMetrePerSecond) {
   Mission mission = calibratedBridge();
   mission.planning.wind.speed_m_s = 8.0;
   mission.planning.wind.from_deg = 90.0;
