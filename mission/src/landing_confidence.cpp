@@ -13,15 +13,61 @@ namespace ceilplan::mission {
 namespace {
 
 constexpr double kSecondsPerHour = 3600.0;
+// The central difference's step in the wind's speed: small beside any gust, large beside rounding.
+constexpr double kWindStep_m_s = 0.01;
 
-double current(const energy::EnergyModel& model, const planner::PathSample& sample, double climb_m_s) {
+energy::FlightCondition flightCondition(const planner::PathSample& sample, double climb_m_s,
+                                        const energy::RelativeWind& wind) {
   energy::FlightCondition flight;
   flight.ground_gap_m = sample.ground_gap_m;
   flight.speed_m_s = sample.speed_m_s;
   flight.climb_m_s = climb_m_s;
   flight.soc = std::clamp(sample.soc, 0.0, 1.0);
+  flight.headwind_m_s = wind.headwind_m_s;
+  flight.crosswind_m_s = wind.crosswind_m_s;
+  return flight;
+}
+
+double current(const energy::EnergyModel& model, const planner::PathSample& sample,
+               const energy::FlightCondition& flight) {
   // The sample keeps the nearest rotor's ceiling gap only: taken over every disc.
   return model.currentA(sample.ceiling_gap_m, std::isfinite(sample.ceiling_gap_m) ? 1.0 : 0.0, flight);
+}
+
+double current(const energy::EnergyModel& model, const planner::PathSample& sample, double climb_m_s,
+               const energy::RelativeWind& wind) {
+  return current(model, sample, flightCondition(sample, climb_m_s, wind));
+}
+
+// The air's velocity at a sample per m/s of the wind's speed: its direction, less any shelter.
+Eigen::Vector2d airPerWindSpeed(const SortieWind& wind, const planner::PathSample& sample) {
+  energy::Wind unit = wind.wind;
+  unit.speed_m_s = 1.0;
+  return (wind.share ? wind.share(sample) : 1.0) * unit.airVelocityM_s();
+}
+
+// The horizontal unit track from sample k to the next; zero when hovering or moving vertically.
+Eigen::Vector2d trackAfter(const std::vector<planner::PathSample>& samples, std::size_t k) {
+  if (k + 1 >= samples.size()) return Eigen::Vector2d::Zero();
+  const Eigen::Vector2d step_m = (samples[k + 1].position_m - samples[k].position_m).head<2>();
+  return step_m.norm() > 1e-9 ? Eigen::Vector2d(step_m.normalized()) : Eigen::Vector2d::Zero();
+}
+
+// Where a step flies and the wind it meets there, for the mean wind or a deviation of its speed.
+struct StepWind {
+  Eigen::Vector2d air_per_m_s = Eigen::Vector2d::Zero();
+  Eigen::Vector2d track = Eigen::Vector2d::Zero();
+
+  energy::RelativeWind at(double speed_m_s) const { return energy::relativeWind(speed_m_s * air_per_m_s, track); }
+};
+
+// d(current)/d(wind speed) at a step, A per m/s, by central differences about the mean wind.
+double currentPerWindSpeed(const energy::EnergyModel& model, const planner::PathSample& sample, double climb_m_s,
+                           const StepWind& step, double speed_m_s) {
+  if (step.air_per_m_s.isZero()) return 0.0;
+  return (current(model, sample, climb_m_s, step.at(speed_m_s + kWindStep_m_s)) -
+          current(model, sample, climb_m_s, step.at(speed_m_s - kWindStep_m_s))) /
+         (2.0 * kWindStep_m_s);
 }
 
 // Vertical speed from sample k to the next, 0 where no time passes.
@@ -29,6 +75,19 @@ double climbAfter(const std::vector<planner::PathSample>& samples, std::size_t k
   if (k + 1 >= samples.size()) return 0.0;
   const double dt_s = samples[k + 1].t_s - samples[k].t_s;
   return dt_s > 0.0 ? (samples[k + 1].position_m.z() - samples[k].position_m.z()) / dt_s : 0.0;
+}
+
+// `flight` with its airspeed brought down to the model's limit if a gust took it past (the
+// model answers no further); its direction against the track kept.
+energy::FlightCondition withinAirspeed(const energy::EnergyModel& model, energy::FlightCondition flight) {
+  const double airspeed_m_s = flight.airspeedM_s();
+  // A hair under the limit, so that rounding in airspeedM_s() does not take it past again.
+  const double limit_m_s = model.maxSpeedM_s() * (1.0 - 1e-9);
+  if (airspeed_m_s <= limit_m_s) return flight;
+  const double scale = limit_m_s / airspeed_m_s;
+  flight.headwind_m_s = (flight.speed_m_s + flight.headwind_m_s) * scale - flight.speed_m_s;
+  flight.crosswind_m_s *= scale;
+  return flight;
 }
 
 double stepS(const std::vector<planner::PathSample>& samples, std::size_t k) {
@@ -43,23 +102,25 @@ ChargeSensitivity& ChargeSensitivity::operator+=(const ChargeSensitivity& other)
   if (per_parameter_ah.empty()) per_parameter_ah.assign(other.per_parameter_ah.size(), 0.0);
   for (std::size_t j = 0; j < other.per_parameter_ah.size(); ++j) per_parameter_ah[j] += other.per_parameter_ah[j];
   flight_s += other.flight_s;
+  per_wind_speed_ah += other.per_wind_speed_ah;
   return *this;
 }
 
-double chargeVarianceAh2(const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit) {
+double chargeVarianceAh2(const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit, double gust_m_s) {
   double variance_ah2 = 0.0;
   const std::size_t p = std::min(sensitivity.per_parameter_ah.size(), fit.covariance.size());
   for (std::size_t a = 0; a < p; ++a)
     for (std::size_t b = 0; b < p; ++b)
       variance_ah2 += sensitivity.per_parameter_ah[a] * fit.covariance[a][b] * sensitivity.per_parameter_ah[b];
   const double residual_ah = fit.residual_std_a * sensitivity.flight_s / kSecondsPerHour;
-  return std::max(0.0, variance_ah2) + residual_ah * residual_ah;
+  const double gust_ah = sensitivity.per_wind_speed_ah * gust_m_s;
+  return std::max(0.0, variance_ah2) + residual_ah * residual_ah + gust_ah * gust_ah;
 }
 
 LandingOdds landingOdds(double landing_soc, const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit,
-                        double usable_capacity_ah, double reserve_soc) {
+                        double usable_capacity_ah, double reserve_soc, double gust_m_s) {
   LandingOdds odds;
-  odds.soc_std = std::sqrt(chargeVarianceAh2(sensitivity, fit)) / usable_capacity_ah;
+  odds.soc_std = std::sqrt(chargeVarianceAh2(sensitivity, fit, gust_m_s)) / usable_capacity_ah;
   if (odds.soc_std <= 0.0) {
     odds.p_land_above_reserve = landing_soc >= reserve_soc ? 1.0 : 0.0;
     odds.soc_p01 = landing_soc;
@@ -72,14 +133,15 @@ LandingOdds landingOdds(double landing_soc, const ChargeSensitivity& sensitivity
 }
 
 double effectiveReserveSoc(double reserve_soc, double confidence, const ChargeSensitivity& sensitivity,
-                           const energy::FitUncertainty& fit, double usable_capacity_ah) {
-  return reserve_soc +
-         standardNormalQuantile(confidence) * std::sqrt(chargeVarianceAh2(sensitivity, fit)) / usable_capacity_ah;
+                           const energy::FitUncertainty& fit, double usable_capacity_ah, double gust_m_s) {
+  return reserve_soc + standardNormalQuantile(confidence) * std::sqrt(chargeVarianceAh2(sensitivity, fit, gust_m_s)) /
+                           usable_capacity_ah;
 }
 
 std::vector<double> relativeCurrentSensitivity(const energy::EnergyModel& model, const planner::PathSample& sample,
-                                               double climb_m_s, const energy::FitUncertainty& fit) {
-  const double base_a = current(model, sample, climb_m_s);
+                                               double climb_m_s, const energy::FitUncertainty& fit,
+                                               const energy::RelativeWind& wind) {
+  const double base_a = current(model, sample, climb_m_s, wind);
   std::vector<double> relative(fit.parameters.size(), 0.0);
   if (base_a <= 0.0) return relative;
   for (std::size_t j = 0; j < fit.parameters.size(); ++j) {
@@ -87,34 +149,63 @@ std::vector<double> relativeCurrentSensitivity(const energy::EnergyModel& model,
     const double step = energy::kCovarianceRelativeStep * std::fabs(value);
     const energy::EnergyModel up(energy::withParameter(model.parameters(), fit.parameters[j], value + step));
     const energy::EnergyModel down(energy::withParameter(model.parameters(), fit.parameters[j], value - step));
-    relative[j] = (current(up, sample, climb_m_s) - current(down, sample, climb_m_s)) / (2.0 * step) / base_a;
+    relative[j] =
+        (current(up, sample, climb_m_s, wind) - current(down, sample, climb_m_s, wind)) / (2.0 * step) / base_a;
   }
   return relative;
 }
 
 ChargeSensitivity pathChargeSensitivity(const energy::EnergyModel& model,
                                         const std::vector<planner::PathSample>& samples,
-                                        const energy::FitUncertainty& fit) {
+                                        const energy::FitUncertainty& fit, const SortieWind& wind) {
   ChargeSensitivity sensitivity;
   sensitivity.per_parameter_ah.assign(fit.parameters.size(), 0.0);
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const double dt_s = stepS(samples, k);
     if (dt_s <= 0.0) continue;
-    const std::vector<double> relative = relativeCurrentSensitivity(model, samples[k], climbAfter(samples, k), fit);
+    const double climb_m_s = climbAfter(samples, k);
+    const StepWind step{airPerWindSpeed(wind, samples[k]), trackAfter(samples, k)};
+    const std::vector<double> relative =
+        relativeCurrentSensitivity(model, samples[k], climb_m_s, fit, step.at(wind.wind.speed_m_s));
     for (std::size_t j = 0; j < relative.size(); ++j)
       sensitivity.per_parameter_ah[j] += samples[k].current_a * relative[j] * dt_s / kSecondsPerHour;
+    // Relative to the model's own current, as the parameters' are, so it scales the recorded one.
+    const double base_a = current(model, samples[k], climb_m_s, step.at(wind.wind.speed_m_s));
+    if (base_a > 0.0)
+      sensitivity.per_wind_speed_ah += samples[k].current_a *
+                                       currentPerWindSpeed(model, samples[k], climb_m_s, step, wind.wind.speed_m_s) /
+                                       base_a * dt_s / kSecondsPerHour;
     sensitivity.flight_s += dt_s;
   }
   return sensitivity;
 }
 
 ChargeSensitivity steadyChargeSensitivity(const energy::EnergyModel& model, const planner::PathSample& condition,
-                                          double charge_ah, double duration_s, const energy::FitUncertainty& fit) {
+                                          double charge_ah, double duration_s, const energy::FitUncertainty& fit,
+                                          const SortieWind& wind) {
   ChargeSensitivity sensitivity;
-  sensitivity.per_parameter_ah = relativeCurrentSensitivity(model, condition, 0.0, fit);
+  const StepWind hover{airPerWindSpeed(wind, condition), Eigen::Vector2d::Zero()};
+  const energy::RelativeWind mean = hover.at(wind.wind.speed_m_s);
+  sensitivity.per_parameter_ah = relativeCurrentSensitivity(model, condition, 0.0, fit, mean);
   for (double& s : sensitivity.per_parameter_ah) s *= charge_ah;
   sensitivity.flight_s = duration_s;
+  // The current's relative change, as the parameters' is, so it refers to charge_ah.
+  const double base_a = current(model, condition, 0.0, mean);
+  if (base_a > 0.0)
+    sensitivity.per_wind_speed_ah =
+        currentPerWindSpeed(model, condition, 0.0, hover, wind.wind.speed_m_s) / base_a * charge_ah;
   return sensitivity;
+}
+
+SortieWind SortieWind::of(const planner::FlightCostModel& model) {
+  SortieWind wind;
+  wind.wind = model.options().wind;
+  wind.share = [&model](const planner::PathSample& sample) {
+    planner::PointConditions conditions;
+    conditions.nearest_ceiling_gap_m = sample.ceiling_gap_m;
+    return model.windShareAt(conditions);
+  };
+  return wind;
 }
 
 double SampledLanding::standardError() const {
@@ -123,7 +214,7 @@ double SampledLanding::standardError() const {
 
 SampledLanding sampleLanding(const energy::EnergyModel& model, const std::vector<planner::PathSample>& samples,
                              double landing_soc, double usable_capacity_ah, double reserve_soc,
-                             const energy::FitUncertainty& fit, int draws, std::uint32_t seed) {
+                             const energy::FitUncertainty& fit, int draws, std::uint32_t seed, const SortieWind& wind) {
   if (draws < 1) throw InputError("a sampled landing check needs at least one draw");
   SampledLanding result;
   result.draws = draws;
@@ -140,11 +231,14 @@ SampledLanding sampleLanding(const energy::EnergyModel& model, const std::vector
     root = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
   }
   std::vector<double> base_a(samples.size()), climb_m_s(samples.size()), step_s(samples.size());
+  std::vector<StepWind> step_wind(samples.size());
+  const double mean_wind_m_s = wind.wind.speed_m_s;
   double flight_s = 0.0;
   for (std::size_t k = 0; k < samples.size(); ++k) {
     climb_m_s[k] = climbAfter(samples, k);
     step_s[k] = stepS(samples, k);
-    base_a[k] = step_s[k] > 0.0 ? current(model, samples[k], climb_m_s[k]) : 0.0;
+    step_wind[k] = {airPerWindSpeed(wind, samples[k]), trackAfter(samples, k)};
+    base_a[k] = step_s[k] > 0.0 ? current(model, samples[k], climb_m_s[k], step_wind[k].at(mean_wind_m_s)) : 0.0;
     flight_s += step_s[k];
   }
   std::mt19937 random(seed);
@@ -157,6 +251,8 @@ SampledLanding sampleLanding(const energy::EnergyModel& model, const std::vector
     Eigen::VectorXd z(static_cast<Eigen::Index>(p));
     for (Eigen::Index j = 0; j < z.size(); ++j) z[j] = normal(random);
     const double bias_a = fit.residual_std_a * normal(random);
+    // Drawn only with gusts, so that without them a seed's draws are what they always were.
+    const double gust_m_s = wind.wind.gust_m_s > 0.0 ? wind.wind.gust_m_s * normal(random) : 0.0;
     const Eigen::VectorXd delta = root * z;
     energy::EnergyParameters drawn = model.parameters();
     for (std::size_t j = 0; j < p; ++j)
@@ -168,7 +264,12 @@ SampledLanding sampleLanding(const energy::EnergyModel& model, const std::vector
       const energy::EnergyModel perturbed(drawn);
       for (std::size_t k = 0; k < samples.size(); ++k)
         if (step_s[k] > 0.0 && base_a[k] > 0.0)
-          extra_ah += samples[k].current_a * (current(perturbed, samples[k], climb_m_s[k]) / base_a[k] - 1.0) *
+          extra_ah += samples[k].current_a *
+                      (current(perturbed, samples[k],
+                               withinAirspeed(perturbed, flightCondition(samples[k], climb_m_s[k],
+                                                                         step_wind[k].at(mean_wind_m_s + gust_m_s)))) /
+                           base_a[k] -
+                       1.0) *
                       step_s[k] / kSecondsPerHour;
     } catch (const InputError&) {
       // A draw outside the model's valid range (e.g. efficiency above 1) is drawn again.

@@ -97,7 +97,7 @@ class SortieBuilder {
     history.push_back({sortie.flight_s + sortie.recharge_s, battery_.start_soc, -battery_.pack.charge_current_a});
     if (legs_.uncertainty)
       sortie.landing = landingOdds(sortie.lowest_soc, sortie.sensitivity, *legs_.uncertainty,
-                                   battery_.pack.usableCapacityAh(), battery_.reserve_soc);
+                                   battery_.pack.usableCapacityAh(), battery_.reserve_soc, legs_.gust_m_s);
     return sortie;
   }
 
@@ -173,6 +173,7 @@ std::string splitReason(const TourCosts& legs, const BatterySpec& battery, const
 void TourCosts::validate() const {
   const std::size_t n = names.size();
   if (n < 1) throw ceilplan::InputError("a tour needs home at index 0");
+  requireFiniteNonNegative(gust_m_s, "gust (m/s)");
   if (static_cast<std::size_t>(legs.placeCount()) != n || dwells.size() != n)
     throw ceilplan::InputError("a tour of " + std::to_string(n) + " places needs legs between " + std::to_string(n) +
                                " places and " + std::to_string(n) + " dwells");
@@ -269,7 +270,7 @@ bool landsAboveReserve(const TourCosts& legs, const BatterySpec& battery, double
   if (!aboveReserve(battery, landing_soc)) return false;
   if (!battery.reserve_confidence) return true;
   return landing_soc >= effectiveReserveSoc(battery.reserve_soc, *battery.reserve_confidence, sensitivity,
-                                            *legs.uncertainty, battery.pack.usableCapacityAh()) -
+                                            *legs.uncertainty, battery.pack.usableCapacityAh(), legs.gust_m_s) -
                             1e-12;
 }
 

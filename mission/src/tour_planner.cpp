@@ -243,10 +243,11 @@ LegCost legCost(const planner::PathEvaluation& evaluation, const PlanningContext
   for (const planner::PathSample& s : evaluation.samples) cost.load_profile.push_back({s.t_s, s.propulsion_power_w});
   if (const auto& fit = context.vehicle().calibration) {
     const double speed_m_s = evaluation.duration_s > 0.0 ? evaluation.length_m / evaluation.duration_s : 0.0;
-    cost.sensitivity = evaluation.samples.size() >= 2
-                           ? pathChargeSensitivity(context.energy(), evaluation.samples, *fit)
-                           : steadyChargeSensitivity(context.energy(), freeAirCondition(context, speed_m_s),
-                                                     evaluation.charge_ah, evaluation.duration_s, *fit);
+    cost.sensitivity =
+        evaluation.samples.size() >= 2
+            ? pathChargeSensitivity(context.energy(), evaluation.samples, *fit, SortieWind::of(context.fullModel()))
+            : steadyChargeSensitivity(context.energy(), freeAirCondition(context, speed_m_s), evaluation.charge_ah,
+                                      evaluation.duration_s, *fit, SortieWind::of(context.fullModel()));
   }
   return cost;
 }
@@ -311,9 +312,10 @@ void checkLandings(TourResult& tour, const PlanningContext& context, const TourO
   if (!fit || options.landing_draws <= 0) return;
   for (std::size_t s = 0; s < tour.plan.sorties.size(); ++s) {
     Sortie& sortie = tour.plan.sorties[s];
-    sortie.sampled_landing = sampleLanding(context.energy(), tour.record.sorties[s].samples, sortie.lowest_soc,
-                                           context.battery().pack.usableCapacityAh(), context.battery().reserve_soc,
-                                           *fit, options.landing_draws, context.options().seed);
+    sortie.sampled_landing =
+        sampleLanding(context.energy(), tour.record.sorties[s].samples, sortie.lowest_soc,
+                      context.battery().pack.usableCapacityAh(), context.battery().reserve_soc, *fit,
+                      options.landing_draws, context.options().seed, SortieWind::of(context.fullModel()));
   }
 }
 
@@ -520,6 +522,7 @@ TourCosts tourCosts(const TourResult& tour, const PlanningContext& context) {
   costs.names = tour.names;
   costs.current_at_soc = packCurrent(context.energy());
   costs.uncertainty = context.vehicle().calibration;
+  costs.gust_m_s = context.options().wind.gust_m_s;
   const int places = static_cast<int>(tour.places_m.size());
   costs.legs = PairTable<LegCost>(places);
   costs.dwells.assign(places, {});
@@ -527,8 +530,9 @@ TourCosts tourCosts(const TourResult& tour, const PlanningContext& context) {
     const TourStop& stop = tour.stops[k - 1];
     costs.dwells[k] = {stop.target.dwell_s, stop.viewpoint.dwell_current_a, stop.hover.propulsion_power_w, {}};
     if (costs.uncertainty)
-      costs.dwells[k].sensitivity = steadyChargeSensitivity(
-          context.energy(), stop.hover, stop.viewpoint.dwell_charge_ah, stop.target.dwell_s, *costs.uncertainty);
+      costs.dwells[k].sensitivity =
+          steadyChargeSensitivity(context.energy(), stop.hover, stop.viewpoint.dwell_charge_ah, stop.target.dwell_s,
+                                  *costs.uncertainty, SortieWind::of(context.fullModel()));
   }
   return costs;
 }

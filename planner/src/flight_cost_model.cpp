@@ -169,9 +169,12 @@ Velocity FlightCostModel::hoverAt(const PointConditions& conditions) const {
 }
 
 Eigen::Vector2d FlightCostModel::airVelocityAt(const PointConditions& conditions) const {
+  return windShareAt(conditions) * air_velocity_m_s_;
+}
+
+double FlightCostModel::windShareAt(const PointConditions& conditions) const {
   // "Under overhead structure": where the speed rule sees a ceiling, in both modes alike.
-  const bool sheltered = nearCeiling(conditions);
-  return sheltered ? Eigen::Vector2d((1.0 - options_.wind.sheltered_fraction) * air_velocity_m_s_) : air_velocity_m_s_;
+  return nearCeiling(conditions) ? 1.0 - options_.wind.sheltered_fraction : 1.0;
 }
 
 namespace {

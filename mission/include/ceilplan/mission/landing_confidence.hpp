@@ -1,23 +1,40 @@
 #pragma once
 /// @file
 /// How sure a sortie is to land above the reserve, given how well `calibrate` pinned the energy
-/// model down (docs/models.md, "Landing confidence"): the landing SOC's variance linearised in
-/// the fitted parameters plus the fit's residual current, and a Monte Carlo check of it.
+/// model down and how gusty the wind is (docs/models.md, "Landing confidence"): the landing SOC's
+/// variance linearised in the fitted parameters and the wind's speed, plus the fit's residual
+/// current, and a Monte Carlo check of it.
 
 #include "ceilplan/energy/calibration.hpp"
 #include "ceilplan/energy/energy_model.hpp"
+#include "ceilplan/energy/wind.hpp"
+#include "ceilplan/planner/flight_cost_model.hpp"
 #include "ceilplan/planner/path_evaluation.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace ceilplan::mission {
 
-/// How a stretch of flight's charge moves with the fitted parameters.
+/// The mission's wind as the landing confidence meets it along a sortie's samples.
+struct SortieWind {
+  energy::Wind wind;  ///< the mean wind (calm: still air) and gust_m_s, the gusts' standard deviation
+  /// The share of the wind's speed met at a sample, in [0, 1] (less under shelter); empty: 1 everywhere.
+  std::function<double(const planner::PathSample&)> share;
+
+  /// `model`'s wind, sheltered where its speed rule sees a ceiling (FlightCostModel::windShareAt);
+  /// it refers to `model`, which must outlive it.
+  static SortieWind of(const planner::FlightCostModel& model);
+};
+
+/// How a stretch of flight's charge moves with the fitted parameters and the wind's speed.
 struct ChargeSensitivity {
   /// dQ / d(theta_j), Ah per unit of parameter j, in energy::FitUncertainty::parameters' order.
   std::vector<double> per_parameter_ah;
   double flight_s = 0.0;  ///< the time it covers: the residual term scales with it
+  /// dQ / dw, Ah per m/s of the wind's speed along its direction (the gust term scales with it).
+  double per_wind_speed_ah = 0.0;
 
   /// Adds another stretch (the sensitivities of consecutive stretches add).
   ChargeSensitivity& operator+=(const ChargeSensitivity& other);
@@ -25,9 +42,10 @@ struct ChargeSensitivity {
 
 /// The variance (Ah^2) of a stretch's charge: s^T C s from the parameters' covariance C, plus
 /// (residual_std_a x flight_s / 3600)^2, the fit's residual current taken as a bias that lasts
-/// the whole sortie (it does not average out: docs/models.md). A gust term, a function of the
-/// charge's sensitivity to airspeed, adds here.
-double chargeVarianceAh2(const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit);
+/// the whole sortie (it does not average out: docs/models.md), plus (per_wind_speed_ah x
+/// gust_m_s)^2, a gust taken as a deviation of the wind's speed that lasts the whole sortie too.
+double chargeVarianceAh2(const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit,
+                         double gust_m_s = 0.0);
 
 /// The odds of one sortie's landing, the SOC taken as normal about the planned landing SOC.
 struct LandingOdds {
@@ -37,35 +55,40 @@ struct LandingOdds {
 };
 
 /// The odds of landing at `landing_soc` (the plan's) with `sensitivity`, against `reserve_soc`;
-/// `usable_capacity_ah` turns charge into SOC.
+/// `usable_capacity_ah` turns charge into SOC; `gust_m_s` as in chargeVarianceAh2.
 LandingOdds landingOdds(double landing_soc, const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit,
-                        double usable_capacity_ah, double reserve_soc);
+                        double usable_capacity_ah, double reserve_soc, double gust_m_s = 0.0);
 
 /// The SOC a sortie must land at, as planned, to land above `reserve_soc` with probability
 /// `confidence`: reserve + z(confidence) x the landing SOC's standard deviation. The split's
 /// feasibility test (sortie_plan.hpp) compares the planned landing SOC with it.
 double effectiveReserveSoc(double reserve_soc, double confidence, const ChargeSensitivity& sensitivity,
-                           const energy::FitUncertainty& fit, double usable_capacity_ah);
+                           const energy::FitUncertainty& fit, double usable_capacity_ah, double gust_m_s = 0.0);
 
 /// d(current)/d(theta_j) / current at one sample's flight condition (ceiling gap over the whole
-/// disc when there is one, ground gap, speed, `climb_m_s`, SOC), by central differences of the
-/// parameters' own relative step energy::kCovarianceRelativeStep.
+/// disc when there is one, ground gap, speed, `climb_m_s`, SOC, the relative `wind` there), by
+/// central differences of the parameters' own relative step energy::kCovarianceRelativeStep.
 std::vector<double> relativeCurrentSensitivity(const energy::EnergyModel& model, const planner::PathSample& sample,
-                                               double climb_m_s, const energy::FitUncertainty& fit);
+                                               double climb_m_s, const energy::FitUncertainty& fit,
+                                               const energy::RelativeWind& wind = {});
 
-/// The sensitivity of a path's charge: each step's current times its relative sensitivity.
+/// The sensitivity of a path's charge: each step's current times its relative sensitivity, and
+/// each step's d(current)/d(wind speed) (central differences, the step's own track and shelter)
+/// times its duration.
 ChargeSensitivity pathChargeSensitivity(const energy::EnergyModel& model,
                                         const std::vector<planner::PathSample>& samples,
-                                        const energy::FitUncertainty& fit);
+                                        const energy::FitUncertainty& fit, const SortieWind& wind = {});
 
 /// The sensitivity of `charge_ah` drawn over `duration_s` at one condition (a hover, or a leg
-/// whose samples were dropped, taken at its mean).
+/// whose samples were dropped, taken at its mean), hovering in `wind` (its whole speed as headwind).
 ChargeSensitivity steadyChargeSensitivity(const energy::EnergyModel& model, const planner::PathSample& condition,
-                                          double charge_ah, double duration_s, const energy::FitUncertainty& fit);
+                                          double charge_ah, double duration_s, const energy::FitUncertainty& fit,
+                                          const SortieWind& wind = {});
 
-/// A Monte Carlo check of landingOdds: `draws` parameter sets from N(fitted, covariance) and
-/// residual biases from N(0, residual_std_a), seeded with `seed`, each flown over the recorded
-/// samples with the model's own (nonlinear) response rather than the linearisation.
+/// A Monte Carlo check of landingOdds: `draws` parameter sets from N(fitted, covariance),
+/// residual biases from N(0, residual_std_a) and, with gusts, wind-speed deviations from
+/// N(0, gust_m_s), seeded with `seed`, each flown over the recorded samples with the model's own
+/// (nonlinear) response rather than the linearisation.
 struct SampledLanding {
   int draws = 0;                      ///< parameter sets drawn
   std::uint32_t seed = 0;             ///< the draws' seed
@@ -76,9 +99,12 @@ struct SampledLanding {
 };
 
 /// Flies `samples` (a sortie's record: t_s, current_a, the flight condition) `draws` times.
-/// `landing_soc` is the planned landing SOC, which the draws perturb.
+/// `landing_soc` is the planned landing SOC, which the draws perturb. Without gusts no wind
+/// deviation is drawn: a seed draws the same parameters and biases as before gusts counted. A gust that would take a
+/// step's airspeed past the model's limit flies that step at the limit (the model answers no further).
 SampledLanding sampleLanding(const energy::EnergyModel& model, const std::vector<planner::PathSample>& samples,
                              double landing_soc, double usable_capacity_ah, double reserve_soc,
-                             const energy::FitUncertainty& fit, int draws, std::uint32_t seed);
+                             const energy::FitUncertainty& fit, int draws, std::uint32_t seed,
+                             const SortieWind& wind = {});
 
 }  // namespace ceilplan::mission

@@ -158,6 +158,9 @@ class FlightCostModel {
   /// The air's horizontal velocity at a point, m/s: the wind, less its sheltered fraction where
   /// the speed rule sees a ceiling (nearCeiling).
   Eigen::Vector2d airVelocityAt(const PointConditions& conditions) const;
+  /// The share of the wind's speed met at a point, in [0, 1]: 1 less the sheltered fraction where
+  /// the speed rule sees a ceiling (nearCeiling), 1 elsewhere.
+  double windShareAt(const PointConditions& conditions) const;
 
   /// Pack current at a point for a velocity and state of charge.
   double currentA(const PointConditions& conditions, const Velocity& velocity, double soc) const;
