@@ -96,6 +96,37 @@ double stepS(const std::vector<planner::PathSample>& samples, std::size_t k) {
 
 double standardNormalQuantile(double p) { return boost::math::quantile(boost::math::normal(), p); }
 
+// The model with each fitted parameter stepped up and down by its central difference's step:
+// built once for a whole path, not again at every sample.
+class ParameterSteps {
+ public:
+  ParameterSteps(const energy::EnergyModel& model, const energy::FitUncertainty& fit) {
+    for (const energy::FreeParameter parameter : fit.parameters) {
+      const double value = energy::parameterValue(model.parameters(), parameter);
+      const double step = energy::kCovarianceRelativeStep * std::fabs(value);
+      steps_.push_back(step);
+      up_.emplace_back(energy::withParameter(model.parameters(), parameter, value + step));
+      down_.emplace_back(energy::withParameter(model.parameters(), parameter, value - step));
+    }
+  }
+
+  // d(current)/d(theta_j) / current at one sample, for each fitted parameter j.
+  std::vector<double> relativeSensitivity(const energy::EnergyModel& model, const planner::PathSample& sample,
+                                          double climb_m_s, const energy::RelativeWind& wind) const {
+    const double base_a = current(model, sample, climb_m_s, wind);
+    std::vector<double> relative(steps_.size(), 0.0);
+    if (base_a <= 0.0) return relative;
+    for (std::size_t j = 0; j < steps_.size(); ++j)
+      relative[j] = (current(up_[j], sample, climb_m_s, wind) - current(down_[j], sample, climb_m_s, wind)) /
+                    (2.0 * steps_[j]) / base_a;
+    return relative;
+  }
+
+ private:
+  std::vector<double> steps_;
+  std::vector<energy::EnergyModel> up_, down_;
+};
+
 }  // namespace
 
 ChargeSensitivity& ChargeSensitivity::operator+=(const ChargeSensitivity& other) {
@@ -141,18 +172,7 @@ double effectiveReserveSoc(double reserve_soc, double confidence, const ChargeSe
 std::vector<double> relativeCurrentSensitivity(const energy::EnergyModel& model, const planner::PathSample& sample,
                                                double climb_m_s, const energy::FitUncertainty& fit,
                                                const energy::RelativeWind& wind) {
-  const double base_a = current(model, sample, climb_m_s, wind);
-  std::vector<double> relative(fit.parameters.size(), 0.0);
-  if (base_a <= 0.0) return relative;
-  for (std::size_t j = 0; j < fit.parameters.size(); ++j) {
-    const double value = energy::parameterValue(model.parameters(), fit.parameters[j]);
-    const double step = energy::kCovarianceRelativeStep * std::fabs(value);
-    const energy::EnergyModel up(energy::withParameter(model.parameters(), fit.parameters[j], value + step));
-    const energy::EnergyModel down(energy::withParameter(model.parameters(), fit.parameters[j], value - step));
-    relative[j] =
-        (current(up, sample, climb_m_s, wind) - current(down, sample, climb_m_s, wind)) / (2.0 * step) / base_a;
-  }
-  return relative;
+  return ParameterSteps(model, fit).relativeSensitivity(model, sample, climb_m_s, wind);
 }
 
 ChargeSensitivity pathChargeSensitivity(const energy::EnergyModel& model,
@@ -160,13 +180,14 @@ ChargeSensitivity pathChargeSensitivity(const energy::EnergyModel& model,
                                         const energy::FitUncertainty& fit, const SortieWind& wind) {
   ChargeSensitivity sensitivity;
   sensitivity.per_parameter_ah.assign(fit.parameters.size(), 0.0);
+  const ParameterSteps steps(model, fit);
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const double dt_s = stepS(samples, k);
     if (dt_s <= 0.0) continue;
     const double climb_m_s = climbAfter(samples, k);
     const StepWind step{airPerWindSpeed(wind, samples[k]), trackAfter(samples, k)};
     const std::vector<double> relative =
-        relativeCurrentSensitivity(model, samples[k], climb_m_s, fit, step.at(wind.wind.speed_m_s));
+        steps.relativeSensitivity(model, samples[k], climb_m_s, step.at(wind.wind.speed_m_s));
     for (std::size_t j = 0; j < relative.size(); ++j)
       sensitivity.per_parameter_ah[j] += samples[k].current_a * relative[j] * dt_s / kSecondsPerHour;
     // Relative to the model's own current, as the parameters' are, so it scales the recorded one.
