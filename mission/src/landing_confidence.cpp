@@ -219,7 +219,10 @@ ChargeSensitivity& ChargeSensitivity::add(const ChargeSensitivity& other, double
   return *this;
 }
 
-double gustPointSigma(int i) { return 0.5 * (i - (kGustPoints - 1) / 2); }
+// The mean wind's gust point, in the middle.
+constexpr int kMeanGustPoint = (kGustPoints - 1) / 2;
+
+double gustPointSigma(int i) { return 0.5 * (i - kMeanGustPoint); }
 
 double chargeVarianceAh2(const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit) {
   double variance_ah2 = 0.0;

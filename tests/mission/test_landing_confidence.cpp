@@ -105,8 +105,8 @@ TEST(LandingConfidence, ASortieShortOfTheConfidenceIsNotFlown) {
 
 // The charge a stretch draws in each gust point's wind, `per_sigma_ah` per standard deviation.
 std::vector<double> linearGustCharges(double per_sigma_ah) {
-  std::vector<double> charges;
-  for (int i = 0; i < kGustPoints; ++i) charges.push_back(per_sigma_ah * gustPointSigma(i));
+  std::vector<double> charges(kGustPoints);
+  for (int i = 0; i < kGustPoints; ++i) charges[static_cast<std::size_t>(i)] = per_sigma_ah * gustPointSigma(i);
   return charges;
 }
 
