@@ -616,15 +616,21 @@ std::string tourFilesLine(const std::filesystem::path& dir, const mission::Missi
 namespace {
 
 // "lands above the reserve with probability 0.9993 (landing SOC 1st percentile 31.2 %; sampled:
-// 0.999 +- 0.001 over 1000 draws, seed 1)".
+// 0.999 +- 0.001 over 1000 draws, seed 1)", and a warning when the sampled odds are lower than
+// the computed ones beyond 3 standard errors and the 0.002 the tests allow for curvature.
 std::string landingLine(const mission::Sortie& s) {
   std::string line = "lands above the reserve with probability " + formatNumber(s.landing->p_land_above_reserve, 4) +
                      " (landing SOC 1st percentile " + formatFixed(100.0 * s.landing->soc_p01, 1) + " %";
-  if (s.sampled_landing)
-    line += "; sampled: " + formatNumber(s.sampled_landing->p_land_above_reserve, 4) + " +- " +
-            formatNumber(s.sampled_landing->standardError(), 2) + " over " + std::to_string(s.sampled_landing->draws) +
-            " draws, seed " + std::to_string(s.sampled_landing->seed);
-  return line + ")";
+  if (!s.sampled_landing) return line + ")";
+  const mission::SampledLanding& sampled = *s.sampled_landing;
+  line += "; sampled: " + formatNumber(sampled.p_land_above_reserve, 4) + " +- " +
+          formatNumber(sampled.standardError(), 2) + " over " + std::to_string(sampled.draws) + " draws, seed " +
+          std::to_string(sampled.seed) + ")";
+  if (sampled.p_land_above_reserve + 3.0 * sampled.standardError() + 0.002 < s.landing->p_land_above_reserve)
+    line +=
+        "; warning: the sampled odds are below the computed ones beyond their sampling error, so trust the "
+        "sampled figure and plan with a larger reserve (docs/models.md, \"Landing confidence\")";
+  return line;
 }
 
 }  // namespace

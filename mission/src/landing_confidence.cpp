@@ -13,8 +13,6 @@ namespace ceilplan::mission {
 namespace {
 
 constexpr double kSecondsPerHour = 3600.0;
-// The central difference's step in the wind's speed: small beside any gust, large beside rounding.
-constexpr double kWindStep_m_s = 0.01;
 
 energy::FlightCondition flightCondition(const planner::PathSample& sample, double climb_m_s,
                                         const energy::RelativeWind& wind) {
@@ -61,15 +59,6 @@ struct StepWind {
   energy::RelativeWind at(double speed_m_s) const { return energy::relativeWind(speed_m_s * air_per_m_s, track); }
 };
 
-// d(current)/d(wind speed) at a step, A per m/s, by central differences about the mean wind.
-double currentPerWindSpeed(const energy::EnergyModel& model, const planner::PathSample& sample, double climb_m_s,
-                           const StepWind& step, double speed_m_s) {
-  if (step.air_per_m_s.isZero()) return 0.0;
-  return (current(model, sample, climb_m_s, step.at(speed_m_s + kWindStep_m_s)) -
-          current(model, sample, climb_m_s, step.at(speed_m_s - kWindStep_m_s))) /
-         (2.0 * kWindStep_m_s);
-}
-
 // Vertical speed from sample k to the next, 0 where no time passes.
 double climbAfter(const std::vector<planner::PathSample>& samples, std::size_t k) {
   if (k + 1 >= samples.size()) return 0.0;
@@ -95,6 +84,95 @@ double stepS(const std::vector<planner::PathSample>& samples, std::size_t k) {
 }
 
 double standardNormalQuantile(double p) { return boost::math::quantile(boost::math::normal(), p); }
+
+// The current at a step with the wind's speed at `speed_m_s`, kept within the model's airspeed.
+double currentInWind(const energy::EnergyModel& model, const planner::PathSample& sample, double climb_m_s,
+                     const StepWind& step, double speed_m_s) {
+  return current(model, sample, withinAirspeed(model, flightCondition(sample, climb_m_s, step.at(speed_m_s))));
+}
+
+// Adds to `gust_charge_ah` what `charge_ah`, drawn at `base_a` in the mean wind, draws beyond it in
+// each gust: the model's relative change of current, so that it scales a recorded current too.
+void addGustCharges(const energy::EnergyModel& model, const planner::PathSample& sample, double climb_m_s,
+                    const StepWind& step, const energy::Wind& wind, double base_a, double charge_ah,
+                    std::vector<double>& gust_charge_ah) {
+  if (step.air_per_m_s.isZero() || base_a <= 0.0) return;
+  for (int i = 0; i < kGustPoints; ++i)
+    if (gustPointSigma(i) != 0.0)
+      gust_charge_ah[static_cast<std::size_t>(i)] +=
+          charge_ah *
+          (currentInWind(model, sample, climb_m_s, step, wind.speed_m_s + gustPointSigma(i) * wind.gust_m_s) / base_a -
+           1.0);
+}
+
+// The gust's standard normal x over +-4 in 320 steps, with trapezoid weights of its density
+// that sum to 1: where landingProbability integrates.
+struct GustGrid {
+  static constexpr int kSteps = 320;
+  std::vector<double> x, weight;
+
+  GustGrid() {
+    const double span = -gustPointSigma(0);
+    double sum = 0.0;
+    for (int k = 0; k <= kSteps; ++k) {
+      x.push_back(-span + 2.0 * span * k / kSteps);
+      weight.push_back(std::exp(-0.5 * x.back() * x.back()) * (k == 0 || k == kSteps ? 0.5 : 1.0));
+      sum += weight.back();
+    }
+    for (double& w : weight) w /= sum;
+  }
+
+  static const GustGrid& instance() {
+    static const GustGrid grid;
+    return grid;
+  }
+};
+
+// The gust's charge at standard normal x, linear between the gust points.
+double gustChargeAh(const std::vector<double>& gust_charge_ah, double x) {
+  const double step = gustPointSigma(1) - gustPointSigma(0);
+  const double at = std::clamp((x - gustPointSigma(0)) / step, 0.0, static_cast<double>(kGustPoints - 1));
+  const auto i = std::min(static_cast<std::size_t>(at), static_cast<std::size_t>(kGustPoints - 2));
+  const double f = at - static_cast<double>(i);
+  return (1.0 - f) * gust_charge_ah[i] + f * gust_charge_ah[i + 1];
+}
+
+// The landing SOC's shift below the planned one at each point of the gust grid.
+std::vector<double> gustSocShifts(const ChargeSensitivity& sensitivity, double usable_capacity_ah) {
+  const GustGrid& grid = GustGrid::instance();
+  std::vector<double> shift(grid.x.size());
+  for (std::size_t k = 0; k < shift.size(); ++k)
+    shift[k] = gustChargeAh(sensitivity.gust_charge_ah, grid.x[k]) / usable_capacity_ah;
+  return shift;
+}
+
+// P(landing SOC >= reserve): normal with `soc_std` about landing_soc less each shift, mixed.
+double mixedProbability(double landing_soc, double soc_std, const std::vector<double>& shifts, double reserve_soc) {
+  const GustGrid& grid = GustGrid::instance();
+  double p = 0.0;
+  for (std::size_t k = 0; k < shifts.size(); ++k) {
+    const double margin = landing_soc - shifts[k] - reserve_soc;
+    p += grid.weight[k] *
+         (soc_std > 0.0 ? 0.5 * std::erfc(-margin / (soc_std * std::sqrt(2.0))) : (margin >= 0.0 ? 1.0 : 0.0));
+  }
+  return std::min(p, 1.0);
+}
+
+// The x where a decreasing `f` crosses `target` within [low, high], by bisection.
+template <typename F>
+double bisect(F f, double target, double low, double high) {
+  for (int k = 0; k < 100 && high - low > 1e-12; ++k) {
+    const double mid = 0.5 * (low + high);
+    (f(mid) >= target ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
+}
+
+// A SOC interval that holds every landing the mixture can give, with 10 standard deviations spare.
+std::pair<double, double> landingRange(double landing_soc, double soc_std, const std::vector<double>& shifts) {
+  const auto [least, most] = std::minmax_element(shifts.begin(), shifts.end());
+  return {landing_soc - *most - 10.0 * soc_std - 1e-9, landing_soc - *least + 10.0 * soc_std + 1e-9};
+}
 
 // The model with each fitted parameter stepped up and down by its central difference's step:
 // built once for a whole path, not again at every sample.
@@ -129,29 +207,62 @@ class ParameterSteps {
 
 }  // namespace
 
-ChargeSensitivity& ChargeSensitivity::operator+=(const ChargeSensitivity& other) {
+ChargeSensitivity& ChargeSensitivity::add(const ChargeSensitivity& other, double factor) {
   if (per_parameter_ah.empty()) per_parameter_ah.assign(other.per_parameter_ah.size(), 0.0);
-  for (std::size_t j = 0; j < other.per_parameter_ah.size(); ++j) per_parameter_ah[j] += other.per_parameter_ah[j];
+  for (std::size_t j = 0; j < other.per_parameter_ah.size(); ++j)
+    per_parameter_ah[j] += factor * other.per_parameter_ah[j];
   flight_s += other.flight_s;
-  per_wind_speed_ah += other.per_wind_speed_ah;
+  if (!other.gust_charge_ah.empty()) {
+    if (gust_charge_ah.empty()) gust_charge_ah.assign(other.gust_charge_ah.size(), 0.0);
+    for (std::size_t i = 0; i < other.gust_charge_ah.size(); ++i) gust_charge_ah[i] += factor * other.gust_charge_ah[i];
+  }
   return *this;
 }
 
-double chargeVarianceAh2(const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit, double gust_m_s) {
+// The mean wind's gust point, in the middle.
+constexpr int kMeanGustPoint = (kGustPoints - 1) / 2;
+
+double gustPointSigma(int i) { return 0.5 * (i - kMeanGustPoint); }
+
+double chargeVarianceAh2(const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit) {
   double variance_ah2 = 0.0;
   const std::size_t p = std::min(sensitivity.per_parameter_ah.size(), fit.covariance.size());
   for (std::size_t a = 0; a < p; ++a)
     for (std::size_t b = 0; b < p; ++b)
       variance_ah2 += sensitivity.per_parameter_ah[a] * fit.covariance[a][b] * sensitivity.per_parameter_ah[b];
   const double residual_ah = fit.residual_std_a * sensitivity.flight_s / kSecondsPerHour;
-  const double gust_ah = sensitivity.per_wind_speed_ah * gust_m_s;
-  return std::max(0.0, variance_ah2) + residual_ah * residual_ah + gust_ah * gust_ah;
+  return std::max(0.0, variance_ah2) + residual_ah * residual_ah;
+}
+
+double landingProbability(double landing_soc, const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit,
+                          double usable_capacity_ah, double reserve_soc) {
+  const double soc_std = std::sqrt(chargeVarianceAh2(sensitivity, fit)) / usable_capacity_ah;
+  if (!sensitivity.gust_charge_ah.empty())
+    return mixedProbability(landing_soc, soc_std, gustSocShifts(sensitivity, usable_capacity_ah), reserve_soc);
+  if (soc_std <= 0.0) return landing_soc >= reserve_soc ? 1.0 : 0.0;
+  return boost::math::cdf(boost::math::complement(boost::math::normal(landing_soc, soc_std), reserve_soc));
 }
 
 LandingOdds landingOdds(double landing_soc, const ChargeSensitivity& sensitivity, const energy::FitUncertainty& fit,
-                        double usable_capacity_ah, double reserve_soc, double gust_m_s) {
+                        double usable_capacity_ah, double reserve_soc) {
   LandingOdds odds;
-  odds.soc_std = std::sqrt(chargeVarianceAh2(sensitivity, fit, gust_m_s)) / usable_capacity_ah;
+  odds.soc_std = std::sqrt(chargeVarianceAh2(sensitivity, fit)) / usable_capacity_ah;
+  if (!sensitivity.gust_charge_ah.empty()) {
+    const std::vector<double> shifts = gustSocShifts(sensitivity, usable_capacity_ah);
+    const GustGrid& grid = GustGrid::instance();
+    double mean = 0.0, square = 0.0;
+    for (std::size_t k = 0; k < shifts.size(); ++k) {
+      mean += grid.weight[k] * shifts[k];
+      square += grid.weight[k] * shifts[k] * shifts[k];
+    }
+    const double normal_std = odds.soc_std;
+    odds.soc_std = std::sqrt(normal_std * normal_std + std::max(0.0, square - mean * mean));
+    odds.p_land_above_reserve = mixedProbability(landing_soc, normal_std, shifts, reserve_soc);
+    const auto [low, high] = landingRange(landing_soc, normal_std, shifts);
+    odds.soc_p01 =
+        bisect([&](double soc) { return mixedProbability(landing_soc, normal_std, shifts, soc); }, 0.99, low, high);
+    return odds;
+  }
   if (odds.soc_std <= 0.0) {
     odds.p_land_above_reserve = landing_soc >= reserve_soc ? 1.0 : 0.0;
     odds.soc_p01 = landing_soc;
@@ -164,9 +275,21 @@ LandingOdds landingOdds(double landing_soc, const ChargeSensitivity& sensitivity
 }
 
 double effectiveReserveSoc(double reserve_soc, double confidence, const ChargeSensitivity& sensitivity,
-                           const energy::FitUncertainty& fit, double usable_capacity_ah, double gust_m_s) {
-  return reserve_soc + standardNormalQuantile(confidence) * std::sqrt(chargeVarianceAh2(sensitivity, fit, gust_m_s)) /
-                           usable_capacity_ah;
+                           const energy::FitUncertainty& fit, double usable_capacity_ah) {
+  const double soc_std = std::sqrt(chargeVarianceAh2(sensitivity, fit)) / usable_capacity_ah;
+  if (sensitivity.gust_charge_ah.empty()) return reserve_soc + standardNormalQuantile(confidence) * soc_std;
+  // The mixture's odds of landing above the reserve rise with the planned landing SOC.
+  const std::vector<double> shifts = gustSocShifts(sensitivity, usable_capacity_ah);
+  const auto [least, most] = std::minmax_element(shifts.begin(), shifts.end());
+  return bisect([&](double planned) { return -mixedProbability(planned, soc_std, shifts, reserve_soc); }, -confidence,
+                reserve_soc + *least - 10.0 * soc_std - 1e-9, reserve_soc + *most + 10.0 * soc_std + 1e-9);
+}
+
+bool meetsConfidence(double landing_soc, double confidence, const ChargeSensitivity& sensitivity,
+                     const energy::FitUncertainty& fit, double usable_capacity_ah, double reserve_soc) {
+  if (sensitivity.gust_charge_ah.empty())
+    return landing_soc >= effectiveReserveSoc(reserve_soc, confidence, sensitivity, fit, usable_capacity_ah) - 1e-12;
+  return landingProbability(landing_soc, sensitivity, fit, usable_capacity_ah, reserve_soc) >= confidence - 1e-12;
 }
 
 std::vector<double> relativeCurrentSensitivity(const energy::EnergyModel& model, const planner::PathSample& sample,
@@ -180,6 +303,7 @@ ChargeSensitivity pathChargeSensitivity(const energy::EnergyModel& model,
                                         const energy::FitUncertainty& fit, const SortieWind& wind) {
   ChargeSensitivity sensitivity;
   sensitivity.per_parameter_ah.assign(fit.parameters.size(), 0.0);
+  if (wind.wind.gust_m_s > 0.0) sensitivity.gust_charge_ah.assign(kGustPoints, 0.0);
   const ParameterSteps steps(model, fit);
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const double dt_s = stepS(samples, k);
@@ -190,12 +314,10 @@ ChargeSensitivity pathChargeSensitivity(const energy::EnergyModel& model,
         steps.relativeSensitivity(model, samples[k], climb_m_s, step.at(wind.wind.speed_m_s));
     for (std::size_t j = 0; j < relative.size(); ++j)
       sensitivity.per_parameter_ah[j] += samples[k].current_a * relative[j] * dt_s / kSecondsPerHour;
-    // Relative to the model's own current, as the parameters' are, so it scales the recorded one.
-    const double base_a = current(model, samples[k], climb_m_s, step.at(wind.wind.speed_m_s));
-    if (base_a > 0.0)
-      sensitivity.per_wind_speed_ah += samples[k].current_a *
-                                       currentPerWindSpeed(model, samples[k], climb_m_s, step, wind.wind.speed_m_s) /
-                                       base_a * dt_s / kSecondsPerHour;
+    if (!sensitivity.gust_charge_ah.empty())
+      addGustCharges(model, samples[k], climb_m_s, step, wind.wind,
+                     current(model, samples[k], climb_m_s, step.at(wind.wind.speed_m_s)),
+                     samples[k].current_a * dt_s / kSecondsPerHour, sensitivity.gust_charge_ah);
     sensitivity.flight_s += dt_s;
   }
   return sensitivity;
@@ -210,11 +332,11 @@ ChargeSensitivity steadyChargeSensitivity(const energy::EnergyModel& model, cons
   sensitivity.per_parameter_ah = relativeCurrentSensitivity(model, condition, 0.0, fit, mean);
   for (double& s : sensitivity.per_parameter_ah) s *= charge_ah;
   sensitivity.flight_s = duration_s;
-  // The current's relative change, as the parameters' is, so it refers to charge_ah.
-  const double base_a = current(model, condition, 0.0, mean);
-  if (base_a > 0.0)
-    sensitivity.per_wind_speed_ah =
-        currentPerWindSpeed(model, condition, 0.0, hover, wind.wind.speed_m_s) / base_a * charge_ah;
+  if (wind.wind.gust_m_s > 0.0) {
+    sensitivity.gust_charge_ah.assign(kGustPoints, 0.0);
+    addGustCharges(model, condition, 0.0, hover, wind.wind, current(model, condition, 0.0, mean), charge_ah,
+                   sensitivity.gust_charge_ah);
+  }
   return sensitivity;
 }
 

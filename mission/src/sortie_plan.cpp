@@ -42,26 +42,36 @@ class SortieBuilder {
   SocIntegrator takeoff() const { return SocIntegrator(battery_.pack, battery_.start_soc, legs_.current_at_soc); }
 
   // Flies the leg from `from` to `to`, and the dwell at a target; `history` (when given) gains a
-  // point per sample, each carrying the current drawn from it on.
-  void flyLeg(SocIntegrator& flight, int from, int to, std::vector<SocSample>* history = nullptr) const {
+  // point per sample, each carrying the current drawn from it on; `sensitivity` (when given, with
+  // the tour's uncertainty) gains the leg's or the dwell's.
+  void flyLeg(SocIntegrator& flight, int from, int to, std::vector<SocSample>* history = nullptr,
+              ChargeSensitivity* sensitivity = nullptr) const {
     const LegCost* found = legs_.legs.find(from, to);
     if (!found)
       throw ceilplan::InputError("the tour has no leg from '" + legs_.names[from] + "' to '" + legs_.names[to] +
                                  "' for a sortie to fly");
+    const double before_ah = flight.chargeAh();
     if (found->load_profile.size() >= 2) {
       flyProfile(flight, found->load_profile, recorder(flight, history));
     } else {
       constant(flight, found->mean_current_a, found->duration_s, history);
     }
+    addSensitivity(sensitivity, found->sensitivity, flight.chargeAh() - before_ah, found->charge_ah);
   }
-  void dwellAt(SocIntegrator& flight, int target, std::vector<SocSample>* history = nullptr) const {
+  void dwellAt(SocIntegrator& flight, int target, std::vector<SocSample>* history = nullptr,
+               ChargeSensitivity* sensitivity = nullptr) const {
     const Dwell& dwell = legs_.dwells[target];
     if (dwell.duration_s <= 0.0) return;
+    const double before_ah = flight.chargeAh();
     if (dwell.load) {
       hover(flight, *dwell.load, dwell.duration_s, recorder(flight, history));
     } else {
       constant(flight, dwell.current_a, dwell.duration_s, history);
     }
+    const double start_a =
+        dwell.load && legs_.current_at_soc ? legs_.current_at_soc(*dwell.load, battery_.start_soc) : dwell.current_a;
+    addSensitivity(sensitivity, dwell.sensitivity, flight.chargeAh() - before_ah,
+                   start_a * dwell.duration_s / kSecondsPerHour);
   }
 
   // The sortie flying order[first..last] (inclusive).
@@ -74,15 +84,13 @@ class SortieBuilder {
     int at = 0;
     auto fly = [&](int to) {
       const double charge0_ah = flight.chargeAh(), t0_s = flight.time_s();
-      flyLeg(flight, at, to, &history);
-      if (legs_.uncertainty) sortie.sensitivity += legs_.legs.find(at, to)->sensitivity;
+      flyLeg(flight, at, to, &history, &sortie.sensitivity);
       sortie.legs.push_back({at, to, flight.chargeAh() - charge0_ah, flight.time_s() - t0_s});
       at = to;
     };
     for (int target : sortie.targets) {
       fly(target);
-      dwellAt(flight, target, &history);
-      if (legs_.uncertainty) sortie.sensitivity += legs_.dwells[target].sensitivity;
+      dwellAt(flight, target, &history, &sortie.sensitivity);
     }
     fly(0);
     const double used_ah = flight.chargeAh();
@@ -97,13 +105,9 @@ class SortieBuilder {
     history.push_back({sortie.flight_s + sortie.recharge_s, battery_.start_soc, -battery_.pack.charge_current_a});
     if (legs_.uncertainty)
       sortie.landing = landingOdds(sortie.lowest_soc, sortie.sensitivity, *legs_.uncertainty,
-                                   battery_.pack.usableCapacityAh(), battery_.reserve_soc, legs_.gust_m_s);
+                                   battery_.pack.usableCapacityAh(), battery_.reserve_soc);
     return sortie;
   }
-
-  // The sensitivity of flying from `from` to `to`, and of the dwell at a target.
-  const ChargeSensitivity& legSensitivity(int from, int to) const { return legs_.legs.find(from, to)->sensitivity; }
-  const ChargeSensitivity& dwellSensitivity(int target) const { return legs_.dwells[target].sensitivity; }
 
   double rechargeS(double used_ah) const { return used_ah / battery_.pack.charge_current_a * kSecondsPerHour; }
 
@@ -120,6 +124,13 @@ class SortieBuilder {
     if (history) history->back().current_a = current_a;
     flight.advance(duration_s, current_a);
     if (history) history->push_back({flight.time_s(), flight.soc(), 0.0});
+  }
+
+  // The sensitivities are those of the charge drawn at the start SOC; lower in the sortie the
+  // same power draws more current, and every term with it (landing_confidence.hpp).
+  void addSensitivity(ChargeSensitivity* sum, const ChargeSensitivity& part, double flown_ah,
+                      double start_soc_ah) const {
+    if (sum && legs_.uncertainty) sum->add(part, start_soc_ah > 0.0 ? flown_ah / start_soc_ah : 1.0);
   }
 
   const TourCosts& legs_;
@@ -168,12 +179,21 @@ std::string splitReason(const TourCosts& legs, const BatterySpec& battery, const
          prototype.name() + ", for " + transit + " of extra transit";
 }
 
+// Gust charges, where there are any, at every gust point and finite (landing_confidence.hpp).
+void requireGustCharges(const ChargeSensitivity& sensitivity, const std::string& what) {
+  const std::vector<double>& gusts = sensitivity.gust_charge_ah;
+  if (!gusts.empty() && gusts.size() != static_cast<std::size_t>(kGustPoints))
+    throw ceilplan::InputError(what + " has " + std::to_string(gusts.size()) + " gust charges, not 0 or " +
+                               std::to_string(kGustPoints));
+  if (!std::all_of(gusts.begin(), gusts.end(), [](double q) { return std::isfinite(q); }))
+    throw ceilplan::InputError(what + " gust charges must be finite");
+}
+
 }  // namespace
 
 void TourCosts::validate() const {
   const std::size_t n = names.size();
   if (n < 1) throw ceilplan::InputError("a tour needs home at index 0");
-  requireFiniteNonNegative(gust_m_s, "gust (m/s)");
   if (static_cast<std::size_t>(legs.placeCount()) != n || dwells.size() != n)
     throw ceilplan::InputError("a tour of " + std::to_string(n) + " places needs legs between " + std::to_string(n) +
                                " places and " + std::to_string(n) + " dwells");
@@ -187,6 +207,7 @@ void TourCosts::validate() const {
       requireFiniteNonNegative(leg.charge_ah, what + " charge (Ah)");
       requireFiniteNonNegative(leg.duration_s, what + " duration (s)");
       requireFiniteNonNegative(leg.mean_current_a, what + " mean current (A)");
+      requireGustCharges(leg.sensitivity, what);
       const auto& profile = leg.load_profile;
       for (std::size_t k = 0; k < profile.size(); ++k) {
         if (!std::isfinite(profile[k].load)) throw ceilplan::InputError(what + " profile load must be finite");
@@ -199,6 +220,7 @@ void TourCosts::validate() const {
       requireFiniteNonNegative(dwells[i].current_a, "dwell current (A) at '" + names[i] + "'");
       if (dwells[i].load && !std::isfinite(*dwells[i].load))
         throw ceilplan::InputError("dwell load at '" + names[i] + "' must be finite");
+      requireGustCharges(dwells[i].sensitivity, "dwell at '" + names[i] + "'");
     }
   }
 }
@@ -269,9 +291,8 @@ bool landsAboveReserve(const TourCosts& legs, const BatterySpec& battery, double
                        const ChargeSensitivity& sensitivity) {
   if (!aboveReserve(battery, landing_soc)) return false;
   if (!battery.reserve_confidence) return true;
-  return landing_soc >= effectiveReserveSoc(battery.reserve_soc, *battery.reserve_confidence, sensitivity,
-                                            *legs.uncertainty, battery.pack.usableCapacityAh(), legs.gust_m_s) -
-                            1e-12;
+  return meetsConfidence(landing_soc, *battery.reserve_confidence, sensitivity, *legs.uncertainty,
+                         battery.pack.usableCapacityAh(), battery.reserve_soc);
 }
 
 bool landsAboveReserve(const TourCosts& legs, const BatterySpec& battery, const Sortie& sortie) {
@@ -341,19 +362,14 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
       int at = 0;
       for (int e = b + 1; e <= stretches; ++e) {
         for (int p = starts[e - 1]; p < starts[e]; ++p) {
-          builder.flyLeg(flight, at, order[p]);
-          builder.dwellAt(flight, order[p]);
-          if (legs.uncertainty) {
-            sensitivity += builder.legSensitivity(at, order[p]);
-            sensitivity += builder.dwellSensitivity(order[p]);
-          }
+          builder.flyLeg(flight, at, order[p], nullptr, &sensitivity);
+          builder.dwellAt(flight, order[p], nullptr, &sensitivity);
           at = order[p];
         }
         if (!above(flight.lowestSoc())) break;
         SocIntegrator home = flight;
-        builder.flyLeg(home, at, 0);
         ChargeSensitivity home_sensitivity = sensitivity;
-        if (legs.uncertainty) home_sensitivity += builder.legSensitivity(at, 0);
+        builder.flyLeg(home, at, 0, nullptr, &home_sensitivity);
         if (!landsAboveReserve(legs, battery, home.lowestSoc(), home_sensitivity)) continue;
         if (std::isfinite(best[b].wear))
           offer(best[e], best[b], turningPointWear(*prototype, battery, home, builder.rechargeS(home.chargeAh()), soh),

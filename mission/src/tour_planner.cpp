@@ -522,17 +522,22 @@ TourCosts tourCosts(const TourResult& tour, const PlanningContext& context) {
   costs.names = tour.names;
   costs.current_at_soc = packCurrent(context.energy());
   costs.uncertainty = context.vehicle().calibration;
-  costs.gust_m_s = context.options().wind.gust_m_s;
   const int places = static_cast<int>(tour.places_m.size());
   costs.legs = PairTable<LegCost>(places);
   costs.dwells.assign(places, {});
   for (int k = 1; k < places; ++k) {
     const TourStop& stop = tour.stops[k - 1];
     costs.dwells[k] = {stop.target.dwell_s, stop.viewpoint.dwell_current_a, stop.hover.propulsion_power_w, {}};
-    if (costs.uncertainty)
-      costs.dwells[k].sensitivity =
-          steadyChargeSensitivity(context.energy(), stop.hover, stop.viewpoint.dwell_charge_ah, stop.target.dwell_s,
-                                  *costs.uncertainty, SortieWind::of(context.fullModel()));
+    if (costs.uncertainty) {
+      // At the start SOC, as the legs are flown, and in the mean wind, as the split flies the
+      // hover's power: the stop's hover keeps its power, not an SOC, and the viewpoint's dwell
+      // charge is still air's.
+      planner::PathSample hover = stop.hover;
+      hover.soc = context.battery().start_soc;
+      const double charge_ah = costs.current_at_soc(hover.propulsion_power_w, hover.soc) * stop.target.dwell_s / 3600.0;
+      costs.dwells[k].sensitivity = steadyChargeSensitivity(context.energy(), hover, charge_ah, stop.target.dwell_s,
+                                                            *costs.uncertainty, SortieWind::of(context.fullModel()));
+    }
   }
   return costs;
 }

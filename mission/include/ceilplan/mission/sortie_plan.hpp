@@ -52,9 +52,6 @@ struct TourCosts {
   /// The calibration's uncertainty the sensitivities refer to: with BatterySpec::reserve_confidence,
   /// a sortie must land above the reserve with that probability (landing_confidence.hpp).
   std::optional<energy::FitUncertainty> uncertainty;
-  /// The wind's gusts, m/s (energy::Wind::gust_m_s): with the uncertainty, the landing SOC's variance
-  /// gains the sensitivities' per_wind_speed_ah x gust_m_s (chargeVarianceAh2).
-  double gust_m_s = 0.0;
 
   /// Targets, home left out.
   int targetCount() const { return static_cast<int>(names.size()) - 1; }
