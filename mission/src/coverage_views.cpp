@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -25,6 +26,7 @@ constexpr int kRepairViewsPerElement = 4;      // probes kept per element the la
 constexpr double kClearanceTolerance_m = 0.1;  // free mode: "largest clearance" within this
 constexpr double kOpenShare = 0.95;            // a straight view seeing this share of its covered part is in the open
 constexpr double kPatternLevelShare = 0.5;     // patterns at distance levels this share of the farthest and beyond
+constexpr double kObstacleSlackShare = 0.25;   // a lane may stop this share of a covered part short of an obstacle
 
 // Elements bucketed on a uniform grid, for "which elements lie in this box".
 class ElementIndex {
@@ -162,6 +164,13 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> tangents(const Eigen::Vector3d& norm
   return {t1, normal.cross(t1)};
 }
 
+// A straight view of an element from a distance, at a yaw: whether its pose is admissible (a
+// pattern's station may stand there), and whether its camera sees the element.
+struct StraightView {
+  bool stands = false;
+  bool sees = false;
+};
+
 struct Pose {
   CameraPose pose;
   double clearance_m = 0.0;  // free mode only
@@ -262,6 +271,18 @@ class PoseMaker {
     }
   }
 
+  // The straight view of `element` from `distance_m`: whether its pose is admissible (in free mode
+  // only where it keeps the standoff), and whether its camera sees the element.
+  StraightView straight(const environment::SurfaceElement& element, double distance_m, double level_yaw_deg) const {
+    std::size_t tried = 0;
+    const Eigen::Vector3d camera_m = element.centre_m + distance_m * element.normal;
+    const auto pose = looking(camera_m, element.centre_m, level_yaw_deg, tried);
+    const Eigen::Vector3d end =
+        element.centre_m + element.faceNormal() * (0.01 * environment_.grid().frame().resolution_m());
+    return {pose && (!free() || pose->clearance_m >= required_clearance_m_),
+            environment::lineOfSight(environment_.grid(), camera_m, end)};
+  }
+
   void setHeading(double yaw_deg) {
     heading_ = Eigen::Vector3d(std::sin(yaw_deg * kDegree), std::cos(yaw_deg * kDegree), 0.0);
   }
@@ -322,6 +343,7 @@ struct Seed {
   double level_yaw_deg;   // a straight up or down view's yaw
   int tiling = -1;        // the pattern tiling it belongs to, if any
   bool across = false;    // a pattern across the region's heading: its views are for the tilings only
+  double tilt_rad = 0.0;  // an oblique row's seed: only its views tilted by this much
 };
 
 // A pattern tiling's flat patch, as seeds are generated (Tiling::patch).
@@ -410,16 +432,94 @@ std::vector<std::vector<std::uint32_t>> flatPatches(const environment::VoxelGrid
   return patches;
 }
 
+using StraightTest = std::function<StraightView(std::uint32_t element, double distance_m, double level_yaw_deg)>;
+
+// The parts of a patch (element lists) that straight views at one distance and yaw can tile. An
+// element is tileable when its own straight view's camera sees it and a station may stand within
+// half the covered part of it (`half_cells`, in cells, in the image axes: `cells_of` gives each
+// element's cell). The 4-connected groups of tileable elements, at least a quarter of a covered
+// part each, where there are two or more: an obstacle under part of a patch (a pier cap under a
+// deck bay) splits it, and each part is tiled on its own, anchored to the obstacle's edges as to
+// the patch's; what lies over the obstacle is left to tilted views. Else the whole patch, as an
+// unobstructed one: an obstacle at its edge (an abutment's or a wall's face) does not split it.
+std::vector<std::vector<std::uint32_t>> openParts(const std::vector<std::uint32_t>& patch,
+                                                  const std::vector<std::pair<long, long>>& cells_of,
+                                                  const std::vector<StraightView>& views,
+                                                  const std::pair<long, long>& half_cells) {
+  long i0 = LONG_MAX, j0 = LONG_MAX, i1 = LONG_MIN, j1 = LONG_MIN;
+  for (const auto& [i, j] : cells_of) {
+    i0 = std::min(i0, i);
+    j0 = std::min(j0, j);
+    i1 = std::max(i1, i);
+    j1 = std::max(j1, j);
+  }
+  // Stations per cell, summed (a summed-area table with a zero first row and column).
+  const long width = i1 - i0 + 2, height = j1 - j0 + 2;
+  std::vector<int> sums(static_cast<std::size_t>(width * height), 0);
+  const auto sum = [&](long i, long j) -> int& { return sums[static_cast<std::size_t>(j * width + i)]; };
+  for (std::size_t k = 0; k < patch.size(); ++k)
+    if (views[k].stands) sum(cells_of[k].first - i0 + 1, cells_of[k].second - j0 + 1) += 1;
+  for (long j = 1; j < height; ++j)
+    for (long i = 1; i < width; ++i) sum(i, j) += sum(i - 1, j) + sum(i, j - 1) - sum(i - 1, j - 1);
+  const auto stationsIn = [&](long ia, long ja, long ib, long jb) {  // cells [ia, ib] x [ja, jb], clipped
+    ia = std::max(ia - i0, 0L);
+    ja = std::max(ja - j0, 0L);
+    ib = std::min(ib - i0 + 1, width - 1);
+    jb = std::min(jb - j0 + 1, height - 1);
+    if (ia >= ib || ja >= jb) return 0;
+    return sum(ib, jb) - sum(ia, jb) - sum(ib, ja) + sum(ia, ja);
+  };
+  std::vector<std::uint8_t> open(patch.size(), 0);
+  for (std::size_t k = 0; k < patch.size(); ++k) {
+    const auto [i, j] = cells_of[k];
+    open[k] = views[k].sees &&
+              stationsIn(i - half_cells.first, j - half_cells.second, i + half_cells.first, j + half_cells.second) > 0;
+  }
+  if (std::all_of(open.begin(), open.end(), [](std::uint8_t o) { return o != 0; })) return {patch};
+  // Parts smaller than a quarter of a covered part are no parts.
+  const std::size_t min_elements = static_cast<std::size_t>(half_cells.first * half_cells.second);
+  std::map<std::pair<long, long>, std::size_t> at;  // cell -> index into patch, tileable elements only
+  for (std::size_t k = 0; k < patch.size(); ++k)
+    if (open[k]) at.emplace(cells_of[k], k);
+  std::vector<std::uint8_t> done(patch.size(), 0);
+  std::vector<std::vector<std::uint32_t>> parts;
+  for (std::size_t start = 0; start < patch.size(); ++start) {
+    if (!open[start] || done[start]) continue;
+    std::vector<std::size_t> queue{start};
+    done[start] = 1;
+    for (std::size_t next = 0; next < queue.size(); ++next) {
+      const auto [i, j] = cells_of[queue[next]];
+      for (const auto& [di, dj] : {std::pair<long, long>{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        const auto found = at.find({i + di, j + dj});
+        if (found == at.end() || done[found->second]) continue;
+        done[found->second] = 1;
+        queue.push_back(found->second);
+      }
+    }
+    if (queue.size() < min_elements) continue;  // a sliver: left to the oblique rows and the lattice
+    std::vector<std::uint32_t> part;
+    part.reserve(queue.size());
+    for (const std::size_t k : queue) part.push_back(patch[k]);
+    std::sort(part.begin(), part.end());
+    parts.push_back(std::move(part));
+  }
+  // An obstacle at a patch's edge (a wall the stations keep off) does not split it.
+  if (parts.size() < 2) return {patch};
+  return parts;
+}
+
 // The pattern: per flat patch, distance level (those at least half the farthest) and image orientation, a lawnmower
 // tiling of the patch's extent in the straight view's image axes, lanes and stations evenly spaced with the first and
 // last covering parts ending at the patch's edges, as a survey tool lays out passes. Each station aims at its point on
 // the patch's plane; stations over no element of the patch are dropped. Up and down faces are tiled both with the
 // image's height along the region's heading and across it: which one needs fewer stations depends on how the patch's
 // sides divide by the covered part's (a 3.8 x 2.4 m deck bay takes 5 x 2 photos one way and 3 x 3 the other at
-// 1 mm/px). Each tiling is numbered; `tiling_patch` receives its patch.
+// 1 mm/px). Where an obstacle keeps straight views from part of the patch, each part they can see is tiled on its
+// own (openParts). Each tiling is numbered; `tiling_patch` receives its patch.
 std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
                                const RegionSurface& surface, const std::vector<double>& levels, double heading_deg,
-                               TilingPatches& tiling_patch) {
+                               const StraightTest& sees_straight, int workers, TilingPatches& tiling_patch,
+                               std::vector<std::uint32_t>& hidden) {
   const double r = grid.frame().resolution_m();
   const double yaws_deg[2] = {heading_deg, std::fmod(heading_deg + 90.0, 360.0)};
   const std::vector<CameraFrame> frames[2] = {straightFrames(camera, yaws_deg[0]), straightFrames(camera, yaws_deg[1])};
@@ -431,56 +531,134 @@ std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera&
     const bool vertical = first.face >= 4;  // faces 4 and 5 are +z and -z
     for (int orientation = 0; orientation < (vertical ? 2 : 1); ++orientation) {
       const CameraFrame& straight = frames[orientation][first.face];
-      Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
-      std::set<std::pair<long, long>> cells;  // the patch's faces in image-axis voxel units
+      const auto imageAxes = [&](std::uint32_t e) {
+        return Eigen::Vector2d(surface.elements[e].centre_m.dot(straight.right()),
+                               surface.elements[e].centre_m.dot(straight.up()));
+      };
+      // The patch's faces in image-axis voxel units (face centres lie mid-voxel: floor is exact).
+      std::vector<std::pair<long, long>> cells_of;
+      cells_of.reserve(patch.size());
       for (const std::uint32_t e : patch) {
-        const Eigen::Vector2d at(surface.elements[e].centre_m.dot(straight.right()),
-                                 surface.elements[e].centre_m.dot(straight.up()));
-        lo = lo.cwiseMin(at);
-        hi = hi.cwiseMax(at);
-        cells.emplace(std::lround(at.x() / r), std::lround(at.y() / r));
+        const Eigen::Vector2d at = imageAxes(e);
+        cells_of.emplace_back(static_cast<long>(std::floor(at.x() / r)), static_cast<long>(std::floor(at.y() / r)));
       }
-      lo -= Eigen::Vector2d::Constant(0.5 * r);
-      hi += Eigen::Vector2d::Constant(0.5 * r);
+      Eigen::Vector2d patch_lo = Eigen::Vector2d::Constant(INFINITY), patch_hi = -patch_lo;
+      for (const std::uint32_t e : patch) {
+        patch_lo = patch_lo.cwiseMin(imageAxes(e));
+        patch_hi = patch_hi.cwiseMax(imageAxes(e));
+      }
+      patch_lo -= Eigen::Vector2d::Constant(0.5 * r);
+      patch_hi += Eigen::Vector2d::Constant(0.5 * r);
       const double plane = first.centre_m.dot(straight.forward());
       for (const double d : levels) {
         if (d < kPatternLevelShare * levels.front()) continue;
+        std::vector<StraightView> views(patch.size());
+        parallelFor(patch.size(), workers,
+                    [&](std::size_t k) { views[k] = sees_straight(patch[k], d, yaws_deg[orientation]); });
         const int tiling = static_cast<int>(tiling_patch.size());
         tiling_patch.push_back(p);
         const Eigen::Vector2d span(2.0 * d * camera.halfWidthTan() * region.widthShare(),
                                    2.0 * d * camera.halfHeightTan() * region.heightShare());
-        int count[2];
-        for (int axis = 0; axis < 2; ++axis)
-          count[axis] = std::max(1, static_cast<int>(std::ceil((hi[axis] - lo[axis]) / span[axis] - 1e-9)));
-        for (int j = 0; j < count[1]; ++j)
-          for (int i = 0; i < count[0]; ++i) {
-            Eigen::Vector2d at;
-            const int index[2] = {i, j};
-            for (int axis = 0; axis < 2; ++axis)
-              at[axis] = count[axis] == 1 ? 0.5 * (lo[axis] + hi[axis])
-                                          : lo[axis] + 0.5 * span[axis] +
-                                                (hi[axis] - lo[axis] - span[axis]) * index[axis] / (count[axis] - 1);
-            // The nearest face of the patch within a voxel, else no station here.
-            std::uint32_t nearest = patch.front();
-            bool found = false;
-            for (long dj = -1; dj <= 1 && !found; ++dj)
-              for (long di = -1; di <= 1 && !found; ++di)
-                found = cells.count({std::lround(at.x() / r) + di, std::lround(at.y() / r) + dj}) > 0;
-            if (!found) continue;
-            double best = INFINITY;
-            for (const std::uint32_t e : patch) {
-              const Eigen::Vector3d& c = surface.elements[e].centre_m;
-              const double offset = (Eigen::Vector2d(c.dot(straight.right()), c.dot(straight.up())) - at).squaredNorm();
-              if (offset < best) {
-                best = offset;
-                nearest = e;
-              }
-            }
-            seeds.push_back({nearest, d,
-                             at.x() * straight.right() + at.y() * straight.up() + plane * straight.forward(),
-                             yaws_deg[orientation], tiling, orientation == 1});
+        const std::pair<long, long> half_cells(std::lround(0.5 * span.x() / r), std::lround(0.5 * span.y() / r));
+        const std::vector<std::vector<std::uint32_t>> parts = openParts(patch, cells_of, views, half_cells);
+        if (orientation == 0 && d == levels.front() && parts.size() != 1) {
+          // What no part of the farthest level holds (over the obstacle) gets oblique rows.
+          std::vector<std::uint8_t> in_part(surface.elements.size(), 0);
+          for (const auto& part : parts)
+            for (const std::uint32_t e : part) in_part[e] = 1;
+          for (const std::uint32_t e : patch)
+            if (!in_part[e]) hidden.push_back(e);
+        }
+        for (const std::vector<std::uint32_t>& part : parts) {
+          Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
+          std::set<std::pair<long, long>> cells;
+          for (const std::uint32_t e : part) {
+            const Eigen::Vector2d at = imageAxes(e);
+            lo = lo.cwiseMin(at);
+            hi = hi.cwiseMax(at);
+            cells.emplace(std::lround(at.x() / r), std::lround(at.y() / r));
           }
+          lo -= Eigen::Vector2d::Constant(0.5 * r);
+          hi += Eigen::Vector2d::Constant(0.5 * r);
+          // Per image axis: stations `count`, the first at `first`, `step` apart.
+          int count[2];
+          double first[2], step[2];
+          for (int axis = 0; axis < 2; ++axis) {
+            const double length_m = hi[axis] - lo[axis];
+            count[axis] = std::max(1, static_cast<int>(std::ceil(length_m / span[axis] - 1e-9)));
+            first[axis] = count[axis] == 1 ? 0.5 * (lo[axis] + hi[axis]) : lo[axis] + 0.5 * span[axis];
+            step[axis] = count[axis] == 1 ? 0.0 : (length_m - span[axis]) / (count[axis] - 1);
+            // A part that ends at an obstacle on one side only may stop short of it by a share of a
+            // covered part: the oblique rows from beside the obstacle cover that strip anyway, and a
+            // station fewer per lane is saved (a 3.3 m part takes 4 photos of 0.82 m, not 5).
+            const bool low_open = lo[axis] > patch_lo[axis] + 0.5 * r, high_open = hi[axis] < patch_hi[axis] - 0.5 * r;
+            if (low_open != high_open && count[axis] > 1 &&
+                (count[axis] - 1) * span[axis] >= length_m - kObstacleSlackShare * span[axis]) {
+              --count[axis];
+              step[axis] = low_open ? -span[axis] : span[axis];
+              first[axis] = low_open ? hi[axis] - 0.5 * span[axis] : lo[axis] + 0.5 * span[axis];
+            }
+          }
+          for (int j = 0; j < count[1]; ++j)
+            for (int i = 0; i < count[0]; ++i) {
+              Eigen::Vector2d at;
+              const int index[2] = {i, j};
+              for (int axis = 0; axis < 2; ++axis) at[axis] = first[axis] + step[axis] * index[axis];
+              // The nearest face of the part within a voxel, else no station here.
+              bool found = false;
+              for (long dj = -1; dj <= 1 && !found; ++dj)
+                for (long di = -1; di <= 1 && !found; ++di)
+                  found = cells.count({std::lround(at.x() / r) + di, std::lround(at.y() / r) + dj}) > 0;
+              if (!found) continue;
+              std::uint32_t nearest = part.front();
+              double best = INFINITY;
+              for (const std::uint32_t e : part) {
+                const double offset = (imageAxes(e) - at).squaredNorm();
+                if (offset < best) {
+                  best = offset;
+                  nearest = e;
+                }
+              }
+              seeds.push_back({nearest, d,
+                               at.x() * straight.right() + at.y() * straight.up() + plane * straight.forward(),
+                               yaws_deg[orientation], tiling, orientation == 1});
+            }
+        }
       }
+    }
+  }
+  return seeds;
+}
+
+// Oblique rows over what straight views cannot reach (the strip of a deck bay over a pier cap):
+// over the hidden elements, cells a quarter of the short side of the farthest level's covered
+// part, each aimed at from beside by views tilted towards the four tangent directions, at half
+// to nine tenths of the incidence limit, from as far as the GSD allows at the covered part's far
+// edge and nearer. The selection takes the rows that cover the strip with fewest photos.
+std::vector<Seed> obliqueSeeds(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
+                               const RegionSurface& surface, const std::vector<std::uint32_t>& hidden, double far_m,
+                               double heading_deg) {
+  const double width_tan = camera.halfWidthTan() * region.widthShare();
+  const double height_tan = camera.halfHeightTan() * region.heightShare();
+  const double cell_m = std::max(2.0 * grid.frame().resolution_m(), 0.5 * far_m * std::min(width_tan, height_tan));
+  std::map<std::tuple<int, long, long, long>, std::uint32_t> cells;  // one element per cell, the first
+  for (const std::uint32_t e : hidden) {
+    const Eigen::Vector3d& c = surface.elements[e].centre_m;
+    cells.emplace(
+        std::make_tuple(surface.elements[e].face, static_cast<long>(std::floor(c.x() / cell_m)),
+                        static_cast<long>(std::floor(c.y() / cell_m)), static_cast<long>(std::floor(c.z() / cell_m))),
+        e);
+  }
+  std::vector<Seed> seeds;
+  for (const auto& entry : cells) {
+    const std::uint32_t e = entry.second;
+    for (const double share : {0.5, 0.6, 0.7, 0.8, 0.9}) {
+      const double tilt_rad = region.max_incidence_deg * share * kDegree;
+      // The far edge of the covered part lies at the tilt plus its half height: its GSD bounds the distance.
+      const double edge_rad = std::min(tilt_rad + std::atan(height_tan), 89.0 * kDegree);
+      const double reach_m = camera.distanceForGsd_m(region.gsd_mm_px, edge_rad) * std::cos(edge_rad - tilt_rad);
+      for (const double factor : {1.0, 0.9, 0.8, 0.7})
+        seeds.push_back({e, factor * reach_m, surface.elements[e].centre_m, heading_deg, -1, false, tilt_rad});
     }
   }
   return seeds;
@@ -722,7 +900,15 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   // The lattice: every seed's poses and what each covers, in seed order whatever the workers.
   // Pattern seeds first: the selection breaks ties by candidate index.
   TilingPatches tiling_patch;
-  std::vector<Seed> seeds = patternSeeds(environment.grid(), camera, region, surface, levels, heading, tiling_patch);
+  const StraightTest sees_straight = [&](std::uint32_t e, double d, double yaw_deg) {
+    return maker.straight(surface.elements[e], d, yaw_deg);
+  };
+  std::vector<std::uint32_t> hidden;
+  std::vector<Seed> seeds = patternSeeds(environment.grid(), camera, region, surface, levels, heading, sees_straight,
+                                         options.workers, tiling_patch, hidden);
+  const std::vector<Seed> oblique =
+      obliqueSeeds(environment.grid(), camera, region, surface, hidden, levels.front(), heading);
+  seeds.insert(seeds.end(), oblique.begin(), oblique.end());
   const std::vector<Seed> lattice =
       latticeSeeds(environment.grid(), camera, region, surface, levels, options.seed_spacing_share, heading);
   seeds.insert(seeds.end(), lattice.begin(), lattice.end());
@@ -735,6 +921,15 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
       [&](std::size_t s) {
         const auto& element = surface.elements[seeds[s].element];
         const double d = seeds[s].distance_m;
+        if (seeds[s].tilt_rad > 0.0) {
+          maker.around(element, seeds[s].aim_m, d, seeds[s].tilt_rad, 4, seeds[s].level_yaw_deg, seed_poses[s],
+                       seed_tried[s]);
+          for (const Pose& pose : seed_poses[s]) {
+            seed_covered[s].emplace_back();
+            viewer.covered(pose.pose, seed_covered[s].back());
+          }
+          return;
+        }
         maker.around(element, seeds[s].aim_m, d, 0.0, 1, seeds[s].level_yaw_deg, seed_poses[s], seed_tried[s]);
         const std::size_t straight = seed_poses[s].size();
         seed_straight[s] = straight;
