@@ -61,13 +61,19 @@ std::string trajectoryCsv(const mission::Trajectory& trajectory, TrajectoryFrame
   const std::vector<std::string> columns = trajectoryColumns(frame);
   for (std::size_t c = 0; c < columns.size(); ++c) text += (c ? "," : "") + columns[c];
   text += '\n';
+  // About 14 fields of up to 12 characters a row: reserved once, not grown row by row.
+  text.reserve(text.size() + trajectory.setpoints.size() * 14 * 12);
   for (const mission::TrajectorySetpoint& s : trajectory.setpoints) {
     const std::vector<double> row = trajectoryRow(s, frame);
     for (std::size_t c = 0; c < row.size(); ++c) {
+      if (c) text += ',';
+      const std::size_t start = text.size();
+      appendFixed(text, row[c], kDecimals[c]);
       // Rounding may leave "-0.000000": write a plain zero.
-      std::string field = formatFixed(row[c], kDecimals[c]);
-      if (field.find_first_not_of("-0.") == std::string::npos) field = formatFixed(0.0, kDecimals[c]);
-      text += (c ? "," : "") + field;
+      if (text.find_first_not_of("-0.", start) == std::string::npos) {
+        text.resize(start);
+        appendFixed(text, 0.0, kDecimals[c]);
+      }
     }
     text += '\n';
   }
@@ -76,13 +82,16 @@ std::string trajectoryCsv(const mission::Trajectory& trajectory, TrajectoryFrame
 
 nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryFrame frame,
                               const std::optional<mission::GeodeticOrigin>& origin) {
-  nlohmann::json setpoints = nlohmann::json::array();
+  // Arrays sized before they are filled: a long sortie has tens of thousands of setpoints.
+  nlohmann::json::array_t setpoints;
+  setpoints.reserve(trajectory.setpoints.size());
   for (const mission::TrajectorySetpoint& s : trajectory.setpoints) {
-    std::vector<double> row = trajectoryRow(s, frame);
-    nlohmann::json values = nlohmann::json::array();
-    for (std::size_t c = 0; c + 1 < row.size(); ++c) values.push_back(row[c]);
-    values.push_back(s.trigger ? 1 : 0);
-    setpoints.push_back(std::move(values));
+    const std::vector<double> row = trajectoryRow(s, frame);
+    nlohmann::json::array_t values;
+    values.reserve(row.size());
+    for (std::size_t c = 0; c + 1 < row.size(); ++c) values.emplace_back(row[c]);
+    values.emplace_back(s.trigger ? 1 : 0);
+    setpoints.emplace_back(std::move(values));
   }
   const mission::TrajectoryLimits& l = trajectory.limits;
   return {{"format", "ceilplan-trajectory"},
@@ -107,7 +116,7 @@ nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryF
                                              {"alt_m", origin->altitude_m}}
                             : nlohmann::json(nullptr)},
           {"columns", trajectoryColumns(frame)},
-          {"setpoints", setpoints}};
+          {"setpoints", std::move(setpoints)}};
 }
 
 void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajectory& trajectory, TrajectoryFrame frame,

@@ -15,6 +15,10 @@ std::string formatNumber(double value, int significant = 6);
 /// Exactly `decimals` decimals: formatFixed(43.5, 2) == "43.50"; from 1e15 on, as formatNumber.
 std::string formatFixed(double value, int decimals);
 
+/// Appends formatFixed(value, decimals) to `text`, without a string of its own: for files of
+/// many numbers (trajectories, path.csv).
+void appendFixed(std::string& text, double value, int decimals);
+
 /// "(x, y, z)" with `decimals` decimals each: formatPoint({1, 2, 3}) == "(1.00, 2.00, 3.00)".
 std::string formatPoint(const Eigen::Vector3d& point, int decimals = 2);
 
