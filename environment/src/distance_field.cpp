@@ -266,8 +266,8 @@ double DistanceField::lowerBound_m(const Eigen::Vector3d& point_m) const {
   if (feature < 0) return boundary;
   // The nearest blocked box to any point of this voxel is at least the centre-to-centre
   // distance minus both half diagonals.
-  const double centre_distance =
-      (centreOf(feature) - centreOf(static_cast<std::int32_t>(frame_.linear(i, j, k)))).norm();
+  const Eigen::Vector3d centre(frame_.centreOf(0, i), frame_.centreOf(1, j), frame_.centreOf(2, k));
+  const double centre_distance = (centreOf(feature) - centre).norm();
   const double half_diagonal = 0.5 * std::sqrt(3.0) * frame_.resolution_m();
   return std::min(boundary, std::max(0.0, centre_distance - 2.0 * half_diagonal));
 }

@@ -199,7 +199,10 @@ void Environment::gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGa
   sides[0].result = up, sides[0].reach = radius * options_.ceiling_reach_radii;
   sides[1].result = down, sides[1].reach = radius * options_.ground_reach_radii;
   for (Side& side : sides)
-    if (side.result) *side.result = SurfaceGaps{{}, kInfinity, 0.0, kInfinity};
+    if (side.result) {
+      *side.result = SurfaceGaps{{}, kInfinity, 0.0, kInfinity};
+      side.result->rotors.reserve(vehicle_.rotor_positions_m.size());
+    }
   const auto columnGaps = [&](int i, int j) -> std::array<double, 2> {
     if (up && down) {
       const ColumnIndex::Boundaries around = columns_->around(i, j, plane_z);

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace ceilplan::testing {
@@ -49,6 +51,67 @@ TEST(SafetyRules, SkippingStatesWithinTheValidReachChangesNoAnswer) {
   }
   EXPECT_GT(accepted, 100);
   EXPECT_GT(rejected, 100);
+}
+
+TEST(SafetyRules, AMotionIsValidExactlyWhenEveryDenseStateIs) {
+  // Near structure the footprint masks clear the states a motion has in one grid column at
+  // once (Environment::columnSurelyValid): motions hugging the beams and the ceiling, level,
+  // vertical and slanted, as lattice edges and refined paths fly them, are accepted exactly when
+  // each of their states, a dense step apart, is valid alone.
+  const environment::OccupancyMap map = corridor(beams);
+  const environment::Environment environment(map, quad());
+  const planner::SafetyRules rules(environment, 0.05);
+  const double dense_step_m = environment.denseStep_m();
+  const auto everyStateValid = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    const long steps = std::max(1L, static_cast<long>(std::ceil((b - a).norm() / dense_step_m)));
+    for (long s = 0; s <= steps; ++s)
+      if (!rules.isStateValid(a + (b - a) * (static_cast<double>(s) / steps))) return false;
+    return true;
+  };
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> x(-0.4, 6.4), y(-2.4, 2.4), z(2.6, 3.45), step(-0.7, 0.7);
+  int accepted = 0, rejected = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const Eigen::Vector3d a(x(random), y(random), z(random));
+    Eigen::Vector3d offset(step(random), step(random), 0.5 * step(random));
+    if (k % 3 == 0) offset.head<2>().setZero();  // vertical, one column
+    if (k % 3 == 1) offset.z() = 0.0;            // level, under the beams
+    const Eigen::Vector3d b = a + offset;
+    if (!environment.contains(b)) continue;
+    const bool valid = rules.isMotionValid(a, b);
+    EXPECT_EQ(valid, everyStateValid(a, b)) << a.transpose() << " -> " << b.transpose();
+    ++(valid ? accepted : rejected);
+  }
+  EXPECT_GT(accepted, 300);
+  EXPECT_GT(rejected, 300);
+}
+
+TEST(SafetyRules, AColumnTheMasksClearHoldsOnlyValidStates) {
+  const environment::OccupancyMap map = corridor(beams);
+  const environment::Environment environment(map, quad());
+  const environment::GridFrame& frame = environment.grid().frame();
+  std::mt19937 random(19);
+  std::uniform_real_distribution<double> x(-0.4, 6.4), y(-2.4, 2.4), z(0.3, 3.45), unit(0.0, 1.0);
+  int cleared = 0, undecided = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double low_z = z(random), high_z = std::min(3.45, low_z + 0.4 * unit(random));
+    const int i = frame.indexOf(0, x(random)), j = frame.indexOf(1, y(random));
+    if (!environment.columnSurelyValid(i, j, low_z, high_z)) {
+      ++undecided;
+      continue;
+    }
+    ++cleared;
+    for (int n = 0; n < 20; ++n) {  // anywhere in the column, at any height between
+      const Eigen::Vector3d state(frame.faceOf(0, i) + frame.resolution_m() * unit(random),
+                                  frame.faceOf(1, j) + frame.resolution_m() * unit(random),
+                                  low_z + (high_z - low_z) * unit(random));
+      if (environment.contains(state)) {
+        EXPECT_TRUE(environment.isStateValid(state)) << state.transpose();
+      }
+    }
+  }
+  EXPECT_GT(cleared, 200);
+  EXPECT_GT(undecided, 200);
 }
 
 TEST(SafetyRules, AMinimumGapLargerThanTheCylinderAllowsIsEnforced) {

@@ -162,6 +162,14 @@ class Environment {
   /// unknown-space policy.
   double validReach_m(const Eigen::Vector3d& body_m) const;
 
+  /// Whether every body position in grid column (i, j) (inside the grid) with its centre between
+  /// heights low_z_m and high_z_m is valid by isStateValid, as the footprint masks alone show it
+  /// (nothing blocking at the cylinder's heights within its reach): one test for the many states
+  /// a motion has in one column. False says only that the masks cannot tell.
+  bool columnSurelyValid(int i, int j, double low_z_m, double high_z_m) const {
+    return !footprint_.mayBlock(i, j, low_z_m + vehicle_.inflatedBottom_m(), high_z_m + vehicle_.inflatedTop_m());
+  }
+
   /// A state is valid when the collision cylinder inflated by the margins touches no occupied
   /// (or, by policy, unknown) voxel and the body centre lies in the map.
   bool isStateValid(const Eigen::Vector3d& body_m) const { return !stateViolation(body_m); }

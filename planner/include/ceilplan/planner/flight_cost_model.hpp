@@ -213,7 +213,7 @@ class FlightCostModel {
     void add(const PointConditions& conditions) {
       // In free air, or under a flat ceiling, neighbouring samples see the same conditions and
       // so draw the same current: the energy model is asked once for them.
-      if (!started_ || !sameConditions(conditions, previous_conditions_)) {
+      if (!started_ || !sameConditions(conditions, previous_conditions_, model_.energy_.rotorCount())) {
         const Velocity velocity = model_.velocityAt(conditions, direction_);
         s_per_m_ = 1.0 / velocity.along_m_s;
         as_per_m_ = model_.currentA(conditions, velocity, model_.options_.planning_soc) * s_per_m_;
@@ -234,11 +234,11 @@ class FlightCostModel {
 
    private:
     // Whether the speed rule and the energy model see the same at both (standoff aside).
-    static bool sameConditions(const PointConditions& a, const PointConditions& b) {
+    static bool sameConditions(const PointConditions& a, const PointConditions& b, int rotor_count) {
       if (a.rotor_count != b.rotor_count || a.ground_gap_m != b.ground_gap_m ||
           a.nearest_ceiling_gap_m != b.nearest_ceiling_gap_m)
         return false;
-      for (std::size_t r = 0; r < a.rotors.size(); ++r)  // the energy model reads its own rotor count
+      for (int r = 0; r < rotor_count; ++r)  // the rotors the energy model reads
         if (a.rotors[r].gap_m != b.rotors[r].gap_m || a.rotors[r].coverage != b.rotors[r].coverage) return false;
       return true;
     }
