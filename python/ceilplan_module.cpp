@@ -967,10 +967,7 @@ PYBIND11_MODULE(ceilplan, m) {
         options.progress = reporter.callback();
         auto [context, tours] = reporter.run([&] {
           auto context = std::make_shared<const mission::PlanningContext>(*shared_mission, options.progress);
-          std::vector<mission::TourResult> tours;
-          tours.reserve(modes.size());
-          for (mission::FlightMode flight_mode : modes)
-            tours.push_back(mission::planTour(*shared_mission, *context, flight_mode, options));
+          std::vector<mission::TourResult> tours = mission::planTours(*shared_mission, *context, modes, options);
           return std::make_pair(context, std::move(tours));
         });
         const std::string call = "ceilplan.plan_tour(mission, mode='" + mode_name +
@@ -986,8 +983,9 @@ PYBIND11_MODULE(ceilplan, m) {
         return py::cast(PyTourComparison{results[0], results[1], call});
       },
       ("Plans the mission's tour as `ceilplan tour` does: point targets, contact grids and surfaces to photograph. "
-       "mode: 'ceiling', 'free' or 'both' (None: the mission's `mode`, else 'ceiling'); 'both' plans ceiling then "
-       "free mode over one indexed map and returns a TourComparison, one mode a Tour. seed: the order heuristic's "
+       "mode: 'ceiling', 'free' or 'both' (None: the mission's `mode`, else 'ceiling'); 'both' plans ceiling and "
+       "free mode at once over one indexed map and returns a TourComparison, one mode a Tour. seed: the order "
+       "heuristic's "
        "(None: the mission's). planner: the leg planner, " +
        oneOf(planner::plannerNames()) +
        " (the default 'roadmap' is deterministic). ageing_model: the model whose "

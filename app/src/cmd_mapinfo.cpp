@@ -40,9 +40,10 @@ void runMapinfo(const MapinfoOptions& options) {
   const OccupancyMap map = OccupancyMap::load(options.map);
   if (!options.vehicle.empty() && options.slice_csv.empty())
     throw ceilplan::InputError("--vehicle applies only to --slice-csv; add --slice-csv FILE or drop it");
-  Progress progress("indexing " + options.map);
-  const auto index = MapIndex::build(map, index_options, [&](double f) { progress.update(f); });
-  progress.finish();
+  const ProgressCallback progress = terminalProgress();
+  const std::string stage = "indexing " + options.map;
+  const auto index = MapIndex::build(map, index_options, [&](double f) { progress(stage, f); });
+  progress(stage, 1.0);
   const MapStatistics stats = computeStatistics(map, *index);
   // Once the map (and below, the vehicle) was read: their readers name what is wrong with them.
   io::Provenance provenance = commandProvenance().input("map", options.map);

@@ -38,9 +38,10 @@ void runProbe(const ProbeOptions& options) {
   index_options.unknown = options.unknown.value();
   const OccupancyMap map = OccupancyMap::load(options.map);
   const io::Provenance provenance = commandProvenance().input("map", options.map).input("vehicle", options.vehicle);
-  Progress progress("indexing " + options.map);
-  const Environment environment(MapIndex::build(map, index_options, [&](double f) { progress.update(f); }), vehicle);
-  progress.finish();
+  const ProgressCallback progress = terminalProgress();
+  const std::string stage = "indexing " + options.map;
+  const Environment environment(MapIndex::build(map, index_options, [&](double f) { progress(stage, f); }), vehicle);
+  progress(stage, 1.0);
 
   const PositionProbe probe = probePosition(environment, body);
   print(io::positionProbeText(body, probe, vehicle, io::unknownSpaceLine(environment)));

@@ -71,14 +71,16 @@ void runTour(TourArguments a) {
 
   print(io::tourHeadline(mission, a.mode, a.options, settings) +
         "unknown space: " + io::unknownSpaceLine(context.environment()) + "\n");
-  std::vector<mission::TourResult> tours;
-  for (mission::FlightMode mode : modes) {
-    tours.push_back(mission::planTour(mission, context, mode, a.options));
-    const std::filesystem::path dir = modes.size() > 1 ? out.path() / mission::flightModeName(mode) : out.path();
-    io::writeTourDirectory(dir, tours.back(), mission, context.environment(), autopilot, provenance);
-    print(io::tourSummary(tours.back()));
-    if (autopilot) print(io::exportNotes(tours.back(), mission));
-  }
+  // Both modes are planned at once; each is written and summarised as soon as it (and ceiling
+  // mode, before it) is planned.
+  const std::vector<mission::TourResult> tours =
+      mission::planTours(mission, context, modes, a.options, [&](const mission::TourResult& tour) {
+        const std::filesystem::path dir =
+            modes.size() > 1 ? out.path() / mission::flightModeName(tour.mode) : out.path();
+        io::writeTourDirectory(dir, tour, mission, context.environment(), autopilot, provenance);
+        print(io::tourSummary(tour));
+        if (autopilot) print(io::exportNotes(tour, mission));
+      });
   if (tours.size() == 2) {
     print("\n" + io::comparisonTable(tours[0], tours[1]));
     io::writeTourComparison(out.path(), tours[0], tours[1], mission, context.environment(), provenance);
@@ -116,7 +118,9 @@ const CommandRegistration registration(50, [](CLI::App& parent) {
   command->add_option("--lattice-spacing-m", a->options.lattice_spacing_m, "roadmap and lattice: node spacing")
       ->capture_default_str()
       ->check(finiteRange(planner::kMinLatticeSpacing_m, planner::kMaxLatticeSpacing_m));
-  command->add_option("--workers", a->options.workers, "threads planning legs")
+  command
+      ->add_option("--workers", a->options.workers,
+                   "threads planning legs; from 2, --mode both plans its two modes at once")
       ->capture_default_str()
       ->check(CLI::Range(1, 64));
   command

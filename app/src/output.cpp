@@ -5,41 +5,55 @@
 
 #include <CLI/CLI.hpp>
 
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 #include <system_error>
 
 namespace ceilplan::app {
 
-Progress::Progress(std::string label, bool enabled) : label_(printableText(label, 96)), enabled_(enabled) {}
+namespace {
 
-Progress::Progress(std::string label) : Progress(std::move(label), ::isatty(STDERR_FILENO) == 1) {}
-
-Progress::~Progress() { finish(); }
-
-void Progress::update(double fraction) {
-  if (!enabled_) return;
-  if (fraction >= 1.0) {  // done: whatever is printed next starts on a clean line
-    finish();
-    return;
-  }
-  const int percent = static_cast<int>(std::lround(100.0 * std::clamp(fraction, 0.0, 1.0)));
-  if (percent == last_percent_) return;
-  last_percent_ = percent;
-  std::cerr << '\r' << label_ << ' ' << percent << " %" << std::flush;
+// Whether a progress line is drawn on stderr, so that print() clears it before a report goes to
+// the same terminal. Drawn and cleared from the thread that runs the command only.
+bool& progressLineDrawn() {
+  static bool drawn = false;
+  return drawn;
 }
 
-void Progress::finish() {
-  if (enabled_ && last_percent_ >= 0) std::cerr << "\r\033[K" << std::flush;  // a finished line leaves nothing behind
-  enabled_ = false;
+// Draws `text` over what the line held.
+void drawProgressLine(const std::string& text) {
+  std::cerr << '\r' << text << "\033[K" << std::flush;
+  progressLineDrawn() = true;
 }
 
-void print(const std::string& text) { std::cout << printableLines(text) << std::flush; }
+// A cleared line leaves nothing behind: whatever is printed next starts on a clean line.
+void clearProgressLine() {
+  if (progressLineDrawn()) std::cerr << "\r\033[K" << std::flush;
+  progressLineDrawn() = false;
+}
+
+int percentOf(double fraction) { return static_cast<int>(std::lround(100.0 * std::clamp(fraction, 0.0, 1.0))); }
+
+// The terminal's width in columns, 80 when it does not say.
+std::size_t terminalColumns() {
+  winsize size{};
+  if (::ioctl(STDERR_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0) return size.ws_col;
+  return 80;
+}
+
+}  // namespace
+
+void print(const std::string& text) {
+  clearProgressLine();  // drawn again by the next report
+  std::cout << printableLines(text) << std::flush;
+}
 
 namespace {
 std::string& invocationText() {
@@ -82,19 +96,40 @@ std::vector<io::Input> commandInputs(std::vector<io::Input> inputs) {
 }
 
 ProgressCallback terminalProgress() {
-  struct Lines {
-    std::string stage;
-    std::unique_ptr<Progress> line;
-  };
-  auto lines = std::make_shared<Lines>();
-  return [lines](const std::string& stage, double fraction) {
-    if (stage != lines->stage || !lines->line) {
-      lines->line.reset();
-      lines->line = std::make_unique<Progress>(stage);
-      lines->stage = stage;
+  // The stages running, each with its percentage: stages that run at once (the two modes of
+  // `tour --mode both`) share the line. A stage replaces the one before it in its lane, the text
+  // before its first ": " ("ceiling mode"), and leaves the line at 100 %.
+  struct Lanes {
+    bool enabled = ::isatty(STDERR_FILENO) == 1;
+    std::vector<std::pair<std::string, int>> running;  // stage, percent
+    ~Lanes() {
+      if (enabled && !running.empty()) clearProgressLine();
     }
-    lines->line->update(fraction);
-    if (fraction >= 1.0) lines->line.reset();  // the stage may run again (tour --mode both)
+  };
+  auto lanes = std::make_shared<Lanes>();
+  return [lanes](const std::string& stage, double fraction) {
+    if (!lanes->enabled) return;
+    const auto lane = [](const std::string& name) { return name.substr(0, name.find(": ")); };
+    auto it = std::find_if(lanes->running.begin(), lanes->running.end(),
+                           [&](const auto& entry) { return lane(entry.first) == lane(stage); });
+    const int percent = percentOf(fraction);
+    if (fraction >= 1.0) {
+      if (it != lanes->running.end()) lanes->running.erase(it);
+    } else if (it == lanes->running.end()) {
+      lanes->running.emplace_back(stage, percent);
+    } else if (it->first == stage && it->second == percent) {
+      return;  // nothing new to draw
+    } else {
+      *it = {stage, percent};
+    }
+    if (lanes->running.empty()) {
+      clearProgressLine();
+      return;
+    }
+    std::string text;
+    for (const auto& [name, share] : lanes->running)
+      text += (text.empty() ? "" : " | ") + printableText(name, 96) + ' ' + std::to_string(share) + " %";
+    drawProgressLine(text.substr(0, terminalColumns() - 1));  // one line: a wrapped one cannot be redrawn
   };
 }
 

@@ -15,24 +15,9 @@ class Option;
 
 namespace ceilplan::app {
 
-// Progress for long work: a single updating line on stderr when stderr is a terminal,
-// nothing otherwise. The line is cleared at 100 % and by finish() (or the destructor).
-class Progress {
- public:
-  Progress(std::string label, bool enabled);
-  explicit Progress(std::string label);  // enabled when stderr is a terminal
-  ~Progress();
-  void update(double fraction);
-  void finish();
-
- private:
-  std::string label_;
-  bool enabled_;
-  int last_percent_ = -1;
-};
-
 // Writes a command's report to stdout, every line through printableLines: file names, target
-// and vehicle names come from the user and must not reach the terminal as raw bytes.
+// and vehicle names come from the user and must not reach the terminal as raw bytes. A progress
+// line on the terminal is cleared first.
 void print(const std::string& text);
 
 // The command line as typed (main records it), for the outputs' provenance.
@@ -47,8 +32,10 @@ void recordConfigOption(const CLI::Option* option);
 // The command's inputs for io::OutputSet: `inputs`, and the --config file if one was given.
 std::vector<io::Input> commandInputs(std::vector<io::Input> inputs);
 
-// A library progress callback drawn as Progress lines, one per stage, when stderr is a
-// terminal; the last line is cleared when the callback and its copies are gone.
+// A library progress callback drawn on one updating line of stderr when stderr is a terminal,
+// nothing otherwise: each stage running with its percentage (stages that run at once, the modes
+// of `tour --mode both`, side by side); a stage's line is cleared at 100 %, and the last when
+// the callback and its copies are gone.
 ProgressCallback terminalProgress();
 
 }  // namespace ceilplan::app

@@ -168,6 +168,18 @@ bool Environment::ceilingGapAtLeast(const Eigen::Vector3d& body_m, double gap_m)
   return true;
 }
 
+double Environment::nearestCeilingGap_m(const Eigen::Vector3d& body_m) const {
+  requireInside(body_m, "ceiling gap");
+  const double plane_z = body_m.z() + vehicle_.rotor_plane_height_m;
+  double nearest_m = kInfinity;
+  for (const Eigen::Vector2d& offset : vehicle_.rotor_positions_m)
+    forEachDiscColumn(grid().frame(), body_m.head<2>() + offset, vehicle_.rotor_radius_m, [&](int i, int j, int) {
+      nearest_m = std::min(nearest_m, columnGap(i, j, plane_z, Direction::Up));
+      return true;
+    });
+  return nearest_m;
+}
+
 SurfaceGaps Environment::ground(const Eigen::Vector3d& body_m) const {
   requireInside(body_m, "ground gap");
   SurfaceGaps down;

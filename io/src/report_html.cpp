@@ -11,7 +11,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <string_view>
 #include <unordered_map>
 
@@ -201,18 +200,39 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
     return std::array<long, 3>{std::lround(std::floor(p.x() / bucket_m)), std::lround(std::floor(p.y() / bucket_m)),
                                std::lround(std::floor(p.z() / bucket_m))};
   };
-  std::map<std::array<long, 3>, std::vector<Eigen::Vector3d>> buckets;
+  // The buckets in a dense box of them: a voxel's 27 neighbours are looked up for every surface
+  // voxel near the route, millions on a large structure.
+  std::array<long, 3> first_bucket{}, bucket_count{};
+  for (int axis = 0; axis < 3 && !probes.empty(); ++axis) {
+    long first = std::numeric_limits<long>::max(), last = std::numeric_limits<long>::min();
+    for (const Eigen::Vector3d& p : probes) {
+      first = std::min(first, bucketOf(p)[axis]);
+      last = std::max(last, bucketOf(p)[axis]);
+    }
+    first_bucket[axis] = first;
+    bucket_count[axis] = last - first + 1;
+  }
+  // A bucket's place in `buckets`, -1 outside the box.
+  const auto bucketIndex = [&](long x, long y, long z) -> long {
+    x -= first_bucket[0], y -= first_bucket[1], z -= first_bucket[2];
+    if (x < 0 || y < 0 || z < 0 || x >= bucket_count[0] || y >= bucket_count[1] || z >= bucket_count[2]) return -1;
+    return (z * bucket_count[1] + y) * bucket_count[0] + x;
+  };
+  std::vector<std::vector<Eigen::Vector3d>> buckets(
+      static_cast<std::size_t>(bucket_count[0] * bucket_count[1] * bucket_count[2]));
   constexpr int kMost = std::numeric_limits<int>::max(), kLeast = std::numeric_limits<int>::min();
   environment::Index3 low{kMost, kMost, kMost}, high{kLeast, kLeast, kLeast};
   for (const Eigen::Vector3d& p : probes) {
-    buckets[bucketOf(p)].push_back(p);
+    const std::array<long, 3> bucket = bucketOf(p);
+    buckets[static_cast<std::size_t>(bucketIndex(bucket[0], bucket[1], bucket[2]))].push_back(p);
     for (int axis = 0; axis < 3; ++axis) {
       low[axis] = std::min(low[axis], frame.indexOf(axis, p[axis]) - reach - 1);
       high[axis] = std::max(high[axis], frame.indexOf(axis, p[axis]) + reach + 1);
     }
   }
   const environment::Index3& size = frame.size();
-  std::unordered_map<std::size_t, std::uint8_t> chosen;  // voxel -> faces towards free space
+  // Voxel -> faces towards free space, in linear order (each voxel is visited once, in order).
+  std::vector<std::pair<std::size_t, std::uint8_t>> voxels;
   for (int k = std::max(0, low[2]); k <= std::min(size[2] - 1, high[2]); ++k)
     for (int j = std::max(0, low[1]); j <= std::min(size[1] - 1, high[1]); ++j)
       for (int i = std::max(0, low[0]); i <= std::min(size[0] - 1, high[0]); ++i) {
@@ -227,20 +247,19 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
         for (long dx = -1; dx <= 1 && !taken; ++dx)
           for (long dy = -1; dy <= 1 && !taken; ++dy)
             for (long dz = -1; dz <= 1 && !taken; ++dz) {
-              const auto bucket = buckets.find({centre[0] + dx, centre[1] + dy, centre[2] + dz});
-              if (bucket == buckets.end()) continue;
-              for (const Eigen::Vector3d& p : bucket->second)
+              const long bucket = bucketIndex(centre[0] + dx, centre[1] + dy, centre[2] + dz);
+              if (bucket < 0) continue;
+              for (const Eigen::Vector3d& p : buckets[static_cast<std::size_t>(bucket)])
                 if (takes(p, i, j, k)) {
                   taken = true;
                   break;
                 }
             }
-        if (taken) chosen.emplace(frame.linear(i, j, k), faces);
+        if (taken) voxels.emplace_back(frame.linear(i, j, k), faces);
       }
-  std::vector<std::pair<std::size_t, std::uint8_t>> voxels(chosen.begin(), chosen.end());
-  std::sort(voxels.begin(), voxels.end());
   // Coarsen until it fits: a coarse cell holds any chosen voxel and draws any face they show.
   for (int factor = 1;; ++factor) {
+    if (factor == 1 && voxels.size() > max_voxels) continue;  // uncoarsened, each voxel is its own cell
     std::vector<environment::Index3> cells;
     std::vector<std::uint8_t> faces;
     std::unordered_map<std::size_t, std::size_t> cell_of;

@@ -1052,12 +1052,17 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
     sparse->profile(flown);
   }
 
-  // The independent re-check of every leg flown (the planner checked them too).
+  // The independent re-check of every leg flown (the planner checked them too), on the tour's
+  // threads; the first leg in flying order that fails is the one named.
+  std::vector<const SortieLeg*> flown_legs;
   for (const Sortie& sortie : tour.plan.sorties)
-    for (const SortieLeg& leg : sortie.legs)
-      if (const auto violation = context.baseRules().checkPathDensely(tour.legs[leg.from][leg.to].waypoints))
-        throw Error(flightModeName(tour.mode) + " mode: leg " + legName(tour, leg.from, leg.to) +
-                    " fails the dense re-check: " + *violation);
+    for (const SortieLeg& leg : sortie.legs) flown_legs.push_back(&leg);
+  parallelFor(flown_legs.size(), options.workers, [&](std::size_t k) {
+    const SortieLeg& leg = *flown_legs[k];
+    if (const auto violation = context.baseRules().checkPathDensely(tour.legs.at(leg.from, leg.to).waypoints))
+      throw Error(flightModeName(tour.mode) + " mode: leg " + legName(tour, leg.from, leg.to) +
+                  " fails the dense re-check: " + *violation);
+  });
 
   tour.unknown_space = context.environment().index()->unknownSpace();
   tour.unknown_summary = context.environment().index()->unknownSummary();

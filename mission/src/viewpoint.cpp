@@ -82,7 +82,7 @@ class ViewpointSearch {
     const double distance_m = (body_m - target_.point_m).norm();
     return distance_m >= target_.standoff_min_m && distance_m <= target_.standoff_max_m &&
            environment_.contains(body_m) && environment_.isStateValid(body_m) &&
-           environment_.ceiling(body_m).nearest_gap_m >= options_.min_ceiling_gap_m;
+           environment_.nearestCeilingGap_m(body_m) >= options_.min_ceiling_gap_m;
   }
 
   // Ceiling mode: the current keeps falling as the gap above closes, and a lattice leaves the
@@ -265,7 +265,7 @@ Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Env
   viewpoint.position_m = search.best();
   viewpoint.reachable = search.bestReachable();
   viewpoint.distance_m = (viewpoint.position_m - target.point_m).norm();
-  viewpoint.ceiling_gap_m = environment.ceiling(viewpoint.position_m).nearest_gap_m;
+  viewpoint.ceiling_gap_m = environment.nearestCeilingGap_m(viewpoint.position_m);
   viewpoint.standoff_m = planner::standoffAt(environment, viewpoint.position_m);
   viewpoint.dwell_current_a = hoverCurrentA(environment, model, viewpoint.position_m, options.soc);
   viewpoint.dwell_charge_ah = viewpoint.dwell_current_a * target.dwell_s / 3600.0;

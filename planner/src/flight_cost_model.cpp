@@ -136,9 +136,9 @@ PointConditions FlightCostModel::exactConditionsAt(const Eigen::Vector3d& body_m
     const environment::Environment::CeilingAndGround gaps = environment_.ceilingAndGround(body_m);
     conditions = surfaceConditions(gaps.ceiling, gaps.ground);
   } else {
-    const environment::SurfaceGaps ceiling = environment_.ceiling(body_m);
-    conditions.rotor_count = static_cast<int>(ceiling.rotors.size());
-    conditions.nearest_ceiling_gap_m = ceiling.nearest_gap_m;
+    // Free air under every rotor: only the speed rule's nearest ceiling counts.
+    conditions.rotor_count = static_cast<int>(environment_.vehicle().rotor_positions_m.size());
+    conditions.nearest_ceiling_gap_m = environment_.nearestCeilingGap_m(body_m);
   }
   conditions.standoff_shortfall_m = standoffShortfall_m(body_m);
   return conditions;

@@ -25,7 +25,7 @@ SafetyRules::SafetyRules(const environment::Environment& environment, double min
 }
 
 bool SafetyRules::gapOk(const Eigen::Vector3d& body_m) const {
-  return gap_implied_by_cylinder_ || environment_.ceiling(body_m).nearest_gap_m >= min_ceiling_gap_m_;
+  return gap_implied_by_cylinder_ || environment_.nearestCeilingGap_m(body_m) >= min_ceiling_gap_m_;
 }
 
 bool SafetyRules::isStateValid(const Eigen::Vector3d& body_m) const {
@@ -89,7 +89,7 @@ std::optional<std::string> SafetyRules::checkPathDensely(const std::vector<Eigen
     const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / dense_step_m_)));
     for (int k = 0; k <= steps; ++k) {
       const Eigen::Vector3d p = a + (b - a) * (double(k) / steps);
-      const double gap = environment_.ceiling(p).nearest_gap_m;
+      const double gap = environment_.nearestCeilingGap_m(p);
       if (gap < min_ceiling_gap_m_) {
         char line[200];
         std::snprintf(

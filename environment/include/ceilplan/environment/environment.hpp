@@ -147,6 +147,10 @@ class Environment {
   /// Whether ceiling(body_m).nearest_gap_m >= gap_m: the same columns' gaps, without weighing the
   /// discs, stopping at the first nearer one. Throws as ceiling() does.
   bool ceilingGapAtLeast(const Eigen::Vector3d& body_m, double gap_m) const;
+  /// ceiling(body_m).nearest_gap_m, the same to the bit: the same columns' gaps, without weighing
+  /// the discs (what the safety rules, free mode's cost and the viewpoints need). Throws as
+  /// ceiling() does.
+  double nearestCeilingGap_m(const Eigen::Vector3d& body_m) const;
 
   /// Distance from the body centre to the nearest occupied (or, by policy, unknown) voxel
   /// surface; 0 inside one, +inf if there is none. Throws ceilplan::InputError outside the map.

@@ -26,6 +26,7 @@
 #include "ceilplan/planner/planner_factory.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,7 +49,7 @@ struct TourOptions {
   /// viewpoint keeping the conventional standoff may be seen from up to this far (a conventional
   /// planner with a zoom lens), and is reported so (TourStop::beyond_standoff_range).
   std::optional<double> free_standoff_max_m;
-  int workers = 2;  ///< threads planning legs
+  int workers = 2;  ///< threads planning legs; from 2, planTours also plans its modes at once
   /// With a calibrated vehicle, each sortie's landing odds are checked by this many Monte Carlo
   /// draws (Sortie::sampled_landing, seeded with the planning seed); 0: not checked.
   int landing_draws = 1000;
@@ -175,5 +176,21 @@ struct TourResult {
 /// ceilplan::Error if a leg fails the dense re-check.
 TourResult planTour(const Mission& mission, const PlanningContext& context, FlightMode mode,
                     const TourOptions& options = {});
+
+/// Called by planTours with each tour as soon as it is planned (a front end writes its outputs).
+using TourPlanned = std::function<void(const TourResult&)>;
+
+/// The mission's tour in each of `modes` (tourFlightModes: both to compare them), each exactly
+/// as planTour plans it, to the bit. With TourOptions::workers of 2 or more the modes are planned
+/// at once, each on its own thread, sharing the context; each mode's parallel phases take up to
+/// `workers` threads more. TourOptions::progress and `planned` are called from the calling thread
+/// only: progress with the stages of the modes interleaved (each stage names its mode), `planned`
+/// with each tour in the order of `modes` once it and those before it are planned, so one mode's
+/// outputs are written while the next is planned. Throws what planTour throws for the first mode,
+/// in that order, that fails, after handing over the tours before it; a failure, or an exception
+/// from `planned` or the progress callback, stops the modes after it at their next progress report.
+std::vector<TourResult> planTours(const Mission& mission, const PlanningContext& context,
+                                  const std::vector<FlightMode>& modes, const TourOptions& options = {},
+                                  const TourPlanned& planned = {});
 
 }  // namespace ceilplan::mission
