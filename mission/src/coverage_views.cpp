@@ -906,8 +906,18 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   std::vector<std::uint32_t> hidden;
   std::vector<Seed> seeds = patternSeeds(environment.grid(), camera, region, surface, levels, heading, sees_straight,
                                          options.workers, tiling_patch, hidden);
+  // Oblique rows only over what some camera may see: a slot too thin to look into (the air over a
+  // diaphragm or a bearing) would take candidates no photo can use.
+  std::vector<std::uint8_t> may_be_seen(hidden.size(), 0);
+  parallelFor(hidden.size(), options.workers, [&](std::size_t k) {
+    may_be_seen[k] =
+        mayBeSeen(environment.grid(), surface.elements[hidden[k]], region.max_incidence_deg, camera.min_focus_m);
+  });
+  std::vector<std::uint32_t> hidden_seen;
+  for (std::size_t k = 0; k < hidden.size(); ++k)
+    if (may_be_seen[k]) hidden_seen.push_back(hidden[k]);
   const std::vector<Seed> oblique =
-      obliqueSeeds(environment.grid(), camera, region, surface, hidden, levels.front(), heading);
+      obliqueSeeds(environment.grid(), camera, region, surface, hidden_seen, levels.front(), heading);
   seeds.insert(seeds.end(), oblique.begin(), oblique.end());
   const std::vector<Seed> lattice =
       latticeSeeds(environment.grid(), camera, region, surface, levels, options.seed_spacing_share, heading);
