@@ -407,13 +407,11 @@ SampledLanding sampleLanding(const energy::EnergyModel& model, const std::vector
       const energy::EnergyModel perturbed(drawn);
       for (std::size_t k = 0; k < samples.size(); ++k)
         if (step_s[k] > 0.0 && base_a[k] > 0.0)
-          extra_ah += samples[k].current_a *
-                      (current(perturbed, samples[k],
-                               withinAirspeed(perturbed, flightCondition(samples[k], climb_m_s[k],
-                                                                         step_wind[k].at(mean_wind_m_s + gust_m_s)))) /
-                           base_a[k] -
-                       1.0) *
-                      step_s[k] / kSecondsPerHour;
+          extra_ah +=
+              samples[k].current_a *
+              (currentInWind(perturbed, samples[k], climb_m_s[k], step_wind[k], mean_wind_m_s + gust_m_s) / base_a[k] -
+               1.0) *
+              step_s[k] / kSecondsPerHour;
     } catch (const InputError&) {
       // A draw outside the model's valid range (e.g. efficiency above 1) is drawn again.
       if (++rejected > 10 * draws)
