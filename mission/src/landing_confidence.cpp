@@ -168,10 +168,12 @@ double bisect(F f, double target, double low, double high) {
   return 0.5 * (low + high);
 }
 
-// A SOC interval that holds every landing the mixture can give, with 10 standard deviations spare.
-std::pair<double, double> landingRange(double landing_soc, double soc_std, const std::vector<double>& shifts) {
+// The gust's SOC shifts widened by 10 standard deviations either way: with a landing SOC x, the
+// landings the mixture can give lie within x minus this span; the planned SOC whose odds reach a
+// given level over a reserve r lies within r plus it.
+std::pair<double, double> shiftSpan(double soc_std, const std::vector<double>& shifts) {
   const auto [least, most] = std::minmax_element(shifts.begin(), shifts.end());
-  return {landing_soc - *most - 10.0 * soc_std - 1e-9, landing_soc - *least + 10.0 * soc_std + 1e-9};
+  return {*least - 10.0 * soc_std - 1e-9, *most + 10.0 * soc_std + 1e-9};
 }
 
 // The model with each fitted parameter stepped up and down by its central difference's step:
@@ -188,10 +190,10 @@ class ParameterSteps {
     }
   }
 
-  // d(current)/d(theta_j) / current at one sample, for each fitted parameter j.
-  std::vector<double> relativeSensitivity(const energy::EnergyModel& model, const planner::PathSample& sample,
-                                          double climb_m_s, const energy::RelativeWind& wind) const {
-    const double base_a = current(model, sample, climb_m_s, wind);
+  // d(current)/d(theta_j) / current at one sample, for each fitted parameter j, given the fitted
+  // model's current there (`base_a`), which the caller needs too.
+  std::vector<double> relativeSensitivity(const planner::PathSample& sample, double climb_m_s,
+                                          const energy::RelativeWind& wind, double base_a) const {
     std::vector<double> relative(steps_.size(), 0.0);
     if (base_a <= 0.0) return relative;
     for (std::size_t j = 0; j < steps_.size(); ++j)
@@ -258,9 +260,9 @@ LandingOdds landingOdds(double landing_soc, const ChargeSensitivity& sensitivity
     const double normal_std = odds.soc_std;
     odds.soc_std = std::sqrt(normal_std * normal_std + std::max(0.0, square - mean * mean));
     odds.p_land_above_reserve = mixedProbability(landing_soc, normal_std, shifts, reserve_soc);
-    const auto [low, high] = landingRange(landing_soc, normal_std, shifts);
-    odds.soc_p01 =
-        bisect([&](double soc) { return mixedProbability(landing_soc, normal_std, shifts, soc); }, 0.99, low, high);
+    const auto [least, most] = shiftSpan(normal_std, shifts);
+    odds.soc_p01 = bisect([&](double soc) { return mixedProbability(landing_soc, normal_std, shifts, soc); }, 0.99,
+                          landing_soc - most, landing_soc - least);
     return odds;
   }
   if (odds.soc_std <= 0.0) {
@@ -280,9 +282,9 @@ double effectiveReserveSoc(double reserve_soc, double confidence, const ChargeSe
   if (sensitivity.gust_charge_ah.empty()) return reserve_soc + standardNormalQuantile(confidence) * soc_std;
   // The mixture's odds of landing above the reserve rise with the planned landing SOC.
   const std::vector<double> shifts = gustSocShifts(sensitivity, usable_capacity_ah);
-  const auto [least, most] = std::minmax_element(shifts.begin(), shifts.end());
+  const auto [least, most] = shiftSpan(soc_std, shifts);
   return bisect([&](double planned) { return -mixedProbability(planned, soc_std, shifts, reserve_soc); }, -confidence,
-                reserve_soc + *least - 10.0 * soc_std - 1e-9, reserve_soc + *most + 10.0 * soc_std + 1e-9);
+                reserve_soc + least, reserve_soc + most);
 }
 
 bool meetsConfidence(double landing_soc, double confidence, const ChargeSensitivity& sensitivity,
@@ -295,7 +297,8 @@ bool meetsConfidence(double landing_soc, double confidence, const ChargeSensitiv
 std::vector<double> relativeCurrentSensitivity(const energy::EnergyModel& model, const planner::PathSample& sample,
                                                double climb_m_s, const energy::FitUncertainty& fit,
                                                const energy::RelativeWind& wind) {
-  return ParameterSteps(model, fit).relativeSensitivity(model, sample, climb_m_s, wind);
+  return ParameterSteps(model, fit)
+      .relativeSensitivity(sample, climb_m_s, wind, current(model, sample, climb_m_s, wind));
 }
 
 ChargeSensitivity pathChargeSensitivity(const energy::EnergyModel& model,
@@ -310,13 +313,13 @@ ChargeSensitivity pathChargeSensitivity(const energy::EnergyModel& model,
     if (dt_s <= 0.0) continue;
     const double climb_m_s = climbAfter(samples, k);
     const StepWind step{airPerWindSpeed(wind, samples[k]), trackAfter(samples, k)};
-    const std::vector<double> relative =
-        steps.relativeSensitivity(model, samples[k], climb_m_s, step.at(wind.wind.speed_m_s));
+    const energy::RelativeWind mean = step.at(wind.wind.speed_m_s);
+    const double base_a = current(model, samples[k], climb_m_s, mean);
+    const std::vector<double> relative = steps.relativeSensitivity(samples[k], climb_m_s, mean, base_a);
     for (std::size_t j = 0; j < relative.size(); ++j)
       sensitivity.per_parameter_ah[j] += samples[k].current_a * relative[j] * dt_s / kSecondsPerHour;
     if (!sensitivity.gust_charge_ah.empty())
-      addGustCharges(model, samples[k], climb_m_s, step, wind.wind,
-                     current(model, samples[k], climb_m_s, step.at(wind.wind.speed_m_s)),
+      addGustCharges(model, samples[k], climb_m_s, step, wind.wind, base_a,
                      samples[k].current_a * dt_s / kSecondsPerHour, sensitivity.gust_charge_ah);
     sensitivity.flight_s += dt_s;
   }
@@ -329,13 +332,13 @@ ChargeSensitivity steadyChargeSensitivity(const energy::EnergyModel& model, cons
   ChargeSensitivity sensitivity;
   const StepWind hover{airPerWindSpeed(wind, condition), Eigen::Vector2d::Zero()};
   const energy::RelativeWind mean = hover.at(wind.wind.speed_m_s);
-  sensitivity.per_parameter_ah = relativeCurrentSensitivity(model, condition, 0.0, fit, mean);
+  const double base_a = current(model, condition, 0.0, mean);
+  sensitivity.per_parameter_ah = ParameterSteps(model, fit).relativeSensitivity(condition, 0.0, mean, base_a);
   for (double& s : sensitivity.per_parameter_ah) s *= charge_ah;
   sensitivity.flight_s = duration_s;
   if (wind.wind.gust_m_s > 0.0) {
     sensitivity.gust_charge_ah.assign(kGustPoints, 0.0);
-    addGustCharges(model, condition, 0.0, hover, wind.wind, current(model, condition, 0.0, mean), charge_ah,
-                   sensitivity.gust_charge_ah);
+    addGustCharges(model, condition, 0.0, hover, wind.wind, base_a, charge_ah, sensitivity.gust_charge_ah);
   }
   return sensitivity;
 }
