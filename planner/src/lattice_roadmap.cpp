@@ -4,6 +4,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/parallel_for.hpp"
 
+#include "elevation_bound.hpp"
 #include "lattice_bridge.hpp"
 #include "lattice_grid.hpp"
 #include "lattice_query.hpp"
@@ -130,6 +131,7 @@ void LatticeRoadmap::dropGraph() {
   objective_ = nullptr;
   node_count_ = 0;
   lattice_.reset();
+  bound_.reset();
   valid_nodes_.clear();
   complete_ = false;
   bridge_positions_m_.clear();
@@ -159,6 +161,14 @@ void LatticeRoadmap::startGraph(const FlightObjective& objective) {
   lattice_ = std::make_unique<detail::LazyLattice>(rules_->environment().grid().frame(), settings_.spacing_m);
   node_count_ = lattice.nodeCount();
   objective_ = &objective;
+  bound_ = std::make_unique<detail::ElevationBound>(objective);
+  for (int d = 0; d < kDirections; ++d) {
+    const std::array<int, 3>& offset = lattice_->directions.offsets[d];
+    const Eigen::Vector3d edge_m = lattice.spacing_m() * Eigen::Vector3d(offset[0], offset[1], offset[2]);
+    // At least c_min x length, so the A* heuristic (c_min x distance) stays consistent with it.
+    edge_bounds_[d] =
+        std::max((*bound_)(Eigen::Vector3d::Zero(), edge_m), objective.heuristic(Eigen::Vector3d::Zero(), edge_m));
+  }
 }
 
 void LatticeRoadmap::completeGraph() {
@@ -212,46 +222,39 @@ float LatticeRoadmap::edgeCost(std::uint32_t node, int direction) const {
   const std::atomic<float>& cell = lattice_->cost(node, direction);
   float cost = cell.load(std::memory_order_relaxed);
   if (cost == kUncosted) {
-    costEdgesOf(node);
+    costEdge(node, direction);
     cost = cell.load(std::memory_order_relaxed);
   }
   return cost;
 }
 
-void LatticeRoadmap::costEdgesOf(std::uint32_t node) const {
+void LatticeRoadmap::costEdge(std::uint32_t node, int direction) const {
   const detail::LatticeGrid& lattice = lattice_->grid;
   const detail::LatticeDirections& directions = lattice_->directions;
-  const FlightCostModel& model = objective_->model();
-  // The node ends all 26 edges: its conditions are found once.
-  const Eigen::Vector3d node_m = lattice.position(node);
-  const PointConditions at_node = model.conditionsAt(node_m);
-  const auto conditions = [&](const Eigen::Vector3d& p) { return p == node_m ? at_node : model.conditionsAt(p); };
-  const std::array<int, 3> at = lattice.indices(node);
-  for (int direction = 0; direction < kDirections; ++direction) {
-    std::atomic<float>& cell = lattice_->cost(node, direction);
-    if (cell.load(std::memory_order_relaxed) != kUncosted) continue;
-    const std::array<int, 3> to = neighbour(at, directions.offsets[direction]);
-    const auto other = lattice.inside(to[0], to[1], to[2]) ? static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]))
-                                                           : std::numeric_limits<std::uint32_t>::max();
-    if (other == std::numeric_limits<std::uint32_t>::max() || !nodeValid(other)) {
-      cell.store(kNoEdge, std::memory_order_relaxed);
-      continue;
-    }
-    // Costed from the edge's first node, as checking every edge at once does, so the values are
-    // the same to the bit however the lattice is explored.
-    const bool forward = direction >= kFirstForwardDirection;
-    const std::uint32_t first = forward ? node : other, second = forward ? other : node;
-    const int first_direction = forward ? direction : directions.opposite[direction];
-    const Eigen::Vector3d here = lattice.position(first), there = lattice.position(second);
-    float forth = kNoEdge, back = kNoEdge;
-    if (rules_->isMotionValid(here, there)) {
-      const auto [forth_totals, back_totals] = model.integrateBothWays(here, there, conditions);
-      forth = static_cast<float>(objective_->weights().of(forth_totals));
-      back = static_cast<float>(objective_->weights().of(back_totals));
-    }
-    lattice_->cost(first, first_direction).store(forth, std::memory_order_relaxed);
-    lattice_->cost(second, directions.opposite[first_direction]).store(back, std::memory_order_relaxed);
+  std::atomic<float>& cell = lattice_->cost(node, direction);
+  const std::array<int, 3> to = neighbour(lattice.indices(node), directions.offsets[direction]);
+  const auto other = lattice.inside(to[0], to[1], to[2]) ? static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]))
+                                                         : std::numeric_limits<std::uint32_t>::max();
+  if (other == std::numeric_limits<std::uint32_t>::max() || !nodeValid(other)) {
+    cell.store(kNoEdge, std::memory_order_relaxed);
+    return;
   }
+  // Costed from the edge's first node, both ways at once, so the values are the same to the bit
+  // however the lattice is explored.
+  const bool forward = direction >= kFirstForwardDirection;
+  const std::uint32_t first = forward ? node : other, second = forward ? other : node;
+  const int first_direction = forward ? direction : directions.opposite[direction];
+  const Eigen::Vector3d here = lattice.position(first), there = lattice.position(second);
+  float forth = kNoEdge, back = kNoEdge;
+  if (rules_->isMotionValid(here, there)) {
+    const FlightCostModel& model = objective_->model();
+    const auto [forth_totals, back_totals] =
+        model.integrateBothWays(here, there, [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
+    forth = static_cast<float>(objective_->weights().of(forth_totals));
+    back = static_cast<float>(objective_->weights().of(back_totals));
+  }
+  lattice_->cost(first, first_direction).store(forth, std::memory_order_relaxed);
+  lattice_->cost(second, directions.opposite[first_direction]).store(back, std::memory_order_relaxed);
 }
 
 bool LatticeRoadmap::placesJoined(const std::vector<Place>& places) const {
@@ -558,15 +561,39 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     for (int goal : targets) h = std::min(h, objective_->heuristic(at, places_m[goal]));
     return h;
   };
-  using Entry = std::pair<double, std::uint32_t>;
+  // Lazy in the lattice's edges, as LazyPRM is in its roadmap's: an edge not costed yet waits in
+  // the queue at its lower bound (edge_bounds_: climbing costs more than descending) and is
+  // costed only if it comes off the queue still able to improve its end. Around a search's
+  // front, most edges lead where a cheaper way already reached.
+  struct Entry {
+    double key;
+    std::uint32_t state;
+    int direction;  // >= 0: the uncosted lattice edge out of `state` (a closed node) this way
+    bool operator>(const Entry& other) const {
+      if (key != other.key) return key > other.key;
+      if (state != other.state) return state > other.state;
+      return direction > other.direction;
+    }
+  };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  // Closed states leave the queue in (key, state) order; of the states that reach another at
+  // the same least cost, its parent is the first of them in that order, whichever order the
+  // lazy edges are costed in: the routes are those of the search that costs every edge.
+  const auto closesBefore = [&](std::uint32_t a, std::uint32_t b) {
+    if (b == kStart) return false;
+    if (a == kStart) return true;
+    const double key_a = cost_to[a] + heuristic(a), key_b = cost_to[b] + heuristic(b);
+    return key_a != key_b ? key_a < key_b : a < b;
+  };
   const auto relax = [&](std::size_t state, std::uint32_t from_state, double g) {
     if (g < cost_to[state]) {
       if (cost_to[state] == std::numeric_limits<double>::infinity())
         buffers.touched.push_back(static_cast<std::uint32_t>(state));
       cost_to[state] = g;
       parent[state] = from_state;
-      open.emplace(g + heuristic(state), static_cast<std::uint32_t>(state));
+      open.push({g + heuristic(state), static_cast<std::uint32_t>(state), -1});
+    } else if (g == cost_to[state] && closesBefore(from_state, parent[state])) {
+      parent[state] = from_state;
     }
   };
   const auto arrive = [&](std::uint32_t state, double g) {
@@ -575,12 +602,27 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
         if (join.state == state) relax(place_offset + goal, state, g + join.cost);
     }
   };
+  const auto neighbourOf = [&](std::uint32_t node, int direction) -> std::optional<std::uint32_t> {
+    const std::array<int, 3> to = neighbour(lattice.indices(node), directions.offsets[direction]);
+    if (!lattice.inside(to[0], to[1], to[2])) return std::nullopt;
+    return static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]));
+  };
 
   for (const Join& join : place_data[from].out) relax(join.state, kStart, join.cost);
   int goals_left = static_cast<int>(targets.size());
   while (!open.empty() && goals_left > 0) {
-    const std::uint32_t state = open.top().second;
+    const Entry entry = open.top();
     open.pop();
+    if (entry.direction >= 0) {
+      const std::uint32_t node = entry.state;
+      const std::uint32_t next = *neighbourOf(node, entry.direction);
+      const double g = cost_to[node];
+      if (closed[next] || g + edge_bounds_[entry.direction] >= cost_to[next]) continue;
+      const float c = edgeCost(node, entry.direction);
+      if (c != kNoEdge) relax(next, node, g + c);
+      continue;
+    }
+    const std::uint32_t state = entry.state;
     if (closed[state]) continue;
     closed[state] = 1;
     const double g = cost_to[state];
@@ -593,17 +635,21 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
       arrive(state, g);
       continue;
     }
-    const std::uint32_t node = state;
-    const std::array<int, 3> at = lattice.indices(node);
+    const std::uint32_t node = state;  // valid: reached by an edge or a join
     for (int d = 0; d < kDirections; ++d) {
-      const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
-      if (!lattice.inside(to[0], to[1], to[2])) continue;
-      const float c = edgeCost(node, d);
-      if (c != kNoEdge) relax(lattice.id(to[0], to[1], to[2]), state, g + c);
+      const std::optional<std::uint32_t> next = neighbourOf(node, d);
+      if (!next || closed[*next]) continue;
+      const float c = lattice_->cost(node, d).load(std::memory_order_relaxed);
+      if (c == kUncosted) {
+        // Below the key its end gets through this edge, and no lower than this node's own.
+        if (g + edge_bounds_[d] < cost_to[*next]) open.push({g + edge_bounds_[d] + heuristic(*next), node, d});
+      } else if (c != kNoEdge) {
+        relax(*next, node, g + c);
+      }
     }
     if (!node_arcs_.empty()) {
       const auto first = std::lower_bound(node_arcs_.begin(), node_arcs_.end(), node,
-                                          [](const auto& entry, std::uint32_t n) { return entry.first < n; });
+                                          [](const auto& arc, std::uint32_t n) { return arc.first < n; });
       for (auto it = first; it != node_arcs_.end() && it->first == node; ++it)
         relax(it->second.to, state, g + it->second.cost);
     }

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 namespace ceilplan::testing {
@@ -49,6 +51,42 @@ TEST(Heuristics, CostToGoNeverExceedsTheMotionCostOnRandomPairs) {
                                         : Eigen::Vector3d(a + Eigen::Vector3d::Random() * 0.3);
         if (!environment.contains(b)) continue;
         EXPECT_LE(objective.heuristic(a, b), objective.motionCost(a, b) * (1 + 1e-12))
+            << name << (proximity ? " ceiling" : " free") << " from " << a.transpose() << " to " << b.transpose();
+      }
+    }
+  }
+}
+
+// The roadmap prices an edge it has not costed yet by its direction (climbing costs more than
+// descending): minCostPerMetreAt(elevation) must never exceed a motion's cost per metre at
+// that elevation, in either mode and under every objective, and the cheapest over the fan is
+// minCostPerMetre (without its margin).
+TEST(Heuristics, TheCheapestMetreAtEachElevationNeverExceedsAMotionsCostPerMetreThere) {
+  const environment::OccupancyMap map = corridor(beamedCeiling);
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const planner::SafetyRules rules(environment, 0.05);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> x(-0.4, 6.4), y(-2.4, 2.4), z(0.25, 3.45);
+  for (const bool proximity : {true, false}) {
+    planner::CostModelOptions options;
+    options.proximity_effects = proximity;
+    const planner::FlightCostModel model(environment, energy, options);
+    for (const std::string& name : planner::objectiveNames()) {
+      const planner::FlightPlanner planner(rules, model, choice(name));
+      const planner::FlightObjective& objective = planner.objective();
+      double cheapest = std::numeric_limits<double>::infinity();
+      for (const double elevation : model.costFanElevations_rad())
+        cheapest = std::min(cheapest, model.minCostPerMetreAt(objective.weights(), elevation));
+      EXPECT_DOUBLE_EQ(objective.minCostPerMetre(), 0.995 * cheapest) << name;
+      for (int k = 0; k < 300; ++k) {
+        const Eigen::Vector3d a(x(random), y(random), z(random));
+        const Eigen::Vector3d b = k % 2 ? Eigen::Vector3d(x(random), y(random), z(random))
+                                        : Eigen::Vector3d(a + Eigen::Vector3d::Random() * 0.4);
+        if (!environment.contains(b) || (b - a).norm() < 1e-3) continue;
+        const double elevation = std::atan2(b.z() - a.z(), (b - a).head<2>().norm());
+        EXPECT_LE(model.minCostPerMetreAt(objective.weights(), elevation) * (b - a).norm(),
+                  objective.motionCost(a, b) * (1 + 1e-12))
             << name << (proximity ? " ceiling" : " free") << " from " << a.transpose() << " to " << b.transpose();
       }
     }

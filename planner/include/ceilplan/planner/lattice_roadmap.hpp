@@ -8,8 +8,11 @@
 /// PRM it is multi-query: solve() builds it on first use for the problem's objective, and
 /// clearQuery() forgets the query but keeps the roadmap. A tour builds it for a fixed set of
 /// places instead (build) and searches once per place (routesFrom: one Dijkstra search gives
-/// the cheapest route to every other place). Deterministic: the same inputs give the same
-/// routes, whatever the thread count. docs/planner.md, "Roadmap".
+/// the cheapest route to every other place). The searches are lazy in the edges, as OMPL's
+/// LazyPRM is: an edge waits at a lower bound of its cost and is checked and costed only if
+/// the search still needs it then; the routes are those of a search that costs every edge it
+/// meets, to the bit. Deterministic: the same inputs give the same routes, whatever the thread
+/// count. docs/planner.md, "Roadmap".
 ///
 /// Where the lattice leaves places apart, it refines as the lattice A* does: between the part
 /// of the roadmap a place reaches and the parts the others reach, a fine search near their
@@ -22,6 +25,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -31,7 +35,8 @@
 namespace ceilplan::planner {
 namespace detail {
 class LazyLattice;
-}
+class ElevationBound;
+}  // namespace detail
 
 /// A route through the roadmap between two places.
 struct RoadmapRoute {
@@ -119,7 +124,7 @@ class LatticeRoadmap : public LatticePlannerBase {
   /// `node` in `direction` (+inf where there is none).
   bool nodeValid(std::uint32_t node) const;
   float edgeCost(std::uint32_t node, int direction) const;
-  void costEdgesOf(std::uint32_t node) const;  ///< every edge of a valid node not costed yet
+  void costEdge(std::uint32_t node, int direction) const;  ///< both ways, from a valid node
   /// Whether each place's first join lies in the part of the lattice place 0's first join lies
   /// in: what the refinement's partition finds before it adds anything.
   bool placesJoined(const std::vector<Place>& places) const;
@@ -144,6 +149,8 @@ class LatticeRoadmap : public LatticePlannerBase {
   const FlightObjective* objective_ = nullptr;  ///< the roadmap's costs; null until built
   std::size_t node_count_ = 0;
   std::unique_ptr<detail::LazyLattice> lattice_;          ///< what is checked and costed so far
+  std::unique_ptr<detail::ElevationBound> bound_;         ///< the searches' heuristic, for objective_
+  std::array<double, 26> edge_bounds_{};                  ///< its value along each lattice direction
   std::vector<std::uint32_t> valid_nodes_;                ///< every valid node, once checkEverything ran
   bool complete_ = false;                                 ///< checkEverything ran
   std::vector<Eigen::Vector3d> bridge_positions_m_;       ///< vertices refinement added
