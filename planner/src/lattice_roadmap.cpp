@@ -37,74 +37,156 @@ std::array<int, 3> neighbour(const std::array<int, 3>& at, const std::array<int,
 
 namespace detail {
 
-// The lattice with what is checked and costed of it so far, shared by the searches' threads:
-// a byte per node (unchecked, invalid, valid) and the 26 outgoing costs of each node, in chunks
-// of consecutive nodes allocated when a node in them is first costed. Every value is the same
-// whichever thread computes it, so a race only computes one twice.
-class LazyLattice {
+// Chunks of `per_node` atomic cells for consecutive nodes, each allocated, filled with
+// `initial`, when a node in it is first asked for, from any thread.
+template <typename T>
+class LazyCells {
  public:
   static constexpr std::size_t kChunkNodes = 256;
 
-  LazyLattice(const environment::GridFrame& frame, double spacing_m)
-      : grid(frame, spacing_m),
-        validity_(new std::atomic<std::uint8_t>[grid.nodeCount()]),
-        chunk_count_((grid.nodeCount() + kChunkNodes - 1) / kChunkNodes),
-        chunks_(new std::atomic<std::atomic<float>*>[chunk_count_]) {
-    for (std::size_t n = 0; n < grid.nodeCount(); ++n) validity_[n].store(kUnchecked, std::memory_order_relaxed);
+  LazyCells(std::size_t node_count, int per_node, T initial)
+      : per_node_(per_node),
+        initial_(initial),
+        chunk_count_((node_count + kChunkNodes - 1) / kChunkNodes),
+        chunks_(new std::atomic<std::atomic<T>*>[chunk_count_]) {
     for (std::size_t c = 0; c < chunk_count_; ++c) chunks_[c].store(nullptr, std::memory_order_relaxed);
   }
-  ~LazyLattice() {
+  ~LazyCells() {
     for (std::size_t c = 0; c < chunk_count_; ++c) delete[] chunks_[c].load(std::memory_order_relaxed);
   }
-  LazyLattice(const LazyLattice&) = delete;
-  LazyLattice& operator=(const LazyLattice&) = delete;
+  LazyCells(const LazyCells&) = delete;
+  LazyCells& operator=(const LazyCells&) = delete;
 
-  std::atomic<std::uint8_t>& validity(std::size_t node) const { return validity_[node]; }
-  std::atomic<float>& cost(std::size_t node, int direction) const {
-    std::atomic<std::atomic<float>*>& slot = chunks_[node / kChunkNodes];
-    std::atomic<float>* chunk = slot.load(std::memory_order_acquire);
+  std::atomic<T>& at(std::size_t node, int k) const {
+    std::atomic<std::atomic<T>*>& slot = chunks_[node / kChunkNodes];
+    std::atomic<T>* chunk = slot.load(std::memory_order_acquire);
     if (!chunk) {
-      std::atomic<float>* fresh = new std::atomic<float>[kChunkNodes * kDirections];
-      for (std::size_t k = 0; k < kChunkNodes * kDirections; ++k) fresh[k].store(kUncosted, std::memory_order_relaxed);
+      const std::size_t cells = kChunkNodes * per_node_;
+      auto* fresh = new std::atomic<T>[cells];
+      for (std::size_t c = 0; c < cells; ++c) fresh[c].store(initial_, std::memory_order_relaxed);
       if (slot.compare_exchange_strong(chunk, fresh, std::memory_order_acq_rel, std::memory_order_acquire)) {
         chunk = fresh;
       } else {
         delete[] fresh;  // another thread's chunk won
       }
     }
-    return chunk[(node % kChunkNodes) * kDirections + direction];
+    return chunk[(node % kChunkNodes) * per_node_ + k];
   }
-  // Calls visit(cost) for every costed cell.
+  // Calls visit(value) for every cell no longer at its initial value.
   template <typename Visit>
-  void forEachCost(Visit&& visit) const {
+  void forEachSet(Visit&& visit) const {
     for (std::size_t c = 0; c < chunk_count_; ++c)
-      if (const std::atomic<float>* chunk = chunks_[c].load(std::memory_order_acquire))
-        for (std::size_t k = 0; k < kChunkNodes * kDirections; ++k) {
-          const float value = chunk[k].load(std::memory_order_relaxed);
-          if (value != kUncosted) visit(value);
+      if (const std::atomic<T>* chunk = chunks_[c].load(std::memory_order_acquire))
+        for (std::size_t k = 0; k < kChunkNodes * per_node_; ++k) {
+          const T value = chunk[k].load(std::memory_order_relaxed);
+          if (value != initial_) visit(value);
         }
-  }
-  std::size_t validCount() const {
-    std::size_t count = 0;
-    for (std::size_t n = 0; n < grid.nodeCount(); ++n) count += validity_[n].load(std::memory_order_relaxed) == kValid;
-    return count;
   }
   std::size_t memoryBytes() const {
     std::size_t chunks = 0;
     for (std::size_t c = 0; c < chunk_count_; ++c) chunks += chunks_[c].load(std::memory_order_relaxed) != nullptr;
-    return grid.nodeCount() + chunk_count_ * sizeof(void*) + chunks * kChunkNodes * kDirections * sizeof(float);
+    return chunk_count_ * sizeof(void*) + chunks * kChunkNodes * per_node_ * sizeof(T);
   }
+
+ private:
+  std::size_t per_node_;
+  T initial_;
+  std::size_t chunk_count_;
+  std::unique_ptr<std::atomic<std::atomic<T>*>[]> chunks_;
+};
+
+// The lattice's costs so far, shared by the searches' threads: the 26 outgoing costs of each
+// node. Every value is the same whichever thread computes it, so a race only computes one twice.
+class LazyLattice {
+ public:
+  LazyLattice(const environment::GridFrame& frame, double spacing_m)
+      : grid(frame, spacing_m), costs_(grid.nodeCount(), kDirections, kUncosted) {}
+
+  std::atomic<float>& cost(std::size_t node, int direction) const { return costs_.at(node, direction); }
+  template <typename Visit>
+  void forEachCost(Visit&& visit) const {
+    costs_.forEachSet(visit);
+  }
+  std::size_t memoryBytes() const { return costs_.memoryBytes(); }
 
   const LatticeGrid grid;
   const LatticeDirections directions;
 
  private:
-  std::unique_ptr<std::atomic<std::uint8_t>[]> validity_;
-  std::size_t chunk_count_;
-  std::unique_ptr<std::atomic<std::atomic<float>*>[]> chunks_;
+  LazyCells<float> costs_;
+};
+
+// What the safety rules allow on the lattice so far: a byte per node and per edge (from its
+// first node, in the 13 forward directions): unchecked, invalid or valid.
+class ValidityCells {
+ public:
+  ValidityCells(const SafetyRules& rules, double spacing_m)
+      : rules(rules),
+        grid(rules.environment().grid().frame(), spacing_m),
+        nodes_(new std::atomic<std::uint8_t>[grid.nodeCount()]),
+        edges_(grid.nodeCount(), kDirections - kFirstForwardDirection, kUnchecked) {
+    for (std::size_t n = 0; n < grid.nodeCount(); ++n) nodes_[n].store(kUnchecked, std::memory_order_relaxed);
+  }
+
+  bool nodeValid(std::size_t node) const {
+    std::atomic<std::uint8_t>& cell = nodes_[node];
+    std::uint8_t state = cell.load(std::memory_order_relaxed);
+    if (state == kUnchecked) {
+      state = rules.isStateValid(grid.position(node)) ? kValid : kInvalid;
+      cell.store(state, std::memory_order_relaxed);
+    }
+    return state == kValid;
+  }
+  // The straight motion from `first` to its neighbour `second` in forward direction `direction`.
+  bool edgeValid(std::size_t first, std::size_t second, int direction) const {
+    std::atomic<std::uint8_t>& cell = edges_.at(first, direction - kFirstForwardDirection);
+    std::uint8_t state = cell.load(std::memory_order_relaxed);
+    if (state == kUnchecked) {
+      state = rules.isMotionValid(grid.position(first), grid.position(second)) ? kValid : kInvalid;
+      cell.store(state, std::memory_order_relaxed);
+    }
+    return state == kValid;
+  }
+  std::size_t validCount() const {
+    std::size_t count = 0;
+    for (std::size_t n = 0; n < grid.nodeCount(); ++n) count += nodes_[n].load(std::memory_order_relaxed) == kValid;
+    return count;
+  }
+  std::size_t checkedEdgeCount() const {
+    std::size_t count = 0;
+    edges_.forEachSet([&count](std::uint8_t) { ++count; });
+    return count;
+  }
+  std::size_t memoryBytes() const { return grid.nodeCount() + edges_.memoryBytes(); }
+
+  const SafetyRules& rules;
+  const LatticeGrid grid;
+
+ private:
+  std::unique_ptr<std::atomic<std::uint8_t>[]> nodes_;
+  LazyCells<std::uint8_t> edges_;
 };
 
 }  // namespace detail
+
+LatticeValidity::LatticeValidity(const SafetyRules& rules, double spacing_m) {
+  LatticeSettings settings;
+  settings.spacing_m = spacing_m;
+  settings.validate();
+  const detail::LatticeGrid lattice(rules.environment().grid().frame(), spacing_m);
+  if (lattice.nodeCount() >= std::numeric_limits<std::uint32_t>::max())
+    throw ceilplan::InputError("the map has too many lattice nodes for a " + formatNumber(lattice.spacing_m()) +
+                               " m spacing: raise the spacing");
+  cells_ = std::make_unique<detail::ValidityCells>(rules, spacing_m);
+}
+
+LatticeValidity::~LatticeValidity() = default;
+
+const SafetyRules& LatticeValidity::rules() const { return cells_->rules; }
+
+double LatticeValidity::spacing_m() const { return cells_->grid.spacing_m(); }
+
+std::size_t LatticeValidity::checkedEdgeCount() const { return cells_->checkedEdgeCount(); }
 
 LatticeRoadmap::LatticeRoadmap(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings)
     : LatticePlannerBase(si, "roadmap", std::move(settings)) {
@@ -131,6 +213,7 @@ void LatticeRoadmap::dropGraph() {
   objective_ = nullptr;
   node_count_ = 0;
   lattice_.reset();
+  validity_.reset();
   bound_.reset();
   valid_nodes_.clear();
   complete_ = false;
@@ -139,25 +222,33 @@ void LatticeRoadmap::dropGraph() {
   node_arcs_.clear();
 }
 
-void LatticeRoadmap::build(const FlightObjective& objective, std::vector<Eigen::Vector3d> places_m) {
+void LatticeRoadmap::build(const FlightObjective& objective, std::vector<Eigen::Vector3d> places_m,
+                           std::shared_ptr<const LatticeValidity> validity) {
   rules_ = &detail::rulesOf(*si_, getName());
   for (const Eigen::Vector3d& place : places_m)
     if (!place.allFinite() || !rules_->environment().contains(place))
       throw ceilplan::InputError("a roadmap place lies outside the map");
-  startGraph(objective);
+  startGraph(objective, std::move(validity));
   places_m_ = std::move(places_m);
   places_ = joinPlaces(places_m_);
   place_blockages_ = connect(places_m_, places_, ompl::base::plannerNonTerminatingCondition());
   if (settings_.progress) settings_.progress(1.0);
 }
 
-void LatticeRoadmap::startGraph(const FlightObjective& objective) {
+void LatticeRoadmap::startGraph(const FlightObjective& objective, std::shared_ptr<const LatticeValidity> validity) {
   dropGraph();
   rules_ = &detail::rulesOf(*si_, getName());
-  const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
-  if (lattice.nodeCount() >= std::numeric_limits<std::uint32_t>::max())
-    throw ceilplan::InputError("the map has too many lattice nodes for a " + formatNumber(lattice.spacing_m()) +
-                               " m spacing: raise the spacing");
+  if (!validity) {
+    validity = std::make_shared<const LatticeValidity>(*rules_, settings_.spacing_m);
+  } else if (&validity->rules().environment() != &rules_->environment() ||
+             validity->rules().minCeilingGap_m() != rules_->minCeilingGap_m() ||
+             detail::strideVoxels(rules_->environment().grid().frame(), validity->spacing_m()) !=
+                 detail::strideVoxels(rules_->environment().grid().frame(), settings_.spacing_m)) {
+    throw ceilplan::InputError(
+        "a shared lattice validity must be made for the roadmap's map, safety rules and spacing");
+  }
+  validity_ = std::move(validity);
+  const detail::LatticeGrid& lattice = validity_->cells_->grid;
   lattice_ = std::make_unique<detail::LazyLattice>(rules_->environment().grid().frame(), settings_.spacing_m);
   node_count_ = lattice.nodeCount();
   objective_ = &objective;
@@ -207,15 +298,7 @@ bool LatticeRoadmap::checkEverything(const std::function<bool()>& abandon) {
   return true;
 }
 
-bool LatticeRoadmap::nodeValid(std::uint32_t node) const {
-  std::atomic<std::uint8_t>& cell = lattice_->validity(node);
-  std::uint8_t state = cell.load(std::memory_order_relaxed);
-  if (state == kUnchecked) {
-    state = rules_->isStateValid(lattice_->grid.position(node)) ? kValid : kInvalid;
-    cell.store(state, std::memory_order_relaxed);
-  }
-  return state == kValid;
-}
+bool LatticeRoadmap::nodeValid(std::uint32_t node) const { return validity_->cells_->nodeValid(node); }
 
 float LatticeRoadmap::edgeCost(std::uint32_t node, int direction) const {
   if (!nodeValid(node)) return kNoEdge;
@@ -246,7 +329,7 @@ void LatticeRoadmap::costEdge(std::uint32_t node, int direction) const {
   const int first_direction = forward ? direction : directions.opposite[direction];
   const Eigen::Vector3d here = lattice.position(first), there = lattice.position(second);
   float forth = kNoEdge, back = kNoEdge;
-  if (rules_->isMotionValid(here, there)) {
+  if (validity_->cells_->edgeValid(first, second, first_direction)) {
     const FlightCostModel& model = objective_->model();
     const auto [forth_totals, back_totals] =
         model.integrateBothWays(here, there, [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
@@ -470,7 +553,7 @@ std::optional<Blockage> LatticeRoadmap::blockage(int from, int to) const {
   return place_blockages_[from] ? place_blockages_[from] : place_blockages_[to];
 }
 
-std::size_t LatticeRoadmap::validNodeCount() const { return lattice_ ? lattice_->validCount() : 0; }
+std::size_t LatticeRoadmap::validNodeCount() const { return validity_ ? validity_->cells_->validCount() : 0; }
 
 std::size_t LatticeRoadmap::edgeCount() const {
   std::size_t edges = 0;
@@ -479,7 +562,8 @@ std::size_t LatticeRoadmap::edgeCount() const {
 }
 
 std::size_t LatticeRoadmap::memoryBytes() const {
-  std::size_t bytes = (lattice_ ? lattice_->memoryBytes() : 0) + valid_nodes_.size() * sizeof(std::uint32_t);
+  std::size_t bytes = (lattice_ ? lattice_->memoryBytes() : 0) + (validity_ ? validity_->cells_->memoryBytes() : 0) +
+                      valid_nodes_.size() * sizeof(std::uint32_t);
   for (const Place& place : places_) bytes += (place.out.size() + place.in.size()) * sizeof(Join);
   bytes += bridge_positions_m_.size() * sizeof(Eigen::Vector3d) + node_arcs_.size() * sizeof(node_arcs_[0]);
   for (const std::vector<Arc>& arcs : bridge_arcs_) bytes += arcs.size() * sizeof(Arc);
@@ -683,7 +767,7 @@ ompl::base::PlannerStatus LatticeRoadmap::solve(const ompl::base::PlannerTermina
   const std::optional<detail::LatticeQuery> query = detail::readQuery(*pdef_, failure);
   if (!query) return failure;
   if (objective_ != &objective) {
-    startGraph(objective);
+    startGraph(objective, nullptr);
     places_ = joinPlaces(places_m_);
   }
   blockage_.reset();
