@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <utility>
 
 namespace ceilplan::mission {
 namespace {
@@ -73,13 +74,15 @@ PlanningContext::PlanningContext(environment::OccupancyMap map, Vehicle vehicle,
   full.wind = options_.wind;
   full_model_ = std::make_unique<planner::FlightCostModel>(*environment_, *energy_, full);
   base_rules_ = std::make_unique<planner::SafetyRules>(*environment_, options_.min_ceiling_gap_m);
-  reachable_ = std::make_shared<ReachableCache>();
+  shared_ = std::make_shared<SharedWork>();
 }
 
-// The floods asked for so far; each stays where it is, so a returned reference stays valid.
-struct PlanningContext::ReachableCache {
+// The floods and lattice validities asked for so far; each flood stays where it is, so a
+// returned reference stays valid.
+struct PlanningContext::SharedWork {
   std::mutex mutex;
   std::vector<std::unique_ptr<planner::ReachableSpace>> spaces;
+  std::vector<std::pair<double, std::shared_ptr<const planner::LatticeValidity>>> validities;  ///< by requested spacing
 };
 
 PlanningContext::PlanningContext(const Mission& mission, const ProgressCallback& progress)
@@ -100,11 +103,20 @@ PlanningContext::Mode PlanningContext::mode(FlightMode mode) const {
 
 const planner::ReachableSpace& PlanningContext::reachableFrom(const Eigen::Vector3d& origin_m, double spacing_m,
                                                               int workers) const {
-  const std::lock_guard<std::mutex> lock(reachable_->mutex);
-  for (const auto& space : reachable_->spaces)
+  const std::lock_guard<std::mutex> lock(shared_->mutex);
+  for (const auto& space : shared_->spaces)
     if (space->origin_m() == origin_m && space->requestedSpacing_m() == spacing_m) return *space;
-  reachable_->spaces.push_back(std::make_unique<planner::ReachableSpace>(*base_rules_, origin_m, spacing_m, workers));
-  return *reachable_->spaces.back();
+  shared_->spaces.push_back(std::make_unique<planner::ReachableSpace>(*base_rules_, origin_m, spacing_m, workers));
+  return *shared_->spaces.back();
+}
+
+std::shared_ptr<const planner::LatticeValidity> PlanningContext::latticeValidity(double spacing_m) const {
+  const std::lock_guard<std::mutex> lock(shared_->mutex);
+  for (const auto& [requested_m, validity] : shared_->validities)
+    if (requested_m == spacing_m) return validity;
+  shared_->validities.emplace_back(spacing_m,
+                                   std::make_shared<const planner::LatticeValidity>(*base_rules_, spacing_m));
+  return shared_->validities.back().second;
 }
 
 planner::ObjectiveChoice PlanningContext::objective(const Eigen::Vector3d& start_m, const Eigen::Vector3d& goal_m,

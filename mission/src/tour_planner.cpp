@@ -438,7 +438,8 @@ class TourRoadmap {
     planner::LatticeSettings settings = latticeSettings(options);
     settings.progress = stageProgress(options, flightModeName(tour.mode) + " mode: building the roadmap");
     roadmap_ = std::make_unique<planner::LatticeRoadmap>(planner_.planner->spaceInformation(), settings);
-    roadmap_->build(planner_.planner->objective(), tour.places_m);
+    // The modes' safety rules are the same: what one roadmap checks, the other need not.
+    roadmap_->build(planner_.planner->objective(), tour.places_m, context.latticeValidity(settings.spacing_m));
   }
 
   // The raw legs from one place to `goals` (every other place when empty): the roadmap's route,

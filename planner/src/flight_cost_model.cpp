@@ -220,44 +220,52 @@ double FlightCostModel::cruiseCostPerMetre(const CostWeights& weights) const {
   return costPerMetre(weights, currentA(free_air, velocity, options_.planning_soc), velocity.along_m_s);
 }
 
-double FlightCostModel::minCostPerMetre(const CostWeights& weights) const {
+double FlightCostModel::minCostPerMetreAt(const CostWeights& weights, double elevation_rad) const {
   PointConditions best;  // the most favourable conditions the energy model can see
   best.rotor_count = energy_.rotorCount();
   if (options_.proximity_effects) {
     for (int r = 0; r < best.rotor_count; ++r) best.rotors[r] = energy::RotorCeiling{0.0, 1.0};
     best.ground_gap_m = 0.5 * energy_.rotorRadiusM();  // the ground model clamps below 0.5 R
   }
+  // In wind the cost depends on the heading too: every 5 degrees of it.
+  const int headings = options_.wind.calm() ? 1 : 72;
+  double minimum = std::numeric_limits<double>::infinity();
+  for (const double gap : {0.0, energy::kNoSurface}) {  // both sides of the speed rule
+    best.nearest_ceiling_gap_m = gap;
+    for (int h = 0; h < headings; ++h) {
+      const double heading = 2.0 * M_PI * h / headings;
+      const Eigen::Vector3d direction(std::cos(elevation_rad) * std::cos(heading),
+                                      std::cos(elevation_rad) * std::sin(heading), std::sin(elevation_rad));
+      const Velocity velocity = velocityAt(best, direction);
+      minimum =
+          std::min(minimum, costPerMetre(weights, currentA(best, velocity, options_.planning_soc), velocity.along_m_s));
+    }
+  }
+  return minimum;
+}
+
+std::vector<double> FlightCostModel::costFanElevations_rad() const {
   const FlightSpeeds& speeds = options_.speeds;
-  // Directions: a dense fan of elevation angles plus the corners where the horizontal limit and
-  // the climb or descent limit bind together (the fastest directions, where the minimum sits).
-  // In wind the cost depends on the heading too: a coarser fan of elevations at every 5 degrees
-  // of heading, with a wider margin for what it misses.
-  const bool calm = options_.wind.calm();
-  const int fan = calm ? 3600 : 360;
-  const int headings = calm ? 1 : 72;
+  // A dense fan of elevation angles plus the corners where the horizontal limit and the climb or
+  // descent limit bind together (the fastest directions, where the minimum sits); in wind a
+  // coarser fan, as each elevation weighs every heading.
+  const int fan = options_.wind.calm() ? 3600 : 360;
   std::vector<double> elevations;
   for (int k = 0; k <= fan; ++k) elevations.push_back(-M_PI / 2 + M_PI * k / fan);
   for (const double horizontal : {speeds.cruise_m_s, speeds.near_ceiling_m_s}) {
     elevations.push_back(std::atan2(speeds.climb_m_s, horizontal));
     elevations.push_back(-std::atan2(speeds.descent_m_s, horizontal));
   }
+  return elevations;
+}
+
+double FlightCostModel::minCostPerMetre(const CostWeights& weights) const {
   double minimum = std::numeric_limits<double>::infinity();
-  for (const double gap : {0.0, energy::kNoSurface}) {  // both sides of the speed rule
-    best.nearest_ceiling_gap_m = gap;
-    for (int h = 0; h < headings; ++h) {
-      const double heading = 2.0 * M_PI * h / headings;
-      for (const double elevation : elevations) {
-        const Eigen::Vector3d direction(std::cos(elevation) * std::cos(heading),
-                                        std::cos(elevation) * std::sin(heading), std::sin(elevation));
-        const Velocity velocity = velocityAt(best, direction);
-        minimum = std::min(minimum,
-                           costPerMetre(weights, currentA(best, velocity, options_.planning_soc), velocity.along_m_s));
-      }
-    }
-  }
+  for (const double elevation : costFanElevations_rad())
+    minimum = std::min(minimum, minCostPerMetreAt(weights, elevation));
   // Between fan directions the cost per metre is smooth; 0.5 % (2 % for the wind's coarser fan)
   // covers what the fan can miss.
-  return (calm ? 0.995 : 0.98) * minimum;
+  return (options_.wind.calm() ? 0.995 : 0.98) * minimum;
 }
 
 }  // namespace ceilplan::planner

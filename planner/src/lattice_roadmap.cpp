@@ -4,6 +4,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/parallel_for.hpp"
 
+#include "elevation_bound.hpp"
 #include "lattice_bridge.hpp"
 #include "lattice_grid.hpp"
 #include "lattice_query.hpp"
@@ -36,74 +37,156 @@ std::array<int, 3> neighbour(const std::array<int, 3>& at, const std::array<int,
 
 namespace detail {
 
-// The lattice with what is checked and costed of it so far, shared by the searches' threads:
-// a byte per node (unchecked, invalid, valid) and the 26 outgoing costs of each node, in chunks
-// of consecutive nodes allocated when a node in them is first costed. Every value is the same
-// whichever thread computes it, so a race only computes one twice.
-class LazyLattice {
+// Chunks of `per_node` atomic cells for consecutive nodes, each allocated, filled with
+// `initial`, when a node in it is first asked for, from any thread.
+template <typename T>
+class LazyCells {
  public:
   static constexpr std::size_t kChunkNodes = 256;
 
-  LazyLattice(const environment::GridFrame& frame, double spacing_m)
-      : grid(frame, spacing_m),
-        validity_(new std::atomic<std::uint8_t>[grid.nodeCount()]),
-        chunk_count_((grid.nodeCount() + kChunkNodes - 1) / kChunkNodes),
-        chunks_(new std::atomic<std::atomic<float>*>[chunk_count_]) {
-    for (std::size_t n = 0; n < grid.nodeCount(); ++n) validity_[n].store(kUnchecked, std::memory_order_relaxed);
+  LazyCells(std::size_t node_count, int per_node, T initial)
+      : per_node_(per_node),
+        initial_(initial),
+        chunk_count_((node_count + kChunkNodes - 1) / kChunkNodes),
+        chunks_(new std::atomic<std::atomic<T>*>[chunk_count_]) {
     for (std::size_t c = 0; c < chunk_count_; ++c) chunks_[c].store(nullptr, std::memory_order_relaxed);
   }
-  ~LazyLattice() {
+  ~LazyCells() {
     for (std::size_t c = 0; c < chunk_count_; ++c) delete[] chunks_[c].load(std::memory_order_relaxed);
   }
-  LazyLattice(const LazyLattice&) = delete;
-  LazyLattice& operator=(const LazyLattice&) = delete;
+  LazyCells(const LazyCells&) = delete;
+  LazyCells& operator=(const LazyCells&) = delete;
 
-  std::atomic<std::uint8_t>& validity(std::size_t node) const { return validity_[node]; }
-  std::atomic<float>& cost(std::size_t node, int direction) const {
-    std::atomic<std::atomic<float>*>& slot = chunks_[node / kChunkNodes];
-    std::atomic<float>* chunk = slot.load(std::memory_order_acquire);
+  std::atomic<T>& at(std::size_t node, int k) const {
+    std::atomic<std::atomic<T>*>& slot = chunks_[node / kChunkNodes];
+    std::atomic<T>* chunk = slot.load(std::memory_order_acquire);
     if (!chunk) {
-      std::atomic<float>* fresh = new std::atomic<float>[kChunkNodes * kDirections];
-      for (std::size_t k = 0; k < kChunkNodes * kDirections; ++k) fresh[k].store(kUncosted, std::memory_order_relaxed);
+      const std::size_t cells = kChunkNodes * per_node_;
+      auto* fresh = new std::atomic<T>[cells];
+      for (std::size_t c = 0; c < cells; ++c) fresh[c].store(initial_, std::memory_order_relaxed);
       if (slot.compare_exchange_strong(chunk, fresh, std::memory_order_acq_rel, std::memory_order_acquire)) {
         chunk = fresh;
       } else {
         delete[] fresh;  // another thread's chunk won
       }
     }
-    return chunk[(node % kChunkNodes) * kDirections + direction];
+    return chunk[(node % kChunkNodes) * per_node_ + k];
   }
-  // Calls visit(cost) for every costed cell.
+  // Calls visit(value) for every cell no longer at its initial value.
   template <typename Visit>
-  void forEachCost(Visit&& visit) const {
+  void forEachSet(Visit&& visit) const {
     for (std::size_t c = 0; c < chunk_count_; ++c)
-      if (const std::atomic<float>* chunk = chunks_[c].load(std::memory_order_acquire))
-        for (std::size_t k = 0; k < kChunkNodes * kDirections; ++k) {
-          const float value = chunk[k].load(std::memory_order_relaxed);
-          if (value != kUncosted) visit(value);
+      if (const std::atomic<T>* chunk = chunks_[c].load(std::memory_order_acquire))
+        for (std::size_t k = 0; k < kChunkNodes * per_node_; ++k) {
+          const T value = chunk[k].load(std::memory_order_relaxed);
+          if (value != initial_) visit(value);
         }
-  }
-  std::size_t validCount() const {
-    std::size_t count = 0;
-    for (std::size_t n = 0; n < grid.nodeCount(); ++n) count += validity_[n].load(std::memory_order_relaxed) == kValid;
-    return count;
   }
   std::size_t memoryBytes() const {
     std::size_t chunks = 0;
     for (std::size_t c = 0; c < chunk_count_; ++c) chunks += chunks_[c].load(std::memory_order_relaxed) != nullptr;
-    return grid.nodeCount() + chunk_count_ * sizeof(void*) + chunks * kChunkNodes * kDirections * sizeof(float);
+    return chunk_count_ * sizeof(void*) + chunks * kChunkNodes * per_node_ * sizeof(T);
   }
+
+ private:
+  std::size_t per_node_;
+  T initial_;
+  std::size_t chunk_count_;
+  std::unique_ptr<std::atomic<std::atomic<T>*>[]> chunks_;
+};
+
+// The lattice's costs so far, shared by the searches' threads: the 26 outgoing costs of each
+// node. Every value is the same whichever thread computes it, so a race only computes one twice.
+class LazyLattice {
+ public:
+  LazyLattice(const environment::GridFrame& frame, double spacing_m)
+      : grid(frame, spacing_m), costs_(grid.nodeCount(), kDirections, kUncosted) {}
+
+  std::atomic<float>& cost(std::size_t node, int direction) const { return costs_.at(node, direction); }
+  template <typename Visit>
+  void forEachCost(Visit&& visit) const {
+    costs_.forEachSet(visit);
+  }
+  std::size_t memoryBytes() const { return costs_.memoryBytes(); }
 
   const LatticeGrid grid;
   const LatticeDirections directions;
 
  private:
-  std::unique_ptr<std::atomic<std::uint8_t>[]> validity_;
-  std::size_t chunk_count_;
-  std::unique_ptr<std::atomic<std::atomic<float>*>[]> chunks_;
+  LazyCells<float> costs_;
+};
+
+// What the safety rules allow on the lattice so far: a byte per node and per edge (from its
+// first node, in the 13 forward directions): unchecked, invalid or valid.
+class ValidityCells {
+ public:
+  ValidityCells(const SafetyRules& rules, double spacing_m)
+      : rules(rules),
+        grid(rules.environment().grid().frame(), spacing_m),
+        nodes_(new std::atomic<std::uint8_t>[grid.nodeCount()]),
+        edges_(grid.nodeCount(), kDirections - kFirstForwardDirection, kUnchecked) {
+    for (std::size_t n = 0; n < grid.nodeCount(); ++n) nodes_[n].store(kUnchecked, std::memory_order_relaxed);
+  }
+
+  bool nodeValid(std::size_t node) const {
+    std::atomic<std::uint8_t>& cell = nodes_[node];
+    std::uint8_t state = cell.load(std::memory_order_relaxed);
+    if (state == kUnchecked) {
+      state = rules.isStateValid(grid.position(node)) ? kValid : kInvalid;
+      cell.store(state, std::memory_order_relaxed);
+    }
+    return state == kValid;
+  }
+  // The straight motion from `first` to its neighbour `second` in forward direction `direction`.
+  bool edgeValid(std::size_t first, std::size_t second, int direction) const {
+    std::atomic<std::uint8_t>& cell = edges_.at(first, direction - kFirstForwardDirection);
+    std::uint8_t state = cell.load(std::memory_order_relaxed);
+    if (state == kUnchecked) {
+      state = rules.isMotionValid(grid.position(first), grid.position(second)) ? kValid : kInvalid;
+      cell.store(state, std::memory_order_relaxed);
+    }
+    return state == kValid;
+  }
+  std::size_t validCount() const {
+    std::size_t count = 0;
+    for (std::size_t n = 0; n < grid.nodeCount(); ++n) count += nodes_[n].load(std::memory_order_relaxed) == kValid;
+    return count;
+  }
+  std::size_t checkedEdgeCount() const {
+    std::size_t count = 0;
+    edges_.forEachSet([&count](std::uint8_t) { ++count; });
+    return count;
+  }
+  std::size_t memoryBytes() const { return grid.nodeCount() + edges_.memoryBytes(); }
+
+  const SafetyRules& rules;
+  const LatticeGrid grid;
+
+ private:
+  std::unique_ptr<std::atomic<std::uint8_t>[]> nodes_;
+  LazyCells<std::uint8_t> edges_;
 };
 
 }  // namespace detail
+
+LatticeValidity::LatticeValidity(const SafetyRules& rules, double spacing_m) {
+  LatticeSettings settings;
+  settings.spacing_m = spacing_m;
+  settings.validate();
+  const detail::LatticeGrid lattice(rules.environment().grid().frame(), spacing_m);
+  if (lattice.nodeCount() >= std::numeric_limits<std::uint32_t>::max())
+    throw ceilplan::InputError("the map has too many lattice nodes for a " + formatNumber(lattice.spacing_m()) +
+                               " m spacing: raise the spacing");
+  cells_ = std::make_unique<detail::ValidityCells>(rules, spacing_m);
+}
+
+LatticeValidity::~LatticeValidity() = default;
+
+const SafetyRules& LatticeValidity::rules() const { return cells_->rules; }
+
+double LatticeValidity::spacing_m() const { return cells_->grid.spacing_m(); }
+
+std::size_t LatticeValidity::checkedEdgeCount() const { return cells_->checkedEdgeCount(); }
 
 LatticeRoadmap::LatticeRoadmap(const ompl::base::SpaceInformationPtr& si, LatticeSettings settings)
     : LatticePlannerBase(si, "roadmap", std::move(settings)) {
@@ -130,6 +213,8 @@ void LatticeRoadmap::dropGraph() {
   objective_ = nullptr;
   node_count_ = 0;
   lattice_.reset();
+  validity_.reset();
+  bound_.reset();
   valid_nodes_.clear();
   complete_ = false;
   bridge_positions_m_.clear();
@@ -137,28 +222,44 @@ void LatticeRoadmap::dropGraph() {
   node_arcs_.clear();
 }
 
-void LatticeRoadmap::build(const FlightObjective& objective, std::vector<Eigen::Vector3d> places_m) {
+void LatticeRoadmap::build(const FlightObjective& objective, std::vector<Eigen::Vector3d> places_m,
+                           std::shared_ptr<const LatticeValidity> validity) {
   rules_ = &detail::rulesOf(*si_, getName());
   for (const Eigen::Vector3d& place : places_m)
     if (!place.allFinite() || !rules_->environment().contains(place))
       throw ceilplan::InputError("a roadmap place lies outside the map");
-  startGraph(objective);
+  startGraph(objective, std::move(validity));
   places_m_ = std::move(places_m);
   places_ = joinPlaces(places_m_);
   place_blockages_ = connect(places_m_, places_, ompl::base::plannerNonTerminatingCondition());
   if (settings_.progress) settings_.progress(1.0);
 }
 
-void LatticeRoadmap::startGraph(const FlightObjective& objective) {
+void LatticeRoadmap::startGraph(const FlightObjective& objective, std::shared_ptr<const LatticeValidity> validity) {
   dropGraph();
   rules_ = &detail::rulesOf(*si_, getName());
-  const detail::LatticeGrid lattice(rules_->environment().grid().frame(), settings_.spacing_m);
-  if (lattice.nodeCount() >= std::numeric_limits<std::uint32_t>::max())
-    throw ceilplan::InputError("the map has too many lattice nodes for a " + formatNumber(lattice.spacing_m()) +
-                               " m spacing: raise the spacing");
+  if (!validity) {
+    validity = std::make_shared<const LatticeValidity>(*rules_, settings_.spacing_m);
+  } else if (&validity->rules().environment() != &rules_->environment() ||
+             validity->rules().minCeilingGap_m() != rules_->minCeilingGap_m() ||
+             detail::strideVoxels(rules_->environment().grid().frame(), validity->spacing_m()) !=
+                 detail::strideVoxels(rules_->environment().grid().frame(), settings_.spacing_m)) {
+    throw ceilplan::InputError(
+        "a shared lattice validity must be made for the roadmap's map, safety rules and spacing");
+  }
+  validity_ = std::move(validity);
+  const detail::LatticeGrid& lattice = validity_->cells_->grid;
   lattice_ = std::make_unique<detail::LazyLattice>(rules_->environment().grid().frame(), settings_.spacing_m);
   node_count_ = lattice.nodeCount();
   objective_ = &objective;
+  bound_ = std::make_unique<detail::ElevationBound>(objective);
+  for (int d = 0; d < kDirections; ++d) {
+    const std::array<int, 3>& offset = lattice_->directions.offsets[d];
+    const Eigen::Vector3d edge_m = lattice.spacing_m() * Eigen::Vector3d(offset[0], offset[1], offset[2]);
+    // At least c_min x length, so the A* heuristic (c_min x distance) stays consistent with it.
+    edge_bounds_[d] =
+        std::max((*bound_)(Eigen::Vector3d::Zero(), edge_m), objective.heuristic(Eigen::Vector3d::Zero(), edge_m));
+  }
 }
 
 void LatticeRoadmap::completeGraph() {
@@ -197,61 +298,46 @@ bool LatticeRoadmap::checkEverything(const std::function<bool()>& abandon) {
   return true;
 }
 
-bool LatticeRoadmap::nodeValid(std::uint32_t node) const {
-  std::atomic<std::uint8_t>& cell = lattice_->validity(node);
-  std::uint8_t state = cell.load(std::memory_order_relaxed);
-  if (state == kUnchecked) {
-    state = rules_->isStateValid(lattice_->grid.position(node)) ? kValid : kInvalid;
-    cell.store(state, std::memory_order_relaxed);
-  }
-  return state == kValid;
-}
+bool LatticeRoadmap::nodeValid(std::uint32_t node) const { return validity_->cells_->nodeValid(node); }
 
 float LatticeRoadmap::edgeCost(std::uint32_t node, int direction) const {
   if (!nodeValid(node)) return kNoEdge;
   const std::atomic<float>& cell = lattice_->cost(node, direction);
   float cost = cell.load(std::memory_order_relaxed);
   if (cost == kUncosted) {
-    costEdgesOf(node);
+    costEdge(node, direction);
     cost = cell.load(std::memory_order_relaxed);
   }
   return cost;
 }
 
-void LatticeRoadmap::costEdgesOf(std::uint32_t node) const {
+void LatticeRoadmap::costEdge(std::uint32_t node, int direction) const {
   const detail::LatticeGrid& lattice = lattice_->grid;
   const detail::LatticeDirections& directions = lattice_->directions;
-  const FlightCostModel& model = objective_->model();
-  // The node ends all 26 edges: its conditions are found once.
-  const Eigen::Vector3d node_m = lattice.position(node);
-  const PointConditions at_node = model.conditionsAt(node_m);
-  const auto conditions = [&](const Eigen::Vector3d& p) { return p == node_m ? at_node : model.conditionsAt(p); };
-  const std::array<int, 3> at = lattice.indices(node);
-  for (int direction = 0; direction < kDirections; ++direction) {
-    std::atomic<float>& cell = lattice_->cost(node, direction);
-    if (cell.load(std::memory_order_relaxed) != kUncosted) continue;
-    const std::array<int, 3> to = neighbour(at, directions.offsets[direction]);
-    const auto other = lattice.inside(to[0], to[1], to[2]) ? static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]))
-                                                           : std::numeric_limits<std::uint32_t>::max();
-    if (other == std::numeric_limits<std::uint32_t>::max() || !nodeValid(other)) {
-      cell.store(kNoEdge, std::memory_order_relaxed);
-      continue;
-    }
-    // Costed from the edge's first node, as checking every edge at once does, so the values are
-    // the same to the bit however the lattice is explored.
-    const bool forward = direction >= kFirstForwardDirection;
-    const std::uint32_t first = forward ? node : other, second = forward ? other : node;
-    const int first_direction = forward ? direction : directions.opposite[direction];
-    const Eigen::Vector3d here = lattice.position(first), there = lattice.position(second);
-    float forth = kNoEdge, back = kNoEdge;
-    if (rules_->isMotionValid(here, there)) {
-      const auto [forth_totals, back_totals] = model.integrateBothWays(here, there, conditions);
-      forth = static_cast<float>(objective_->weights().of(forth_totals));
-      back = static_cast<float>(objective_->weights().of(back_totals));
-    }
-    lattice_->cost(first, first_direction).store(forth, std::memory_order_relaxed);
-    lattice_->cost(second, directions.opposite[first_direction]).store(back, std::memory_order_relaxed);
+  std::atomic<float>& cell = lattice_->cost(node, direction);
+  const std::array<int, 3> to = neighbour(lattice.indices(node), directions.offsets[direction]);
+  const auto other = lattice.inside(to[0], to[1], to[2]) ? static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]))
+                                                         : std::numeric_limits<std::uint32_t>::max();
+  if (other == std::numeric_limits<std::uint32_t>::max() || !nodeValid(other)) {
+    cell.store(kNoEdge, std::memory_order_relaxed);
+    return;
   }
+  // Costed from the edge's first node, both ways at once, so the values are the same to the bit
+  // however the lattice is explored.
+  const bool forward = direction >= kFirstForwardDirection;
+  const std::uint32_t first = forward ? node : other, second = forward ? other : node;
+  const int first_direction = forward ? direction : directions.opposite[direction];
+  const Eigen::Vector3d here = lattice.position(first), there = lattice.position(second);
+  float forth = kNoEdge, back = kNoEdge;
+  if (validity_->cells_->edgeValid(first, second, first_direction)) {
+    const FlightCostModel& model = objective_->model();
+    const auto [forth_totals, back_totals] =
+        model.integrateBothWays(here, there, [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
+    forth = static_cast<float>(objective_->weights().of(forth_totals));
+    back = static_cast<float>(objective_->weights().of(back_totals));
+  }
+  lattice_->cost(first, first_direction).store(forth, std::memory_order_relaxed);
+  lattice_->cost(second, directions.opposite[first_direction]).store(back, std::memory_order_relaxed);
 }
 
 bool LatticeRoadmap::placesJoined(const std::vector<Place>& places) const {
@@ -467,7 +553,7 @@ std::optional<Blockage> LatticeRoadmap::blockage(int from, int to) const {
   return place_blockages_[from] ? place_blockages_[from] : place_blockages_[to];
 }
 
-std::size_t LatticeRoadmap::validNodeCount() const { return lattice_ ? lattice_->validCount() : 0; }
+std::size_t LatticeRoadmap::validNodeCount() const { return validity_ ? validity_->cells_->validCount() : 0; }
 
 std::size_t LatticeRoadmap::edgeCount() const {
   std::size_t edges = 0;
@@ -476,7 +562,8 @@ std::size_t LatticeRoadmap::edgeCount() const {
 }
 
 std::size_t LatticeRoadmap::memoryBytes() const {
-  std::size_t bytes = (lattice_ ? lattice_->memoryBytes() : 0) + valid_nodes_.size() * sizeof(std::uint32_t);
+  std::size_t bytes = (lattice_ ? lattice_->memoryBytes() : 0) + (validity_ ? validity_->cells_->memoryBytes() : 0) +
+                      valid_nodes_.size() * sizeof(std::uint32_t);
   for (const Place& place : places_) bytes += (place.out.size() + place.in.size()) * sizeof(Join);
   bytes += bridge_positions_m_.size() * sizeof(Eigen::Vector3d) + node_arcs_.size() * sizeof(node_arcs_[0]);
   for (const std::vector<Arc>& arcs : bridge_arcs_) bytes += arcs.size() * sizeof(Arc);
@@ -558,15 +645,39 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     for (int goal : targets) h = std::min(h, objective_->heuristic(at, places_m[goal]));
     return h;
   };
-  using Entry = std::pair<double, std::uint32_t>;
+  // Lazy in the lattice's edges, as LazyPRM is in its roadmap's: an edge not costed yet waits in
+  // the queue at its lower bound (edge_bounds_: climbing costs more than descending) and is
+  // costed only if it comes off the queue still able to improve its end. Around a search's
+  // front, most edges lead where a cheaper way already reached.
+  struct Entry {
+    double key;
+    std::uint32_t state;
+    int direction;  // >= 0: the uncosted lattice edge out of `state` (a closed node) this way
+    bool operator>(const Entry& other) const {
+      if (key != other.key) return key > other.key;
+      if (state != other.state) return state > other.state;
+      return direction > other.direction;
+    }
+  };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  // Closed states leave the queue in (key, state) order; of the states that reach another at
+  // the same least cost, its parent is the first of them in that order, whichever order the
+  // lazy edges are costed in: the routes are those of the search that costs every edge.
+  const auto closesBefore = [&](std::uint32_t a, std::uint32_t b) {
+    if (b == kStart) return false;
+    if (a == kStart) return true;
+    const double key_a = cost_to[a] + heuristic(a), key_b = cost_to[b] + heuristic(b);
+    return key_a != key_b ? key_a < key_b : a < b;
+  };
   const auto relax = [&](std::size_t state, std::uint32_t from_state, double g) {
     if (g < cost_to[state]) {
       if (cost_to[state] == std::numeric_limits<double>::infinity())
         buffers.touched.push_back(static_cast<std::uint32_t>(state));
       cost_to[state] = g;
       parent[state] = from_state;
-      open.emplace(g + heuristic(state), static_cast<std::uint32_t>(state));
+      open.push({g + heuristic(state), static_cast<std::uint32_t>(state), -1});
+    } else if (g == cost_to[state] && closesBefore(from_state, parent[state])) {
+      parent[state] = from_state;
     }
   };
   const auto arrive = [&](std::uint32_t state, double g) {
@@ -575,12 +686,27 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
         if (join.state == state) relax(place_offset + goal, state, g + join.cost);
     }
   };
+  const auto neighbourOf = [&](std::uint32_t node, int direction) -> std::optional<std::uint32_t> {
+    const std::array<int, 3> to = neighbour(lattice.indices(node), directions.offsets[direction]);
+    if (!lattice.inside(to[0], to[1], to[2])) return std::nullopt;
+    return static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]));
+  };
 
   for (const Join& join : place_data[from].out) relax(join.state, kStart, join.cost);
   int goals_left = static_cast<int>(targets.size());
   while (!open.empty() && goals_left > 0) {
-    const std::uint32_t state = open.top().second;
+    const Entry entry = open.top();
     open.pop();
+    if (entry.direction >= 0) {
+      const std::uint32_t node = entry.state;
+      const std::uint32_t next = *neighbourOf(node, entry.direction);
+      const double g = cost_to[node];
+      if (closed[next] || g + edge_bounds_[entry.direction] >= cost_to[next]) continue;
+      const float c = edgeCost(node, entry.direction);
+      if (c != kNoEdge) relax(next, node, g + c);
+      continue;
+    }
+    const std::uint32_t state = entry.state;
     if (closed[state]) continue;
     closed[state] = 1;
     const double g = cost_to[state];
@@ -593,17 +719,21 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
       arrive(state, g);
       continue;
     }
-    const std::uint32_t node = state;
-    const std::array<int, 3> at = lattice.indices(node);
+    const std::uint32_t node = state;  // valid: reached by an edge or a join
     for (int d = 0; d < kDirections; ++d) {
-      const std::array<int, 3> to = neighbour(at, directions.offsets[d]);
-      if (!lattice.inside(to[0], to[1], to[2])) continue;
-      const float c = edgeCost(node, d);
-      if (c != kNoEdge) relax(lattice.id(to[0], to[1], to[2]), state, g + c);
+      const std::optional<std::uint32_t> next = neighbourOf(node, d);
+      if (!next || closed[*next]) continue;
+      const float c = lattice_->cost(node, d).load(std::memory_order_relaxed);
+      if (c == kUncosted) {
+        // Below the key its end gets through this edge, and no lower than this node's own.
+        if (g + edge_bounds_[d] < cost_to[*next]) open.push({g + edge_bounds_[d] + heuristic(*next), node, d});
+      } else if (c != kNoEdge) {
+        relax(*next, node, g + c);
+      }
     }
     if (!node_arcs_.empty()) {
       const auto first = std::lower_bound(node_arcs_.begin(), node_arcs_.end(), node,
-                                          [](const auto& entry, std::uint32_t n) { return entry.first < n; });
+                                          [](const auto& arc, std::uint32_t n) { return arc.first < n; });
       for (auto it = first; it != node_arcs_.end() && it->first == node; ++it)
         relax(it->second.to, state, g + it->second.cost);
     }
@@ -637,7 +767,7 @@ ompl::base::PlannerStatus LatticeRoadmap::solve(const ompl::base::PlannerTermina
   const std::optional<detail::LatticeQuery> query = detail::readQuery(*pdef_, failure);
   if (!query) return failure;
   if (objective_ != &objective) {
-    startGraph(objective);
+    startGraph(objective, nullptr);
     places_ = joinPlaces(places_m_);
   }
   blockage_.reset();

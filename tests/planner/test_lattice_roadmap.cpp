@@ -19,6 +19,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -157,6 +158,47 @@ TEST(LatticeRoadmap, ChecksTheLatticeWhereItsSearchesGoAndRoutesAsTheWholeLattic
   EXPECT_LT(lazy.edgeCount(), whole.edgeCount() / 2);
   EXPECT_LT(lazy.validNodeCount(), whole.validNodeCount());
   EXPECT_LT(lazy.memoryBytes(), whole.memoryBytes());
+}
+
+// A tour's two modes cost motions differently under the same safety rules: their roadmaps share
+// one LatticeValidity, route as each does alone, and check each edge once between them.
+TEST(LatticeRoadmap, RoadmapsOfTwoModesShareWhatTheSafetyRulesAllow) {
+  BeamRoom room;
+  planner::CostModelOptions free_options;
+  free_options.proximity_effects = false;
+  const planner::FlightCostModel free_model(room.environment, room.energy, free_options);
+  const planner::FlightPlanner free_planner(room.rules, free_model, planner::ObjectiveChoice{});
+  const std::vector<const planner::FlightPlanner*> modes{&room.planner, &free_planner};
+  const auto shared = std::make_shared<const planner::LatticeValidity>(room.rules, 0.2);
+  std::size_t checked_alone = 0;
+  for (const planner::FlightPlanner* mode : modes) {
+    planner::LatticeRoadmap alone(mode->spaceInformation(), spacing(0.2));
+    planner::LatticeRoadmap sharing(mode->spaceInformation(), spacing(0.2, 2));
+    const auto own = std::make_shared<const planner::LatticeValidity>(room.rules, 0.2);
+    alone.build(mode->objective(), room.places, own);
+    sharing.build(mode->objective(), room.places, shared);
+    for (int from = 0; from < 3; ++from) {
+      const auto expected = alone.routesFrom(from), routes = sharing.routesFrom(from);
+      for (int to = 0; to < 3; ++to) {
+        ASSERT_EQ(routes[to].has_value(), to != from);
+        if (to == from) continue;
+        EXPECT_EQ(routes[to]->cost, expected[to]->cost) << from << " -> " << to;
+        EXPECT_EQ(routes[to]->waypoints, expected[to]->waypoints) << from << " -> " << to;
+      }
+    }
+    checked_alone += own->checkedEdgeCount();
+  }
+  EXPECT_GT(shared->checkedEdgeCount(), 0u);
+  EXPECT_LT(shared->checkedEdgeCount(), checked_alone);
+  // Made for other rules (another minimum ceiling gap), or another spacing: refused.
+  const planner::SafetyRules other_rules(room.environment, 0.1);
+  planner::LatticeRoadmap roadmap(room.planner.spaceInformation(), spacing(0.2));
+  EXPECT_THROW(roadmap.build(room.planner.objective(), room.places,
+                             std::make_shared<const planner::LatticeValidity>(other_rules, 0.2)),
+               ceilplan::InputError);
+  EXPECT_THROW(roadmap.build(room.planner.objective(), room.places,
+                             std::make_shared<const planner::LatticeValidity>(room.rules, 0.3)),
+               ceilplan::InputError);
 }
 
 TEST(LatticeRoadmap, SaysNothingOfAPlaceBehindAWall) {

@@ -16,6 +16,7 @@
 #include "ceilplan/mission/planning_options.hpp"
 #include "ceilplan/mission/vehicle.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
+#include "ceilplan/planner/lattice_roadmap.hpp"
 #include "ceilplan/planner/objective_factory.hpp"
 #include "ceilplan/planner/reachable_space.hpp"
 #include "ceilplan/planner/safety_rules.hpp"
@@ -78,9 +79,13 @@ class PlanningContext {
   /// Safe to call from several threads.
   const planner::ReachableSpace& reachableFrom(const Eigen::Vector3d& origin_m, double spacing_m,
                                                int workers = 1) const;
+  /// What the safety rules allow on a roadmap lattice at `spacing_m`, checked as roadmaps need
+  /// it and kept, so the two modes of a tour check each lattice node and edge once between them
+  /// (planner::LatticeRoadmap::build). Safe to call from several threads.
+  std::shared_ptr<const planner::LatticeValidity> latticeValidity(double spacing_m) const;
 
  private:
-  struct ReachableCache;
+  struct SharedWork;
   PlanningOptions options_;
   Vehicle vehicle_;
   BatterySpec battery_;
@@ -90,7 +95,7 @@ class PlanningContext {
   std::unique_ptr<energy::EnergyModel> energy_;
   std::unique_ptr<planner::FlightCostModel> full_model_;
   std::unique_ptr<planner::SafetyRules> base_rules_;
-  std::shared_ptr<ReachableCache> reachable_;
+  std::shared_ptr<SharedWork> shared_;  ///< what the modes of a tour share
 };
 
 }  // namespace ceilplan::mission

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <utility>
+#include <vector>
 
 namespace ceilplan::planner {
 
@@ -196,6 +197,13 @@ class FlightCostModel {
   /// contact with a full ceiling (gap 0, coverage 1 on every rotor, ground at 0.5 R) at the
   /// planning SOC, with every speed the rules allow. c_min x distance is an admissible cost-to-go.
   double minCostPerMetre(const CostWeights& weights) const;
+  /// The cheapest cost per metre under `weights` of a motion at `elevation_rad` above the horizontal
+  /// (-pi/2 straight down to pi/2 straight up), in any heading, under the most favourable
+  /// conditions (as minCostPerMetre, without its margin): climbing costs more than descending.
+  double minCostPerMetreAt(const CostWeights& weights, double elevation_rad) const;
+  /// The elevations minCostPerMetre weighs, radians: a fan from straight down to straight up and
+  /// the corners where the horizontal and vertical speed limits bind together.
+  std::vector<double> costFanElevations_rad() const;
   /// The cost per metre of level cruise in free air under `weights`: the standoff preference's unit.
   double cruiseCostPerMetre(const CostWeights& weights) const;
 

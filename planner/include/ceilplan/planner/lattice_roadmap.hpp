@@ -8,8 +8,11 @@
 /// PRM it is multi-query: solve() builds it on first use for the problem's objective, and
 /// clearQuery() forgets the query but keeps the roadmap. A tour builds it for a fixed set of
 /// places instead (build) and searches once per place (routesFrom: one Dijkstra search gives
-/// the cheapest route to every other place). Deterministic: the same inputs give the same
-/// routes, whatever the thread count. docs/planner.md, "Roadmap".
+/// the cheapest route to every other place). The searches are lazy in the edges, as OMPL's
+/// LazyPRM is: an edge waits at a lower bound of its cost and is checked and costed only if
+/// the search still needs it then; the routes are those of a search that costs every edge it
+/// meets, to the bit. Deterministic: the same inputs give the same routes, whatever the thread
+/// count. docs/planner.md, "Roadmap".
 ///
 /// Where the lattice leaves places apart, it refines as the lattice A* does: between the part
 /// of the roadmap a place reaches and the parts the others reach, a fine search near their
@@ -22,6 +25,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -31,12 +35,37 @@
 namespace ceilplan::planner {
 namespace detail {
 class LazyLattice;
-}
+class ValidityCells;
+class ElevationBound;
+}  // namespace detail
 
 /// A route through the roadmap between two places.
 struct RoadmapRoute {
   std::vector<Eigen::Vector3d> waypoints;  ///< the start place, the lattice nodes where the route turns, the goal place
   double cost = 0.0;                       ///< under the objective
+};
+
+/// What the safety rules allow on a roadmap's lattice: each node's validity and each lattice
+/// edge's, checked once, when a roadmap first needs it. Roadmaps under the same safety rules and
+/// spacing may share one (LatticeRoadmap::build): a tour's two modes differ in what a motion
+/// costs, not in where the vehicle may fly, so between them each node and edge is checked once.
+/// Safe to use from several threads at once.
+class LatticeValidity {
+ public:
+  /// Keeps a reference to `rules`, which must outlive it. Throws ceilplan::InputError for a
+  /// spacing outside the lattice planners' range or too fine for the map.
+  LatticeValidity(const SafetyRules& rules, double spacing_m);
+  ~LatticeValidity();
+  LatticeValidity(const LatticeValidity&) = delete;
+  LatticeValidity& operator=(const LatticeValidity&) = delete;
+
+  const SafetyRules& rules() const;      ///< the rules it checks
+  double spacing_m() const;              ///< between lattice nodes, rounded to whole voxels
+  std::size_t checkedEdgeCount() const;  ///< lattice edges checked so far (once for both ways)
+
+ private:
+  friend class LatticeRoadmap;
+  std::unique_ptr<detail::ValidityCells> cells_;
 };
 
 /// ceilplan's lattice roadmap: one lattice searched from many places, deterministic (planner name "roadmap", the tours'
@@ -52,9 +81,12 @@ class LatticeRoadmap : public LatticePlannerBase {
   /// refines it until they are joined where the map allows, reporting progress through
   /// LatticeSettings::progress. Checks only the lattice between the places unless they lie in
   /// parts of it that no lattice edge joins (then every node and edge, which the refinement
-  /// needs). Throws ceilplan::InputError for a place outside the map, or a map with too many
-  /// lattice nodes for the spacing.
-  void build(const FlightObjective& objective, std::vector<Eigen::Vector3d> places_m);
+  /// needs). With `validity`, takes what it has checked and adds what this roadmap checks
+  /// (null: a validity of its own). Throws ceilplan::InputError for a place outside the map, a
+  /// map with too many lattice nodes for the spacing, or a `validity` made for another map,
+  /// other safety rules or another spacing.
+  void build(const FlightObjective& objective, std::vector<Eigen::Vector3d> places_m,
+             std::shared_ptr<const LatticeValidity> validity = nullptr);
   /// Checks and costs every node and edge now, on LatticeSettings::workers threads: the routes
   /// stay the same, later searches find every edge costed.
   void completeGraph();
@@ -86,7 +118,7 @@ class LatticeRoadmap : public LatticePlannerBase {
   const std::vector<Eigen::Vector3d>& places() const { return places_m_; }
   /// Lattice nodes over the map.
   std::size_t nodeCount() const { return node_count_; }
-  std::size_t validNodeCount() const;  ///< lattice nodes checked so far and valid
+  std::size_t validNodeCount() const;  ///< lattice nodes checked so far and valid (by any roadmap sharing its validity)
   std::size_t edgeCount() const;       ///< directed lattice edges costed so far
   std::size_t bridgeVertexCount() const { return bridge_positions_m_.size(); }  ///< added by refinement
   /// Memory held, bytes.
@@ -110,8 +142,8 @@ class LatticeRoadmap : public LatticePlannerBase {
     float cost;
   };
 
-  /// Starts the lattice for `objective`, nothing checked yet.
-  void startGraph(const FlightObjective& objective);
+  /// Starts the lattice for `objective`, nothing costed yet, with `validity` (null: its own).
+  void startGraph(const FlightObjective& objective, std::shared_ptr<const LatticeValidity> validity);
   /// Every node and edge; false when `abandon` stopped it (what was checked stays).
   bool checkEverything(const std::function<bool()>& abandon);
   void dropGraph();
@@ -119,7 +151,7 @@ class LatticeRoadmap : public LatticePlannerBase {
   /// `node` in `direction` (+inf where there is none).
   bool nodeValid(std::uint32_t node) const;
   float edgeCost(std::uint32_t node, int direction) const;
-  void costEdgesOf(std::uint32_t node) const;  ///< every edge of a valid node not costed yet
+  void costEdge(std::uint32_t node, int direction) const;  ///< both ways, from a valid node
   /// Whether each place's first join lies in the part of the lattice place 0's first join lies
   /// in: what the refinement's partition finds before it adds anything.
   bool placesJoined(const std::vector<Place>& places) const;
@@ -143,7 +175,10 @@ class LatticeRoadmap : public LatticePlannerBase {
   const SafetyRules* rules_ = nullptr;          ///< behind the space's validity checker
   const FlightObjective* objective_ = nullptr;  ///< the roadmap's costs; null until built
   std::size_t node_count_ = 0;
-  std::unique_ptr<detail::LazyLattice> lattice_;          ///< what is checked and costed so far
+  std::unique_ptr<detail::LazyLattice> lattice_;          ///< what is costed so far
+  std::shared_ptr<const LatticeValidity> validity_;       ///< what is checked so far, maybe shared
+  std::unique_ptr<detail::ElevationBound> bound_;         ///< the searches' heuristic, for objective_
+  std::array<double, 26> edge_bounds_{};                  ///< its value along each lattice direction
   std::vector<std::uint32_t> valid_nodes_;                ///< every valid node, once checkEverything ran
   bool complete_ = false;                                 ///< checkEverything ran
   std::vector<Eigen::Vector3d> bridge_positions_m_;       ///< vertices refinement added
