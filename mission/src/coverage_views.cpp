@@ -19,14 +19,19 @@ namespace ceilplan::mission {
 namespace {
 
 constexpr double kDegree = M_PI / 180.0;
-constexpr double kIndexCell_m = 0.5;           // cell of the element index
-constexpr int kRepairLevels = 5;               // distances per repair probe
-constexpr int kRepairDirections = 8;           // tilt directions per tilt angle
-constexpr int kRepairViewsPerElement = 4;      // probes kept per element the lattice missed
-constexpr double kClearanceTolerance_m = 0.1;  // free mode: "largest clearance" within this
-constexpr double kOpenShare = 0.95;            // a straight view seeing this share of its covered part is in the open
-constexpr double kPatternLevelShare = 0.5;     // patterns at distance levels this share of the farthest and beyond
-constexpr double kObstacleSlackShare = 0.25;   // a lane may stop this share of a covered part short of an obstacle
+constexpr double kIndexCell_m = 0.5;          // cell of the element index
+constexpr int kRepairLevels = 5;              // distances per repair probe
+constexpr int kRepairDirections = 8;          // tilt directions per tilt angle
+constexpr int kRepairViewsPerElement = 4;     // probes kept per element the lattice missed
+constexpr double kOpenShare = 0.95;           // a straight view seeing this share of its covered part is in the open
+constexpr double kPatternLevelShare = 0.5;    // patterns at distance levels this share of the farthest and beyond
+constexpr double kObstacleSlackShare = 0.25;  // a lane may stop this share of a covered part short of an obstacle
+
+// Free mode: where no pose covering an element keeps the standoff, the poses kept are those
+// within this of the largest clearance among them: 0.1 m, or a quarter of that clearance where
+// it is larger. Without the share, a survey station 0.74 m from an abutment lost to oblique
+// photos 0.93 m from it, which cover a third as much (three more photos a bay).
+double clearanceTolerance_m(double largest_clearance_m) { return std::max(0.1, 0.25 * largest_clearance_m); }
 
 // Elements bucketed on a uniform grid, for "which elements lie in this box".
 class ElementIndex {
@@ -508,6 +513,28 @@ std::vector<std::vector<std::uint32_t>> openParts(const std::vector<std::uint32_
   return parts;
 }
 
+// Free mode: a pattern's station whose straight view does not keep the standoff (beside a pier
+// cap or an abutment) moves back along the image axes on which it ends its part's rows, a voxel at
+// a time and at most `limits_m` (per axis; 0 where it is no end station), to the first place
+// where it does, aimed at the part's element nearest there; none if no such place. Its covered
+// part then falls short of the obstacle by as much, which the oblique rows and the lattice cover,
+// instead of the station being dropped and its row's end left to smaller photos.
+template <typename NearestTo, typename Stands>
+std::optional<std::pair<Eigen::Vector2d, std::uint32_t>> stationThatStands(const Eigen::Vector2d& at,
+                                                                           const Eigen::Vector2d& back,
+                                                                           const Eigen::Vector2d& limits_m,
+                                                                           double step_m, const NearestTo& nearest_to,
+                                                                           const Stands& stands) {
+  for (int axis = 0; axis < 2; ++axis)
+    for (double moved_m = step_m; moved_m <= limits_m[axis] + 1e-9; moved_m += step_m) {
+      Eigen::Vector2d moved = at;
+      moved[axis] += moved_m * back[axis];
+      const std::uint32_t element = nearest_to(moved);
+      if (stands(element)) return std::make_pair(moved, element);
+    }
+  return std::nullopt;
+}
+
 // The pattern: per flat patch, distance level (those at least half the farthest) and image orientation, a lawnmower
 // tiling of the patch's extent in the straight view's image axes, lanes and stations evenly spaced with the first and
 // last covering parts ending at the patch's edges, as a survey tool lays out passes. Each station aims at its point on
@@ -518,8 +545,8 @@ std::vector<std::vector<std::uint32_t>> openParts(const std::vector<std::uint32_
 // own (openParts). Each tiling is numbered; `tiling_patch` receives its patch.
 std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
                                const RegionSurface& surface, const std::vector<double>& levels, double heading_deg,
-                               const StraightTest& sees_straight, int workers, TilingPatches& tiling_patch,
-                               std::vector<std::uint32_t>& hidden) {
+                               const StraightTest& sees_straight, bool standoff_stations, int workers,
+                               TilingPatches& tiling_patch, std::vector<std::uint32_t>& hidden) {
   const double r = grid.frame().resolution_m();
   const double yaws_deg[2] = {heading_deg, std::fmod(heading_deg + 90.0, 360.0)};
   const std::vector<CameraFrame> frames[2] = {straightFrames(camera, yaws_deg[0]), straightFrames(camera, yaws_deg[1])};
@@ -610,14 +637,31 @@ std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera&
                 for (long di = -1; di <= 1 && !found; ++di)
                   found = cells.count({std::lround(at.x() / r) + di, std::lround(at.y() / r) + dj}) > 0;
               if (!found) continue;
-              std::uint32_t nearest = part.front();
-              double best = INFINITY;
-              for (const std::uint32_t e : part) {
-                const double offset = (imageAxes(e) - at).squaredNorm();
-                if (offset < best) {
-                  best = offset;
-                  nearest = e;
+              const auto nearestTo = [&](const Eigen::Vector2d& point) {
+                std::uint32_t nearest = part.front();
+                double best = INFINITY;
+                for (const std::uint32_t e : part) {
+                  const double offset = (imageAxes(e) - point).squaredNorm();
+                  if (offset < best) {
+                    best = offset;
+                    nearest = e;
+                  }
                 }
+                return nearest;
+              };
+              std::uint32_t nearest = nearestTo(at);
+              if (standoff_stations && !sees_straight(nearest, d, yaws_deg[orientation]).stands) {
+                // Back towards the part's inside, along the axes on which this station ends a row.
+                Eigen::Vector2d back = Eigen::Vector2d::Zero(), limits_m = Eigen::Vector2d::Zero();
+                for (int axis = 0; axis < 2; ++axis)
+                  if (count[axis] > 1 && (index[axis] == 0 || index[axis] == count[axis] - 1)) {
+                    back[axis] = index[axis] == 0 ? 1.0 : -1.0;
+                    if (step[axis] < 0.0) back[axis] = -back[axis];
+                    limits_m[axis] = kObstacleSlackShare * span[axis];
+                  }
+                std::tie(at, nearest) = stationThatStands(at, back, limits_m, r, nearestTo, [&](std::uint32_t e) {
+                                          return sees_straight(e, d, yaws_deg[orientation]).stands;
+                                        }).value_or(std::make_pair(at, nearest));
               }
               seeds.push_back({nearest, d,
                                at.x() * straight.right() + at.y() * straight.up() + plane * straight.forward(),
@@ -785,7 +829,8 @@ std::vector<bool> freeModeKeep(const std::vector<Pose>& poses, const std::vector
       continue;
     }
     for (const SeenElement& seen : covered[v])
-      if (!fits[seen.element] && poses[v].clearance_m >= best[seen.element] - kClearanceTolerance_m) {
+      if (!fits[seen.element] &&
+          poses[v].clearance_m >= best[seen.element] - clearanceTolerance_m(best[seen.element])) {
         keep[v] = true;
         break;
       }
@@ -905,7 +950,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   };
   std::vector<std::uint32_t> hidden;
   std::vector<Seed> seeds = patternSeeds(environment.grid(), camera, region, surface, levels, heading, sees_straight,
-                                         options.workers, tiling_patch, hidden);
+                                         maker.free(), options.workers, tiling_patch, hidden);
   // Oblique rows only over what some camera may see: a slot too thin to look into (the air over a
   // diaphragm or a bearing) would take candidates no photo can use.
   std::vector<std::uint8_t> may_be_seen(hidden.size(), 0);
@@ -1011,7 +1056,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
       double best = -1.0;
       for (const Pose& p : seeing) best = std::max(best, p.clearance_m);
       const double floor_m =
-          best >= maker.requiredClearance_m() ? maker.requiredClearance_m() : best - kClearanceTolerance_m;
+          best >= maker.requiredClearance_m() ? maker.requiredClearance_m() : best - clearanceTolerance_m(best);
       seeing.erase(std::remove_if(seeing.begin(), seeing.end(), [&](const Pose& p) { return p.clearance_m < floor_m; }),
                    seeing.end());
     }

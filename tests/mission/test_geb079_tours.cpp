@@ -16,8 +16,11 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
+#include <sstream>
 
 namespace ceilplan::mission {
 namespace {
@@ -253,6 +256,69 @@ TEST(Geb079Cli, ACeilingCoverageTourCoversTheCorridorAndNeverCrashes) {
   EXPECT_LT(cut["reachable_area_m2"].get<double>(), region["reachable_area_m2"].get<double>());
   EXPECT_GT(cut["reachable_area_m2"].get<double>(), 0.0);
   EXPECT_GE(cut["covered_reachable_pct"].get<double>(), 99.0);
+}
+
+// Every file under `dir` (relative path -> bytes).
+std::map<std::string, std::string> filesUnder(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
+    if (entry.is_regular_file())
+      files[std::filesystem::relative(entry.path(), dir).string()] = testing::readWholeFile(entry.path());
+  return files;
+}
+
+// The shipped coverage mission on the corridor's ceiling (maps/real/geb079_ceiling.yaml), as a
+// user runs it from a directory of their own: both modes cover all the ceiling a photo can
+// reach (re-check), every photo is taken from under that ceiling at or below the GSD, and a
+// second run into the same --out writes the same files, byte for byte, and nothing else.
+TEST(Geb079Cli, TheShippedCeilingCoverageMissionToursInBothModesTwiceIntoOneOut) {
+  const auto dir = testing::scratchDirectory("geb079_ceiling_mission");
+  const std::string mission = std::string(CEILPLAN_SOURCE_DIR) + "/maps/real/geb079_ceiling.yaml";
+  const std::string in_dir = "cd " + dir.string() + " &&";
+  const auto first = testing::runCeilplan("tour --mission " + mission + " --no-export --out out", in_dir);
+  ASSERT_EQ(first.exit_code, 0) << first.err << first.out;
+  EXPECT_NE(first.out.find("mode both"), std::string::npos) << first.out;  // the mission's mode
+  for (const char* mode : {"ceiling", "free"}) {
+    const nlohmann::json coverage = nlohmann::json::parse(testing::readWholeFile(dir / "out" / mode / "coverage.json"));
+    ASSERT_EQ(coverage["regions"].size(), 1u) << mode;
+    const nlohmann::json& region = coverage["regions"][0];
+    EXPECT_EQ(region["name"], "corridor_ceiling");
+    // Beams and ducts hide a little of the ceiling from every pose; the rest is covered.
+    EXPECT_GT(region["reachable_area_m2"].get<double>(), 0.95 * region["area_m2"].get<double>()) << mode;
+    EXPECT_EQ(region["covered_reachable_pct"].get<double>(), 100.0) << mode;
+    const int photos = region["photos"].get<int>();
+    EXPECT_GT(photos, 50) << mode;
+    int rows = 0;
+    std::istringstream csv(testing::readWholeFile(dir / "out" / mode / "photos.csv"));
+    for (std::string line; std::getline(csv, line);) {
+      if (line.empty() || line[0] == '#' || line.rfind("index,", 0) == 0) continue;
+      ++rows;
+      std::vector<double> field;
+      std::istringstream cells(line);
+      for (std::string cell; std::getline(cells, cell, ',');)
+        field.push_back(field.size() < 10 && !cell.empty() ? std::stod(cell) : 0.0);
+      ASSERT_GE(field.size(), 10u) << line;
+      // x, y, z (3-5) in the corridor under the region's box, below its highest ceiling (2.76 m)
+      // and above the floor; gimbal pitch (7) up; GSD (9).
+      EXPECT_GE(field[3], -1.0) << line;
+      EXPECT_LE(field[3], 9.0) << line;
+      EXPECT_LE(std::abs(field[4]), 1.5) << line;
+      EXPECT_LT(field[5], 2.76) << line;
+      EXPECT_GT(field[5], 0.1) << line;
+      EXPECT_GT(field[7], 0.0) << line;
+      EXPECT_LE(field[9], 1.0) << line;
+    }
+    EXPECT_EQ(rows, photos) << mode;
+  }
+  const auto written = filesUnder(dir / "out");
+  const auto second = testing::runCeilplan("tour --mission " + mission + " --no-export --out out", in_dir);
+  ASSERT_EQ(second.exit_code, 0) << second.err << second.out;
+  const auto rewritten = filesUnder(dir / "out");
+  ASSERT_EQ(rewritten.size(), written.size());
+  for (const auto& [path, bytes] : written) {
+    ASSERT_EQ(rewritten.count(path), 1u) << path;
+    EXPECT_TRUE(rewritten.at(path) == bytes) << path << " differs on the second run";
+  }
 }
 
 }  // namespace

@@ -76,7 +76,7 @@ struct ViewGenerationOptions {
   FlightMode mode = FlightMode::Ceiling;  ///< the mode the views are for
   /// Free mode: the conventional distance kept from every structure, airframe to surface. A pose
   /// keeps it (body clearance >= collision radius + standoff) where any pose for its seed does;
-  /// elsewhere only the poses of largest clearance for that seed are kept.
+  /// elsewhere only the poses of largest clearance (within 0.1 m, or a quarter of it) are kept.
   double free_standoff_m = 1.0;
   /// Rotors never come closer than this to the surface above (as the tour's viewpoints).
   double min_ceiling_gap_m = 0.03;
