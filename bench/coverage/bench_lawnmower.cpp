@@ -138,7 +138,9 @@ Flown fly(const mission::Mission& mission, const mission::PlanningContext& conte
     const double stop_s = mission.camera->stopPerPhoto_s();
     const double hover_a =
         mission::hoverCurrentA(context.environment(), context.energy(), place_m[k], context.battery().start_soc);
-    costs.dwells[static_cast<std::size_t>(k)] = {stop_s, hover_a, {}};
+    mission::Dwell& dwell = costs.dwells[static_cast<std::size_t>(k)];
+    dwell.duration_s = stop_s;
+    dwell.current_a = hover_a;
   }
   mission::SortieOptions options;
   for (const int start : mower.lane_starts) {
