@@ -662,7 +662,8 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
   // Closed states leave the queue in (key, state) order; of the states that reach another at
   // the same least cost, its parent is the first of them in that order, whichever order the
-  // lazy edges are costed in: the routes are those of the search that costs every edge.
+  // lazy edges are costed in: the routes are those of the search that costs every edge. A
+  // closed state keeps its parent (a zero-cost join back to it must not make a cycle).
   const auto closesBefore = [&](std::uint32_t a, std::uint32_t b) {
     if (b == kStart) return false;
     if (a == kStart) return true;
@@ -676,7 +677,7 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
       cost_to[state] = g;
       parent[state] = from_state;
       open.push({g + heuristic(state), static_cast<std::uint32_t>(state), -1});
-    } else if (g == cost_to[state] && closesBefore(from_state, parent[state])) {
+    } else if (g == cost_to[state] && !closed[state] && closesBefore(from_state, parent[state])) {
       parent[state] = from_state;
     }
   };
