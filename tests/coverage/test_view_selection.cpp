@@ -14,18 +14,13 @@ namespace {
 
 CandidateViews sets(const std::vector<std::vector<std::uint32_t>>& elements) {
   CandidateViews views;
-  for (const auto& list : elements) {
-    std::vector<SeenElement> covered;
-    covered.reserve(list.size());
-    for (const std::uint32_t e : list) covered.push_back({e, 1.0f, 0.0f, 1.0f});
-    views.add(CameraPose{}, covered);
-  }
+  for (const auto& list : elements) views.add(CameraPose{}, list, CoverSummary{});
   return views;
 }
 
 double optimum(const CandidateViews& views, const std::vector<double>& cost, std::size_t elements) {
   std::vector<std::uint8_t> coverable(elements, 0);
-  for (const SeenElement& seen : views.seen) coverable[seen.element] = 1;
+  for (const std::uint32_t element : views.elements) coverable[element] = 1;
   double best = INFINITY;
   for (std::uint32_t mask = 0; mask < (1u << views.size()); ++mask) {
     std::vector<std::uint8_t> covered(elements, 0);
@@ -33,7 +28,7 @@ double optimum(const CandidateViews& views, const std::vector<double>& cost, std
     for (std::uint32_t v = 0; v < views.size(); ++v)
       if (mask & (1u << v)) {
         total += cost[v];
-        for (const SeenElement* s = views.begin(v); s != views.end(v); ++s) covered[s->element] = 1;
+        for (const std::uint32_t* s = views.begin(v); s != views.end(v); ++s) covered[*s] = 1;
       }
     if (covered == coverable) best = std::min(best, total);
   }
@@ -58,11 +53,11 @@ TEST(ViewSelection, RandomInstancesAgainstBruteForce) {
     const SetCoverResult result = chooseViews(views, area, cost);
 
     std::vector<std::uint8_t> coverable(element_count, 0), covered(element_count, 0);
-    for (const SeenElement& seen : views.seen) coverable[seen.element] = 1;
+    for (const std::uint32_t element : views.elements) coverable[element] = 1;
     double total = 0.0;
     for (const std::uint32_t v : result.chosen) {
       total += cost[v];
-      for (const SeenElement* s = views.begin(v); s != views.end(v); ++s) covered[s->element] = 1;
+      for (const std::uint32_t* s = views.begin(v); s != views.end(v); ++s) covered[*s] = 1;
     }
     EXPECT_EQ(covered, coverable) << "instance " << instance;
     EXPECT_NEAR(total, result.cost, 1e-9);

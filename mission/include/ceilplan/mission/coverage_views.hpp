@@ -45,12 +45,27 @@ struct Tiling {
   std::vector<std::uint32_t> views;  ///< its candidates (those admissible), ascending
 };
 
+/// What a candidate's covered elements add up to: the figures its photo reports and its cost
+/// reads, kept so that the candidate holds its elements' indices only.
+struct CoverSummary {
+  double area_m2 = 0.0;     ///< the elements' area
+  double distance_m = 0.0;  ///< area-weighted mean distance, camera to element centre
+  double gsd_mm_px = 0.0;   ///< area-weighted mean GSD
+  double finest_gsd_mm_px = std::numeric_limits<double>::infinity();  ///< the finest GSD among them
+};
+
+/// The summary of `covered` (elements of `surface`), summed in the list's order.
+CoverSummary summariseCover(const std::vector<SeenElement>& covered, const RegionSurface& surface);
+
 /// Candidate poses and, for each, the elements it covers (compressed rows: poses[i] covers
-/// seen[offsets[i]] .. seen[offsets[i + 1] - 1]).
+/// elements[offsets[i]] .. elements[offsets[i + 1] - 1], ascending) and their summary.
+/// Four bytes per covered element: a region's candidates cover tens of millions of elements on a
+/// large structure.
 struct CandidateViews {
   std::vector<CameraPose> poses;          ///< the candidate poses
-  std::vector<std::uint32_t> offsets{0};  ///< row starts into `seen`, one more than poses
-  std::vector<SeenElement> seen;          ///< every pose's covered elements, row after row
+  std::vector<std::uint32_t> offsets{0};  ///< row starts into `elements`, one more than poses
+  std::vector<std::uint32_t> elements;    ///< every pose's covered elements (indices into RegionSurface::elements)
+  std::vector<CoverSummary> summaries;    ///< per pose, what its covered elements add up to
   std::vector<std::uint8_t> reachable;    ///< per element: 1 if some candidate covers it
   std::vector<Tiling> tilings;            ///< the lawnmower tilings among the candidates
   /// Per candidate: 1 if only a cover started from the tilings may take it (the views of up and
@@ -62,11 +77,11 @@ struct CandidateViews {
   /// Whether only a cover started from the tilings may take `view`.
   bool tilingOnly(std::size_t view) const { return !tiling_only.empty() && tiling_only[view] != 0; }
   /// First element `view` covers.
-  const SeenElement* begin(std::size_t view) const { return seen.data() + offsets[view]; }
+  const std::uint32_t* begin(std::size_t view) const { return elements.data() + offsets[view]; }
   /// One past the last element `view` covers.
-  const SeenElement* end(std::size_t view) const { return seen.data() + offsets[view + 1]; }
-  /// Appends a candidate with the elements it covers.
-  void add(const CameraPose& pose, const std::vector<SeenElement>& covered);
+  const std::uint32_t* end(std::size_t view) const { return elements.data() + offsets[view + 1]; }
+  /// Appends a candidate with the elements it covers (ascending) and their summary.
+  void add(const CameraPose& pose, const std::vector<std::uint32_t>& covered, const CoverSummary& summary);
 
   GenerationStats stats;  ///< what generation tried
 };
