@@ -179,14 +179,28 @@ struct Pose {
 
 // What a pose covers, as a candidate keeps it: the elements' indices and their summary.
 struct Cover {
-  std::vector<std::uint32_t> elements;
+  std::vector<ElementRun> runs;
   CoverSummary summary;
+
+  template <typename Visit>
+  void forEach(Visit&& visit) const {
+    for (const ElementRun& run : runs)
+      for (std::uint32_t e = run.first; e < run.first + run.count; ++e) visit(e);
+  }
 };
+
+// Appends element `e`, above every element of `runs`, to them.
+void appendElement(std::vector<ElementRun>& runs, std::uint32_t e) {
+  if (!runs.empty() && runs.back().first + runs.back().count == e)
+    ++runs.back().count;
+  else
+    runs.push_back({e, 1});
+}
 
 Cover compactCover(const std::vector<SeenElement>& seen, const RegionSurface& surface) {
   Cover cover;
-  cover.elements.reserve(seen.size());
-  for (const SeenElement& s : seen) cover.elements.push_back(s.element);
+  for (const SeenElement& s : seen) appendElement(cover.runs, s.element);
+  cover.runs.shrink_to_fit();
   cover.summary = summariseCover(seen, surface);
   return cover;
 }
@@ -796,21 +810,19 @@ std::vector<bool> freeModeKeep(const std::vector<Pose>& poses, const std::vector
   std::vector<std::uint8_t> fits(element_count, 0);
   std::vector<double> best(element_count, -1.0);
   for (std::size_t v = 0; v < poses.size(); ++v)
-    for (const std::uint32_t element : covered[v].elements) {
+    covered[v].forEach([&](std::uint32_t element) {
       if (poses[v].clearance_m >= required_clearance_m) fits[element] = 1;
       best[element] = std::max(best[element], poses[v].clearance_m);
-    }
+    });
   std::vector<bool> keep(poses.size(), false);
   for (std::size_t v = 0; v < poses.size(); ++v) {
     if (poses[v].clearance_m >= required_clearance_m) {
       keep[v] = true;
       continue;
     }
-    for (const std::uint32_t element : covered[v].elements)
-      if (!fits[element] && poses[v].clearance_m >= best[element] - kClearanceTolerance_m) {
-        keep[v] = true;
-        break;
-      }
+    for (const ElementRun& run : covered[v].runs)
+      for (std::uint32_t element = run.first; element < run.first + run.count && !keep[v]; ++element)
+        keep[v] = !fits[element] && poses[v].clearance_m >= best[element] - kClearanceTolerance_m;
   }
   return keep;
 }
@@ -831,11 +843,16 @@ CoverSummary summariseCover(const std::vector<SeenElement>& covered, const Regio
   return summary;
 }
 
-void CandidateViews::add(const CameraPose& pose, const std::vector<std::uint32_t>& covered,
-                         const CoverSummary& summary) {
+std::vector<ElementRun> elementRuns(const std::vector<std::uint32_t>& ascending) {
+  std::vector<ElementRun> runs;
+  for (const std::uint32_t e : ascending) appendElement(runs, e);
+  return runs;
+}
+
+void CandidateViews::add(const CameraPose& pose, const std::vector<ElementRun>& covered, const CoverSummary& summary) {
   poses.push_back(pose);
-  elements.insert(elements.end(), covered.begin(), covered.end());
-  offsets.push_back(static_cast<std::uint32_t>(elements.size()));
+  runs.insert(runs.end(), covered.begin(), covered.end());
+  offsets.push_back(static_cast<std::uint32_t>(runs.size()));
   summaries.push_back(summary);
 }
 
@@ -1006,7 +1023,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   for (std::size_t s = 0; s < seeds.size(); ++s) {
     views.stats.poses_tried += seed_tried[s];
     for (std::size_t p = 0; p < seed_poses[s].size(); ++p)
-      if (!seed_covered[s][p].elements.empty()) {
+      if (!seed_covered[s][p].runs.empty()) {
         // The tiling's station is the straight view itself, if it was admissible (not a raised
         // or a tilted view).
         const bool station = p < seed_straight[s] && !seed_poses[s][p].raised;
@@ -1022,8 +1039,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   // views across the heading aside: a cover without them must find its own).
   std::vector<std::uint8_t> reached(surface.elements.size(), 0);
   for (std::size_t v = 0; v < covered.size(); ++v)
-    if (!pose_across[v])
-      for (const std::uint32_t element : covered[v].elements) reached[element] = 1;
+    if (!pose_across[v]) covered[v].forEach([&](std::uint32_t element) { reached[element] = 1; });
   std::vector<double> repair_levels = distanceLevels(camera, region, kRepairLevels);
   for (std::uint32_t e = 0; e < surface.elements.size(); ++e) {
     if (reached[e]) continue;
@@ -1070,21 +1086,21 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
       maker.free() ? freeModeKeep(poses, covered, surface.elements.size(), maker.requiredClearance_m())
                    : std::vector<bool>(poses.size(), true);
   for (std::size_t v = 0; v < covered.size(); ++v)
-    for (const std::uint32_t element : covered[v].elements) reached[element] = 1;
+    covered[v].forEach([&](std::uint32_t element) { reached[element] = 1; });
   views.tilings.resize(tiling_patch.size());
   for (std::size_t t = 0; t < tiling_patch.size(); ++t) views.tilings[t].patch = tiling_patch[t];
   // Each list is released as it is copied: the region's lists are held once, not twice.
   std::size_t total = 0;
   for (std::size_t v = 0; v < poses.size(); ++v)
-    if (keep[v]) total += covered[v].elements.size();
-  views.elements.reserve(total);
+    if (keep[v]) total += covered[v].runs.size();
+  views.runs.reserve(total);
   for (std::size_t v = 0; v < poses.size(); ++v) {
     if (keep[v]) {
       if (pose_tiling[v] >= 0) views.tilings[pose_tiling[v]].views.push_back(static_cast<std::uint32_t>(views.size()));
       views.tiling_only.push_back(pose_across[v]);
-      views.add(poses[v].pose, covered[v].elements, covered[v].summary);
+      views.add(poses[v].pose, covered[v].runs, covered[v].summary);
     }
-    std::vector<std::uint32_t>().swap(covered[v].elements);
+    std::vector<ElementRun>().swap(covered[v].runs);
   }
   views.tilings.erase(std::remove_if(views.tilings.begin(), views.tilings.end(),
                                      [](const Tiling& tiling) { return tiling.views.empty(); }),

@@ -46,7 +46,7 @@ class LocalImprovement {
       if (chosen_[w] || (!tiling_only_allowed_ && views_.tilingOnly(w))) continue;
       neighbours.clear();
       double neighbours_cost = 0.0;
-      for (const std::uint32_t* s = views_.begin(w); s != views_.end(w); ++s)
+      for (ElementIterator s = views_.begin(w); s != views_.end(w); ++s)
         for (const std::uint32_t v : chosen_of_[*s]) {
           if (marked[v]) continue;
           marked[v] = 1;
@@ -81,14 +81,14 @@ class LocalImprovement {
  private:
   // How many chosen views cover each element, tentatively.
   void count(std::uint32_t v, int delta) {
-    for (const std::uint32_t* s = views_.begin(v); s != views_.end(v); ++s) count_[*s] += delta;
+    for (ElementIterator s = views_.begin(v); s != views_.end(v); ++s) count_[*s] += delta;
   }
 
   // Chooses or drops a view: counts and the per-element lists of chosen views.
   void choose(std::uint32_t v, bool chosen) {
     chosen_[v] = chosen ? 1 : 0;
     count(v, chosen ? +1 : -1);
-    for (const std::uint32_t* s = views_.begin(v); s != views_.end(v); ++s) {
+    for (ElementIterator s = views_.begin(v); s != views_.end(v); ++s) {
       std::vector<std::uint32_t>& list = chosen_of_[*s];
       if (chosen) {
         list.push_back(v);
@@ -109,7 +109,7 @@ class LocalImprovement {
 
   // Whether every element of chosen view v is covered by another chosen view too.
   bool redundant(std::uint32_t v) const {
-    for (const std::uint32_t* s = views_.begin(v); s != views_.end(v); ++s)
+    for (ElementIterator s = views_.begin(v); s != views_.end(v); ++s)
       if (count_[*s] < 2) return false;
     return true;
   }
@@ -159,12 +159,12 @@ SetCoverResult greedyCover(const CandidateViews& views, const std::vector<double
     chosen[v] = 1;
     result.greedy_cost += cost[v];
     ++result.greedy_views;
-    for (const std::uint32_t* s = views.begin(v); s != views.end(v); ++s) covered[*s] = 1;
+    for (ElementIterator s = views.begin(v); s != views.end(v); ++s) covered[*s] = 1;
   };
   for (const std::uint32_t v : start) take(v);
   const auto gainOf = [&](std::uint32_t v) {
     double gain = 0.0;
-    for (const std::uint32_t* s = views.begin(v); s != views.end(v); ++s)
+    for (ElementIterator s = views.begin(v); s != views.end(v); ++s)
       if (!covered[*s]) gain += area[*s];
     return gain;
   };
@@ -225,14 +225,14 @@ std::vector<std::uint32_t> cheapestTilings(const CandidateViews& views, const st
     double tiling_cost = 0.0, tiling_area = 0.0;
     for (const std::uint32_t v : tiling.views) {
       tiling_cost += cost[v];
-      for (const std::uint32_t* s = views.begin(v); s != views.end(v); ++s)
+      for (ElementIterator s = views.begin(v); s != views.end(v); ++s)
         if (!seen[*s]) {
           seen[*s] = 1;
           tiling_area += area[*s];
         }
     }
     for (const std::uint32_t v : tiling.views)
-      for (const std::uint32_t* s = views.begin(v); s != views.end(v); ++s) seen[*s] = 0;
+      for (ElementIterator s = views.begin(v); s != views.end(v); ++s) seen[*s] = 0;
     if (!(tiling_area > 0.0)) continue;
     const double ratio = tiling_cost / tiling_area;
     const auto found = best.find(tiling.patch);
@@ -256,8 +256,9 @@ SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double
   for (const double c : cost)
     if (!(std::isfinite(c) && c > 0.0))
       throw ceilplan::InputError("view selection: every cost must be positive and finite");
-  for (const std::uint32_t element : views.elements)
-    if (element >= area.size()) throw ceilplan::InputError("view selection: a candidate covers an unknown element");
+  for (const ElementRun& run : views.runs)
+    if (static_cast<std::size_t>(run.first) + run.count > area.size())
+      throw ceilplan::InputError("view selection: a candidate covers an unknown element");
   for (const Tiling& tiling : views.tilings)
     for (const std::uint32_t v : tiling.views)
       if (v >= views.size()) throw ceilplan::InputError("view selection: a tiling names an unknown candidate");
@@ -280,7 +281,7 @@ SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double
     std::vector<std::uint8_t> covered(area.size(), 0);
     double total = 0.0;
     for (const std::uint32_t v : cover.chosen)
-      for (const std::uint32_t* s = views.begin(v); s != views.end(v); ++s)
+      for (ElementIterator s = views.begin(v); s != views.end(v); ++s)
         if (!covered[*s]) {
           covered[*s] = 1;
           total += area[*s];
