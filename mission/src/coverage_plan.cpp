@@ -122,6 +122,7 @@ CoveragePlan planCoverage(const environment::Environment& environment, const pla
     // inserted where they cost the route least.
     const double far_m = distanceLevels(camera, region, 1).front();
     std::vector<std::uint8_t> in_lanes;
+    in_lanes.reserve(chosen.size());
     for (const PlannedPhoto& photo : chosen) in_lanes.push_back(photo.distance_m >= kLaneDistanceShare * far_m ? 1 : 0);
     const double lane_width_m = 2.0 * far_m * camera.halfWidthTan() * region.widthShare();
     result.passes = orderIntoPasses(poses, cameras, result.heading_deg, lane_width_m, in_lanes);
