@@ -89,7 +89,7 @@ CoveragePlan planCoverage(const environment::Environment& environment, const pla
           result.surface.elements[e].area_m2;
     plan.times.candidates_s += clock.lap_s();
 
-    const std::vector<ViewCost> costs = viewCosts(cost_model, camera, candidates, result.surface, options.costs);
+    const std::vector<ViewCost> costs = viewCosts(cost_model, camera, candidates, options.costs);
     std::vector<double> charge(costs.size()), area(result.surface.elements.size());
     for (std::size_t v = 0; v < costs.size(); ++v) charge[v] = costs[v].charge_ah;
     for (std::size_t e = 0; e < area.size(); ++e) area[e] = result.surface.elements[e].area_m2;
@@ -108,14 +108,9 @@ CoveragePlan planCoverage(const environment::Environment& environment, const pla
       photo.pose = candidates.poses[v];
       photo.camera_m = cameraPosition(camera, photo.pose.body_m, photo.pose.yaw_deg);
       photo.region = static_cast<int>(r);
-      for (const SeenElement* s = candidates.begin(v); s != candidates.end(v); ++s) {
-        const double a = area[s->element];
-        photo.covered_area_m2 += a;
-        photo.distance_m += a * s->distance_m;
-        photo.gsd_mm_px += a * s->gsd_mm_px;
-      }
-      photo.distance_m /= photo.covered_area_m2;
-      photo.gsd_mm_px /= photo.covered_area_m2;
+      photo.covered_area_m2 = candidates.summaries[v].area_m2;
+      photo.distance_m = candidates.summaries[v].distance_m;
+      photo.gsd_mm_px = candidates.summaries[v].gsd_mm_px;
       photo.hover_current_a = costs[v].hover_current_a;
       photo.stop_s = costs[v].stop_s;
       photo.max_speed_m_s = costs[v].speed_m_s;
@@ -127,6 +122,7 @@ CoveragePlan planCoverage(const environment::Environment& environment, const pla
     // inserted where they cost the route least.
     const double far_m = distanceLevels(camera, region, 1).front();
     std::vector<std::uint8_t> in_lanes;
+    in_lanes.reserve(chosen.size());
     for (const PlannedPhoto& photo : chosen) in_lanes.push_back(photo.distance_m >= kLaneDistanceShare * far_m ? 1 : 0);
     const double lane_width_m = 2.0 * far_m * camera.halfWidthTan() * region.widthShare();
     result.passes = orderIntoPasses(poses, cameras, result.heading_deg, lane_width_m, in_lanes);

@@ -182,6 +182,34 @@ struct Pose {
   bool raised = false;       // ceiling mode: raised under the structure above
 };
 
+// What a pose covers, as a candidate keeps it: the elements' indices and their summary.
+struct Cover {
+  std::vector<ElementRun> runs;
+  CoverSummary summary;
+
+  template <typename Visit>
+  void forEach(Visit&& visit) const {
+    for (const ElementRun& run : runs)
+      for (std::uint32_t e = run.first; e < run.first + run.count; ++e) visit(e);
+  }
+};
+
+// Appends element `e`, above every element of `runs`, to them.
+void appendElement(std::vector<ElementRun>& runs, std::uint32_t e) {
+  if (!runs.empty() && runs.back().first + runs.back().count == e)
+    ++runs.back().count;
+  else
+    runs.push_back({e, 1});
+}
+
+Cover compactCover(const std::vector<SeenElement>& seen, const RegionSurface& surface) {
+  Cover cover;
+  for (const SeenElement& s : seen) appendElement(cover.runs, s.element);
+  cover.runs.shrink_to_fit();
+  cover.summary = summariseCover(seen, surface);
+  return cover;
+}
+
 // Camera poses looking at an element, checked against the vehicle and the map.
 class PoseMaker {
  public:
@@ -556,6 +584,10 @@ std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera&
     const std::vector<std::uint32_t>& patch = patches[p];
     const auto& first = surface.elements[patch.front()];
     const bool vertical = first.face >= 4;  // faces 4 and 5 are +z and -z
+    // A vertical straight view's camera and body do not move with its yaw unless the mount offset
+    // is horizontal: the second orientation's views are then the first's, and are not tested again.
+    const bool yaw_free = vertical && camera.mount_offset_m.x() == 0.0 && camera.mount_offset_m.y() == 0.0;
+    std::vector<std::vector<StraightView>> level_views(levels.size());
     for (int orientation = 0; orientation < (vertical ? 2 : 1); ++orientation) {
       const CameraFrame& straight = frames[orientation][first.face];
       const auto imageAxes = [&](std::uint32_t e) {
@@ -577,11 +609,15 @@ std::vector<Seed> patternSeeds(const environment::VoxelGrid& grid, const Camera&
       patch_lo -= Eigen::Vector2d::Constant(0.5 * r);
       patch_hi += Eigen::Vector2d::Constant(0.5 * r);
       const double plane = first.centre_m.dot(straight.forward());
-      for (const double d : levels) {
+      for (std::size_t level = 0; level < levels.size(); ++level) {
+        const double d = levels[level];
         if (d < kPatternLevelShare * levels.front()) continue;
-        std::vector<StraightView> views(patch.size());
-        parallelFor(patch.size(), workers,
-                    [&](std::size_t k) { views[k] = sees_straight(patch[k], d, yaws_deg[orientation]); });
+        std::vector<StraightView>& views = level_views[level];
+        if (orientation == 0 || !yaw_free) {
+          views.assign(patch.size(), StraightView{});
+          parallelFor(patch.size(), workers,
+                      [&](std::size_t k) { views[k] = sees_straight(patch[k], d, yaws_deg[orientation]); });
+        }
         const int tiling = static_cast<int>(tiling_patch.size());
         tiling_patch.push_back(p);
         const Eigen::Vector2d span(2.0 * d * camera.halfWidthTan() * region.widthShare(),
@@ -813,37 +849,55 @@ bool mayBeSeen(const environment::VoxelGrid& grid, const environment::SurfaceEle
 // Free mode: keep a pose where it keeps the standoff, or where it is of largest clearance
 // (within a tolerance) among the poses covering one of its elements that no standoff-keeping
 // pose covers. Every element stays covered.
-std::vector<bool> freeModeKeep(const std::vector<Pose>& poses, const std::vector<std::vector<SeenElement>>& covered,
+std::vector<bool> freeModeKeep(const std::vector<Pose>& poses, const std::vector<Cover>& covered,
                                std::size_t element_count, double required_clearance_m) {
   std::vector<std::uint8_t> fits(element_count, 0);
   std::vector<double> best(element_count, -1.0);
   for (std::size_t v = 0; v < poses.size(); ++v)
-    for (const SeenElement& seen : covered[v]) {
-      if (poses[v].clearance_m >= required_clearance_m) fits[seen.element] = 1;
-      best[seen.element] = std::max(best[seen.element], poses[v].clearance_m);
-    }
+    covered[v].forEach([&](std::uint32_t element) {
+      if (poses[v].clearance_m >= required_clearance_m) fits[element] = 1;
+      best[element] = std::max(best[element], poses[v].clearance_m);
+    });
   std::vector<bool> keep(poses.size(), false);
   for (std::size_t v = 0; v < poses.size(); ++v) {
     if (poses[v].clearance_m >= required_clearance_m) {
       keep[v] = true;
       continue;
     }
-    for (const SeenElement& seen : covered[v])
-      if (!fits[seen.element] &&
-          poses[v].clearance_m >= best[seen.element] - clearanceTolerance_m(best[seen.element])) {
-        keep[v] = true;
-        break;
-      }
+    for (const ElementRun& run : covered[v].runs)
+      for (std::uint32_t element = run.first; element < run.first + run.count && !keep[v]; ++element)
+        keep[v] = !fits[element] && poses[v].clearance_m >= best[element] - clearanceTolerance_m(best[element]);
   }
   return keep;
 }
 
 }  // namespace
 
-void CandidateViews::add(const CameraPose& pose, const std::vector<SeenElement>& covered) {
+CoverSummary summariseCover(const std::vector<SeenElement>& covered, const RegionSurface& surface) {
+  CoverSummary summary;
+  for (const SeenElement& seen : covered) {
+    const double a = surface.elements[seen.element].area_m2;
+    summary.area_m2 += a;
+    summary.distance_m += a * seen.distance_m;
+    summary.gsd_mm_px += a * seen.gsd_mm_px;
+    summary.finest_gsd_mm_px = std::min(summary.finest_gsd_mm_px, static_cast<double>(seen.gsd_mm_px));
+  }
+  summary.distance_m /= summary.area_m2;
+  summary.gsd_mm_px /= summary.area_m2;
+  return summary;
+}
+
+std::vector<ElementRun> elementRuns(const std::vector<std::uint32_t>& ascending) {
+  std::vector<ElementRun> runs;
+  for (const std::uint32_t e : ascending) appendElement(runs, e);
+  return runs;
+}
+
+void CandidateViews::add(const CameraPose& pose, const std::vector<ElementRun>& covered, const CoverSummary& summary) {
   poses.push_back(pose);
-  seen.insert(seen.end(), covered.begin(), covered.end());
-  offsets.push_back(static_cast<std::uint32_t>(seen.size()));
+  runs.insert(runs.end(), covered.begin(), covered.end());
+  offsets.push_back(static_cast<std::uint32_t>(runs.size()));
+  summaries.push_back(summary);
 }
 
 std::vector<double> distanceLevels(const Camera& camera, const CoverageRegion& region, int levels, double room_m) {
@@ -968,7 +1022,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
       latticeSeeds(environment.grid(), camera, region, surface, levels, options.seed_spacing_share, heading);
   seeds.insert(seeds.end(), lattice.begin(), lattice.end());
   std::vector<std::vector<Pose>> seed_poses(seeds.size());
-  std::vector<std::vector<std::vector<SeenElement>>> seed_covered(seeds.size());
+  std::vector<std::vector<Cover>> seed_covered(seeds.size());
   std::vector<std::size_t> seed_tried(seeds.size(), 0);
   std::vector<std::size_t> seed_straight(seeds.size(), 0);  // poses of the straight view, raised included
   parallelFor(
@@ -976,13 +1030,15 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
       [&](std::size_t s) {
         const auto& element = surface.elements[seeds[s].element];
         const double d = seeds[s].distance_m;
+        std::vector<SeenElement> seen;
+        const auto cover = [&](const Pose& pose) {
+          viewer.covered(pose.pose, seen);
+          seed_covered[s].push_back(compactCover(seen, surface));
+        };
         if (seeds[s].tilt_rad > 0.0) {
           maker.around(element, seeds[s].aim_m, d, seeds[s].tilt_rad, 4, seeds[s].level_yaw_deg, seed_poses[s],
                        seed_tried[s]);
-          for (const Pose& pose : seed_poses[s]) {
-            seed_covered[s].emplace_back();
-            viewer.covered(pose.pose, seed_covered[s].back());
-          }
+          for (const Pose& pose : seed_poses[s]) cover(pose);
           return;
         }
         maker.around(element, seeds[s].aim_m, d, 0.0, 1, seeds[s].level_yaw_deg, seed_poses[s], seed_tried[s]);
@@ -990,20 +1046,14 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
         seed_straight[s] = straight;
         double straight_area_m2 = 0.0;
         for (std::size_t p = 0; p < straight; ++p) {
-          seed_covered[s].emplace_back();
-          viewer.covered(seed_poses[s][p].pose, seed_covered[s].back());
-          if (p == 0)
-            for (const SeenElement& seen : seed_covered[s].back())
-              straight_area_m2 += surface.elements[seen.element].area_m2;
+          cover(seed_poses[s][p]);
+          if (p == 0) straight_area_m2 = seed_covered[s].back().summary.area_m2;
         }
         // Tilted views where the straight one is not admissible or sees less than its whole
         // covered part (an edge, an occluder, a narrow strip): in the open they add nothing.
         if (straight == 0 || straight_area_m2 < kOpenShare * viewer.openArea_m2(d)) {
           maker.around(element, seeds[s].aim_m, d, tilt, 4, seeds[s].level_yaw_deg, seed_poses[s], seed_tried[s]);
-          for (std::size_t p = straight; p < seed_poses[s].size(); ++p) {
-            seed_covered[s].emplace_back();
-            viewer.covered(seed_poses[s][p].pose, seed_covered[s].back());
-          }
+          for (std::size_t p = straight; p < seed_poses[s].size(); ++p) cover(seed_poses[s][p]);
         }
       },
       options.progress);
@@ -1011,13 +1061,13 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   CandidateViews views;
   views.stats.seeds = seeds.size();
   std::vector<Pose> poses;
-  std::vector<std::vector<SeenElement>> covered;
+  std::vector<Cover> covered;
   std::vector<int> pose_tiling;           // per pose, the tiling it is a station of (its straight view), or -1
   std::vector<std::uint8_t> pose_across;  // per pose, 1 if from a pattern across the heading
   for (std::size_t s = 0; s < seeds.size(); ++s) {
     views.stats.poses_tried += seed_tried[s];
     for (std::size_t p = 0; p < seed_poses[s].size(); ++p)
-      if (!seed_covered[s][p].empty()) {
+      if (!seed_covered[s][p].runs.empty()) {
         // The tiling's station is the straight view itself, if it was admissible (not a raised
         // or a tilted view).
         const bool station = p < seed_straight[s] && !seed_poses[s][p].raised;
@@ -1026,14 +1076,14 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
         poses.push_back(seed_poses[s][p]);
         covered.push_back(std::move(seed_covered[s][p]));
       }
+    std::vector<Cover>().swap(seed_covered[s]);
   }
 
   // Repairs: probe every element the lattice left uncovered from denser distances and tilts (the
   // views across the heading aside: a cover without them must find its own).
   std::vector<std::uint8_t> reached(surface.elements.size(), 0);
   for (std::size_t v = 0; v < covered.size(); ++v)
-    if (!pose_across[v])
-      for (const SeenElement& seen : covered[v]) reached[seen.element] = 1;
+    if (!pose_across[v]) covered[v].forEach([&](std::uint32_t element) { reached[element] = 1; });
   std::vector<double> repair_levels = distanceLevels(camera, region, kRepairLevels);
   for (std::uint32_t e = 0; e < surface.elements.size(); ++e) {
     if (reached[e]) continue;
@@ -1069,7 +1119,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
       if (list.empty()) continue;
       for (const SeenElement& seen : list) reached[seen.element] = 1;
       poses.push_back(probe);
-      covered.push_back(std::move(list));
+      covered.push_back(compactCover(list, surface));
       pose_tiling.push_back(-1);
       pose_across.push_back(0);
       ++views.stats.repair_views;
@@ -1079,19 +1129,26 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   const std::vector<bool> keep =
       maker.free() ? freeModeKeep(poses, covered, surface.elements.size(), maker.requiredClearance_m())
                    : std::vector<bool>(poses.size(), true);
+  for (std::size_t v = 0; v < covered.size(); ++v)
+    covered[v].forEach([&](std::uint32_t element) { reached[element] = 1; });
   views.tilings.resize(tiling_patch.size());
   for (std::size_t t = 0; t < tiling_patch.size(); ++t) views.tilings[t].patch = tiling_patch[t];
+  // Each list is released as it is copied: the region's lists are held once, not twice.
+  std::size_t total = 0;
   for (std::size_t v = 0; v < poses.size(); ++v)
+    if (keep[v]) total += covered[v].runs.size();
+  views.runs.reserve(total);
+  for (std::size_t v = 0; v < poses.size(); ++v) {
     if (keep[v]) {
       if (pose_tiling[v] >= 0) views.tilings[pose_tiling[v]].views.push_back(static_cast<std::uint32_t>(views.size()));
       views.tiling_only.push_back(pose_across[v]);
-      views.add(poses[v].pose, covered[v]);
+      views.add(poses[v].pose, covered[v].runs, covered[v].summary);
     }
+    std::vector<ElementRun>().swap(covered[v].runs);
+  }
   views.tilings.erase(std::remove_if(views.tilings.begin(), views.tilings.end(),
                                      [](const Tiling& tiling) { return tiling.views.empty(); }),
                       views.tilings.end());
-  for (std::size_t v = 0; v < covered.size(); ++v)
-    for (const SeenElement& seen : covered[v]) reached[seen.element] = 1;
   views.reachable = std::move(reached);
   return views;
 }

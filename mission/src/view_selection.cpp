@@ -46,8 +46,8 @@ class LocalImprovement {
       if (chosen_[w] || (!tiling_only_allowed_ && views_.tilingOnly(w))) continue;
       neighbours.clear();
       double neighbours_cost = 0.0;
-      for (const SeenElement* s = views_.begin(w); s != views_.end(w); ++s)
-        for (const std::uint32_t v : chosen_of_[s->element]) {
+      for (ElementIterator s = views_.begin(w); s != views_.end(w); ++s)
+        for (const std::uint32_t v : chosen_of_[*s]) {
           if (marked[v]) continue;
           marked[v] = 1;
           neighbours.push_back(v);
@@ -81,15 +81,15 @@ class LocalImprovement {
  private:
   // How many chosen views cover each element, tentatively.
   void count(std::uint32_t v, int delta) {
-    for (const SeenElement* s = views_.begin(v); s != views_.end(v); ++s) count_[s->element] += delta;
+    for (ElementIterator s = views_.begin(v); s != views_.end(v); ++s) count_[*s] += delta;
   }
 
   // Chooses or drops a view: counts and the per-element lists of chosen views.
   void choose(std::uint32_t v, bool chosen) {
     chosen_[v] = chosen ? 1 : 0;
     count(v, chosen ? +1 : -1);
-    for (const SeenElement* s = views_.begin(v); s != views_.end(v); ++s) {
-      std::vector<std::uint32_t>& list = chosen_of_[s->element];
+    for (ElementIterator s = views_.begin(v); s != views_.end(v); ++s) {
+      std::vector<std::uint32_t>& list = chosen_of_[*s];
       if (chosen) {
         list.push_back(v);
       } else {
@@ -109,8 +109,8 @@ class LocalImprovement {
 
   // Whether every element of chosen view v is covered by another chosen view too.
   bool redundant(std::uint32_t v) const {
-    for (const SeenElement* s = views_.begin(v); s != views_.end(v); ++s)
-      if (count_[s->element] < 2) return false;
+    for (ElementIterator s = views_.begin(v); s != views_.end(v); ++s)
+      if (count_[*s] < 2) return false;
     return true;
   }
 
@@ -125,17 +125,12 @@ class LocalImprovement {
 }  // namespace
 
 std::vector<ViewCost> viewCosts(const planner::FlightCostModel& model, const Camera& camera,
-                                const CandidateViews& views, const RegionSurface& surface,
-                                const ViewCostOptions& options) {
+                                const CandidateViews& views, const ViewCostOptions& options) {
   if (!(std::isfinite(options.transit_speed_m_s) && options.transit_speed_m_s > 0.0))
     throw ceilplan::InputError("view costs: the transit speed must be positive");
   std::vector<ViewCost> costs(views.size());
   parallelFor(views.size(), options.workers, [&](std::size_t v) {
-    double area_m2 = 0.0, finest_gsd = std::numeric_limits<double>::infinity();
-    for (const SeenElement* s = views.begin(v); s != views.end(v); ++s) {
-      area_m2 += surface.elements[s->element].area_m2;
-      finest_gsd = std::min(finest_gsd, static_cast<double>(s->gsd_mm_px));
-    }
+    const double area_m2 = views.summaries[v].area_m2, finest_gsd = views.summaries[v].finest_gsd_mm_px;
     ViewCost& cost = costs[v];
     const double spacing_m = std::sqrt(area_m2);
     cost.speed_m_s = std::min(options.transit_speed_m_s, camera.maxSpeedForBlur_m_s(finest_gsd));
@@ -164,13 +159,13 @@ SetCoverResult greedyCover(const CandidateViews& views, const std::vector<double
     chosen[v] = 1;
     result.greedy_cost += cost[v];
     ++result.greedy_views;
-    for (const SeenElement* s = views.begin(v); s != views.end(v); ++s) covered[s->element] = 1;
+    for (ElementIterator s = views.begin(v); s != views.end(v); ++s) covered[*s] = 1;
   };
   for (const std::uint32_t v : start) take(v);
   const auto gainOf = [&](std::uint32_t v) {
     double gain = 0.0;
-    for (const SeenElement* s = views.begin(v); s != views.end(v); ++s)
-      if (!covered[s->element]) gain += area[s->element];
+    for (ElementIterator s = views.begin(v); s != views.end(v); ++s)
+      if (!covered[*s]) gain += area[*s];
     return gain;
   };
   // Lazy greedy (Minoux 1978): a view's gain only falls as others are chosen, so a stale ratio
@@ -230,14 +225,14 @@ std::vector<std::uint32_t> cheapestTilings(const CandidateViews& views, const st
     double tiling_cost = 0.0, tiling_area = 0.0;
     for (const std::uint32_t v : tiling.views) {
       tiling_cost += cost[v];
-      for (const SeenElement* s = views.begin(v); s != views.end(v); ++s)
-        if (!seen[s->element]) {
-          seen[s->element] = 1;
-          tiling_area += area[s->element];
+      for (ElementIterator s = views.begin(v); s != views.end(v); ++s)
+        if (!seen[*s]) {
+          seen[*s] = 1;
+          tiling_area += area[*s];
         }
     }
     for (const std::uint32_t v : tiling.views)
-      for (const SeenElement* s = views.begin(v); s != views.end(v); ++s) seen[s->element] = 0;
+      for (ElementIterator s = views.begin(v); s != views.end(v); ++s) seen[*s] = 0;
     if (!(tiling_area > 0.0)) continue;
     const double ratio = tiling_cost / tiling_area;
     const auto found = best.find(tiling.patch);
@@ -261,8 +256,8 @@ SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double
   for (const double c : cost)
     if (!(std::isfinite(c) && c > 0.0))
       throw ceilplan::InputError("view selection: every cost must be positive and finite");
-  for (const SeenElement& seen : views.seen)
-    if (seen.element >= area.size())
+  for (const ElementRun& run : views.runs)
+    if (static_cast<std::size_t>(run.first) + run.count > area.size())
       throw ceilplan::InputError("view selection: a candidate covers an unknown element");
   for (const Tiling& tiling : views.tilings)
     for (const std::uint32_t v : tiling.views)
@@ -286,10 +281,10 @@ SetCoverResult chooseViews(const CandidateViews& views, const std::vector<double
     std::vector<std::uint8_t> covered(area.size(), 0);
     double total = 0.0;
     for (const std::uint32_t v : cover.chosen)
-      for (const SeenElement* s = views.begin(v); s != views.end(v); ++s)
-        if (!covered[s->element]) {
-          covered[s->element] = 1;
-          total += area[s->element];
+      for (ElementIterator s = views.begin(v); s != views.end(v); ++s)
+        if (!covered[*s]) {
+          covered[*s] = 1;
+          total += area[*s];
         }
     return total;
   };

@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 namespace ceilplan::environment {
 namespace {
@@ -95,6 +97,57 @@ TEST(Visibility, BlockedByOccupiedAndUnknownVoxels) {
   // A diagonal through a corner between two blocked voxels' neighbours stays exact both ways.
   EXPECT_EQ(lineOfSight(grid, {0.2, -0.35, 0.5}, {0.9, 0.35, 0.5}),
             lineOfSight(grid, {0.9, 0.35, 0.5}, {0.2, -0.35, 0.5}));
+}
+
+// Whether the closed segment a-b meets the box [lo, hi] (the slab test).
+bool segmentMeetsBox(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& lo,
+                     const Eigen::Vector3d& hi) {
+  double t0 = 0.0, t1 = 1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double d = b[axis] - a[axis];
+    if (d == 0.0) {
+      if (a[axis] < lo[axis] || a[axis] > hi[axis]) return false;
+      continue;
+    }
+    double ta = (lo[axis] - a[axis]) / d, tb = (hi[axis] - a[axis]) / d;
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+TEST(Visibility, ASightIsClearExactlyWhenEveryVoxelTheSegmentMeetsIsFree) {
+  // A 12-voxel cube of scattered occupied and unknown voxels; segments with both ends inside (the
+  // walk without bounds checks) and with one end outside, where every voxel counts as unknown.
+  const GridFrame frame(0.1, {0, 0, 0}, {12, 12, 12});
+  VoxelGrid grid(frame);
+  std::mt19937 random(11);
+  for (int k = 0; k < 12; ++k)
+    for (int j = 0; j < 12; ++j)
+      for (int i = 0; i < 12; ++i) {
+        const unsigned draw = random() % 100;
+        grid.set(i, j, k, draw < 3 ? CellState::Occupied : (draw < 4 ? CellState::Unknown : CellState::Free));
+      }
+  std::uniform_real_distribution<double> inside(0.0, 1.2), beyond(-0.3, 1.5);
+  int clear = 0, blocked = 0;
+  for (int trial = 0; trial < 6000; ++trial) {
+    const Eigen::Vector3d a(inside(random), inside(random), inside(random));
+    const Eigen::Vector3d b = trial % 3 == 0 ? Eigen::Vector3d(beyond(random), beyond(random), beyond(random))
+                                             : Eigen::Vector3d(inside(random), inside(random), inside(random));
+    bool expected = true;
+    for (int k = -3; k < 15 && expected; ++k)
+      for (int j = -3; j < 15 && expected; ++j)
+        for (int i = -3; i < 15 && expected; ++i)
+          if (grid.at(i, j, k) != CellState::Free &&
+              segmentMeetsBox(a, b, Eigen::Vector3d(i, j, k) * 0.1, Eigen::Vector3d(i + 1, j + 1, k + 1) * 0.1))
+            expected = false;
+    ASSERT_EQ(lineOfSight(grid, a, b), expected) << a.transpose() << " -> " << b.transpose();
+    ++(expected ? clear : blocked);
+  }
+  EXPECT_GT(clear, 1000);  // both answers are exercised
+  EXPECT_GT(blocked, 1000);
 }
 
 }  // namespace

@@ -14,18 +14,14 @@ namespace {
 
 CandidateViews sets(const std::vector<std::vector<std::uint32_t>>& elements) {
   CandidateViews views;
-  for (const auto& list : elements) {
-    std::vector<SeenElement> covered;
-    covered.reserve(list.size());
-    for (const std::uint32_t e : list) covered.push_back({e, 1.0f, 0.0f, 1.0f});
-    views.add(CameraPose{}, covered);
-  }
+  for (const auto& list : elements) views.add(CameraPose{}, elementRuns(list), CoverSummary{});
   return views;
 }
 
 double optimum(const CandidateViews& views, const std::vector<double>& cost, std::size_t elements) {
   std::vector<std::uint8_t> coverable(elements, 0);
-  for (const SeenElement& seen : views.seen) coverable[seen.element] = 1;
+  for (const ElementRun& run : views.runs)
+    for (std::uint32_t e = run.first; e < run.first + run.count; ++e) coverable[e] = 1;
   double best = INFINITY;
   for (std::uint32_t mask = 0; mask < (1u << views.size()); ++mask) {
     std::vector<std::uint8_t> covered(elements, 0);
@@ -33,11 +29,32 @@ double optimum(const CandidateViews& views, const std::vector<double>& cost, std
     for (std::uint32_t v = 0; v < views.size(); ++v)
       if (mask & (1u << v)) {
         total += cost[v];
-        for (const SeenElement* s = views.begin(v); s != views.end(v); ++s) covered[s->element] = 1;
+        for (ElementIterator s = views.begin(v); s != views.end(v); ++s) covered[*s] = 1;
       }
     if (covered == coverable) best = std::min(best, total);
   }
   return best;
+}
+
+// A candidate keeps its covered elements as runs of consecutive indices and gives every index
+// back, in order, one run per gap in the list.
+TEST(CandidateViews, RunsGiveBackTheAscendingListsTheyWereMadeFrom) {
+  std::mt19937 random(3);
+  std::vector<std::vector<std::uint32_t>> lists(40);
+  for (auto& list : lists)
+    for (std::uint32_t e = 0; e < 300; ++e)
+      if (random() % 4 != 0) list.push_back(e);
+  lists.push_back({7});
+  const CandidateViews views = sets(lists);
+  ASSERT_EQ(views.size(), lists.size());
+  for (std::size_t v = 0; v < lists.size(); ++v) {
+    std::vector<std::uint32_t> back;
+    for (ElementIterator s = views.begin(v); s != views.end(v); ++s) back.push_back(*s);
+    EXPECT_EQ(back, lists[v]) << "candidate " << v;
+    std::size_t gaps = 0;
+    for (std::size_t k = 1; k < lists[v].size(); ++k) gaps += lists[v][k] != lists[v][k - 1] + 1;
+    EXPECT_EQ(views.offsets[v + 1] - views.offsets[v], gaps + 1) << "candidate " << v;
+  }
 }
 
 TEST(ViewSelection, RandomInstancesAgainstBruteForce) {
@@ -58,11 +75,12 @@ TEST(ViewSelection, RandomInstancesAgainstBruteForce) {
     const SetCoverResult result = chooseViews(views, area, cost);
 
     std::vector<std::uint8_t> coverable(element_count, 0), covered(element_count, 0);
-    for (const SeenElement& seen : views.seen) coverable[seen.element] = 1;
+    for (const ElementRun& run : views.runs)
+      for (std::uint32_t e = run.first; e < run.first + run.count; ++e) coverable[e] = 1;
     double total = 0.0;
     for (const std::uint32_t v : result.chosen) {
       total += cost[v];
-      for (const SeenElement* s = views.begin(v); s != views.end(v); ++s) covered[s->element] = 1;
+      for (ElementIterator s = views.begin(v); s != views.end(v); ++s) covered[*s] = 1;
     }
     EXPECT_EQ(covered, coverable) << "instance " << instance;
     EXPECT_NEAR(total, result.cost, 1e-9);

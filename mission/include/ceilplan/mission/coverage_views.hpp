@@ -15,8 +15,10 @@
 #include "ceilplan/mission/viewpoint.hpp"
 #include "ceilplan/planner/reachable_space.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -45,12 +47,68 @@ struct Tiling {
   std::vector<std::uint32_t> views;  ///< its candidates (those admissible), ascending
 };
 
-/// Candidate poses and, for each, the elements it covers (compressed rows: poses[i] covers
-/// seen[offsets[i]] .. seen[offsets[i + 1] - 1]).
+/// What a candidate's covered elements add up to: the figures its photo reports and its cost
+/// reads, kept so that the candidate holds its elements' indices only.
+struct CoverSummary {
+  double area_m2 = 0.0;     ///< the elements' area
+  double distance_m = 0.0;  ///< area-weighted mean distance, camera to element centre
+  double gsd_mm_px = 0.0;   ///< area-weighted mean GSD
+  double finest_gsd_mm_px = std::numeric_limits<double>::infinity();  ///< the finest GSD among them
+};
+
+/// The summary of `covered` (elements of `surface`), summed in the list's order.
+CoverSummary summariseCover(const std::vector<SeenElement>& covered, const RegionSurface& surface);
+
+/// Consecutive element indices: first, first + 1, ..., first + count - 1.
+struct ElementRun {
+  std::uint32_t first = 0;  ///< the first index (into RegionSurface::elements)
+  std::uint32_t count = 0;  ///< how many, at least 1
+};
+
+/// The runs of an ascending list of element indices.
+std::vector<ElementRun> elementRuns(const std::vector<std::uint32_t>& ascending);
+
+/// Walks runs of element indices one index at a time (a forward iterator of std::uint32_t).
+class ElementIterator {
+ public:
+  using iterator_category = std::forward_iterator_tag;  ///< forward only
+  using value_type = std::uint32_t;                     ///< an element index
+  using difference_type = std::ptrdiff_t;               ///< as any iterator
+  using pointer = const std::uint32_t*;                 ///< not used
+  using reference = std::uint32_t;                      ///< indices are made, not stored
+
+  /// At index `offset` of `run`.
+  ElementIterator(const ElementRun* run, std::uint32_t offset) : run_(run), offset_(offset) {}
+  /// The element index.
+  std::uint32_t operator*() const { return run_->first + offset_; }
+  /// The next index, in this run or the next.
+  ElementIterator& operator++() {
+    if (++offset_ == run_->count) {
+      ++run_;
+      offset_ = 0;
+    }
+    return *this;
+  }
+  /// Whether both stand at the same index of the same run.
+  bool operator==(const ElementIterator& other) const { return run_ == other.run_ && offset_ == other.offset_; }
+  /// Whether they differ.
+  bool operator!=(const ElementIterator& other) const { return !(*this == other); }
+
+ private:
+  const ElementRun* run_;
+  std::uint32_t offset_;
+};
+
+/// Candidate poses and, for each, the elements it covers as runs of consecutive indices
+/// (compressed rows: poses[i] covers the runs runs[offsets[i]] .. runs[offsets[i + 1] - 1],
+/// ascending) and their summary. A pose sees a patch of surface, whose elements are numbered
+/// row by row, so a run holds a row of the patch: a region's candidates cover tens of millions
+/// of elements on a large structure, in a few million runs.
 struct CandidateViews {
   std::vector<CameraPose> poses;          ///< the candidate poses
-  std::vector<std::uint32_t> offsets{0};  ///< row starts into `seen`, one more than poses
-  std::vector<SeenElement> seen;          ///< every pose's covered elements, row after row
+  std::vector<std::uint32_t> offsets{0};  ///< row starts into `runs`, one more than poses
+  std::vector<ElementRun> runs;           ///< every pose's covered elements, as runs, row after row
+  std::vector<CoverSummary> summaries;    ///< per pose, what its covered elements add up to
   std::vector<std::uint8_t> reachable;    ///< per element: 1 if some candidate covers it
   std::vector<Tiling> tilings;            ///< the lawnmower tilings among the candidates
   /// Per candidate: 1 if only a cover started from the tilings may take it (the views of up and
@@ -62,11 +120,11 @@ struct CandidateViews {
   /// Whether only a cover started from the tilings may take `view`.
   bool tilingOnly(std::size_t view) const { return !tiling_only.empty() && tiling_only[view] != 0; }
   /// First element `view` covers.
-  const SeenElement* begin(std::size_t view) const { return seen.data() + offsets[view]; }
+  ElementIterator begin(std::size_t view) const { return {runs.data() + offsets[view], 0}; }
   /// One past the last element `view` covers.
-  const SeenElement* end(std::size_t view) const { return seen.data() + offsets[view + 1]; }
-  /// Appends a candidate with the elements it covers.
-  void add(const CameraPose& pose, const std::vector<SeenElement>& covered);
+  ElementIterator end(std::size_t view) const { return {runs.data() + offsets[view + 1], 0}; }
+  /// Appends a candidate with the runs of the elements it covers (ascending) and their summary.
+  void add(const CameraPose& pose, const std::vector<ElementRun>& covered, const CoverSummary& summary);
 
   GenerationStats stats;  ///< what generation tried
 };

@@ -37,8 +37,7 @@ struct ViewCostOptions {
 /// every view's charge feeds the same tour, so ranking by charge is ranking by wear to first order
 /// (docs/coverage.md); the tour then prices the real wear.
 std::vector<ViewCost> viewCosts(const planner::FlightCostModel& model, const Camera& camera,
-                                const CandidateViews& views, const RegionSurface& surface,
-                                const ViewCostOptions& options = {});
+                                const CandidateViews& views, const ViewCostOptions& options = {});
 
 /// How the set cover improves on its greedy choice.
 struct SetCoverOptions {
