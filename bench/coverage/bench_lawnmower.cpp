@@ -100,7 +100,7 @@ void addRegionPhotos(const mission::Camera& camera, const mission::CoverageRegio
 }
 
 mission::LegCost legCost(const planner::PathEvaluation& evaluation) {
-  return {evaluation.charge_ah, evaluation.duration_s, evaluation.mean_current_a, {}};
+  return {evaluation.charge_ah, evaluation.duration_s, evaluation.mean_current_a, {}, {}};
 }
 
 struct Flown {

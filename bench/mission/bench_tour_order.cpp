@@ -42,12 +42,12 @@ void BM_Sorties(benchmark::State& state) {
   const CostMatrix metres = randomCosts(targets, 1);
   TourCosts legs;
   legs.names.assign(targets + 1, "target");
-  legs.dwells.assign(targets + 1, Dwell{20.0, 8.0, std::nullopt});
+  legs.dwells.assign(targets + 1, Dwell{20.0, 8.0, std::nullopt, {}});
   legs.legs = PairTable<LegCost>(targets + 1);
   for (int i = 0; i <= targets; ++i)
     for (int j = 0; j <= targets; ++j) {
       const double duration_s = metres(i, j) / 2.0;
-      legs.legs[i][j] = {9.5 * duration_s / 3600.0, duration_s, 9.5, {}};
+      legs.legs[i][j] = {9.5 * duration_s / 3600.0, duration_s, 9.5, {}, {}};
     }
   const std::vector<int> order = heuristicTour(metres, 1).targets;
   SortieOptions options;
