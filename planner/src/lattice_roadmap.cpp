@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <queue>
 
 namespace ceilplan::planner {
@@ -31,6 +32,15 @@ constexpr std::uint8_t kUnchecked = 0, kInvalid = 1, kValid = 2;
 
 std::array<int, 3> neighbour(const std::array<int, 3>& at, const std::array<int, 3>& offset) {
   return {at[0] + offset[0], at[1] + offset[1], at[2] + offset[2]};
+}
+
+// The node next to `node` in `direction`, none at the lattice's edge.
+std::optional<std::uint32_t> neighbourNode(const detail::LatticeGrid& lattice,
+                                           const detail::LatticeDirections& directions, std::uint32_t node,
+                                           int direction) {
+  const std::array<int, 3> to = neighbour(lattice.indices(node), directions.offsets[direction]);
+  if (!lattice.inside(to[0], to[1], to[2])) return std::nullopt;
+  return static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]));
 }
 
 }  // namespace
@@ -315,13 +325,12 @@ void LatticeRoadmap::costEdge(std::uint32_t node, int direction) const {
   const detail::LatticeGrid& lattice = lattice_->grid;
   const detail::LatticeDirections& directions = lattice_->directions;
   std::atomic<float>& cell = lattice_->cost(node, direction);
-  const std::array<int, 3> to = neighbour(lattice.indices(node), directions.offsets[direction]);
-  const auto other = lattice.inside(to[0], to[1], to[2]) ? static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]))
-                                                         : std::numeric_limits<std::uint32_t>::max();
-  if (other == std::numeric_limits<std::uint32_t>::max() || !nodeValid(other)) {
+  const std::optional<std::uint32_t> neighbour_node = neighbourNode(lattice, directions, node, direction);
+  if (!neighbour_node || !nodeValid(*neighbour_node)) {
     cell.store(kNoEdge, std::memory_order_relaxed);
     return;
   }
+  const std::uint32_t other = *neighbour_node;
   // Costed from the edge's first node, both ways at once, so the values are the same to the bit
   // however the lattice is explored.
   const bool forward = direction >= kFirstForwardDirection;
@@ -687,11 +696,6 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
         if (join.state == state) relax(place_offset + goal, state, g + join.cost);
     }
   };
-  const auto neighbourOf = [&](std::uint32_t node, int direction) -> std::optional<std::uint32_t> {
-    const std::array<int, 3> to = neighbour(lattice.indices(node), directions.offsets[direction]);
-    if (!lattice.inside(to[0], to[1], to[2])) return std::nullopt;
-    return static_cast<std::uint32_t>(lattice.id(to[0], to[1], to[2]));
-  };
 
   for (const Join& join : place_data[from].out) relax(join.state, kStart, join.cost);
   int goals_left = static_cast<int>(targets.size());
@@ -700,7 +704,7 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     open.pop();
     if (entry.direction >= 0) {
       const std::uint32_t node = entry.state;
-      const std::uint32_t next = *neighbourOf(node, entry.direction);
+      const std::uint32_t next = *neighbourNode(lattice, directions, node, entry.direction);
       const double g = cost_to[node];
       if (closed[next] || g + edge_bounds_[entry.direction] >= cost_to[next]) continue;
       const float c = edgeCost(node, entry.direction);
@@ -722,7 +726,7 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     }
     const std::uint32_t node = state;  // valid: reached by an edge or a join
     for (int d = 0; d < kDirections; ++d) {
-      const std::optional<std::uint32_t> next = neighbourOf(node, d);
+      const std::optional<std::uint32_t> next = neighbourNode(lattice, directions, node, d);
       if (!next || closed[*next]) continue;
       const float c = lattice_->cost(node, d).load(std::memory_order_relaxed);
       if (c == kUncosted) {
