@@ -187,11 +187,9 @@ struct Cover {
   std::vector<ElementRun> runs;
   CoverSummary summary;
 
-  template <typename Visit>
-  void forEach(Visit&& visit) const {
-    for (const ElementRun& run : runs)
-      for (std::uint32_t e = run.first; e < run.first + run.count; ++e) visit(e);
-  }
+  // Its element indices, ascending, one at a time.
+  ElementIterator begin() const { return {runs.data(), 0}; }
+  ElementIterator end() const { return {runs.data() + runs.size(), 0}; }
 };
 
 // Appends element `e`, above every element of `runs`, to them.
@@ -854,19 +852,19 @@ std::vector<bool> freeModeKeep(const std::vector<Pose>& poses, const std::vector
   std::vector<std::uint8_t> fits(element_count, 0);
   std::vector<double> best(element_count, -1.0);
   for (std::size_t v = 0; v < poses.size(); ++v)
-    covered[v].forEach([&](std::uint32_t element) {
+    for (const std::uint32_t element : covered[v]) {
       if (poses[v].clearance_m >= required_clearance_m) fits[element] = 1;
       best[element] = std::max(best[element], poses[v].clearance_m);
-    });
+    }
   std::vector<bool> keep(poses.size(), false);
   for (std::size_t v = 0; v < poses.size(); ++v) {
     if (poses[v].clearance_m >= required_clearance_m) {
       keep[v] = true;
       continue;
     }
-    for (const ElementRun& run : covered[v].runs)
-      for (std::uint32_t element = run.first; element < run.first + run.count && !keep[v]; ++element)
-        keep[v] = !fits[element] && poses[v].clearance_m >= best[element] - clearanceTolerance_m(best[element]);
+    keep[v] = std::any_of(covered[v].begin(), covered[v].end(), [&](std::uint32_t element) {
+      return !fits[element] && poses[v].clearance_m >= best[element] - clearanceTolerance_m(best[element]);
+    });
   }
   return keep;
 }
@@ -1083,7 +1081,8 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   // views across the heading aside: a cover without them must find its own).
   std::vector<std::uint8_t> reached(surface.elements.size(), 0);
   for (std::size_t v = 0; v < covered.size(); ++v)
-    if (!pose_across[v]) covered[v].forEach([&](std::uint32_t element) { reached[element] = 1; });
+    if (!pose_across[v])
+      for (const std::uint32_t element : covered[v]) reached[element] = 1;
   std::vector<double> repair_levels = distanceLevels(camera, region, kRepairLevels);
   for (std::uint32_t e = 0; e < surface.elements.size(); ++e) {
     if (reached[e]) continue;
@@ -1130,7 +1129,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
       maker.free() ? freeModeKeep(poses, covered, surface.elements.size(), maker.requiredClearance_m())
                    : std::vector<bool>(poses.size(), true);
   for (std::size_t v = 0; v < covered.size(); ++v)
-    covered[v].forEach([&](std::uint32_t element) { reached[element] = 1; });
+    for (const std::uint32_t element : covered[v]) reached[element] = 1;
   views.tilings.resize(tiling_patch.size());
   for (std::size_t t = 0; t < tiling_patch.size(); ++t) views.tilings[t].patch = tiling_patch[t];
   // Each list is released as it is copied: the region's lists are held once, not twice.
