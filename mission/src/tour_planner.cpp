@@ -597,6 +597,7 @@ class SparseLegs {
         neighbours_(nearestPlaces(tour.places_m,
                                   std::min<int>(options.neighbours, static_cast<int>(tour.places_m.size()) - 1))) {
     tour_.legs = LegTable(static_cast<int>(tour.places_m.size()));
+    home_costs_ = PairTable<LegCost>(static_cast<int>(tour.places_m.size()));
     planner::CostWeights charge;
     charge.per_ah = 1.0;
     min_ah_per_m_ = context.fullModel().minCostPerMetre(charge);
@@ -833,20 +834,50 @@ class SparseLegs {
 
   // The legs a split at `split_points` may fly, estimated where they are not stored yet.
   TourCosts splitCosts(const std::vector<int>& order, const std::set<int>& split_points) {
-    estimate(homeLegs(order, split_points));
+    const Pairs home = homeLegs(order, split_points);
+    estimate(home);
+    profileHomeLegs(home);
     Pairs consecutive;
     for (std::size_t k = 1; k < order.size(); ++k) consecutive.emplace_back(order[k - 1], order[k]);
     estimate(consecutive);
     profile(consecutive);
-    profile(homeLegs(order, split_points));
     TourCosts costs = tourCosts(tour_, context_);
-    const auto add = [&](int from, int to) {
+    for (const auto& [from, to] : consecutive)
       costs.legs(from, to) = legCost(tour_.legs.at(from, to).evaluation, context_);
-    };
-    for (const auto& [from, to] : consecutive) add(from, to);
-    for (const auto& [from, to] : homeLegs(order, split_points)) add(from, to);
+    for (const auto& [from, to] : home) costs.legs(from, to) = homeCost(from, to);
     last_split_points_ = split_points;
     return costs;
+  }
+
+  // What the split flies of a leg out of home or back: its load profile, kept apart from the leg
+  // while the leg is the estimate it was. A large tour needs these legs at every split point (a
+  // few thousand), each as long as the way home, and the plan flies a few of them: their samples
+  // (13 numbers each, where the profile keeps 2) held a third of a mode's memory. A leg with
+  // samples was routed or refined since: its own samples are the ones to fly.
+  LegCost homeCost(int from, int to) {
+    const TourLeg& leg = tour_.legs.at(from, to);
+    if (!leg.evaluation.samples.empty()) return legCost(leg.evaluation, context_);
+    return home_costs_.at(from, to);
+  }
+
+  // Scores the legs of `pairs` that have neither samples nor a profile kept (homeCost), on the
+  // tour's threads, and keeps their profiles.
+  void profileHomeLegs(Pairs pairs) {
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    Pairs bare;
+    for (const auto& [from, to] : pairs)
+      if (tour_.legs.at(from, to).evaluation.samples.empty() && !home_costs_.contains(from, to))
+        bare.emplace_back(from, to);
+    std::vector<LegCost> costs(bare.size());
+    parallelFor(bare.size(), options_.workers, [&](std::size_t k) {
+      const auto [from, to] = bare[k];
+      const TourLeg& leg = tour_.legs.at(from, to);
+      planner::PathEvaluation evaluation = leg.evaluation;  // its totals as estimated (a blocked leg's doubled)
+      evaluation.samples = score_(from, to, leg.waypoints).samples;
+      costs[k] = legCost(evaluation, context_);
+    });
+    for (std::size_t k = 0; k < bare.size(); ++k) home_costs_(bare[k].first, bare[k].second) = std::move(costs[k]);
   }
 
   SortiePlan split(const std::vector<int>& order, const std::set<int>& split_points) {
@@ -883,6 +914,7 @@ class SparseLegs {
   PlanningContext::Mode planning_;
   std::vector<std::vector<int>> neighbours_;
   std::unique_ptr<TourRoadmap> roadmap_;
+  PairTable<LegCost> home_costs_;  // homeCost's profiles
   std::set<int> last_split_points_;
   double min_ah_per_m_ = 0.0;
 };
@@ -1051,6 +1083,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
     for (const Sortie& sortie : tour.plan.sorties)
       for (const SortieLeg& leg : sortie.legs) flown.emplace_back(leg.from, leg.to);
     sparse->profile(flown);
+    sparse.reset();  // its roadmap and the split's profiles, before the flight record grows
   }
 
   // The independent re-check of every leg flown (the planner checked them too), on the tour's
