@@ -323,10 +323,12 @@ double turningPointWear(const battery::AgeingModel& prototype, const BatterySpec
   return wearOf(prototype, sortie, state_of_health);
 }
 
-}  // namespace
+std::uint64_t memoKey(int first, int end) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(first)) << 32) | static_cast<std::uint32_t>(end);
+}
 
-SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
-                       const SortieOptions& options) {
+SortiePlan splitOrder(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
+                      const SortieOptions& options, SortieMemo* memo) {
   checkTour(legs, order, battery);
   const int n = static_cast<int>(order.size());
   const std::unique_ptr<battery::AgeingModel> prototype =
@@ -367,13 +369,22 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
           at = order[p];
         }
         if (!above(flight.lowestSoc())) break;
-        SocIntegrator home = flight;
-        ChargeSensitivity home_sensitivity = sensitivity;
-        builder.flyLeg(home, at, 0, nullptr, &home_sensitivity);
-        if (!landsAboveReserve(legs, battery, home.lowestSoc(), home_sensitivity)) continue;
-        if (std::isfinite(best[b].wear))
-          offer(best[e], best[b], turningPointWear(*prototype, battery, home, builder.rechargeS(home.chargeAh()), soh),
-                b);
+        // The way home from here: most of the flying (it is as long as the sortie is far out), so
+        // a sortie an earlier split flew is looked up.
+        const SortieEnding* kept = memo ? memo->find(starts[b], starts[e]) : nullptr;
+        SortieEnding ending;
+        if (kept) {
+          ending = *kept;
+        } else {
+          SocIntegrator home = flight;
+          ChargeSensitivity home_sensitivity = sensitivity;
+          builder.flyLeg(home, at, 0, nullptr, &home_sensitivity);
+          ending.lands = landsAboveReserve(legs, battery, home.lowestSoc(), home_sensitivity);
+          if (ending.lands)
+            ending.wear = turningPointWear(*prototype, battery, home, builder.rechargeS(home.chargeAh()), soh);
+          if (memo) memo->store(starts[b], starts[e], ending);
+        }
+        if (ending.lands && std::isfinite(best[b].wear)) offer(best[e], best[b], ending.wear, b);
       }
     }
   }
@@ -424,6 +435,32 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
     plan.sorties.push_back(std::move(sortie));
   }
   return plan;
+}
+
+}  // namespace
+
+const SortieEnding* SortieMemo::find(int first, int end) const {
+  const auto it = endings_.find(memoKey(first, end));
+  if (it == endings_.end()) return nullptr;
+  ++reused_;
+  return &it->second;
+}
+
+void SortieMemo::store(int first, int end, const SortieEnding& ending) { endings_[memoKey(first, end)] = ending; }
+
+void SortieMemo::clear() {
+  endings_.clear();
+  reused_ = 0;
+}
+
+SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
+                       const SortieOptions& options) {
+  return splitOrder(legs, order, battery, options, nullptr);
+}
+
+SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
+                       const SortieOptions& options, SortieMemo& memo) {
+  return splitOrder(legs, order, battery, options, &memo);
 }
 
 std::vector<int> stretchesNoSortieFlies(const TourCosts& legs, const std::vector<int>& order,

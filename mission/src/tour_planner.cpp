@@ -658,6 +658,7 @@ class SparseLegs {
   // sorties may only keep or merge their boundaries: the loop ends once those legs are refined.
   void orderAndSplit(int round) {
     const int targets = static_cast<int>(tour_.stops.size());
+    split_memo_.clear();  // refining and routing between rounds changed legs
     if (round > kSearchRounds && !tour_.plan.sorties.empty()) {
       std::set<int> boundaries;
       int position = 0;
@@ -884,7 +885,7 @@ class SparseLegs {
     const CpuTimer timer(tour_.times.split_cpu_s);
     SortieOptions sortie_options = sortieOptions(context_.options());
     sortie_options.split_points.assign(split_points.begin(), split_points.end());
-    return planSorties(splitCosts(order, split_points), order, context_.battery(), sortie_options);
+    return planSorties(splitCosts(order, split_points), order, context_.battery(), sortie_options, split_memo_);
   }
 
   // `split_points` and more, until one sortie flies each stretch between them alone: a stretch
@@ -915,6 +916,7 @@ class SparseLegs {
   std::vector<std::vector<int>> neighbours_;
   std::unique_ptr<TourRoadmap> roadmap_;
   PairTable<LegCost> home_costs_;  // homeCost's profiles
+  SortieMemo split_memo_;          // the sorties this round's splits flew home
   std::set<int> last_split_points_;
   double min_ah_per_m_ = 0.0;
 };

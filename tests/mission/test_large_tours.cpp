@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
 #include <random>
 #include <stdexcept>
@@ -227,6 +228,91 @@ TEST(LargeTours, StretchesLongerThanASortieAreFoundUntilSplitPointsDivideThem) {
   options.split_points = {0, 15, 30, 45};
   EXPECT_GE(planSorties(tour, order, battery, options).sorties.size(), 3u);
   EXPECT_THROW(stretchesNoSortieFlies(tour, order, battery, {60}), ceilplan::InputError);
+}
+
+// A seeded tour whose current rises as the SOC falls (constant power into a falling voltage), so
+// a leg home costs what the SOC the sortie reached there makes it cost: 240 targets along 200 m,
+// each leg a load profile of 2 to 8 samples, each target a 30 s hover.
+TourCosts profiledLineTour(std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> where(0.0, 200.0), power(8.0, 14.0);
+  std::uniform_int_distribution<int> samples(2, 8);
+  const int targets = 240;
+  std::vector<double> x{0.0};
+  for (int k = 0; k < targets; ++k) x.push_back(where(random));
+  std::sort(x.begin() + 1, x.end());
+  TourCosts tour;
+  tour.names.push_back("home");
+  for (int k = 1; k <= targets; ++k) tour.names.push_back("t" + std::to_string(k));
+  tour.legs = PairTable<LegCost>(targets + 1);
+  tour.dwells.assign(targets + 1, Dwell{30.0, 10.0 / 1.45, 10.0, {}});
+  tour.current_at_soc = [](double load, double soc) { return load / (0.5 + soc); };
+  const auto addLeg = [&](int from, int to) {
+    LegCost& leg = tour.legs(from, to);
+    leg.duration_s = 2.0 + std::abs(x[to] - x[from]) / 2.0;
+    const int count = samples(random);
+    for (int k = 0; k < count; ++k) leg.load_profile.push_back({leg.duration_s * k / (count - 1), power(random)});
+    leg.mean_current_a = 10.0 / 1.45;
+    leg.charge_ah = leg.mean_current_a * leg.duration_s / 3600.0;
+  };
+  for (int k = 1; k <= targets; ++k) {
+    addLeg(0, k);
+    addLeg(k, 0);
+    if (k < targets) addLeg(k, k + 1);
+  }
+  return tour;
+}
+
+TEST(LargeTours, ASplitReusingEarlierSplitsSortiesIsTheSplitFlyingThemAgain) {
+  // As a large tour splits each order: points every 30 positions, then every 5, then every
+  // position within 5 of the sorties' starts; each split with the memo of the ones before.
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    const TourCosts tour = profiledLineTour(seed);
+    const int targets = tour.targetCount();
+    std::vector<int> order(targets);
+    std::iota(order.begin(), order.end(), 1);
+    const BatterySpec battery;
+    SortieOptions options;  // xu, the tours' model
+    SortieMemo memo;
+    std::size_t reused = 0;
+    std::vector<int> points;
+    for (const int spacing : {30, 5, 0}) {
+      if (spacing > 0) {
+        for (int p = 0; p < targets; p += spacing) points.push_back(p);
+      } else {
+        const SortiePlan coarse = planSorties(tour, order, battery, options);
+        int position = 0;
+        for (const Sortie& sortie : coarse.sorties) {
+          for (int p = std::max(1, position - 5); position > 0 && p <= std::min(targets - 1, position + 5); ++p)
+            points.push_back(p);
+          position += static_cast<int>(sortie.targets.size());
+        }
+      }
+      std::sort(points.begin(), points.end());
+      points.erase(std::unique(points.begin(), points.end()), points.end());
+      options.split_points = points;
+      const SortiePlan flown = planSorties(tour, order, battery, options);
+      const SortiePlan looked_up = planSorties(tour, order, battery, options, memo);
+      ASSERT_GE(flown.sorties.size(), 3u) << seed;
+      ASSERT_EQ(looked_up.sorties.size(), flown.sorties.size()) << seed << " " << spacing;
+      for (std::size_t s = 0; s < flown.sorties.size(); ++s) {
+        EXPECT_EQ(looked_up.sorties[s].targets, flown.sorties[s].targets) << seed << " " << spacing << " " << s;
+        EXPECT_EQ(looked_up.sorties[s].charge_ah, flown.sorties[s].charge_ah);
+        EXPECT_EQ(looked_up.sorties[s].wear, flown.sorties[s].wear);
+        EXPECT_EQ(looked_up.sorties[s].reason, flown.sorties[s].reason);
+      }
+      EXPECT_EQ(looked_up.wear, flown.wear);
+      // Every split after the first looks up sorties the one before it flew home.
+      if (spacing != 30) {
+        EXPECT_GT(memo.reused(), reused) << seed << " " << spacing;
+      }
+      reused = memo.reused();
+    }
+    EXPECT_GT(memo.size(), reused);
+    memo.clear();
+    EXPECT_EQ(memo.size(), 0u);
+    EXPECT_EQ(memo.reused(), 0u);
+  }
 }
 
 TEST(LargeTours, AStretchNoSortieCanFlyIsNamed) {

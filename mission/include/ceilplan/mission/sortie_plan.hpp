@@ -14,8 +14,11 @@
 #include "ceilplan/mission/pair_table.hpp"
 #include "ceilplan/mission/soc_integrator.hpp"
 
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace ceilplan::mission {
@@ -128,6 +131,41 @@ struct SortiePlan {
 /// target of a stretch between two of them that no sortie can fly).
 SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
                        const SortieOptions& options = {});
+
+/// How a candidate sortie of the split ends: whether it lands above the reserve, and its wear.
+struct SortieEnding {
+  bool lands = false;  ///< lands above the reserve (and with BatterySpec::reserve_confidence's odds)
+  double wear = 0.0;   ///< the ranking's cycle wear from the sortie's SOC turning points, when it lands
+};
+
+/// The candidate sorties a split with split points has flown home, kept for another split of the
+/// same legs, order, pack and options with other split points: a large tour splits each order
+/// three times, each time with more points, the earlier ones among them (docs/tours.md, "Large
+/// tours"), and a sortie between two positions both splits try is then looked up instead of
+/// flown again, to the same plan. Keyed by positions only: clear() it before the legs, the order,
+/// the pack or the options change.
+class SortieMemo {
+ public:
+  /// The sortie flying positions `first` to `end` - 1 of the order, or null if not kept.
+  const SortieEnding* find(int first, int end) const;
+  /// Keeps how the sortie flying positions `first` to `end` - 1 ends.
+  void store(int first, int end, const SortieEnding& ending);
+  /// Forgets every sortie (and the count of reuses).
+  void clear();
+  /// Sorties kept.
+  std::size_t size() const { return endings_.size(); }
+  /// Sorties looked up instead of flown since the last clear().
+  std::size_t reused() const { return reused_; }
+
+ private:
+  std::unordered_map<std::uint64_t, SortieEnding> endings_;
+  mutable std::size_t reused_ = 0;
+};
+
+/// planSorties with split points, looking up in `memo` the candidate sorties an earlier split of
+/// the same tour flew home and keeping the ones it flies; the same plan as planSorties.
+SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, const BatterySpec& battery,
+                       const SortieOptions& options, SortieMemo& memo);
 
 /// Where the stretches of `order` between consecutive `split_points` (as SortieOptions::split_points;
 /// empty: every position) begin that no single sortie can fly alone, from home and back above the
