@@ -3,9 +3,11 @@
 #include "ceilplan/core/format.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -258,6 +260,30 @@ class NeighbourWalk {
     return improved;
   }
 
+  // The exact price of a move whose legs are `legs` (`price` sums them with the cost it is
+  // given), or none if it cannot gain: priced with bounds, then with its legs asked one at a
+  // time, the others still at their bounds, until it cannot gain or every leg is asked. A leg
+  // not known yet is estimated when asked, on the search's one thread, and most moves loose
+  // bounds let through fail on their first exact leg. A price that cannot gain with bounds
+  // cannot gain exactly (a sum never falls as a term rises), and the exact price is the sum
+  // itself, so the search moves as it would pricing every leg of every such move exactly.
+  template <class Price>
+  std::optional<double> gainingPrice(const Price& price, const std::array<std::pair<int, int>, 3>& legs) const {
+    std::array<double, 3> known;  // the bounds, then the costs of the legs asked
+    for (std::size_t k = 0; k < legs.size(); ++k) known[k] = lowest(legs[k].first, legs[k].second);
+    const auto cost = [&](int from, int to) {
+      std::size_t k = 0;
+      while (legs[k] != std::make_pair(from, to)) ++k;
+      return known[k];
+    };
+    for (std::size_t asked = 0;; ++asked) {
+      const double value = price(cost);
+      if (value >= -threshold()) return std::nullopt;
+      if (asked == legs.size()) return value;
+      known[asked] = leg(legs[asked].first, legs[asked].second);
+    }
+  }
+
   // Reverses positions i..j (i < j <= n) where that joins nodes_[i - 1] or nodes_[i] to a neighbour.
   bool twoOptAt(int i) {
     const int n = targetCount();
@@ -298,18 +324,25 @@ class NeighbourWalk {
             for (int p : {q, q - 1}) {
               if (p < 0 || p > n || (p >= i - 1 && p <= last)) continue;  // an edge touching the stretch
               const int a = nodes_[p], b = nodes_[p + 1];
-              // Priced with bounds first, then exactly: closing the gap, opening a -> b.
-              const auto price = [&](const auto& cost) {
-                const double base = cost(before_node, after_node) + cut - legAt(p, p + 1);
-                return std::make_pair(base + cost(a, first_node) + cost(last_node, b),
-                                      base + cost(a, last_node) + cost(first_node, b) + turn);
+              // Closing the gap, opening a -> b, the stretch either way round; each way priced
+              // exactly only as far as its bounds say it may gain (gainingPrice).
+              const double opened = legAt(p, p + 1);
+              const auto kept_price = [&](const auto& cost) {
+                return cost(before_node, after_node) + cut - opened + cost(a, first_node) + cost(last_node, b);
               };
-              const auto [kept_bound, reversed_bound] = price([this](int from, int to) { return lowest(from, to); });
-              if (std::min(kept_bound, reversed_bound) >= -threshold()) continue;
-              const auto [kept, reversed] = price([this](int from, int to) { return leg(from, to); });
-              if (std::min(kept, reversed) >= -threshold()) continue;
+              const auto reversed_price = [&](const auto& cost) {
+                return cost(before_node, after_node) + cut - opened + cost(a, last_node) + cost(first_node, b) + turn;
+              };
+              const auto kept =
+                  gainingPrice(kept_price, {{{before_node, after_node}, {a, first_node}, {last_node, b}}});
+              // A single target either way round is the same move, at the same price.
+              const auto reversed =
+                  length == 1
+                      ? std::nullopt
+                      : gainingPrice(reversed_price, {{{before_node, after_node}, {a, last_node}, {first_node, b}}});
+              if (!kept && !reversed) continue;
               std::vector<int> stretch(nodes_.begin() + i, nodes_.begin() + last + 1);
-              if (reversed < kept) std::reverse(stretch.begin(), stretch.end());
+              if (reversed && (!kept || *reversed < *kept)) std::reverse(stretch.begin(), stretch.end());
               std::vector<int> moved;
               moved.reserve(nodes_.size());
               for (int k = 0; k < static_cast<int>(nodes_.size()); ++k) {
