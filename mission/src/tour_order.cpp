@@ -289,7 +289,7 @@ class NeighbourWalk {
     const int n = targetCount();
     const auto tryMove = [&](int j) {
       if (j <= i || j > n) return false;
-      const double before = legAt(i - 1, i) + along(i, j) + legAt(j, j + 1);
+      const double before = out_[i - 1] + along(i, j) + out_[j];
       const int a = nodes_[i - 1], b = nodes_[i], c = nodes_[j], d = nodes_[j + 1];
       if (lowest(a, c) + against(i, j) + lowest(b, d) >= before - threshold()) return false;
       const double after = leg(a, c) + against(i, j) + leg(b, d);
@@ -316,17 +316,19 @@ class NeighbourWalk {
       const int last = i + length - 1;
       const int first_node = nodes_[i], last_node = nodes_[last];
       const int before_node = nodes_[i - 1], after_node = nodes_[last + 1];
-      const double cut = -legAt(i - 1, i) - legAt(last, last + 1);
+      const double cut = -out_[i - 1] - out_[last];
       const double turn = against(i, last) - along(i, last);
-      for (const int end_node : {first_node, last_node})
-        for (int c : (*neighbours_)[end_node])
+      // A single target's ends are one: its neighbours once.
+      const std::array<int, 2> ends{first_node, last_node};
+      for (int e = 0; e < (length == 1 ? 1 : 2); ++e)
+        for (int c : (*neighbours_)[ends[e]])
           for (int q : positionsOf(c))
             for (int p : {q, q - 1}) {
               if (p < 0 || p > n || (p >= i - 1 && p <= last)) continue;  // an edge touching the stretch
               const int a = nodes_[p], b = nodes_[p + 1];
               // Closing the gap, opening a -> b, the stretch either way round; each way priced
               // exactly only as far as its bounds say it may gain (gainingPrice).
-              const double opened = legAt(p, p + 1);
+              const double opened = out_[p];
               const auto kept_price = [&](const auto& cost) {
                 return cost(before_node, after_node) + cut - opened + cost(a, first_node) + cost(last_node, b);
               };
