@@ -334,6 +334,16 @@ TEST(LargeTours, ASplitReusingEarlierSplitsSortiesIsTheSplitFlyingThemAgain) {
       if (spacing != 30) {
         EXPECT_GT(memo.reused(), reused) << seed << " " << spacing;
       }
+      // The split flies its sorties home four at a time: each lands where it lands flown alone.
+      int checked = 0;
+      for (int first : {0, points[points.size() / 2]})
+        for (int end = first + 1; end <= targets; ++end)
+          if (const SortieEnding* ending = memo.find(first, end)) {
+            const std::vector<int> targets_flown(order.begin() + first, order.begin() + end);
+            EXPECT_EQ(ending->landing_soc, flySortie(tour, targets_flown, battery).lowest_soc) << first << " " << end;
+            ++checked;
+          }
+      EXPECT_GE(checked, 2);
       reused = memo.reused();
     }
     EXPECT_GT(memo.size(), reused);

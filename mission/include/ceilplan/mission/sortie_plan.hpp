@@ -134,8 +134,9 @@ SortiePlan planSorties(const TourCosts& legs, const std::vector<int>& order, con
 
 /// How a candidate sortie of the split ends: whether it lands above the reserve, and its wear.
 struct SortieEnding {
-  bool lands = false;  ///< lands above the reserve (and with BatterySpec::reserve_confidence's odds)
-  double wear = 0.0;   ///< the ranking's cycle wear from the sortie's SOC turning points, when it lands
+  bool lands = false;        ///< lands above the reserve (and with BatterySpec::reserve_confidence's odds)
+  double landing_soc = 0.0;  ///< the SOC it lands at, as flySortie gives it
+  double wear = 0.0;         ///< the ranking's cycle wear from the sortie's SOC turning points, when it lands
 };
 
 /// The candidate sorties a split with split points has flown home, kept for another split of the
