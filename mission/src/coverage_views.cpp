@@ -89,9 +89,11 @@ class ElementIndex {
 // The coverage rule of the header, for one region.
 class RegionViewer {
  public:
+  // `blocks` (of `grid`), where given, speed the lines of sight up without changing them.
   RegionViewer(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
-               const RegionSurface& surface)
+               const RegionSurface& surface, const environment::FreeBlocks* blocks = nullptr)
       : grid_(grid),
+        blocks_(blocks),
         camera_(camera),
         region_(region),
         surface_(surface),
@@ -144,13 +146,16 @@ class RegionViewer {
     if (gsd > region_.gsd_mm_px) return false;
     // End the sight line just in front of the face, in the free voxel it looks onto.
     const Eigen::Vector3d end = element.centre_m + element.faceNormal() * (0.01 * grid_.frame().resolution_m());
-    if (!environment::lineOfSight(grid_, frame.position_m(), end)) return false;
+    if (!(blocks_ ? environment::lineOfSight(grid_, *blocks_, frame.position_m(), end)
+                  : environment::lineOfSight(grid_, frame.position_m(), end)))
+      return false;
     seen = {e, static_cast<float>(gsd), static_cast<float>(std::acos(std::min(1.0, cos_incidence)) / kDegree),
             static_cast<float>(distance_m)};
     return true;
   }
 
   const environment::VoxelGrid& grid_;
+  const environment::FreeBlocks* blocks_;
   const Camera& camera_;
   const CoverageRegion& region_;
   const RegionSurface& surface_;
@@ -311,7 +316,7 @@ class PoseMaker {
     const Eigen::Vector3d end =
         element.centre_m + element.faceNormal() * (0.01 * environment_.grid().frame().resolution_m());
     return {pose && (!free() || pose->clearance_m >= required_clearance_m_),
-            environment::lineOfSight(environment_.grid(), camera_m, end)};
+            environment::lineOfSight(environment_.grid(), blocks(), camera_m, end)};
   }
 
   void setHeading(double yaw_deg) {
@@ -343,11 +348,13 @@ class PoseMaker {
       const Eigen::Vector3d behind = aim_m + offset + step;
       if (grid.at(frame.indexOf(0, behind.x()), frame.indexOf(1, behind.y()), frame.indexOf(2, behind.z())) !=
               environment::CellState::Occupied ||
-          !environment::lineOfSight(grid, camera_m + offset, aim_m + offset - step))
+          !environment::lineOfSight(grid, blocks(), camera_m + offset, aim_m + offset - step))
         return false;
     }
     return true;
   }
+
+  const environment::FreeBlocks& blocks() const { return environment_.index()->freeBlocks(); }
 
   // Asked of finished poses only: the test costs motion checks.
   bool reachable(const Pose& pose) const { return !options_.reachable || options_.reachable(pose.pose.body_m); }
@@ -991,7 +998,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   const double heading = regionHeading(surface);
   PoseMaker maker(environment, camera, region, options, heading);
   maker.setHeading(heading);
-  const RegionViewer viewer(environment.grid(), camera, region, surface);
+  const RegionViewer viewer(environment.grid(), camera, region, surface, &environment.index()->freeBlocks());
   const double tilt = std::min(region.max_incidence_deg * options.tilt_share, 60.0) * kDegree;
 
   // The lattice: every seed's poses and what each covers, in seed order whatever the workers.
