@@ -45,6 +45,7 @@ MapIndex::MapIndex(const OccupancyMap& map, const MapIndexOptions& options, cons
   distance_ = std::make_unique<const DistanceField>(*columns_, unknownBlocks(), options.workers, [&](double f) {
     if (progress) progress(0.3 + 0.7 * f);
   });
+  free_blocks_ = std::make_unique<const FreeBlocks>(grid_, options.workers);
   if (progress) progress(1.0);
 }
 
@@ -77,7 +78,7 @@ bool MapIndex::assumedFreeOverlaps(int i, int j, double bottom_m, double top_m) 
 }
 
 std::size_t MapIndex::memoryBytes() const {
-  return grid_.memoryBytes() + columns_->memoryBytes() + distance_->memoryBytes() +
+  return grid_.memoryBytes() + columns_->memoryBytes() + distance_->memoryBytes() + free_blocks_->memoryBytes() +
          assumed_offsets_.capacity() * sizeof(std::uint32_t) + assumed_runs_.capacity() * sizeof(ColumnIndex::Run);
 }
 

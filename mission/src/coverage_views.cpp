@@ -6,12 +6,17 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cmath>
 #include <functional>
+#include <future>
 #include <limits>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <set>
+#include <string>
 #include <tuple>
 #include <unordered_map>
 
@@ -89,9 +94,11 @@ class ElementIndex {
 // The coverage rule of the header, for one region.
 class RegionViewer {
  public:
+  // `blocks` (of `grid`), where given, speed the lines of sight up without changing them.
   RegionViewer(const environment::VoxelGrid& grid, const Camera& camera, const CoverageRegion& region,
-               const RegionSurface& surface)
+               const RegionSurface& surface, const environment::FreeBlocks* blocks = nullptr)
       : grid_(grid),
+        blocks_(blocks),
         camera_(camera),
         region_(region),
         surface_(surface),
@@ -144,13 +151,16 @@ class RegionViewer {
     if (gsd > region_.gsd_mm_px) return false;
     // End the sight line just in front of the face, in the free voxel it looks onto.
     const Eigen::Vector3d end = element.centre_m + element.faceNormal() * (0.01 * grid_.frame().resolution_m());
-    if (!environment::lineOfSight(grid_, frame.position_m(), end)) return false;
+    if (!(blocks_ ? environment::lineOfSight(grid_, *blocks_, frame.position_m(), end)
+                  : environment::lineOfSight(grid_, frame.position_m(), end)))
+      return false;
     seen = {e, static_cast<float>(gsd), static_cast<float>(std::acos(std::min(1.0, cos_incidence)) / kDegree),
             static_cast<float>(distance_m)};
     return true;
   }
 
   const environment::VoxelGrid& grid_;
+  const environment::FreeBlocks* blocks_;
   const Camera& camera_;
   const CoverageRegion& region_;
   const RegionSurface& surface_;
@@ -207,6 +217,93 @@ Cover compactCover(const std::vector<SeenElement>& seen, const RegionSurface& su
   cover.summary = summariseCover(seen, surface);
   return cover;
 }
+
+}  // namespace
+
+// The covers of poses some mode has asked for and not every mode yet, by region and pose.
+struct SharedCovers::State {
+  struct Key {
+    std::string region;
+    std::array<double, 5> pose;  // body position, yaw, gimbal pitch
+
+    bool operator==(const Key& other) const { return pose == other.pose && region == other.region; }
+  };
+  struct KeyHash {
+    std::size_t operator()(const Key& key) const {
+      std::size_t hash = std::hash<std::string>()(key.region);
+      for (const double value : key.pose) hash = hash * 1000003u ^ std::hash<double>()(value);
+      return hash;
+    }
+  };
+  struct Entry {
+    std::shared_future<std::shared_ptr<const Cover>> cover;
+    unsigned asked = 0;  // a bit per mode
+  };
+
+  // `pose`'s cover in `region`, found by `find` unless some mode has asked for it first.
+  Cover coverOf(FlightMode mode, const std::string& region, const CameraPose& pose,
+                const std::function<Cover()>& find) {
+    Key key{region, {pose.body_m.x(), pose.body_m.y(), pose.body_m.z(), pose.yaw_deg, pose.gimbal_pitch_deg}};
+    std::promise<std::shared_ptr<const Cover>> promise;
+    std::shared_future<std::shared_ptr<const Cover>> cover;
+    bool finds = false;
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      auto [entry, added] = entries.try_emplace(std::move(key));
+      if (added) {
+        entry->second.cover = promise.get_future().share();
+        finds = true;
+      }
+      cover = entry->second.cover;
+      handed += finds ? 0 : 1;
+      entry->second.asked |= bit(mode);
+      if (entry->second.asked == all) entries.erase(entry);  // the future held here keeps the cover
+    }
+    if (finds) {
+      try {
+        promise.set_value(std::make_shared<const Cover>(find()));
+      } catch (...) {
+        promise.set_exception(std::current_exception());
+        throw;
+      }
+    }
+    return *cover.get();
+  }
+
+  // `mode` has generated every candidate of `region`: once every mode has, its covers go.
+  void finished(FlightMode mode, const std::string& region) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if ((finished_modes[region] |= bit(mode)) != all) return;
+    for (auto entry = entries.begin(); entry != entries.end();)
+      entry = entry->first.region == region ? entries.erase(entry) : std::next(entry);
+  }
+
+  static unsigned bit(FlightMode mode) { return 1u << static_cast<unsigned>(mode); }
+
+  unsigned all = 0;
+  std::size_t handed = 0;
+  mutable std::mutex mutex;
+  std::unordered_map<Key, Entry, KeyHash> entries;
+  std::map<std::string, unsigned> finished_modes;
+};
+
+SharedCovers::SharedCovers(const std::vector<FlightMode>& modes) : state_(std::make_unique<State>()) {
+  for (const FlightMode mode : modes) state_->all |= State::bit(mode);
+}
+
+SharedCovers::~SharedCovers() = default;
+
+std::size_t SharedCovers::handed() const {
+  const std::lock_guard<std::mutex> lock(state_->mutex);
+  return state_->handed;
+}
+
+std::size_t SharedCovers::size() const {
+  const std::lock_guard<std::mutex> lock(state_->mutex);
+  return state_->entries.size();
+}
+
+namespace {
 
 // Camera poses looking at an element, checked against the vehicle and the map.
 class PoseMaker {
@@ -311,7 +408,7 @@ class PoseMaker {
     const Eigen::Vector3d end =
         element.centre_m + element.faceNormal() * (0.01 * environment_.grid().frame().resolution_m());
     return {pose && (!free() || pose->clearance_m >= required_clearance_m_),
-            environment::lineOfSight(environment_.grid(), camera_m, end)};
+            environment::lineOfSight(environment_.grid(), blocks(), camera_m, end)};
   }
 
   void setHeading(double yaw_deg) {
@@ -343,11 +440,13 @@ class PoseMaker {
       const Eigen::Vector3d behind = aim_m + offset + step;
       if (grid.at(frame.indexOf(0, behind.x()), frame.indexOf(1, behind.y()), frame.indexOf(2, behind.z())) !=
               environment::CellState::Occupied ||
-          !environment::lineOfSight(grid, camera_m + offset, aim_m + offset - step))
+          !environment::lineOfSight(grid, blocks(), camera_m + offset, aim_m + offset - step))
         return false;
     }
     return true;
   }
+
+  const environment::FreeBlocks& blocks() const { return environment_.index()->freeBlocks(); }
 
   // Asked of finished poses only: the test costs motion checks.
   bool reachable(const Pose& pose) const { return !options_.reachable || options_.reachable(pose.pose.body_m); }
@@ -991,7 +1090,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   const double heading = regionHeading(surface);
   PoseMaker maker(environment, camera, region, options, heading);
   maker.setHeading(heading);
-  const RegionViewer viewer(environment.grid(), camera, region, surface);
+  const RegionViewer viewer(environment.grid(), camera, region, surface, &environment.index()->freeBlocks());
   const double tilt = std::min(region.max_incidence_deg * options.tilt_share, 60.0) * kDegree;
 
   // The lattice: every seed's poses and what each covers, in seed order whatever the workers.
@@ -1019,6 +1118,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
   const std::vector<Seed> lattice =
       latticeSeeds(environment.grid(), camera, region, surface, levels, options.seed_spacing_share, heading);
   seeds.insert(seeds.end(), lattice.begin(), lattice.end());
+  SharedCovers::State* shared = options.shared_covers ? &options.shared_covers->state() : nullptr;
   std::vector<std::vector<Pose>> seed_poses(seeds.size());
   std::vector<std::vector<Cover>> seed_covered(seeds.size());
   std::vector<std::size_t> seed_tried(seeds.size(), 0);
@@ -1029,9 +1129,15 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
         const auto& element = surface.elements[seeds[s].element];
         const double d = seeds[s].distance_m;
         std::vector<SeenElement> seen;
-        const auto cover = [&](const Pose& pose) {
+        const auto find = [&](const Pose& pose) {
           viewer.covered(pose.pose, seen);
-          seed_covered[s].push_back(compactCover(seen, surface));
+          return compactCover(seen, surface);
+        };
+        // Raised poses are ceiling mode's own: the other modes never ask for them.
+        const auto cover = [&](const Pose& pose) {
+          seed_covered[s].push_back(
+              shared && !pose.raised ? shared->coverOf(options.mode, region.name, pose.pose, [&] { return find(pose); })
+                                     : find(pose));
         };
         if (seeds[s].tilt_rad > 0.0) {
           maker.around(element, seeds[s].aim_m, d, seeds[s].tilt_rad, 4, seeds[s].level_yaw_deg, seed_poses[s],
@@ -1055,6 +1161,7 @@ CandidateViews generateCandidateViews(const environment::Environment& environmen
         }
       },
       options.progress);
+  if (shared) shared->finished(options.mode, region.name);
 
   CandidateViews views;
   views.stats.seeds = seeds.size();

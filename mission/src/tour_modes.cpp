@@ -76,8 +76,13 @@ std::vector<TourResult> planTours(const Mission& mission, const PlanningContext&
     for (; handed < limit && done[handed]; ++handed)
       if (planned) planned(*tours[handed]);
   };
+  // Modes planned at once, each on its thread, share their candidate views' covers.
+  const int threads = options.workers >= 2 ? static_cast<int>(count) : 1;
+  const std::shared_ptr<SharedCovers> shared_covers =
+      threads >= 2 && count >= 2 ? std::make_shared<SharedCovers>(modes) : options.shared_covers;
   const auto plan = [&](std::size_t k) {
     TourOptions mode_options = options;
+    mode_options.shared_covers = shared_covers;
     if (options.progress)
       mode_options.progress = [&, k](const std::string& stage, double fraction) {
         if (stopped || first_failed < k) throw Abandoned();
@@ -93,7 +98,6 @@ std::vector<TourResult> planTours(const Mission& mission, const PlanningContext&
     tours[k]->options.progress = options.progress;  // the caller's, not the relay's
     done[k] = true;
   };
-  const int threads = options.workers >= 2 ? static_cast<int>(count) : 1;
   try {
     parallelFor(count, threads, plan, [&](double) {
       try {

@@ -162,6 +162,7 @@ CoveragePlan planMissionCoverage(const Mission& mission, const PlanningContext& 
   coverage.views.min_ceiling_gap_m = context.options().min_ceiling_gap_m + kViewpointGapMarginM;
   coverage.views.workers = options.workers;
   coverage.views.reachable = reachable;
+  coverage.views.shared_covers = options.shared_covers;
   coverage.costs.transit_speed_m_s = context.options().speeds.inspection_m_s;
   coverage.costs.workers = options.workers;
   if (options.progress)

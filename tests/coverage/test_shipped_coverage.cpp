@@ -10,11 +10,16 @@
 #include "ceilplan/mission/contact_points.hpp"
 #include "ceilplan/mission/coverage_check.hpp"
 #include "ceilplan/mission/coverage_plan.hpp"
+#include "ceilplan/mission/coverage_views.hpp"
+#include "ceilplan/mission/region_surface.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
+#include <memory>
+#include <thread>
+#include <vector>
 
 namespace ceilplan::mission {
 namespace {
@@ -112,6 +117,48 @@ TEST(ShippedCoverage, ABayOverAPierCapIsTiledBesideTheCapAndSeenObliquelyAboveIt
     }
     EXPECT_GT(oblique_beside_cap, 0) << mode_name;
   }
+}
+
+// planTours plans its modes at once, and they share what their candidate poses cover: each mode's
+// candidates are exactly those it generates alone, and most of free mode's covers come from
+// ceiling mode's generation or go to it (free mode's poses are ceiling mode's unraised ones).
+TEST(ShippedCoverage, ModesPlannedAtOnceShareCoversAndGenerateWhatEachGeneratesAlone) {
+  CoverageRegion region = testing::bridgeSoffit();
+  region.shape = RegionShape::makeBox({12.0, -4.0, 5.95}, {20.0, 4.0, 6.05});
+  const testing::CoverageScene& scene = testing::bridgeScene();
+  const RegionSurface surface = extractRegionSurface(scene.environment.grid(), region.shape, region.faces, region.name);
+  const std::vector<FlightMode> modes{FlightMode::Ceiling, FlightMode::Free};
+  const auto generate = [&](FlightMode mode, const std::shared_ptr<SharedCovers>& shared) {
+    ViewGenerationOptions options;
+    options.mode = mode;
+    options.shared_covers = shared;
+    return generateCandidateViews(scene.environment, testing::upwardCamera(), region, surface, options);
+  };
+  const auto shared = std::make_shared<SharedCovers>(modes);
+  std::vector<CandidateViews> together(2);
+  std::vector<std::thread> threads;
+  for (std::size_t m = 0; m < 2; ++m) threads.emplace_back([&, m] { together[m] = generate(modes[m], shared); });
+  for (std::thread& thread : threads) thread.join();
+  EXPECT_EQ(shared->size(), 0u);  // every region finished: nothing is held
+  for (std::size_t m = 0; m < 2; ++m) {
+    const CandidateViews alone = generate(modes[m], nullptr);
+    const CandidateViews& shared_views = together[m];
+    ASSERT_EQ(shared_views.size(), alone.size()) << flightModeName(modes[m]);
+    ASSERT_EQ(shared_views.offsets, alone.offsets);
+    for (std::size_t v = 0; v < alone.size(); ++v) {
+      ASSERT_EQ(shared_views.poses[v].body_m, alone.poses[v].body_m);
+      ASSERT_EQ(shared_views.summaries[v].area_m2, alone.summaries[v].area_m2);
+      ASSERT_EQ(shared_views.summaries[v].gsd_mm_px, alone.summaries[v].gsd_mm_px);
+    }
+    ASSERT_EQ(shared_views.runs.size(), alone.runs.size());
+    for (std::size_t k = 0; k < alone.runs.size(); ++k) {
+      ASSERT_EQ(shared_views.runs[k].first, alone.runs[k].first);
+      ASSERT_EQ(shared_views.runs[k].count, alone.runs[k].count);
+    }
+  }
+  // Found once for both modes: at least half as many covers as ceiling mode has candidates (8679
+  // for 11,174 when written).
+  EXPECT_GT(2 * shared->handed(), together[0].size());
 }
 
 TEST(ShippedCoverage, TunnelCrown) { expectCovered(ShippedMission("tunnel_crown"), FlightMode::Ceiling, 0.01); }

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 namespace ceilplan::environment {
 namespace {
@@ -148,6 +150,92 @@ TEST(Visibility, ASightIsClearExactlyWhenEveryVoxelTheSegmentMeetsIsFree) {
   }
   EXPECT_GT(clear, 1000);  // both answers are exercised
   EXPECT_GT(blocked, 1000);
+}
+
+// Segments that meet voxel edges and corners exactly (ends at voxel centres and corners, whole
+// voxel steps apart, straight and diagonal), where the walk breaks ties between axes, and general
+// ones; both ends inside the grid and one end outside.
+std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> testSegments(const GridFrame& frame, std::mt19937& random,
+                                                                      int count) {
+  const Eigen::Vector3d lo = frame.bounds().min(), hi = frame.bounds().max();
+  const double r = frame.resolution_m();
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto anywhere = [&](double margin) {
+    return Eigen::Vector3d(lo.x() - margin + unit(random) * (hi.x() - lo.x() + 2 * margin),
+                           lo.y() - margin + unit(random) * (hi.y() - lo.y() + 2 * margin),
+                           lo.z() - margin + unit(random) * (hi.z() - lo.z() + 2 * margin));
+  };
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;
+  for (int n = 0; n < count; ++n) {
+    Eigen::Vector3d a = anywhere(0.0), b;
+    switch (n % 4) {
+      case 0:  // general
+        b = anywhere(0.0);
+        break;
+      case 1:  // one end outside
+        b = anywhere(5 * r);
+        break;
+      default: {  // on the lattice: centres (case 2) or corners (case 3), whole steps apart
+        const double shift = n % 4 == 2 ? 0.5 : 0.0;
+        for (int axis = 0; axis < 3; ++axis) a[axis] = (std::floor(a[axis] / r) + shift) * r;
+        const int length = 1 + static_cast<int>(random() % 40);
+        Eigen::Vector3d direction;
+        for (int axis = 0; axis < 3; ++axis) direction[axis] = static_cast<int>(random() % 3) - 1;
+        if (direction.isZero()) direction.x() = 1;
+        b = a + direction * (length * r);
+      }
+    }
+    segments.emplace_back(a, b);
+  }
+  return segments;
+}
+
+TEST(Visibility, FreeBlocksGiveTheVoxelWalksAnswerOnEverySegment) {
+  // A grid whose sides are not whole blocks, free but for two slabs, a column and scattered
+  // voxels: the walk crosses all-free blocks, stops in mixed ones and at the grid's far faces.
+  const GridFrame frame(0.1, {-4, 2, 0}, {37, 42, 29});
+  VoxelGrid grid(frame);
+  std::mt19937 random(23);
+  for (int k = 0; k < 29; ++k)
+    for (int j = 0; j < 42; ++j)
+      for (int i = 0; i < 37; ++i) {
+        const bool slab = k == 20 && i < 30, column = i >= 17 && i < 20 && j >= 10 && j < 14, wall = j == 33 && k < 12;
+        const unsigned draw = random() % 1000;
+        grid.set(i, j, k,
+                 slab || column || wall || draw < 2 ? CellState::Occupied
+                                                    : (draw < 3 ? CellState::Unknown : CellState::Free));
+      }
+  const FreeBlocks blocks(grid, 2);
+  int free_blocks = 0;
+  for (int k = 0; k < 29; k += 8)
+    for (int j = 0; j < 42; j += 8)
+      for (int i = 0; i < 37; i += 8) free_blocks += blocks.allFree(i, j, k);
+  ASSERT_GT(free_blocks, 10);  // the walks have blocks to cross
+  int clear = 0, blocked = 0;
+  for (const auto& [a, b] : testSegments(frame, random, 40000)) {
+    const bool expected = lineOfSight(grid, a, b);
+    ASSERT_EQ(lineOfSight(grid, blocks, a, b), expected) << a.transpose() << " -> " << b.transpose();
+    ++(expected ? clear : blocked);
+  }
+  EXPECT_GT(clear, 5000);  // both answers are exercised
+  EXPECT_GT(blocked, 5000);
+}
+
+TEST(Visibility, ABlockIsFreeExactlyWhenEachOfItsVoxelsIs) {
+  const GridFrame frame(0.05, {0, 0, 0}, {20, 9, 17});
+  VoxelGrid grid(frame);
+  for (int k = 0; k < 17; ++k)
+    for (int j = 0; j < 9; ++j)
+      for (int i = 0; i < 20; ++i) grid.set(i, j, k, CellState::Free);
+  grid.set(19, 8, 16, CellState::Unknown);  // in the far corner's partial block
+  grid.set(8, 0, 7, CellState::Occupied);
+  const FreeBlocks blocks(grid);
+  for (int k = 0; k < 17; ++k)
+    for (int j = 0; j < 9; ++j)
+      for (int i = 0; i < 20; ++i) {
+        const bool far_corner = i >= 16 && j >= 8 && k >= 16, occupied = i >= 8 && i < 16 && j < 8 && k < 8;
+        EXPECT_EQ(blocks.allFree(i, j, k), !far_corner && !occupied) << i << " " << j << " " << k;
+      }
 }
 
 }  // namespace

@@ -7,9 +7,11 @@
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/environment/map_index.hpp"
 #include "ceilplan/environment/map_statistics.hpp"
+#include "ceilplan/environment/visibility.hpp"
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <sstream>
 
 namespace ceilplan::environment {
@@ -27,6 +29,35 @@ std::shared_ptr<const MapIndex> indexed(UnknownPolicy policy) {
   MapIndexOptions options;
   options.unknown.policy = policy;  // fill: the default 2 m pockets
   return MapIndex::build(geb079(), options);
+}
+
+TEST(Geb079, LinesOfSightCrossingFreeBlocksGiveTheVoxelWalksAnswer) {
+  // Sights between known-free voxels of the scan (camera to surface: the coverage views' casts)
+  // and between arbitrary points of its box; the index's free blocks must change no answer.
+  const auto index = indexed(UnknownPolicy::Occupied);
+  const VoxelGrid& grid = index->grid();
+  const GridFrame& frame = grid.frame();
+  std::mt19937 random(7);
+  std::vector<Eigen::Vector3d> free_points;
+  std::uniform_int_distribution<std::size_t> voxel(0, frame.voxelCount() - 1);
+  std::uniform_real_distribution<double> within(0.0, 1.0);
+  while (free_points.size() < 2000) {
+    const Index3 v = frame.unlinear(voxel(random));
+    if (grid.at(v[0], v[1], v[2]) != CellState::Free) continue;
+    free_points.emplace_back(frame.faceOf(0, v[0]) + within(random) * frame.resolution_m(),
+                             frame.faceOf(1, v[1]) + within(random) * frame.resolution_m(),
+                             frame.faceOf(2, v[2]) + within(random) * frame.resolution_m());
+  }
+  int clear = 0, blocked = 0;
+  for (std::size_t n = 0; n < 20000; ++n) {
+    const Eigen::Vector3d& a = free_points[n % free_points.size()];
+    const Eigen::Vector3d& b = free_points[(n * 7919 + 13) % free_points.size()];
+    const bool expected = lineOfSight(grid, a, b);
+    ASSERT_EQ(lineOfSight(grid, index->freeBlocks(), a, b), expected) << a.transpose() << " -> " << b.transpose();
+    ++(expected ? clear : blocked);
+  }
+  EXPECT_GT(clear, 1000);  // both answers are exercised
+  EXPECT_GT(blocked, 1000);
 }
 
 TEST(Geb079, FillFreesTheCorridorThatUnknownPocketsCutUp) {

@@ -10,6 +10,7 @@
 #include "ceilplan/environment/distance_field.hpp"
 #include "ceilplan/environment/occupancy_map.hpp"
 #include "ceilplan/environment/unknown_space.hpp"
+#include "ceilplan/environment/visibility.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
 
 #include <Eigen/Core>
@@ -65,6 +66,8 @@ class MapIndex {
   const ColumnIndex& columns() const { return *columns_; }
   /// Distances to what blocks under the policy.
   const DistanceField& distance() const { return *distance_; }
+  /// The grid's all-free blocks, for fast lines of sight (visibility.hpp).
+  const FreeBlocks& freeBlocks() const { return *free_blocks_; }
 
   /// Whether `point_m` lies in the box of the map's known voxels.
   bool contains(const Eigen::Vector3d& point_m) const { return grid_.frame().contains(point_m); }
@@ -83,6 +86,7 @@ class MapIndex {
   VoxelGrid grid_;
   std::unique_ptr<const ColumnIndex> columns_;
   std::unique_ptr<const DistanceField> distance_;
+  std::unique_ptr<const FreeBlocks> free_blocks_;
   /// The assumed-free runs of each column: assumed_runs_[assumed_offsets_[c], assumed_offsets_[c + 1]).
   std::vector<std::uint32_t> assumed_offsets_;
   std::vector<ColumnIndex::Run> assumed_runs_;

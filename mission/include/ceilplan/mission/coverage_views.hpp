@@ -11,6 +11,7 @@
 #include "ceilplan/environment/environment.hpp"
 #include "ceilplan/mission/camera.hpp"
 #include "ceilplan/mission/coverage_region.hpp"
+#include "ceilplan/mission/flight_mode.hpp"
 #include "ceilplan/mission/region_surface.hpp"
 #include "ceilplan/mission/viewpoint.hpp"
 #include "ceilplan/planner/reachable_space.hpp"
@@ -20,6 +21,7 @@
 #include <functional>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace ceilplan::mission {
@@ -130,6 +132,32 @@ struct CandidateViews {
 };
 
 /// How candidate views are generated for a region.
+/// What candidate poses cover, shared by candidate generations that run at once over the same
+/// map, camera and regions in different flight modes (planTours' modes: free mode's poses are
+/// nearly all ceiling mode's unraised ones). A pose's cover is found by the first generation that
+/// asks for it, handed to the others, and forgotten once every mode has asked or has finished the
+/// region. Thread-safe; the covers are the same whoever finds them.
+class SharedCovers {
+ public:
+  /// Shared by one generation in each of `modes` (distinct).
+  explicit SharedCovers(const std::vector<FlightMode>& modes);
+  ~SharedCovers();
+  SharedCovers(const SharedCovers&) = delete;
+  SharedCovers& operator=(const SharedCovers&) = delete;
+
+  /// Covers held now.
+  std::size_t size() const;
+  /// Covers handed to a mode that did not find them.
+  std::size_t handed() const;
+
+  /// generateCandidateViews' access.
+  struct State;
+  State& state() const { return *state_; }
+
+ private:
+  std::unique_ptr<State> state_;
+};
+
 struct ViewGenerationOptions {
   FlightMode mode = FlightMode::Ceiling;  ///< the mode the views are for
   /// Free mode: the conventional distance kept from every structure, airframe to surface. A pose
@@ -148,6 +176,9 @@ struct ViewGenerationOptions {
   /// place no route from home reaches); empty: every admissible pose. An element seen only from
   /// elsewhere counts as unreachable.
   planner::ReachablePredicate reachable;
+  /// Covers shared with the other modes' generations running at once (planTours sets it); empty:
+  /// every cover is found here.
+  std::shared_ptr<SharedCovers> shared_covers;
 };
 
 /// The distance levels of a region (largest first): from where the whole covered part of an

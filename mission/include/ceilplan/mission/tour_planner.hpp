@@ -72,6 +72,9 @@ struct TourOptions {
   int split_points = 60;      ///< large tours: the fewest positions a sortie may start at
   int order_kicks = 0;        ///< large tours: rounds of iterated local search on the order
   ProgressCallback progress;  ///< stages: coverage views, the roadmap, routing, refining
+  /// Candidate views' covers shared with the other modes planned at once (planTours sets it when
+  /// it plans its modes on their own threads); empty: the tour finds its own.
+  std::shared_ptr<SharedCovers> shared_covers;
 
   /// Throws ceilplan::InputError for options no tour can use (a lattice spacing out of its range,
   /// no worker, ...); planTour checks them first, a front end before it indexes the map.
