@@ -101,7 +101,7 @@ ColumnIndex::Boundary ColumnIndex::below(int i, int j, double z_m) const {
 
 ColumnIndex::Boundaries ColumnIndex::around(int i, int j, double z_m) const {
   if (!inside(i, j)) return {{z_m, CellState::Unknown}, {z_m, CellState::Unknown}};
-  const double t = z_m * inverse_resolution_ - origin_z_;
+  const double t = voxelHeight(z_m);
   const Run* run = std::partition_point(beginRuns(i, j), endRuns(i, j), [t](const Run& r) { return r.hi <= t; });
   const Boundary up = run->lo <= t ? Boundary{z_m, run->state} : Boundary{face(run->lo), run->state};
   // below()'s run, the last to start below t: this one when it does, else the one before,
@@ -109,6 +109,19 @@ ColumnIndex::Boundaries ColumnIndex::around(int i, int j, double z_m) const {
   const Run* under = run->lo < t ? run : run - 1;
   const Boundary down = under->hi >= t ? Boundary{z_m, under->state} : Boundary{face(under->hi), under->state};
   return {up, down};
+}
+
+std::optional<ColumnIndex::FreeSpan> ColumnIndex::freeSpan(int i, int j, double z_m) const {
+  if (!inside(i, j)) return std::nullopt;
+  const double t = voxelHeight(z_m);
+  const Run* run = std::partition_point(beginRuns(i, j), endRuns(i, j), [t](const Run& r) { return r.hi <= t; });
+  if (run == beginRuns(i, j)) return std::nullopt;  // below the grid, inside its unbounded run
+  const Run* under = run - 1;
+  if (!(under->hi < t && t < run->lo)) return std::nullopt;
+  // around()'s two answers for a height strictly between the runs.
+  return FreeSpan{static_cast<double>(under->hi),
+                  static_cast<double>(run->lo),
+                  {{face(run->lo), run->state}, {face(under->hi), under->state}}};
 }
 
 std::optional<CellState> ColumnIndex::firstBlocking(int i, int j, double bottom_m, double top_m,

@@ -19,6 +19,11 @@ constexpr double kDenseStepVoxels = 0.1;  // checkPathDensely's step: finer than
 constexpr double kReachMargin_m = 1e-6;   // validReach_m stays this far short of a blocked voxel or the box
 
 constexpr int kKeptGaps = 256;  // columns under a rotor disc: 9 for a 10" rotor at 0.1 m, 196 at 0.02 m
+// ceilingAndGroundAlong keeps a free span for each column in its points' box when there are at
+// most this many per point and this many more (a lattice edge's 9 samples at 0.1 m: about 150
+// columns); a long diagonal motion's box is mostly columns none of its discs reach.
+constexpr long kSpansPerPoint = 32;
+constexpr long kSpansBeyondPoints = 256;
 
 // Calls `visit(i, j, n)` for every column the disc of `radius_m` around `centre_m` overlaps with
 // positive area, n counting them, until one returns false; returns whether none did.
@@ -129,10 +134,12 @@ bool Environment::anyColumnUnderCylinder(const Eigen::Vector3d& body_m, Visit&& 
   return false;
 }
 
+bool Environment::isSurface(const ColumnIndex::Boundary& boundary) const {
+  return boundary.state == CellState::Occupied || (boundary.state == CellState::Unknown && options_.unknown_is_surface);
+}
+
 double Environment::surfaceGap(const ColumnIndex::Boundary& boundary, double z_m) const {
-  const bool surface =
-      boundary.state == CellState::Occupied || (boundary.state == CellState::Unknown && options_.unknown_is_surface);
-  return surface ? std::abs(boundary.face_m - z_m) : kInfinity;
+  return isSurface(boundary) ? std::abs(boundary.face_m - z_m) : kInfinity;
 }
 
 double Environment::columnGap(int i, int j, double z_m, Direction direction) const {
@@ -194,7 +201,112 @@ Environment::CeilingAndGround Environment::ceilingAndGround(const Eigen::Vector3
   return both;
 }
 
+void Environment::ceilingAndGroundAlong(const std::vector<Eigen::Vector3d>& bodies_m,
+                                        const std::function<void(std::size_t, const CeilingAndGround&)>& visit) const {
+  for (const Eigen::Vector3d& body_m : bodies_m) requireInside(body_m, "ceiling gap");
+  if (bodies_m.empty()) return;
+  CeilingAndGround both;
+  // The columns a disc at any of the points can reach (a voxel of margin against rounding): one
+  // free span each, unless the points spread too far apart for that to pay.
+  const GridFrame& frame = grid().frame();
+  Eigen::Vector2d reach_m = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& offset : vehicle_.rotor_positions_m) reach_m = reach_m.cwiseMax(offset.cwiseAbs());
+  reach_m.array() += vehicle_.rotor_radius_m + frame.resolution_m();
+  Eigen::Vector2d low_m = bodies_m.front().head<2>(), high_m = low_m;
+  for (const Eigen::Vector3d& body_m : bodies_m)
+    low_m = low_m.cwiseMin(body_m.head<2>()), high_m = high_m.cwiseMax(body_m.head<2>());
+  const int i0 = frame.indexOf(0, low_m.x() - reach_m.x()), i1 = frame.indexOf(0, high_m.x() + reach_m.x());
+  const int j0 = frame.indexOf(1, low_m.y() - reach_m.y()), j1 = frame.indexOf(1, high_m.y() + reach_m.y());
+  const long width = i1 - i0 + 1, columns = width * (j1 - j0 + 1);
+  if (columns > kSpansPerPoint * static_cast<long>(bodies_m.size()) + kSpansBeyondPoints) {
+    for (std::size_t k = 0; k < bodies_m.size(); ++k) {
+      gaps(bodies_m[k], &both.ceiling, &both.ground);
+      visit(k, both);
+    }
+    return;
+  }
+  // A column's free span and what surfaceGap makes of around()'s boundaries inside it.
+  struct Span {
+    double lo = 1.0, hi = 0.0;  // empty until looked up, and where the height lies in no span
+    double above_face_m = 0.0, below_face_m = 0.0;
+    bool above_surface = false, below_surface = false, looked_up = false;
+    bool operator==(const Span& o) const {
+      return lo == o.lo && hi == o.hi && above_face_m == o.above_face_m && below_face_m == o.below_face_m &&
+             above_surface == o.above_surface && below_surface == o.below_surface;
+    }
+    bool holds(double t) const { return lo < t && t < hi; }
+    std::array<double, 2> gaps(double z_m) const {
+      return {above_surface ? std::abs(above_face_m - z_m) : kInfinity,
+              below_surface ? std::abs(below_face_m - z_m) : kInfinity};
+    }
+  };
+  std::vector<Span> spans(columns);
+  // Column (i, j), inside the box; looked up at height z_m the first time.
+  const auto spanOf = [&](int i, int j, double z_m) -> const Span& {
+    Span& span = spans[(j - j0) * width + (i - i0)];
+    if (!span.looked_up) {
+      span.looked_up = true;
+      if (const std::optional<ColumnIndex::FreeSpan> free = columns_->freeSpan(i, j, z_m)) {
+        span.lo = free->lo, span.hi = free->hi;
+        span.above_face_m = free->around.above.face_m, span.below_face_m = free->around.below.face_m;
+        span.above_surface = isSurface(free->around.above), span.below_surface = isSurface(free->around.below);
+      }
+    }
+    return span;
+  };
+  const auto column_gaps = [&](int i, int j, double z_m) -> std::array<double, 2> {
+    if (i >= i0 && i <= i1 && j >= j0 && j <= j1) {  // always, but exact either way
+      const Span& span = spanOf(i, j, z_m);
+      if (span.holds(columns_->voxelHeight(z_m))) return span.gaps(z_m);
+    }
+    return searchedColumnGaps(i, j, z_m);
+  };
+  // A rotor whose disc, at every point, covers columns of one span (every column in the
+  // rectangle the discs sweep): at a height inside it each column gives the same gaps, so
+  // gaps() needs none of them.
+  const double radius = vehicle_.rotor_radius_m, plane_height = vehicle_.rotor_plane_height_m;
+  std::vector<const Span*> uniform(vehicle_.rotor_positions_m.size(), nullptr);
+  for (std::size_t r = 0; r < uniform.size(); ++r) {
+    int ri0 = i1, ri1 = i0, rj0 = j1, rj1 = j0;
+    for (const Eigen::Vector3d& body_m : bodies_m) {  // as forEachDiscColumn bounds each disc
+      const Eigen::Vector2d centre = body_m.head<2>() + vehicle_.rotor_positions_m[r];
+      ri0 = std::min(ri0, frame.indexOf(0, centre.x() - radius)),
+      ri1 = std::max(ri1, frame.indexOf(0, centre.x() + radius));
+      rj0 = std::min(rj0, frame.indexOf(1, centre.y() - radius)),
+      rj1 = std::max(rj1, frame.indexOf(1, centre.y() + radius));
+    }
+    if (ri0 < i0 || ri1 > i1 || rj0 < j0 || rj1 > j1) continue;  // never, but exact either way
+    const double z_m = bodies_m.front().z() + plane_height;
+    const Span& first = spanOf(ri0, rj0, z_m);
+    bool same = first.lo < first.hi;
+    for (int j = rj0; j <= rj1 && same; ++j)
+      for (int i = ri0; i <= ri1 && same; ++i) same = spanOf(i, j, z_m) == first;
+    if (same) uniform[r] = &first;
+  }
+  const auto uniform_gaps = [&](std::size_t r, double z_m) -> std::optional<std::array<double, 2>> {
+    if (!uniform[r] || !uniform[r]->holds(columns_->voxelHeight(z_m))) return std::nullopt;
+    return uniform[r]->gaps(z_m);
+  };
+  for (std::size_t k = 0; k < bodies_m.size(); ++k) {
+    gaps(bodies_m[k], &both.ceiling, &both.ground, column_gaps, uniform_gaps);
+    visit(k, both);
+  }
+}
+
+std::array<double, 2> Environment::searchedColumnGaps(int i, int j, double z_m) const {
+  const ColumnIndex::Boundaries boundaries = columns_->around(i, j, z_m);
+  return {surfaceGap(boundaries.above, z_m), surfaceGap(boundaries.below, z_m)};
+}
+
 void Environment::gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGaps* down) const {
+  gaps(
+      body_m, up, down, [this](int i, int j, double z_m) { return searchedColumnGaps(i, j, z_m); },
+      [](std::size_t, double) { return std::optional<std::array<double, 2>>(); });
+}
+
+template <class ColumnGaps, class UniformGaps>
+void Environment::gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGaps* down, ColumnGaps&& column_gaps,
+                       UniformGaps&& uniform_gaps) const {
   const GridFrame& frame = grid().frame();
   const double radius = vehicle_.rotor_radius_m;
   const double disc_area = M_PI * radius * radius;
@@ -204,7 +316,7 @@ void Environment::gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGa
     SurfaceGaps* result = nullptr;
     double reach = 0.0;
     double all_covered = 0.0, all_weighted = 0.0;
-    std::array<double, kKeptGaps> kept{};
+    std::array<double, kKeptGaps> kept;  // written before it is read: not cleared on every query
     double lowest = kInfinity, highest = -kInfinity;
   };
   std::array<Side, 2> sides;
@@ -212,19 +324,18 @@ void Environment::gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGa
   sides[1].result = down, sides[1].reach = radius * options_.ground_reach_radii;
   for (Side& side : sides)
     if (side.result) {
-      *side.result = SurfaceGaps{{}, kInfinity, 0.0, kInfinity};
+      // Cleared in place: a batch's results keep their rotors' storage from point to point.
+      side.result->rotors.clear();
       side.result->rotors.reserve(vehicle_.rotor_positions_m.size());
+      side.result->nearest_gap_m = kInfinity, side.result->coverage = 0.0, side.result->mean_gap_m = kInfinity;
     }
   const auto columnGaps = [&](int i, int j) -> std::array<double, 2> {
-    if (up && down) {
-      const ColumnIndex::Boundaries around = columns_->around(i, j, plane_z);
-      return {surfaceGap(around.above, plane_z), surfaceGap(around.below, plane_z)};
-    }
+    if (up && down) return column_gaps(i, j, plane_z);
     return up ? std::array<double, 2>{columnGap(i, j, plane_z, Direction::Up), kInfinity}
               : std::array<double, 2>{kInfinity, columnGap(i, j, plane_z, Direction::Down)};
   };
-  for (const Eigen::Vector2d& offset : vehicle_.rotor_positions_m) {
-    const Eigen::Vector2d centre = body_m.head<2>() + offset;
+  for (std::size_t r = 0; r < vehicle_.rotor_positions_m.size(); ++r) {
+    const Eigen::Vector2d centre = body_m.head<2>() + vehicle_.rotor_positions_m[r];
     const auto forEachColumn = [&](auto&& visit) {
       forEachDiscColumn(frame, centre, radius, [&](int i, int j, int n) {
         visit(i, j, n);
@@ -232,16 +343,21 @@ void Environment::gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGa
       });
     };
     // Each column's gaps are looked up once and kept for the weighing below (on fine maps, past
-    // the first kKeptGaps columns, looked up again there).
-    for (Side& side : sides) side.lowest = kInfinity, side.highest = -kInfinity;
-    forEachColumn([&](int i, int j, int n) {
-      const std::array<double, 2> gap = columnGaps(i, j);
-      for (int s = 0; s < 2; ++s) {
-        if (n < kKeptGaps) sides[s].kept[n] = gap[s];
-        sides[s].lowest = std::min(sides[s].lowest, gap[s]);
-        sides[s].highest = std::max(sides[s].highest, gap[s]);
-      }
-    });
+    // the first kKeptGaps columns, looked up again there); none when every column under the
+    // disc is known to give the same.
+    if (const std::optional<std::array<double, 2>> same = uniform_gaps(r, plane_z)) {
+      for (int s = 0; s < 2; ++s) sides[s].lowest = sides[s].highest = (*same)[s];
+    } else {
+      for (Side& side : sides) side.lowest = kInfinity, side.highest = -kInfinity;
+      forEachColumn([&](int i, int j, int n) {
+        const std::array<double, 2> gap = columnGaps(i, j);
+        for (int s = 0; s < 2; ++s) {
+          if (n < kKeptGaps) sides[s].kept[n] = gap[s];
+          sides[s].lowest = std::min(sides[s].lowest, gap[s]);
+          sides[s].highest = std::max(sides[s].highest, gap[s]);
+        }
+      });
+    }
     // Usually every column under the disc gives the same gap (a flat ceiling, or none): then
     // no area is needed. Otherwise weigh each column by its exact share of the disc.
     std::array<double, 2> covered{0.0, 0.0}, weighted{0.0, 0.0};

@@ -107,13 +107,14 @@ double FlightCostModel::standoffShortfall_m(const Eigen::Vector3d& body_m) const
 }
 
 PointConditions FlightCostModel::conditionsAt(const Eigen::Vector3d& body_m) const {
-  if (farFromStructure(body_m)) {
-    PointConditions conditions;
-    conditions.rotor_count = energy_.rotorCount();
-    conditions.standoff_shortfall_m = standoffShortfall_m(body_m);
-    return conditions;
-  }
-  return exactConditionsAt(body_m);
+  return farFromStructure(body_m) ? freeAirConditionsAt(body_m) : exactConditionsAt(body_m);
+}
+
+PointConditions FlightCostModel::freeAirConditionsAt(const Eigen::Vector3d& body_m) const {
+  PointConditions conditions;
+  conditions.rotor_count = energy_.rotorCount();
+  conditions.standoff_shortfall_m = standoffShortfall_m(body_m);
+  return conditions;
 }
 
 PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const environment::SurfaceGaps& ground) {
@@ -128,6 +129,41 @@ PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const
   }
   conditions.ground_gap_m = ground.coverage > 0.0 ? ground.mean_gap_m : energy::kNoSurface;
   return conditions;
+}
+
+std::vector<PointConditions> FlightCostModel::conditionsAlong(const Eigen::Vector3d& from_m,
+                                                              const Eigen::Vector3d& to_m) const {
+  const int intervals = intervalCount(from_m, to_m);
+  std::vector<PointConditions> conditions;
+  conditions.reserve(intervals + 1);
+  std::vector<Eigen::Vector3d> near;  // the samples whose gaps are looked up, together
+  std::vector<std::size_t> near_index;
+  forEachSample(from_m, to_m, intervals, [&](const Eigen::Vector3d& point) {
+    if (farFromStructure(point)) {
+      conditions.push_back(freeAirConditionsAt(point));
+    } else if (!options_.proximity_effects) {
+      conditions.push_back(exactConditionsAt(point));
+    } else {
+      near.push_back(point);
+      near_index.push_back(conditions.size());
+      conditions.emplace_back();
+    }
+  });
+  environment_.ceilingAndGroundAlong(near, [&](std::size_t k, const environment::Environment::CeilingAndGround& gaps) {
+    PointConditions& at = conditions[near_index[k]];
+    at = surfaceConditions(gaps.ceiling, gaps.ground);  // as exactConditionsAt
+    at.standoff_shortfall_m = standoffShortfall_m(near[k]);
+  });
+  return conditions;
+}
+
+std::pair<MotionTotals, MotionTotals> FlightCostModel::integrateBothWays(const Eigen::Vector3d& from_m,
+                                                                         const Eigen::Vector3d& to_m) const {
+  if ((to_m - from_m).norm() == 0.0) return {};
+  const std::vector<PointConditions> conditions = conditionsAlong(from_m, to_m);
+  std::size_t next = 0;  // integrateBothWays visits the samples in conditionsAlong's order
+  return integrateBothWays(from_m, to_m,
+                           [&](const Eigen::Vector3d&) -> const PointConditions& { return conditions[next++]; });
 }
 
 PointConditions FlightCostModel::exactConditionsAt(const Eigen::Vector3d& body_m) const {
@@ -200,7 +236,10 @@ energy::CurrentBreakdown FlightCostModel::breakdown(const PointConditions& condi
 }
 
 MotionTotals FlightCostModel::integrate(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
-  return integrate(from_m, to_m, [this](const Eigen::Vector3d& point) { return conditionsAt(point); });
+  if ((to_m - from_m).norm() == 0.0) return {};
+  const std::vector<PointConditions> conditions = conditionsAlong(from_m, to_m);
+  std::size_t next = 0;  // integrate visits the samples in conditionsAlong's order
+  return integrate(from_m, to_m, [&](const Eigen::Vector3d&) -> const PointConditions& { return conditions[next++]; });
 }
 
 int FlightCostModel::intervalCount(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {

@@ -340,8 +340,7 @@ void LatticeRoadmap::costEdge(std::uint32_t node, int direction) const {
   float forth = kNoEdge, back = kNoEdge;
   if (validity_->cells_->edgeValid(first, second, first_direction)) {
     const FlightCostModel& model = objective_->model();
-    const auto [forth_totals, back_totals] =
-        model.integrateBothWays(here, there, [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
+    const auto [forth_totals, back_totals] = model.integrateBothWays(here, there);
     forth = static_cast<float>(objective_->weights().of(forth_totals));
     back = static_cast<float>(objective_->weights().of(back_totals));
   }
@@ -393,7 +392,6 @@ bool LatticeRoadmap::placesJoined(const std::vector<Place>& places) const {
 std::vector<LatticeRoadmap::Place> LatticeRoadmap::joinPlaces(const std::vector<Eigen::Vector3d>& places_m) const {
   const detail::LatticeGrid& lattice = lattice_->grid;
   const FlightCostModel& model = objective_->model();
-  const auto conditions = [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
   const auto cost = [&](const MotionTotals& totals) { return objective_->weights().of(totals); };
   std::vector<Place> places(places_m.size());
   parallelFor(places_m.size(), settings_.workers, [&](std::size_t index) {
@@ -401,7 +399,7 @@ std::vector<LatticeRoadmap::Place> LatticeRoadmap::joinPlaces(const std::vector<
     lattice.forEachNodeNear(centre, [&](std::size_t id) {
       const Eigen::Vector3d p = lattice.position(id);
       if (!nodeValid(static_cast<std::uint32_t>(id)) || !rules_->isMotionValid(centre, p)) return;
-      const auto totals = model.integrateBothWays(centre, p, conditions);
+      const auto totals = model.integrateBothWays(centre, p);
       places[index].out.push_back({static_cast<std::uint32_t>(id), cost(totals.first)});
       places[index].in.push_back({static_cast<std::uint32_t>(id), cost(totals.second)});
     });
@@ -444,9 +442,8 @@ void LatticeRoadmap::addBridge(const std::vector<Eigen::Vector3d>& waypoints, st
   for (std::size_t k = 1; k + 1 < waypoints.size(); ++k) states.push_back(addVertex(waypoints[k]));
   states.push_back(endState(to_state, to_place, waypoints.back()));
   const FlightCostModel& model = objective_->model();
-  const auto conditions = [&model](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
   for (std::size_t k = 0; k + 1 < states.size(); ++k) {
-    const auto [forth, back] = model.integrateBothWays(waypoints[k], waypoints[k + 1], conditions);
+    const auto [forth, back] = model.integrateBothWays(waypoints[k], waypoints[k + 1]);
     addArc(states[k], states[k + 1], objective_->weights().of(forth));
     addArc(states[k + 1], states[k], objective_->weights().of(back));
   }

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace ceilplan::testing {
 namespace {
 
@@ -46,6 +48,53 @@ TEST(FlightCostModel, BothWaysAtOnceIsEachWayOnItsOwn) {
   EXPECT_NEAR(back.charge_ah, down.charge_ah, 1e-12 * down.charge_ah);
   EXPECT_NEAR(back.duration_s, down.duration_s, 1e-12 * down.duration_s);
   EXPECT_DOUBLE_EQ(back.length_m, up.length_m);
+}
+
+TEST(FlightCostModel, MotionsShareGapLookupsAndGiveEachSampleItsOwnConditions) {
+  const environment::OccupancyMap map = beamRoom();
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  CostModelOptions options;
+  options.standoff_m = 0.3;  // the shortfall is part of each sample's conditions too
+  const FlightCostModel model(environment, energy, options);
+  const Eigen::AlignedBox3d box = environment.grid().frame().bounds();
+  std::mt19937 random(26);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto somewhere = [&] {
+    return Eigen::Vector3d(box.min() +
+                           box.sizes().cwiseProduct(Eigen::Vector3d(unit(random), unit(random), unit(random))));
+  };
+  int near_ceiling = 0;
+  for (int m = 0; m < 300; ++m) {
+    const Eigen::Vector3d a = somewhere(),
+                          b = m % 2 ? somewhere() : Eigen::Vector3d(a + 0.4 * Eigen::Vector3d::UnitX());
+    if (!environment.contains(b)) continue;
+    const std::vector<planner::PointConditions> along = model.conditionsAlong(a, b);
+    const int intervals = model.intervalCount(a, b);
+    ASSERT_EQ(along.size(), static_cast<std::size_t>(intervals + 1));
+    for (int k = 0; k <= intervals; ++k) {
+      const Eigen::Vector3d p = k == intervals ? b : Eigen::Vector3d(a + (b - a) * (double(k) / intervals));
+      const planner::PointConditions single = model.conditionsAt(p);
+      // Bit for bit: EXPECT_EQ on doubles.
+      EXPECT_EQ(along[k].nearest_ceiling_gap_m, single.nearest_ceiling_gap_m) << m << " " << k;
+      EXPECT_EQ(along[k].ground_gap_m, single.ground_gap_m) << m << " " << k;
+      EXPECT_EQ(along[k].standoff_shortfall_m, single.standoff_shortfall_m) << m << " " << k;
+      ASSERT_EQ(along[k].rotor_count, single.rotor_count);
+      for (int r = 0; r < single.rotor_count; ++r) {
+        EXPECT_EQ(along[k].rotors[r].gap_m, single.rotors[r].gap_m) << m << " " << k << " rotor " << r;
+        EXPECT_EQ(along[k].rotors[r].coverage, single.rotors[r].coverage) << m << " " << k << " rotor " << r;
+      }
+      near_ceiling += model.nearCeiling(single);
+    }
+    const auto [forth, back] = model.integrateBothWays(a, b);
+    const auto [forth_each, back_each] =
+        model.integrateBothWays(a, b, [&](const Eigen::Vector3d& p) { return model.conditionsAt(p); });
+    EXPECT_EQ(forth.charge_ah, forth_each.charge_ah) << m;
+    EXPECT_EQ(back.charge_ah, back_each.charge_ah) << m;
+    EXPECT_EQ(forth.duration_s, forth_each.duration_s) << m;
+    EXPECT_EQ(forth.shortfall_m2, forth_each.shortfall_m2) << m;
+  }
+  EXPECT_GT(near_ceiling, 100);  // the motions met the beams and the ceiling, not only free air
 }
 
 TEST(FlightCostModel, VerticalMotionsFollowClimbAndDescentRates) {

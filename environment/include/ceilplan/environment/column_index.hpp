@@ -55,6 +55,19 @@ class ColumnIndex {
   /// The boundaries above and below z_m in column (i, j).
   Boundaries around(int i, int j, double z_m) const;
 
+  /// The free stretch of a column between two runs: around() gives the same boundaries at every
+  /// height strictly inside it, so heights near each other (a motion's samples) need one search.
+  struct FreeSpan {
+    double lo;          ///< its lower end, in voxelHeight() units: the upper end of the run below
+    double hi;          ///< its upper end, likewise: the lower end of the run above
+    Boundaries around;  ///< around() at any height z_m with lo < voxelHeight(z_m) < hi
+  };
+  /// The free span of column (i, j) holding height z_m, if z_m lies strictly inside one: none
+  /// inside a run, on its face, or outside the grid.
+  std::optional<FreeSpan> freeSpan(int i, int j, double z_m) const;
+  /// Height z_m in the units of a FreeSpan's ends.
+  double voxelHeight(double z_m) const { return z_m * inverse_resolution_ - origin_z_; }
+
   /// The state of the lowest voxel of column (i, j) that overlaps the open height interval
   /// (bottom_m, top_m) (touching faces do not count) and blocks: occupied, or unknown when
   /// `unknown_blocks`. None if no such voxel. The cylinder test's inner loop: a few runs per

@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -144,6 +145,12 @@ class Environment {
   };
   /// The ceiling and the ground at `body_m`. Throws as ceiling() does.
   CeilingAndGround ceilingAndGround(const Eigen::Vector3d& body_m) const;
+  /// ceilingAndGround() at each of `bodies_m`, the same to the bit, passed to `visit(k, gaps)` in
+  /// order. For points close together (a motion's samples, whose discs share most columns) each
+  /// column is searched once for all of them: its free span holding the first height asked
+  /// answers every later height inside it. Throws as ceiling() does, before any work.
+  void ceilingAndGroundAlong(const std::vector<Eigen::Vector3d>& bodies_m,
+                             const std::function<void(std::size_t, const CeilingAndGround&)>& visit) const;
   /// Whether ceiling(body_m).nearest_gap_m >= gap_m: the same columns' gaps, without weighing the
   /// discs, stopping at the first nearer one. Throws as ceiling() does.
   bool ceilingGapAtLeast(const Eigen::Vector3d& body_m, double gap_m) const;
@@ -206,10 +213,19 @@ class Environment {
 
  private:
   enum class Direction { Up, Down };
-  /// The gaps above into `up` and below into `down`, where given.
+  /// The gaps above into `up` and below into `down`, where given; when both are,
+  /// `column_gaps(i, j, z_m)` gives column (i, j)'s gaps above and below height z_m, and
+  /// `uniform_gaps(r, z_m)` those of every column under rotor r's disc when it knows they agree.
+  template <class ColumnGaps, class UniformGaps>
+  void gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGaps* down, ColumnGaps&& column_gaps,
+            UniformGaps&& uniform_gaps) const;
+  /// gaps() with every column searched afresh.
   void gaps(const Eigen::Vector3d& body_m, SurfaceGaps* up, SurfaceGaps* down) const;
   double columnGap(int i, int j, double z_m, Direction direction) const;
+  bool isSurface(const ColumnIndex::Boundary& boundary) const;
   double surfaceGap(const ColumnIndex::Boundary& boundary, double z_m) const;
+  /// Column (i, j)'s gaps above and below height z_m, from one search of the column.
+  std::array<double, 2> searchedColumnGaps(int i, int j, double z_m) const;
   void requireInside(const Eigen::Vector3d& point_m, const char* query) const;
   std::optional<Violation> exactCylinderViolation(const Eigen::Vector3d& body_m) const;
   /// Calls `visit(i, j)` for every column the inflated cylinder at `body_m` overlaps by more

@@ -187,6 +187,12 @@ class FlightCostModel {
   template <typename ConditionsAt>
   std::pair<MotionTotals, MotionTotals> integrateBothWays(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
                                                           ConditionsAt&& conditions_at) const;
+  /// The same with conditionsAt at every sample, the same to the bit; the samples near structure
+  /// share their columns' gap lookups (Environment::ceilingAndGroundAlong).
+  std::pair<MotionTotals, MotionTotals> integrateBothWays(const Eigen::Vector3d& from_m,
+                                                          const Eigen::Vector3d& to_m) const;
+  /// conditionsAt at each of the samples integrate() takes on the motion, from_m first.
+  std::vector<PointConditions> conditionsAlong(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
 
   /// Number of sample intervals integrate() uses for a motion: the axis-wise (Chebyshev) length
   /// over step_m(), so lattice motions (between voxel centres, whole voxels apart) sample a
@@ -274,6 +280,8 @@ class FlightCostModel {
   CostModelOptions options_;
   double step_m_;
   double standoffShortfall_m(const Eigen::Vector3d& body_m) const;
+  /// conditionsAt where farFromStructure holds.
+  PointConditions freeAirConditionsAt(const Eigen::Vector3d& body_m) const;
 
   double near_ceiling_gap_m_;
   double free_air_clearance_m_;       ///< beyond it from the body centre, no surface can affect a rotor
