@@ -49,15 +49,15 @@ struct Walk {
   // The walk takes crossings in the order of their t, ties to the lower axis. Inside an all-free
   // block it takes at once every crossing before the one that leaves the block; returns false
   // when the walk ends in the block (the steps it could take are then taken).
-  bool crossFreeBlock() {
+  bool crossFreeBlock(int shift) {
     const Index3& size = frame->size();
     double exit_t = kNever;
     int exit_axis = 0;
     Index3 bound;  // the farthest voxel of the block, or the end, along each axis
     for (int axis = 0; axis < 3; ++axis) {
       if (step[axis] == 0) continue;
-      const int block_lo = (voxel[axis] >> FreeBlocks::kShift) << FreeBlocks::kShift;
-      const int block_hi = std::min(block_lo + (1 << FreeBlocks::kShift) - 1, size[axis] - 1);
+      const int block_lo = (voxel[axis] >> shift) << shift;
+      const int block_hi = std::min(block_lo + (1 << shift) - 1, size[axis] - 1);
       bound[axis] = step[axis] > 0 ? block_hi : block_lo;
       if ((last[axis] - bound[axis]) * step[axis] <= 0) {  // this axis ends in the block
         bound[axis] = last[axis];
@@ -123,8 +123,10 @@ bool walkSight(const VoxelGrid& grid, const FreeBlocks* blocks, const Eigen::Vec
   walk.at = inside ? frame.linear(walk.voxel[0], walk.voxel[1], walk.voxel[2]) : 0;
   const bool skips = blocks != nullptr && inside;
   while (walk.remaining > 0) {
-    if (skips && blocks->allFree(walk.voxel[0], walk.voxel[1], walk.voxel[2]) && !walk.crossFreeBlock())
-      return walk.remaining == 0;
+    if (skips)
+      if (const int shift = blocks->freeShift(walk.voxel[0], walk.voxel[1], walk.voxel[2]);
+          shift != 0 && !walk.crossFreeBlock(shift))
+        return walk.remaining == 0;
     int axis = 0;
     for (int other = 1; other < 3; ++other)
       if (walk.t_next[other] < walk.t_next[axis]) axis = other;
@@ -138,24 +140,35 @@ bool walkSight(const VoxelGrid& grid, const FreeBlocks* blocks, const Eigen::Vec
 
 }  // namespace
 
-FreeBlocks::FreeBlocks(const VoxelGrid& grid, int workers) {
+FreeBlocks::Level::Level(int level_shift, const Index3& voxels) : shift(level_shift) {
+  for (int axis = 0; axis < 3; ++axis) blocks[axis] = (voxels[axis] + (1 << shift) - 1) >> shift;
+  free.assign(static_cast<std::size_t>(blocks[0]) * blocks[1] * blocks[2], 1);
+}
+
+FreeBlocks::FreeBlocks(const VoxelGrid& grid, int workers)
+    : fine_(kFineShift, grid.frame().size()), coarse_(kCoarseShift, grid.frame().size()) {
   const GridFrame& frame = grid.frame();
   const Index3& size = frame.size();
-  constexpr int kSide = 1 << kShift;
-  for (int axis = 0; axis < 3; ++axis) blocks_[axis] = (size[axis] + kSide - 1) >> kShift;
-  free_.assign(static_cast<std::size_t>(blocks_[0]) * blocks_[1] * blocks_[2], 1);
-  // One layer of blocks per task: each reads its voxels in memory order and owns its bytes.
-  parallelFor(static_cast<std::size_t>(blocks_[2]), workers, [&](std::size_t layer) {
-    const int k_end = std::min(static_cast<int>((layer + 1) << kShift), size[2]);
-    std::uint8_t* row = free_.data() + layer * blocks_[0] * blocks_[1];
-    for (int k = static_cast<int>(layer << kShift); k < k_end; ++k)
+  // One layer of fine blocks per task: each reads its voxels in memory order and owns its bytes.
+  parallelFor(static_cast<std::size_t>(fine_.blocks[2]), workers, [&](std::size_t layer) {
+    const int k_begin = static_cast<int>(layer << kFineShift);
+    const int k_end = std::min(k_begin + (1 << kFineShift), size[2]);
+    for (int k = k_begin; k < k_end; ++k)
       for (int j = 0; j < size[1]; ++j) {
         const std::size_t first = frame.linear(0, j, k);
-        std::uint8_t* blocks = row + static_cast<std::size_t>(j >> kShift) * blocks_[0];
+        std::uint8_t* row = fine_.free.data() + fine_.index(0, j, k);
         for (int i = 0; i < size[0]; ++i)
-          if (grid.atLinear(first + i) != CellState::Free) blocks[i >> kShift] = 0;
+          if (grid.atLinear(first + i) != CellState::Free) row[i >> kFineShift] = 0;
       }
   });
+  // A coarse block is free where each fine block in it is.
+  constexpr int kRatio = 1 << (kCoarseShift - kFineShift);
+  for (int k = 0; k < fine_.blocks[2]; ++k)
+    for (int j = 0; j < fine_.blocks[1]; ++j)
+      for (int i = 0; i < fine_.blocks[0]; ++i)
+        if (!fine_.free[(static_cast<std::size_t>(k) * fine_.blocks[1] + j) * fine_.blocks[0] + i])
+          coarse_.free[(static_cast<std::size_t>(k / kRatio) * coarse_.blocks[1] + j / kRatio) * coarse_.blocks[0] +
+                       i / kRatio] = 0;
 }
 
 bool lineOfSight(const VoxelGrid& grid, const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) {

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 #include <utility>
 #include <vector>
@@ -191,8 +192,9 @@ std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> testSegments(const Grid
 }
 
 TEST(Visibility, FreeBlocksGiveTheVoxelWalksAnswerOnEverySegment) {
-  // A grid whose sides are not whole blocks, free but for two slabs, a column and scattered
-  // voxels: the walk crosses all-free blocks, stops in mixed ones and at the grid's far faces.
+  // A grid whose sides are not whole blocks, free but for a slab, a column, a wall and scattered
+  // voxels above the slab: the walk crosses all-free blocks of both sizes, stops in mixed ones
+  // and at the grid's far faces.
   const GridFrame frame(0.1, {-4, 2, 0}, {37, 42, 29});
   VoxelGrid grid(frame);
   std::mt19937 random(23);
@@ -200,17 +202,18 @@ TEST(Visibility, FreeBlocksGiveTheVoxelWalksAnswerOnEverySegment) {
     for (int j = 0; j < 42; ++j)
       for (int i = 0; i < 37; ++i) {
         const bool slab = k == 20 && i < 30, column = i >= 17 && i < 20 && j >= 10 && j < 14, wall = j == 33 && k < 12;
-        const unsigned draw = random() % 1000;
+        const unsigned draw = k > 20 ? random() % 1000 : 1000;
         grid.set(i, j, k,
                  slab || column || wall || draw < 2 ? CellState::Occupied
                                                     : (draw < 3 ? CellState::Unknown : CellState::Free));
       }
   const FreeBlocks blocks(grid, 2);
-  int free_blocks = 0;
-  for (int k = 0; k < 29; k += 8)
-    for (int j = 0; j < 42; j += 8)
-      for (int i = 0; i < 37; i += 8) free_blocks += blocks.allFree(i, j, k);
-  ASSERT_GT(free_blocks, 10);  // the walks have blocks to cross
+  std::map<int, int> voxels_by_shift;
+  for (int k = 0; k < 29; ++k)
+    for (int j = 0; j < 42; ++j)
+      for (int i = 0; i < 37; ++i) ++voxels_by_shift[blocks.freeShift(i, j, k)];
+  ASSERT_GT(voxels_by_shift[FreeBlocks::kCoarseShift], 4096);  // the walks have blocks of both sizes to cross
+  ASSERT_GT(voxels_by_shift[FreeBlocks::kFineShift], 4096);
   int clear = 0, blocked = 0;
   for (const auto& [a, b] : testSegments(frame, random, 40000)) {
     const bool expected = lineOfSight(grid, a, b);
@@ -221,21 +224,36 @@ TEST(Visibility, FreeBlocksGiveTheVoxelWalksAnswerOnEverySegment) {
   EXPECT_GT(blocked, 5000);
 }
 
-TEST(Visibility, ABlockIsFreeExactlyWhenEachOfItsVoxelsIs) {
-  const GridFrame frame(0.05, {0, 0, 0}, {20, 9, 17});
+TEST(Visibility, AVoxelsFreeBlockIsTheLargestWhoseVoxelsAreAllFree) {
+  const Index3 size{40, 20, 36};  // partial blocks at the far faces
+  const GridFrame frame(0.05, {0, 0, 0}, size);
   VoxelGrid grid(frame);
-  for (int k = 0; k < 17; ++k)
-    for (int j = 0; j < 9; ++j)
-      for (int i = 0; i < 20; ++i) grid.set(i, j, k, CellState::Free);
-  grid.set(19, 8, 16, CellState::Unknown);  // in the far corner's partial block
+  for (int k = 0; k < size[2]; ++k)
+    for (int j = 0; j < size[1]; ++j)
+      for (int i = 0; i < size[0]; ++i) grid.set(i, j, k, CellState::Free);
+  grid.set(39, 19, 35, CellState::Unknown);  // in the far corner's partial blocks
   grid.set(8, 0, 7, CellState::Occupied);
+  grid.set(30, 5, 20, CellState::Occupied);
   const FreeBlocks blocks(grid);
-  for (int k = 0; k < 17; ++k)
-    for (int j = 0; j < 9; ++j)
-      for (int i = 0; i < 20; ++i) {
-        const bool far_corner = i >= 16 && j >= 8 && k >= 16, occupied = i >= 8 && i < 16 && j < 8 && k < 8;
-        EXPECT_EQ(blocks.allFree(i, j, k), !far_corner && !occupied) << i << " " << j << " " << k;
+  // Whether the block of side 2^shift holding (i, j, k) holds free voxels only.
+  const auto allFree = [&](int shift, int i, int j, int k) {
+    for (int z = (k >> shift) << shift; z < std::min(((k >> shift) + 1) << shift, size[2]); ++z)
+      for (int y = (j >> shift) << shift; y < std::min(((j >> shift) + 1) << shift, size[1]); ++y)
+        for (int x = (i >> shift) << shift; x < std::min(((i >> shift) + 1) << shift, size[0]); ++x)
+          if (grid.at(x, y, z) != CellState::Free) return false;
+    return true;
+  };
+  std::map<int, int> voxels_by_shift;
+  for (int k = 0; k < size[2]; ++k)
+    for (int j = 0; j < size[1]; ++j)
+      for (int i = 0; i < size[0]; ++i) {
+        const int expected = allFree(FreeBlocks::kCoarseShift, i, j, k)
+                                 ? FreeBlocks::kCoarseShift
+                                 : (allFree(FreeBlocks::kFineShift, i, j, k) ? FreeBlocks::kFineShift : 0);
+        ASSERT_EQ(blocks.freeShift(i, j, k), expected) << i << " " << j << " " << k;
+        ++voxels_by_shift[expected];
       }
+  EXPECT_EQ(voxels_by_shift.size(), 3u);  // every answer occurs
 }
 
 }  // namespace

@@ -14,29 +14,40 @@
 
 namespace ceilplan::environment {
 
-/// Which blocks of 8 x 8 x 8 voxels of a grid hold free voxels only (a block at the grid's far
-/// faces counts its voxels inside the grid): a line of sight crosses such a block without reading
-/// its voxels. One byte per block, 1/512 of the grid's.
+/// Which blocks of a grid hold free voxels only (a block at the grid's far faces counts its
+/// voxels inside the grid), at two sizes: 16 x 16 x 16 voxels for open air and 4 x 4 x 4 near
+/// structure. A line of sight crosses such a block without reading its voxels. One byte per
+/// block: 1/64 of the grid's and 1/4096.
 class FreeBlocks {
  public:
-  /// Blocks are 2^kShift voxels a side.
-  static constexpr int kShift = 3;
+  static constexpr int kFineShift = 2;    ///< fine blocks are 2^2 voxels a side
+  static constexpr int kCoarseShift = 4;  ///< coarse blocks 2^4
 
   /// One pass over `grid`, on `workers` threads. Valid while the grid is not changed.
   explicit FreeBlocks(const VoxelGrid& grid, int workers = 1);
 
-  /// Whether the block holding voxel (i, j, k), which must lie in the grid, is all free.
-  bool allFree(int i, int j, int k) const {
-    return free_[(static_cast<std::size_t>(k >> kShift) * blocks_[1] + (j >> kShift)) * blocks_[0] + (i >> kShift)] !=
-           0;
+  /// The log2 of the side of the largest all-free block holding voxel (i, j, k), which must lie
+  /// in the grid: kCoarseShift, kFineShift, or 0 where its fine block holds a voxel that is not free.
+  int freeShift(int i, int j, int k) const {
+    return coarse_.allFree(i, j, k) ? kCoarseShift : (fine_.allFree(i, j, k) ? kFineShift : 0);
   }
 
   /// Memory held, bytes.
-  std::size_t memoryBytes() const { return free_.capacity(); }
+  std::size_t memoryBytes() const { return fine_.free.capacity() + coarse_.free.capacity(); }
 
  private:
-  Index3 blocks_;  // blocks along x, y and z
-  std::vector<std::uint8_t> free_;
+  struct Level {
+    int shift = 0;
+    Index3 blocks{};  // blocks along x, y and z
+    std::vector<std::uint8_t> free;
+
+    Level(int shift, const Index3& voxels);
+    std::size_t index(int i, int j, int k) const {
+      return (static_cast<std::size_t>(k >> shift) * blocks[1] + (j >> shift)) * blocks[0] + (i >> shift);
+    }
+    bool allFree(int i, int j, int k) const { return free[index(i, j, k)] != 0; }
+  };
+  Level fine_, coarse_;
 };
 
 /// Whether every voxel the segment from `from_m` to `to_m` passes through, both end voxels
