@@ -16,6 +16,7 @@
 #include <thread>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 
 namespace ceilplan::environment {
 namespace {
@@ -179,28 +180,43 @@ std::vector<bool> boundaryVoxelsInside(const TriangleMesh& mesh, const GridFrame
 std::size_t floodFromOutside(VoxelGrid& grid, const std::vector<bool>& inside) {
   const GridFrame& frame = grid.frame();
   const Index3& size = frame.size();
-  std::vector<std::uint32_t> stack;  // linear indices; VoxelGrid::kMaxVoxels fits in 32 bits
-  const auto visit = [&](int i, int j, int k) {
-    if (!frame.inside(i, j, k) || grid.at(i, j, k) != CellState::Unknown) return;
-    grid.set(i, j, k, CellState::Free);
-    stack.push_back(static_cast<std::uint32_t>(frame.linear(i, j, k)));
+  // A scanline fill: each seed fills its whole run of unknown voxels along x, then seeds each run
+  // of unknown voxels beside it in the four neighbouring rows. The same 6-connected region as a
+  // voxel-by-voxel flood, with a seed per run instead of per voxel (263 M voxels on the 130 m
+  // girder bridge, and a voxel's index without divisions).
+  std::vector<Index3> stack;
+  const auto unknown = [&](int i, int j, int k) { return grid.at(i, j, k) == CellState::Unknown; };
+  const auto fillFrom = [&](int i0, int j0, int k0) {
+    if (!unknown(i0, j0, k0) || (!inside.empty() && inside[frame.linear(i0, j0, k0)])) return;
+    stack.push_back({i0, j0, k0});
+    while (!stack.empty()) {
+      const auto [i, j, k] = stack.back();
+      stack.pop_back();
+      if (!unknown(i, j, k)) continue;  // filled since it was seeded
+      int lo = i, hi = i;
+      while (lo > 0 && unknown(lo - 1, j, k)) --lo;  // outside the box is unknown too: stop at its faces
+      while (hi < size[0] - 1 && unknown(hi + 1, j, k)) ++hi;
+      for (int x = lo; x <= hi; ++x) grid.set(x, j, k, CellState::Free);
+      for (const auto& [y, z] : {std::pair{j - 1, k}, std::pair{j + 1, k}, std::pair{j, k - 1}, std::pair{j, k + 1}}) {
+        if (y < 0 || z < 0 || y >= size[1] || z >= size[2]) continue;
+        for (int x = lo, previous = 0; x <= hi; ++x) {
+          const int here = unknown(x, y, z);
+          if (here && !previous) stack.push_back({x, y, z});
+          previous = here;
+        }
+      }
+    }
   };
+  // Seeds on the box's six faces (those a crop puts inside a closed mesh aside).
   for (int k = 0; k < size[2]; ++k)
-    for (int j = 0; j < size[1]; ++j)
-      for (int i = 0; i < size[0]; ++i)
-        if ((i == 0 || j == 0 || k == 0 || i == size[0] - 1 || j == size[1] - 1 || k == size[2] - 1) &&
-            (inside.empty() || !inside[frame.linear(i, j, k)]))
-          visit(i, j, k);
-  while (!stack.empty()) {
-    const Index3 v = frame.unlinear(stack.back());
-    stack.pop_back();
-    visit(v[0] - 1, v[1], v[2]);
-    visit(v[0] + 1, v[1], v[2]);
-    visit(v[0], v[1] - 1, v[2]);
-    visit(v[0], v[1] + 1, v[2]);
-    visit(v[0], v[1], v[2] - 1);
-    visit(v[0], v[1], v[2] + 1);
-  }
+    for (int j = 0; j < size[1]; ++j) {
+      if (j == 0 || k == 0 || j == size[1] - 1 || k == size[2] - 1) {
+        for (int i = 0; i < size[0]; ++i) fillFrom(i, j, k);
+      } else {
+        fillFrom(0, j, k);
+        fillFrom(size[0] - 1, j, k);
+      }
+    }
   std::size_t enclosed = 0;
   for (std::size_t v = 0; v < frame.voxelCount(); ++v) enclosed += grid.atLinear(v) == CellState::Unknown;
   return enclosed;
@@ -291,14 +307,16 @@ BuiltMap mapFromMesh(const TriangleMesh& mesh, const MeshVoxelisingOptions& opti
   if (progress) progress(0.8);
 
   // After the flood fill: Free = reached from outside, Unknown = enclosed.
-  for (std::size_t v = 0; v < frame.voxelCount(); ++v) {
-    const Index3 i = frame.unlinear(v);
-    const CellState state = grid.atLinear(v);
-    if (state == CellState::Unknown)
-      grid.set(i[0], i[1], i[2], interior == MeshInterior::Solid ? CellState::Occupied : CellState::Free);
-    else if (state == CellState::Free && interior == MeshInterior::Hollow)
-      grid.set(i[0], i[1], i[2], CellState::Unknown);
-  }
+  const Index3& size = frame.size();
+  for (int k = 0; k < size[2]; ++k)
+    for (int j = 0; j < size[1]; ++j)
+      for (int i = 0; i < size[0]; ++i) {
+        const CellState state = grid.at(i, j, k);
+        if (state == CellState::Unknown)
+          grid.set(i, j, k, interior == MeshInterior::Solid ? CellState::Occupied : CellState::Free);
+        else if (state == CellState::Free && interior == MeshInterior::Hollow)
+          grid.set(i, j, k, CellState::Unknown);
+      }
 
   BuiltMap built;
   built.tree = toOcTree(grid);

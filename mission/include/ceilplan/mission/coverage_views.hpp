@@ -131,7 +131,6 @@ struct CandidateViews {
   GenerationStats stats;  ///< what generation tried
 };
 
-/// How candidate views are generated for a region.
 /// What candidate poses cover, shared by candidate generations that run at once over the same
 /// map, camera and regions in different flight modes (planTours' modes: free mode's poses are
 /// nearly all ceiling mode's unraised ones). A pose's cover is found by the first generation that
@@ -150,14 +149,16 @@ class SharedCovers {
   /// Covers handed to a mode that did not find them.
   std::size_t handed() const;
 
-  /// generateCandidateViews' access.
+  /// The covers and who asked for them (defined where generateCandidateViews uses them).
   struct State;
+  /// generateCandidateViews' access to them.
   State& state() const { return *state_; }
 
  private:
   std::unique_ptr<State> state_;
 };
 
+/// How candidate views are generated for a region.
 struct ViewGenerationOptions {
   FlightMode mode = FlightMode::Ceiling;  ///< the mode the views are for
   /// Free mode: the conventional distance kept from every structure, airframe to surface. A pose
