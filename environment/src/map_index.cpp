@@ -26,6 +26,7 @@ VoxelGrid gridOf(const OccupancyMap& map, const std::function<void(double)>& pro
 MapIndex::MapIndex(const OccupancyMap& map, const MapIndexOptions& options, const std::function<void(double)>& progress)
     : map_name_(map.name()),
       unknown_(validated(options.unknown)),
+      workers_(options.workers),
       grid_(gridOf(
           map,
           [&](double f) {
@@ -45,13 +46,20 @@ MapIndex::MapIndex(const OccupancyMap& map, const MapIndexOptions& options, cons
   distance_ = std::make_unique<const DistanceField>(*columns_, unknownBlocks(), options.workers, [&](double f) {
     if (progress) progress(0.3 + 0.7 * f);
   });
-  free_blocks_ = std::make_unique<const FreeBlocks>(grid_, options.workers);
   if (progress) progress(1.0);
 }
 
 std::shared_ptr<const MapIndex> MapIndex::build(const OccupancyMap& map, const MapIndexOptions& options,
                                                 const std::function<void(double)>& progress) {
   return std::make_shared<const MapIndex>(map, options, progress);
+}
+
+const FreeBlocks& MapIndex::freeBlocks() const {
+  std::call_once(free_blocks_built_, [this] {
+    free_blocks_ = std::make_unique<const FreeBlocks>(grid_, workers_);
+    free_blocks_ready_.store(true, std::memory_order_release);
+  });
+  return *free_blocks_;
 }
 
 bool MapIndex::isAssumedFree(const Eigen::Vector3d& point_m) const {
@@ -78,7 +86,8 @@ bool MapIndex::assumedFreeOverlaps(int i, int j, double bottom_m, double top_m) 
 }
 
 std::size_t MapIndex::memoryBytes() const {
-  return grid_.memoryBytes() + columns_->memoryBytes() + distance_->memoryBytes() + free_blocks_->memoryBytes() +
+  return grid_.memoryBytes() + columns_->memoryBytes() + distance_->memoryBytes() +
+         (free_blocks_ready_.load(std::memory_order_acquire) ? free_blocks_->memoryBytes() : 0) +
          assumed_offsets_.capacity() * sizeof(std::uint32_t) + assumed_runs_.capacity() * sizeof(ColumnIndex::Run);
 }
 

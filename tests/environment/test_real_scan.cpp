@@ -13,6 +13,7 @@
 
 #include <random>
 #include <sstream>
+#include <thread>
 
 namespace ceilplan::environment {
 namespace {
@@ -58,6 +59,20 @@ TEST(Geb079, LinesOfSightCrossingFreeBlocksGiveTheVoxelWalksAnswer) {
   }
   EXPECT_GT(clear, 1000);  // both answers are exercised
   EXPECT_GT(blocked, 1000);
+}
+
+TEST(Geb079, TheFreeBlocksAreBuiltOnceOnFirstUseFromAnyThread) {
+  // Commands that cast no line of sight (plan, probe, point tours) must not pay for the blocks;
+  // the coverage views ask for them from several threads at once.
+  const auto index = indexed(UnknownPolicy::Occupied);
+  const std::size_t before_bytes = index->memoryBytes();
+  const FreeBlocks* seen[4] = {};
+  std::vector<std::thread> threads;
+  for (const FreeBlocks*& blocks : seen) threads.emplace_back([&index, &blocks] { blocks = &index->freeBlocks(); });
+  for (std::thread& thread : threads) thread.join();
+  for (const FreeBlocks* blocks : seen) EXPECT_EQ(blocks, seen[0]);
+  EXPECT_EQ(index->memoryBytes(), before_bytes + seen[0]->memoryBytes());
+  EXPECT_GT(seen[0]->memoryBytes(), 0u);
 }
 
 TEST(Geb079, FillFreesTheCorridorThatUnknownPocketsCutUp) {

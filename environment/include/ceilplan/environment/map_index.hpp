@@ -15,10 +15,12 @@
 
 #include <Eigen/Core>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -66,8 +68,9 @@ class MapIndex {
   const ColumnIndex& columns() const { return *columns_; }
   /// Distances to what blocks under the policy.
   const DistanceField& distance() const { return *distance_; }
-  /// The grid's all-free blocks, for fast lines of sight (visibility.hpp).
-  const FreeBlocks& freeBlocks() const { return *free_blocks_; }
+  /// The grid's all-free blocks, for fast lines of sight (visibility.hpp). Built on first use,
+  /// from any thread: commands that cast no line of sight never pay for them.
+  const FreeBlocks& freeBlocks() const;
 
   /// Whether `point_m` lies in the box of the map's known voxels.
   bool contains(const Eigen::Vector3d& point_m) const { return grid_.frame().contains(point_m); }
@@ -77,16 +80,19 @@ class MapIndex {
   /// (bottom_m, top_m); touching faces do not count.
   bool assumedFreeOverlaps(int i, int j, double bottom_m, double top_m) const;
 
-  /// Memory held, bytes.
+  /// Memory held, bytes (the free blocks once built).
   std::size_t memoryBytes() const;
 
  private:
   std::string map_name_;
   UnknownSpace unknown_;
+  int workers_;  ///< for the free blocks, built on first use
   VoxelGrid grid_;
   std::unique_ptr<const ColumnIndex> columns_;
   std::unique_ptr<const DistanceField> distance_;
-  std::unique_ptr<const FreeBlocks> free_blocks_;
+  mutable std::once_flag free_blocks_built_;
+  mutable std::unique_ptr<const FreeBlocks> free_blocks_;
+  mutable std::atomic<bool> free_blocks_ready_{false};  ///< for memoryBytes() while another thread builds them
   /// The assumed-free runs of each column: assumed_runs_[assumed_offsets_[c], assumed_offsets_[c + 1]).
   std::vector<std::uint32_t> assumed_offsets_;
   std::vector<ColumnIndex::Run> assumed_runs_;
