@@ -16,15 +16,19 @@
 #include "ceilplan/planner/reachable_space.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <ctime>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 namespace ceilplan::mission {
 namespace {
@@ -588,12 +592,13 @@ constexpr double kBlockedLegFactor = 2.0;
 class SparseLegs {
  public:
   SparseLegs(TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options,
-             const LegScorer& score)
+             const LegScorer& score, const LegScorer& score_totals)
       : tour_(tour),
         context_(context),
         mode_(mode),
         options_(options),
         score_(score),
+        score_totals_(score_totals),
         planning_(context.mode(mode)),
         neighbours_(nearestPlaces(tour.places_m,
                                   std::min<int>(options.neighbours, static_cast<int>(tour.places_m.size()) - 1))) {
@@ -616,13 +621,29 @@ class SparseLegs {
     Pairs missing;
     for (const auto& [from, to] : pairs)
       if (from != to && !tour_.legs.contains(from, to)) missing.emplace_back(from, to);
+    // A pair missing both ways is estimated in one task (the map read once for the two); the
+    // reverse of such a pair is left out of `tasks`, and marked in `both`.
+    Pairs tasks;
+    std::vector<bool> both;
+    for (const auto& [from, to] : missing) {
+      const bool reverse_missing =
+          !viaRoadmap(from, to) && std::binary_search(missing.begin(), missing.end(), std::make_pair(to, from));
+      if (reverse_missing && to < from) continue;
+      tasks.emplace_back(from, to);
+      both.push_back(reverse_missing);
+    }
     // Stored once all are estimated: an estimate that throws (no route joins the places) leaves
     // no empty leg behind for a later round to fly.
-    std::vector<TourLeg> estimated(missing.size());
-    parallelFor(missing.size(), options_.workers,
-                [&](std::size_t k) { estimated[k] = firstLeg(missing[k].first, missing[k].second); });
-    for (std::size_t k = 0; k < missing.size(); ++k)
-      tour_.legs(missing[k].first, missing[k].second) = std::move(estimated[k]);
+    std::vector<std::pair<TourLeg, TourLeg>> estimated(tasks.size());
+    parallelFor(tasks.size(), options_.workers, [&](std::size_t k) {
+      const auto [from, to] = tasks[k];
+      estimated[k] = both[k] ? firstLegsBothWays(from, to) : std::make_pair(firstLeg(from, to), TourLeg{});
+    });
+    for (std::size_t k = 0; k < tasks.size(); ++k) {
+      const auto [from, to] = tasks[k];
+      tour_.legs(from, to) = std::move(estimated[k].first);
+      if (both[k]) tour_.legs(to, from) = std::move(estimated[k].second);
+    }
   }
 
   // Every place's neighbours, both ways.
@@ -754,8 +775,10 @@ class SparseLegs {
     return pairs;
   }
 
-  // Gives the legs `pairs` (stored) their samples again where an estimate dropped them, on the
-  // tour's threads: what the split and the flight record fly.
+  // Scores the legs `pairs` (stored) in full where they are estimates, which have totals only,
+  // on the tour's threads: the samples are what the split and the flight record fly, and a leg
+  // flown as estimated reports the figures only samples give (clearance, ceiling gap, assumed
+  // free). A blocked estimate keeps its priced-up charge.
   void profile(Pairs pairs) {
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
@@ -766,7 +789,9 @@ class SparseLegs {
       if (leg.evaluation.samples.empty()) bare.emplace_back(from, to), cells.push_back(&leg);
     }
     parallelFor(bare.size(), options_.workers, [&](std::size_t k) {
-      cells[k]->evaluation.samples = score_(bare[k].first, bare[k].second, cells[k]->waypoints).samples;
+      planner::PathEvaluation evaluation = score_(bare[k].first, bare[k].second, cells[k]->waypoints);
+      if (!cells[k]->routed) evaluation.charge_ah *= kBlockedLegFactor;
+      cells[k]->evaluation = std::move(evaluation);
     });
   }
 
@@ -809,57 +834,88 @@ class SparseLegs {
  private:
   // A leg as the search first sees it: the straight line where it is valid (near neighbours
   // need no search; refinement bends it where that saves charge), else an L or a dogleg round
-  // what blocks it; out of home and back, the roadmap's route or the straight line, the
-  // cheaper. Else an estimate, routed once a plan flies it: the straight line scored at
+  // what blocks it (turnCandidates); out of home and back, the roadmap's route or the straight
+  // line, the cheaper. Else an estimate, routed once a plan flies it: the straight line scored at
   // kBlockedLegFactor times its charge (a search here, in a pocket of the structure, may take
   // a tenth of a second, and the order avoids such legs anyway).
   TourLeg firstLeg(int from, int to) const {
+    if (viaRoadmap(from, to)) return scoredEstimate(from, to, roadmap_->homeLeg(from, to), true);
+    return firstLeg(from, to, shapeBetween(tour_.places_m[from], tour_.places_m[to]));
+  }
+
+  // firstLeg(from, to) and firstLeg(to, from), the same legs, with the map read once for the two.
+  std::pair<TourLeg, TourLeg> firstLegsBothWays(int from, int to) const {
+    const LegShape shape = shapeBetween(tour_.places_m[from], tour_.places_m[to]);
+    return {firstLeg(from, to, shape), firstLeg(to, from, shape)};
+  }
+
+  bool viaRoadmap(int from, int to) const { return roadmap_ && (from == 0 || to == 0); }
+
+  // What the safety rules say of the straight line between two places and of the turns round it,
+  // either way: a straight motion visits the same states from either end, so it is valid both
+  // ways or neither, and so is a turn's.
+  struct LegShape {
+    bool straight = false;               // the straight line is valid
+    std::vector<Eigen::Vector3d> turns;  // where it is not, the valid turnCandidates
+  };
+
+  LegShape shapeBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    LegShape shape;
+    if (!options_.straight_when_clear) return shape;
+    const planner::SafetyRules& rules = *planning_.rules;
+    shape.straight = rules.isMotionValid(a, b);
+    if (shape.straight) return shape;
+    for (const Eigen::Vector3d& turn : turnCandidates(a, b))
+      if ((turn - a).norm() >= 1e-6 && (turn - b).norm() >= 1e-6 && rules.isStateValid(turn) &&
+          rules.isMotionValid(a, turn) && rules.isMotionValid(turn, b))
+        shape.turns.push_back(turn);
+    return shape;
+  }
+
+  // The leg from `from` to `to` that `shape` (of the line between them) allows: the straight
+  // line, else the valid turn of least charge this way (the first in turnCandidates' order on a
+  // tie), else the blocked estimate.
+  TourLeg firstLeg(int from, int to, const LegShape& shape) const {
     const Eigen::Vector3d &a = tour_.places_m[from], &b = tour_.places_m[to];
-    TourLeg leg;
-    if (roadmap_ && (from == 0 || to == 0)) {
-      leg.waypoints = roadmap_->homeLeg(from, to);
-    } else if (options_.straight_when_clear && planning_.rules->isMotionValid(a, b)) {
-      leg.waypoints = {a, b};
-    } else if (std::optional<std::vector<Eigen::Vector3d>> turn = turningLeg(a, b)) {
-      leg.waypoints = std::move(*turn);
-    } else {
-      leg.waypoints = {a, b};
-      leg.routed = false;
+    if (shape.straight) return scoredEstimate(from, to, {a, b}, true);
+    std::optional<Eigen::Vector3d> best;
+    double best_cost = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& turn : turnCandidates(a, b)) {
+      if (std::find(shape.turns.begin(), shape.turns.end(), turn) == shape.turns.end()) continue;
+      const double cost = planning_.model->integrate(a, turn).charge_ah + planning_.model->integrate(turn, b).charge_ah;
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = turn;
+      }
     }
-    leg.evaluation = score_(from, to, leg.waypoints);
-    if (!leg.routed) leg.evaluation.charge_ah *= kBlockedLegFactor;
-    // The order search reads the totals only; about twenty legs are estimated per place, so
-    // their samples would hold most of a large tour's memory. profile() scores them again
-    // (the same samples) where a split needs them.
-    std::vector<planner::PathSample>().swap(leg.evaluation.samples);
-    return leg;
+    if (best) return scoredEstimate(from, to, {a, *best, b}, true);
+    return scoredEstimate(from, to, {a, b}, false);
   }
 
   // Between near neighbours the straight line is often blocked by a flange or a pier cap's
   // corner: an L round it (level then vertical, vertical then level), or a dogleg half a metre
-  // or a metre above or below the middle, the cheapest valid one, before any search.
-  std::optional<std::vector<Eigen::Vector3d>> turningLeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
-    if (!options_.straight_when_clear) return std::nullopt;
-    const planner::SafetyRules& rules = *planning_.rules;
+  // or a metre above or below the middle. The same points from either end, the Ls swapped.
+  static std::array<Eigen::Vector3d, 6> turnCandidates(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     const Eigen::Vector3d middle = 0.5 * (a + b);
-    std::optional<std::vector<Eigen::Vector3d>> best;
-    double best_cost = std::numeric_limits<double>::infinity();
-    for (const Eigen::Vector3d& turn :
-         {Eigen::Vector3d(b.x(), b.y(), a.z()), Eigen::Vector3d(a.x(), a.y(), b.z()),
-          Eigen::Vector3d(middle + 0.5 * Eigen::Vector3d::UnitZ()),
-          Eigen::Vector3d(middle - 0.5 * Eigen::Vector3d::UnitZ()), Eigen::Vector3d(middle + Eigen::Vector3d::UnitZ()),
-          Eigen::Vector3d(middle - Eigen::Vector3d::UnitZ())}) {
-      if ((turn - a).norm() < 1e-6 || (turn - b).norm() < 1e-6 || !rules.isStateValid(turn) ||
-          !rules.isMotionValid(a, turn) || !rules.isMotionValid(turn, b))
-        continue;
-      const std::vector<Eigen::Vector3d> path{a, turn, b};
-      const double cost = planning_.model->integrate(a, turn).charge_ah + planning_.model->integrate(turn, b).charge_ah;
-      if (cost < best_cost) {
-        best_cost = cost;
-        best = path;
-      }
-    }
-    return best;
+    return {Eigen::Vector3d(b.x(), b.y(), a.z()),
+            Eigen::Vector3d(a.x(), a.y(), b.z()),
+            Eigen::Vector3d(middle + 0.5 * Eigen::Vector3d::UnitZ()),
+            Eigen::Vector3d(middle - 0.5 * Eigen::Vector3d::UnitZ()),
+            Eigen::Vector3d(middle + Eigen::Vector3d::UnitZ()),
+            Eigen::Vector3d(middle - Eigen::Vector3d::UnitZ())};
+  }
+
+  // An estimate on `waypoints`: its totals (a blocked leg's charge priced up). The order search
+  // reads the totals only, and about twenty legs are estimated per place: their samples would
+  // hold most of a large tour's memory, and the lookups only samples need (clearance) cost time.
+  // profile() scores them in full where a split needs them.
+  TourLeg scoredEstimate(int from, int to, std::vector<Eigen::Vector3d> waypoints, bool routed) const {
+    TourLeg leg;
+    leg.waypoints = std::move(waypoints);
+    leg.routed = routed;
+    leg.evaluation = score_totals_(from, to, leg.waypoints);
+    if (!leg.routed) leg.evaluation.charge_ah *= kBlockedLegFactor;
+    return leg;
   }
 
   // The legs a split at `split_points` may fly, estimated where they are not stored yet.
@@ -941,6 +997,7 @@ class SparseLegs {
   FlightMode mode_;
   const TourOptions& options_;
   const LegScorer& score_;
+  const LegScorer& score_totals_;  // an estimate's: evaluatePathTotals, what score_ gives without samples
   PlanningContext::Mode planning_;
   std::vector<std::vector<int>> neighbours_;
   std::unique_ptr<TourRoadmap> roadmap_;
@@ -1018,12 +1075,18 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
 
   const battery::Pack& pack = context.battery().pack;
   // On the move, the legs from photo to photo are flown no faster than the slower one allows.
-  const LegScorer score = [&](int from, int to, const std::vector<Eigen::Vector3d>& waypoints) {
+  const auto speedCap = [&](int from, int to) {
     double cap = std::numeric_limits<double>::infinity();
     if (from > 0 && to > 0 && tour.stops[from - 1].photo && tour.stops[to - 1].photo)
       for (const int place : {from, to})
         if (const auto& speed = tour.stops[place - 1].max_speed_m_s) cap = std::min(cap, *speed);
-    return planner::evaluatePath(context.fullModel(), pack, tour.start_soc, waypoints, cap);
+    return cap;
+  };
+  const LegScorer score = [&](int from, int to, const std::vector<Eigen::Vector3d>& waypoints) {
+    return planner::evaluatePath(context.fullModel(), pack, tour.start_soc, waypoints, speedCap(from, to));
+  };
+  const LegScorer score_totals = [&](int from, int to, const std::vector<Eigen::Vector3d>& waypoints) {
+    return planner::evaluatePathTotals(context.fullModel(), pack, tour.start_soc, waypoints, speedCap(from, to));
   };
   const auto legPlannerFor = [&](int from, int to) {
     return legPlanner(context, mode, tour.places_m[from], tour.places_m[to]);
@@ -1043,7 +1106,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
                                  stageProgress(options, flightModeName(tour.mode) + " mode: planning legs"));
   }
   if (!all_pairs) {
-    sparse = std::make_unique<SparseLegs>(tour, context, mode, options, score);
+    sparse = std::make_unique<SparseLegs>(tour, context, mode, options, score, score_totals);
     sparse->estimateNeighbours();
   }
   tour.times.legs_s = clock.lap_s(tour.times.legs_cpu_s);

@@ -133,13 +133,23 @@ PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const
 
 std::vector<PointConditions> FlightCostModel::conditionsAlong(const Eigen::Vector3d& from_m,
                                                               const Eigen::Vector3d& to_m) const {
+  return sampleConditions(from_m, to_m, true);
+}
+
+std::vector<PointConditions> FlightCostModel::exactConditionsAlong(const Eigen::Vector3d& from_m,
+                                                                   const Eigen::Vector3d& to_m) const {
+  return sampleConditions(from_m, to_m, false);
+}
+
+std::vector<PointConditions> FlightCostModel::sampleConditions(const Eigen::Vector3d& from_m,
+                                                               const Eigen::Vector3d& to_m, bool skip_free_air) const {
   const int intervals = intervalCount(from_m, to_m);
   std::vector<PointConditions> conditions;
   conditions.reserve(intervals + 1);
   std::vector<Eigen::Vector3d> near;  // the samples whose gaps are looked up, together
   std::vector<std::size_t> near_index;
   forEachSample(from_m, to_m, intervals, [&](const Eigen::Vector3d& point) {
-    if (farFromStructure(point)) {
+    if (skip_free_air && farFromStructure(point)) {
       conditions.push_back(freeAirConditionsAt(point));
     } else if (!options_.proximity_effects) {
       conditions.push_back(exactConditionsAt(point));

@@ -4,47 +4,33 @@
 #include "ceilplan/core/error.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
 namespace ceilplan::planner {
+namespace {
 
-PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
-                            const std::vector<Eigen::Vector3d>& waypoints_m, double max_speed_m_s) {
+void requireEvaluable(const battery::Pack& pack, double start_soc, const std::vector<Eigen::Vector3d>& waypoints_m,
+                      double max_speed_m_s) {
   if (waypoints_m.size() < 2) throw ceilplan::InputError("a path needs at least 2 waypoints");
   if (!(max_speed_m_s > 0.0)) throw ceilplan::InputError("the speed cap must be positive");
   if (!(start_soc > 0.0 && start_soc <= 1.0)) throw ceilplan::InputError("start SOC must lie in (0, 1]");
-  const environment::Environment& environment = model.environment();
   pack.validate();
+}
+
+// The one integration of a path under the full model, for evaluatePath and evaluatePathTotals:
+// each segment's conditions come from `conditions_along(from, to)` (one per sample, in the order
+// FlightCostModel::integrate takes them), and `keep(sample)` sees each sample once its time and
+// SOC are known. The current at a sample sees the SOC reached just before it (explicit coulomb
+// counting).
+template <class ConditionsAlong, class Keep>
+PathEvaluation integratePath(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
+                             const std::vector<Eigen::Vector3d>& waypoints_m, double max_speed_m_s,
+                             ConditionsAlong&& conditions_along, Keep&& keep) {
   battery::CoulombCounter battery(pack, start_soc);
   PathEvaluation result;
-  result.min_clearance_m = std::numeric_limits<double>::infinity();
-  result.min_ceiling_gap_m = std::numeric_limits<double>::infinity();
   double energy_j = 0.0;
-  // The state at a point, moving along `direction` (zero: hovering); the current sees the SOC
-  // reached just before it (explicit coulomb counting).
-  const auto sampleAt = [&](const Eigen::Vector3d& position_m, const Eigen::Vector3d& direction,
-                            PointConditions& conditions, Velocity& velocity) {
-    PathSample sample;
-    sample.position_m = position_m;
-    conditions = model.exactConditionsAt(position_m);
-    velocity = direction.isZero() ? model.hoverAt(conditions) : model.velocityAt(conditions, direction);
-    if (velocity.along_m_s > max_speed_m_s) {
-      // Slower along the same track: the wind against it is the same.
-      const double slower = max_speed_m_s / velocity.along_m_s;
-      velocity = {max_speed_m_s, velocity.horizontal_m_s * slower, velocity.climb_m_s * slower, velocity.wind};
-    }
-    sample.speed_m_s = velocity.along_m_s;
-    sample.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
-    sample.ground_gap_m = conditions.ground_gap_m;
-    sample.clearance_m = environment.clearance_m(position_m);
-    sample.assumed_free = environment.assumesFree(position_m);
-    const energy::CurrentBreakdown terms = model.breakdown(conditions, velocity, battery.soc());
-    sample.current_a = terms.current_a;
-    sample.power_w = terms.power_w;
-    sample.propulsion_power_w = terms.propulsionW();
-    return sample;
-  };
   for (std::size_t s = 0; s + 1 < waypoints_m.size(); ++s) {
     const Eigen::Vector3d& from = waypoints_m[s];
     const Eigen::Vector3d delta = waypoints_m[s + 1] - from;
@@ -52,14 +38,26 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     if (length == 0.0) continue;
     const Eigen::Vector3d direction = delta / length;
     const int intervals = model.intervalCount(from, waypoints_m[s + 1]);
+    const std::vector<PointConditions> conditions = conditions_along(from, waypoints_m[s + 1]);
     PathSample previous;
     bool previous_near = false;
     for (int k = 0; k <= intervals; ++k) {
-      PointConditions conditions;
-      Velocity velocity;
-      PathSample sample =
-          sampleAt(k == intervals ? waypoints_m[s + 1] : Eigen::Vector3d(from + delta * (double(k) / intervals)),
-                   direction, conditions, velocity);
+      PathSample sample;
+      sample.position_m = k == intervals ? waypoints_m[s + 1] : Eigen::Vector3d(from + delta * (double(k) / intervals));
+      Velocity velocity = model.velocityAt(conditions[k], direction);
+      if (velocity.along_m_s > max_speed_m_s) {
+        // Slower along the same track: the wind against it is the same.
+        const double slower = max_speed_m_s / velocity.along_m_s;
+        velocity = {max_speed_m_s, velocity.horizontal_m_s * slower, velocity.climb_m_s * slower, velocity.wind};
+      }
+      sample.speed_m_s = velocity.along_m_s;
+      sample.ceiling_gap_m = conditions[k].nearest_ceiling_gap_m;
+      sample.ground_gap_m = conditions[k].ground_gap_m;
+      const energy::CurrentBreakdown terms = model.breakdown(conditions[k], velocity, battery.soc());
+      sample.current_a = terms.current_a;
+      sample.power_w = terms.power_w;
+      sample.propulsion_power_w = terms.propulsionW();
+      const bool near = model.nearCeiling(conditions[k]);
       if (k > 0) {
         // Trapezoid in distance for time; the interval draws the mean of its ends' currents.
         const double dt = 0.5 * (1.0 / previous.speed_m_s + 1.0 / sample.speed_m_s) * (length / intervals);
@@ -67,35 +65,76 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
         battery.requireAboveFloor();
         energy_j += 0.5 * (previous.power_w + sample.power_w) * dt;
         result.duration_s += dt;
-        const bool near = model.nearCeiling(conditions);
         result.time_under_ceiling_s += (previous_near && near) ? dt : (previous_near || near) ? 0.5 * dt : 0.0;
       }
       sample.t_s = result.duration_s;
       sample.soc = battery.soc();
-      result.min_clearance_m = std::min(result.min_clearance_m, sample.clearance_m);
-      result.min_ceiling_gap_m = std::min(result.min_ceiling_gap_m, sample.ceiling_gap_m);
-      previous_near = model.nearCeiling(conditions);
+      previous_near = near;
       previous = sample;
-      result.samples.push_back(sample);
+      keep(std::move(sample));
     }
     result.length_m += length;
-  }
-  if (result.samples.empty()) {
-    // A path that stays where it starts (two targets seen from the same place): nothing is
-    // flown; its one sample is the place, hovering, at no time.
-    PointConditions conditions;
-    Velocity hovering;
-    result.samples.push_back(sampleAt(waypoints_m.front(), Eigen::Vector3d::Zero(), conditions, hovering));
-    result.samples.back().soc = battery.soc();
-    result.min_clearance_m = result.samples.back().clearance_m;
-    result.min_ceiling_gap_m = result.samples.back().ceiling_gap_m;
   }
   result.charge_ah = battery.chargeAh();
   result.energy_wh = energy_j / 3600.0;
   result.fec = battery::fullEquivalentCycles(2.0 * result.charge_ah, pack.capacity_ah);  // and the equal recharge
   result.mean_current_a = result.duration_s > 0.0 ? 3600.0 * result.charge_ah / result.duration_s : 0.0;
   result.min_soc = battery.lowestSoc();
+  return result;
+}
+
+}  // namespace
+
+PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
+                            const std::vector<Eigen::Vector3d>& waypoints_m, double max_speed_m_s) {
+  requireEvaluable(pack, start_soc, waypoints_m, max_speed_m_s);
+  const environment::Environment& environment = model.environment();
+  std::vector<PathSample> samples;
+  PathEvaluation result = integratePath(
+      model, pack, start_soc, waypoints_m, max_speed_m_s,
+      [&](const Eigen::Vector3d& from, const Eigen::Vector3d& to) { return model.exactConditionsAlong(from, to); },
+      [&](PathSample&& sample) {
+        sample.clearance_m = environment.clearance_m(sample.position_m);
+        sample.assumed_free = environment.assumesFree(sample.position_m);
+        samples.push_back(std::move(sample));
+      });
+  result.samples = std::move(samples);
+  if (result.samples.empty()) {
+    // A path that stays where it starts (two targets seen from the same place): nothing is
+    // flown; its one sample is the place, hovering, at no time.
+    PathSample hovering;
+    hovering.position_m = waypoints_m.front();
+    const PointConditions conditions = model.exactConditionsAt(hovering.position_m);
+    hovering.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
+    hovering.ground_gap_m = conditions.ground_gap_m;
+    hovering.clearance_m = environment.clearance_m(hovering.position_m);
+    hovering.assumed_free = environment.assumesFree(hovering.position_m);
+    const energy::CurrentBreakdown terms = model.breakdown(conditions, model.hoverAt(conditions), start_soc);
+    hovering.current_a = terms.current_a;
+    hovering.power_w = terms.power_w;
+    hovering.propulsion_power_w = terms.propulsionW();
+    hovering.soc = start_soc;
+    result.samples.push_back(hovering);
+  }
+  result.min_clearance_m = std::numeric_limits<double>::infinity();
+  result.min_ceiling_gap_m = std::numeric_limits<double>::infinity();
+  for (const PathSample& sample : result.samples) {
+    result.min_clearance_m = std::min(result.min_clearance_m, sample.clearance_m);
+    result.min_ceiling_gap_m = std::min(result.min_ceiling_gap_m, sample.ceiling_gap_m);
+  }
   result.assumed_free_m = environment.assumedFreeAlong(waypoints_m).length_m;
+  return result;
+}
+
+PathEvaluation evaluatePathTotals(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
+                                  const std::vector<Eigen::Vector3d>& waypoints_m, double max_speed_m_s) {
+  requireEvaluable(pack, start_soc, waypoints_m, max_speed_m_s);
+  PathEvaluation result = integratePath(
+      model, pack, start_soc, waypoints_m, max_speed_m_s,
+      [&](const Eigen::Vector3d& from, const Eigen::Vector3d& to) { return model.conditionsAlong(from, to); },
+      [](PathSample&&) {});
+  const double unknown = std::numeric_limits<double>::quiet_NaN();
+  result.min_clearance_m = result.min_ceiling_gap_m = result.assumed_free_m = unknown;
   return result;
 }
 

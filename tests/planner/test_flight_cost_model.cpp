@@ -70,20 +70,26 @@ TEST(FlightCostModel, MotionsShareGapLookupsAndGiveEachSampleItsOwnConditions) {
                           b = m % 2 ? somewhere() : Eigen::Vector3d(a + 0.4 * Eigen::Vector3d::UnitX());
     if (!environment.contains(b)) continue;
     const std::vector<planner::PointConditions> along = model.conditionsAlong(a, b);
+    const std::vector<planner::PointConditions> exact_along = model.exactConditionsAlong(a, b);
     const int intervals = model.intervalCount(a, b);
     ASSERT_EQ(along.size(), static_cast<std::size_t>(intervals + 1));
+    ASSERT_EQ(exact_along.size(), along.size());
+    // Bit for bit: EXPECT_EQ on doubles.
+    const auto expectSame = [&](const planner::PointConditions& got, const planner::PointConditions& single, int k) {
+      EXPECT_EQ(got.nearest_ceiling_gap_m, single.nearest_ceiling_gap_m) << m << " " << k;
+      EXPECT_EQ(got.ground_gap_m, single.ground_gap_m) << m << " " << k;
+      EXPECT_EQ(got.standoff_shortfall_m, single.standoff_shortfall_m) << m << " " << k;
+      ASSERT_EQ(got.rotor_count, single.rotor_count);
+      for (int r = 0; r < single.rotor_count; ++r) {
+        EXPECT_EQ(got.rotors[r].gap_m, single.rotors[r].gap_m) << m << " " << k << " rotor " << r;
+        EXPECT_EQ(got.rotors[r].coverage, single.rotors[r].coverage) << m << " " << k << " rotor " << r;
+      }
+    };
     for (int k = 0; k <= intervals; ++k) {
       const Eigen::Vector3d p = k == intervals ? b : Eigen::Vector3d(a + (b - a) * (double(k) / intervals));
       const planner::PointConditions single = model.conditionsAt(p);
-      // Bit for bit: EXPECT_EQ on doubles.
-      EXPECT_EQ(along[k].nearest_ceiling_gap_m, single.nearest_ceiling_gap_m) << m << " " << k;
-      EXPECT_EQ(along[k].ground_gap_m, single.ground_gap_m) << m << " " << k;
-      EXPECT_EQ(along[k].standoff_shortfall_m, single.standoff_shortfall_m) << m << " " << k;
-      ASSERT_EQ(along[k].rotor_count, single.rotor_count);
-      for (int r = 0; r < single.rotor_count; ++r) {
-        EXPECT_EQ(along[k].rotors[r].gap_m, single.rotors[r].gap_m) << m << " " << k << " rotor " << r;
-        EXPECT_EQ(along[k].rotors[r].coverage, single.rotors[r].coverage) << m << " " << k << " rotor " << r;
-      }
+      expectSame(along[k], single, k);
+      expectSame(exact_along[k], model.exactConditionsAt(p), k);
       near_ceiling += model.nearCeiling(single);
     }
     const auto [forth, back] = model.integrateBothWays(a, b);

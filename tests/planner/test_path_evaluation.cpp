@@ -8,6 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <random>
+
 namespace ceilplan::testing {
 namespace {
 
@@ -106,6 +110,59 @@ TEST(PathEvaluation, APathThatStaysWhereItStartsIsNoFlight) {
   EXPECT_EQ(stay.fec, 0.0);
   EXPECT_DOUBLE_EQ(stay.min_soc, 0.95);
   EXPECT_DOUBLE_EQ(stay.min_clearance_m, environment.clearance_m(place));
+}
+
+// A search ranks thousands of paths by their totals alone (a large tour's leg estimates):
+// evaluatePathTotals must give evaluatePath's totals to the bit, near the ceiling, in free air
+// (where it looks no gap up), in wind sheltered under the ceiling, and under a speed cap.
+TEST(PathEvaluation, TotalsAloneAreTheFullEvaluationsToTheBit) {
+  const environment::OccupancyMap map = corridor(flatCeiling);
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  planner::CostModelOptions windy;
+  windy.wind.speed_m_s = 3.0;
+  windy.wind.from_deg = 250.0;
+  windy.wind.sheltered_fraction = 0.5;
+  const planner::FlightCostModel calm(environment, energy, planner::CostModelOptions{}),
+      wind(environment, energy, windy);
+  battery::Pack pack;
+  pack.state_of_health = 0.9;
+  std::mt19937 random(26);
+  std::uniform_real_distribution<double> x(-0.2, 6.2), y(-2.2, 2.2), z(0.8, 3.35);
+  int far_samples = 0, near_samples = 0;
+  for (int m = 0; m < 200; ++m) {
+    const planner::FlightCostModel& model = m % 2 ? wind : calm;
+    std::vector<Eigen::Vector3d> path(2 + m % 3);
+    for (Eigen::Vector3d& waypoint : path) waypoint = {x(random), y(random), z(random)};
+    if (m % 7 == 0) path[1] = path[0];  // a segment of no length
+    const double cap = m % 5 == 0 ? 0.6 : std::numeric_limits<double>::infinity();
+    const planner::PathEvaluation full = planner::evaluatePath(model, pack, 0.9, path, cap);
+    const planner::PathEvaluation totals = planner::evaluatePathTotals(model, pack, 0.9, path, cap);
+    // Bit for bit: EXPECT_EQ on doubles.
+    EXPECT_EQ(totals.length_m, full.length_m) << m;
+    EXPECT_EQ(totals.duration_s, full.duration_s) << m;
+    EXPECT_EQ(totals.charge_ah, full.charge_ah) << m;
+    EXPECT_EQ(totals.energy_wh, full.energy_wh) << m;
+    EXPECT_EQ(totals.fec, full.fec) << m;
+    EXPECT_EQ(totals.mean_current_a, full.mean_current_a) << m;
+    EXPECT_EQ(totals.min_soc, full.min_soc) << m;
+    EXPECT_EQ(totals.time_under_ceiling_s, full.time_under_ceiling_s) << m;
+    EXPECT_TRUE(totals.samples.empty());
+    EXPECT_TRUE(std::isnan(totals.min_clearance_m) && std::isnan(totals.min_ceiling_gap_m) &&
+                std::isnan(totals.assumed_free_m));
+    for (const planner::PathSample& sample : full.samples)
+      (model.farFromStructure(sample.position_m) ? far_samples : near_samples) += 1;
+  }
+  // Both kinds of sample were met: the free-air shortcut and the gap lookups.
+  EXPECT_GT(far_samples, 1000);
+  EXPECT_GT(near_samples, 1000);
+  // A path that stays where it starts: no flight either way.
+  const Eigen::Vector3d place(3.0, 0.0, 3.3);
+  const planner::PathEvaluation stay = planner::evaluatePathTotals(calm, pack, 0.9, {place, place});
+  EXPECT_EQ(stay.charge_ah, 0.0);
+  EXPECT_EQ(stay.duration_s, 0.0);
+  EXPECT_EQ(stay.min_soc, 0.9);
+  EXPECT_THROW(planner::evaluatePathTotals(calm, pack, 0.9, {place}), ceilplan::InputError);
 }
 
 }  // namespace

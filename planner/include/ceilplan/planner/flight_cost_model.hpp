@@ -193,6 +193,9 @@ class FlightCostModel {
                                                           const Eigen::Vector3d& to_m) const;
   /// conditionsAt at each of the samples integrate() takes on the motion, from_m first.
   std::vector<PointConditions> conditionsAlong(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
+  /// exactConditionsAt at the same samples, the same to the bit: every sample's gaps looked up
+  /// (the samples share their columns' lookups), for reports that give the ceiling gap everywhere.
+  std::vector<PointConditions> exactConditionsAlong(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
 
   /// Number of sample intervals integrate() uses for a motion: the axis-wise (Chebyshev) length
   /// over step_m(), so lattice motions (between voxel centres, whole voxels apart) sample a
@@ -215,6 +218,9 @@ class FlightCostModel {
 
  private:
   double costPerMetre(const CostWeights& weights, double current_a, double speed_m_s) const;
+  /// conditionsAlong, or with `skip_free_air` false exactConditionsAlong.
+  std::vector<PointConditions> sampleConditions(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
+                                                bool skip_free_air) const;
 
   /// One direction's totals over the samples of a motion, by the trapezoid rule on 1/speed and
   /// current/speed; samples may come in either order.

@@ -60,4 +60,14 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
                             const std::vector<Eigen::Vector3d>& waypoints_m,
                             double max_speed_m_s = std::numeric_limits<double>::infinity());
 
+/// evaluatePath's totals without its samples, the same to the bit: length, duration, charge,
+/// energy, FEC, mean current, lowest SOC and time under the ceiling. What needs each sample's
+/// own lookups is left out: no samples, and min_clearance_m, min_ceiling_gap_m and assumed_free_m
+/// are NaN. Far from structure no gap is looked up (FlightCostModel::conditionsAlong): the speed
+/// and the current there are free air's either way. What a search ranks many paths by, most of
+/// which it never flies. Throws as evaluatePath does.
+PathEvaluation evaluatePathTotals(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
+                                  const std::vector<Eigen::Vector3d>& waypoints_m,
+                                  double max_speed_m_s = std::numeric_limits<double>::infinity());
+
 }  // namespace ceilplan::planner
