@@ -19,6 +19,19 @@ void requireEvaluable(const battery::Pack& pack, double start_soc, const std::ve
   pack.validate();
 }
 
+// A sample's speed, gaps and draw, moving at `velocity` in `conditions` at `soc`: what a flown
+// sample and the hovering one of a path that stays put share.
+void setDraw(PathSample& sample, const FlightCostModel& model, const PointConditions& conditions,
+             const Velocity& velocity, double soc) {
+  sample.speed_m_s = velocity.along_m_s;
+  sample.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
+  sample.ground_gap_m = conditions.ground_gap_m;
+  const energy::CurrentBreakdown terms = model.breakdown(conditions, velocity, soc);
+  sample.current_a = terms.current_a;
+  sample.power_w = terms.power_w;
+  sample.propulsion_power_w = terms.propulsionW();
+}
+
 // The one integration of a path under the full model, for evaluatePath and evaluatePathTotals:
 // each segment's conditions come from `conditions_along(from, to)` (one per sample, in the order
 // FlightCostModel::integrate takes them), and `keep(sample)` sees each sample once its time and
@@ -50,13 +63,7 @@ PathEvaluation integratePath(const FlightCostModel& model, const battery::Pack& 
         const double slower = max_speed_m_s / velocity.along_m_s;
         velocity = {max_speed_m_s, velocity.horizontal_m_s * slower, velocity.climb_m_s * slower, velocity.wind};
       }
-      sample.speed_m_s = velocity.along_m_s;
-      sample.ceiling_gap_m = conditions[k].nearest_ceiling_gap_m;
-      sample.ground_gap_m = conditions[k].ground_gap_m;
-      const energy::CurrentBreakdown terms = model.breakdown(conditions[k], velocity, battery.soc());
-      sample.current_a = terms.current_a;
-      sample.power_w = terms.power_w;
-      sample.propulsion_power_w = terms.propulsionW();
+      setDraw(sample, model, conditions[k], velocity, battery.soc());
       const bool near = model.nearCeiling(conditions[k]);
       if (k > 0) {
         // Trapezoid in distance for time; the interval draws the mean of its ends' currents.
@@ -105,14 +112,9 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
     PathSample hovering;
     hovering.position_m = waypoints_m.front();
     const PointConditions conditions = model.exactConditionsAt(hovering.position_m);
-    hovering.ceiling_gap_m = conditions.nearest_ceiling_gap_m;
-    hovering.ground_gap_m = conditions.ground_gap_m;
+    setDraw(hovering, model, conditions, model.hoverAt(conditions), start_soc);
     hovering.clearance_m = environment.clearance_m(hovering.position_m);
     hovering.assumed_free = environment.assumesFree(hovering.position_m);
-    const energy::CurrentBreakdown terms = model.breakdown(conditions, model.hoverAt(conditions), start_soc);
-    hovering.current_a = terms.current_a;
-    hovering.power_w = terms.power_w;
-    hovering.propulsion_power_w = terms.propulsionW();
     hovering.soc = start_soc;
     result.samples.push_back(hovering);
   }
