@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <tuple>
 
@@ -36,6 +37,21 @@ bool seesPoint(const environment::VoxelGrid& grid, const Eigen::Vector3d& body_m
   return true;
 }
 
+// The hover current under `gaps` (hoverCurrentA's, from gaps already looked up).
+double hoverCurrentUnder(const energy::EnergyModel& model, const environment::Environment::CeilingAndGround& gaps,
+                         double soc) {
+  if (static_cast<int>(gaps.ceiling.rotors.size()) != model.rotorCount() ||
+      model.rotorCount() > energy::EnergyModel::kMaxRotors)
+    throw ceilplan::InputError("the map's vehicle has " + std::to_string(gaps.ceiling.rotors.size()) +
+                               " rotors, the energy model " + std::to_string(model.rotorCount()) +
+                               ": use one vehicle file for both");
+  const planner::PointConditions conditions = planner::surfaceConditions(gaps.ceiling, gaps.ground);
+  energy::FlightCondition hover;
+  hover.ground_gap_m = conditions.ground_gap_m;
+  hover.soc = soc;
+  return model.currentA(conditions.rotors.data(), model.rotorCount(), hover);
+}
+
 class ViewpointSearch {
  public:
   ViewpointSearch(const InspectionTarget& target, const environment::Environment& environment,
@@ -52,10 +68,14 @@ class ViewpointSearch {
       for (int j = -n; j <= n; ++j)
         for (int i = -n; i <= n; ++i) {
           const Eigen::Vector3d body_m = ontoShell(centre_m + step_m * Eigen::Vector3d(i, j, k), step_m);
-          if (!admissible(body_m)) continue;
-          consider(body_m);
+          const std::optional<double> key = admissibleKey(body_m);
+          if (!key) continue;
+          consider(body_m, *key);
           const Eigen::Vector3d step_up_m(0, 0, step_m);
-          if (hug && !admissible(body_m + step_up_m)) consider(raised(body_m, step_m));
+          if (hug && !admissible(body_m + step_up_m)) {
+            const Eigen::Vector3d top_m = raised(body_m, step_m);
+            consider(top_m, this->key(top_m));
+          }
         }
   }
 
@@ -77,12 +97,30 @@ class ViewpointSearch {
     return target_.point_m + offset_m * (onto_m / distance_m);
   }
 
-  // In the standoff range, a valid state, and clear of the ceiling by the minimum gap.
-  bool admissible(const Eigen::Vector3d& body_m) const {
+  // In the standoff range and a valid state.
+  bool validInRange(const Eigen::Vector3d& body_m) const {
     const double distance_m = (body_m - target_.point_m).norm();
     return distance_m >= target_.standoff_min_m && distance_m <= target_.standoff_max_m &&
-           environment_.contains(body_m) && environment_.isStateValid(body_m) &&
-           environment_.nearestCeilingGap_m(body_m) >= options_.min_ceiling_gap_m;
+           environment_.contains(body_m) && environment_.isStateValid(body_m);
+  }
+
+  // validInRange, and clear of the ceiling by the minimum gap.
+  bool admissible(const Eigen::Vector3d& body_m) const {
+    return validInRange(body_m) && environment_.ceilingGapAtLeast(body_m, options_.min_ceiling_gap_m);
+  }
+
+  // key() at an admissible position, none elsewhere. Ceiling mode reads the gaps above and below
+  // once for both (the nearest gap above is the ceiling's, to the bit): the scan asks this of
+  // every lattice point, and the columns under the discs are most of its cost.
+  std::optional<double> admissibleKey(const Eigen::Vector3d& body_m) const {
+    if (!validInRange(body_m)) return std::nullopt;
+    if (options_.mode != FlightMode::Ceiling) {
+      if (!environment_.ceilingGapAtLeast(body_m, options_.min_ceiling_gap_m)) return std::nullopt;
+      return key(body_m);
+    }
+    const environment::Environment::CeilingAndGround gaps = environment_.ceilingAndGround(body_m);
+    if (!(gaps.ceiling.nearest_gap_m >= options_.min_ceiling_gap_m)) return std::nullopt;
+    return currentKey(hoverCurrentUnder(model_, gaps, options_.soc));
   }
 
   // Ceiling mode: the current keeps falling as the gap above closes, and a lattice leaves the
@@ -104,10 +142,11 @@ class ViewpointSearch {
   // shortfall, to the millimetre.
   double key(const Eigen::Vector3d& body_m) const {
     if (options_.mode == FlightMode::Ceiling)
-      return std::round(hoverCurrentA(environment_, model_, body_m, options_.soc) / kCurrentResolutionA);
+      return currentKey(hoverCurrentA(environment_, model_, body_m, options_.soc));
     const double shortfall_m = std::max(0.0, options_.standoff_m - planner::standoffAt(environment_, body_m));
     return std::round(shortfall_m / kStandoffResolutionM);
   }
+  static double currentKey(double current_a) { return std::round(current_a / kCurrentResolutionA); }
 
   // The best position so far by key, ties by distance to the point.
   struct Best {
@@ -120,11 +159,10 @@ class ViewpointSearch {
     }
   };
 
-  // Keeps an admissible position that sees the target if it beats the best so far, and the
+  // Keeps an admissible position (its key given) that sees the target if it beats the best so far, and the
   // best reachable one apart (the reachability test, the costliest, last).
-  void consider(const Eigen::Vector3d& body_m) {
+  void consider(const Eigen::Vector3d& body_m, double key) {
     const double distance_m = (body_m - target_.point_m).norm();
-    const double key = this->key(body_m);
     const bool better = any_.beatenBy(key, distance_m);
     const bool better_reachable = options_.reachable && reachable_.beatenBy(key, distance_m);
     if (!(better || better_reachable) || !seesPoint(environment_.grid(), body_m, target_.point_m)) return;
@@ -218,18 +256,7 @@ std::optional<Eigen::Vector3d> surfacePoint(const InspectionTarget& target,
 
 double hoverCurrentA(const environment::Environment& environment, const energy::EnergyModel& model,
                      const Eigen::Vector3d& body_m, double soc) {
-  const environment::SurfaceGaps above = environment.ceiling(body_m);
-  const environment::SurfaceGaps below = environment.ground(body_m);
-  if (static_cast<int>(above.rotors.size()) != model.rotorCount() ||
-      model.rotorCount() > energy::EnergyModel::kMaxRotors)
-    throw ceilplan::InputError("the map's vehicle has " + std::to_string(above.rotors.size()) +
-                               " rotors, the energy model " + std::to_string(model.rotorCount()) +
-                               ": use one vehicle file for both");
-  const planner::PointConditions conditions = planner::surfaceConditions(above, below);
-  energy::FlightCondition hover;
-  hover.ground_gap_m = conditions.ground_gap_m;
-  hover.soc = soc;
-  return model.currentA(conditions.rotors.data(), model.rotorCount(), hover);
+  return hoverCurrentUnder(model, environment.ceilingAndGround(body_m), soc);
 }
 
 Viewpoint chooseViewpoint(const InspectionTarget& target, const environment::Environment& environment,
