@@ -687,11 +687,29 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
       parent[state] = from_state;
     }
   };
+  // The joins into the goals by the state they leave from, in the order of the goals and of each
+  // goal's joins: a closed state looks up its own joins instead of asking every goal (a search
+  // from home to every photo of a long structure closes a million nodes, for thousands of goals).
+  struct GoalJoin {
+    std::uint32_t state;
+    int goal;
+    double cost;
+  };
+  std::vector<GoalJoin> goal_joins;
+  for (int goal : targets)
+    for (const Join& join : place_data[goal].in) goal_joins.push_back({join.state, goal, join.cost});
+  std::stable_sort(goal_joins.begin(), goal_joins.end(),
+                   [](const GoalJoin& a, const GoalJoin& b) { return a.state < b.state; });
+  const auto joinsFrom = [&](std::uint32_t state) {
+    const auto first = std::lower_bound(goal_joins.begin(), goal_joins.end(), state,
+                                        [](const GoalJoin& join, std::uint32_t s) { return join.state < s; });
+    auto last = first;
+    while (last != goal_joins.end() && last->state == state) ++last;
+    return std::make_pair(first, last);
+  };
   const auto arrive = [&](std::uint32_t state, double g) {
-    for (int goal : targets) {
-      for (const Join& join : place_data[goal].in)
-        if (join.state == state) relax(place_offset + goal, state, g + join.cost);
-    }
+    const auto [first, last] = joinsFrom(state);
+    for (auto join = first; join != last; ++join) relax(place_offset + join->goal, state, g + join->cost);
   };
 
   for (const Join& join : place_data[from].out) relax(join.state, kStart, join.cost);
@@ -739,11 +757,12 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
       for (auto it = first; it != node_arcs_.end() && it->first == node; ++it)
         relax(it->second.to, state, g + it->second.cost);
     }
-    const Eigen::Vector3d here = lattice.position(node);
-    for (int goal : targets) {
-      if ((places_m[goal] - here).norm() > lattice.joinRadius_m()) continue;
-      for (const Join& join : place_data[goal].in)
-        if (join.state == node) relax(place_offset + goal, state, g + join.cost);
+    const auto [first, last] = joinsFrom(node);
+    if (first != last) {
+      const Eigen::Vector3d here = lattice.position(node);
+      for (auto join = first; join != last; ++join)
+        if ((places_m[join->goal] - here).norm() <= lattice.joinRadius_m())
+          relax(place_offset + join->goal, state, g + join->cost);
     }
   }
 
