@@ -918,35 +918,50 @@ class SparseLegs {
     return leg;
   }
 
-  // The legs a split at `split_points` may fly, estimated where they are not stored yet.
-  TourCosts splitCosts(const std::vector<int>& order, const std::set<int>& split_points) {
-    const Pairs home = homeLegs(order, split_points);
-    estimate(home);
-    profileHomeLegs(home);
-    Pairs consecutive;
-    for (std::size_t k = 1; k < order.size(); ++k) consecutive.emplace_back(order[k - 1], order[k]);
-    estimate(consecutive);
-    profile(consecutive);
-    TourCosts costs = tourCosts(tour_, context_);
-    for (const auto& [from, to] : consecutive)
-      costs.legs(from, to) = legCost(tour_.legs.at(from, to).evaluation, context_);
-    for (const auto& [from, to] : home) costs.legs(from, to) = homeCost(from, to);
-    last_split_points_ = split_points;
-    return costs;
-  }
+  // The legs a split at `split_points` may fly, estimated where they are not stored yet. The
+  // profiles kept for legs out of home and back (home_costs_) are lent to the costs, not copied: a
+  // long structure's way home is thousands of samples at each of a thousand split points. The
+  // costs hold them until the SplitCosts is destroyed, which gives them back (a split may throw).
+  class SplitCosts {
+   public:
+    SplitCosts(SparseLegs& legs, const std::vector<int>& order, const std::set<int>& split_points) : legs_(legs) {
+      Pairs home = legs.homeLegs(order, split_points);
+      std::sort(home.begin(), home.end());
+      home.erase(std::unique(home.begin(), home.end()), home.end());
+      legs.estimate(home);
+      legs.profileHomeLegs(home);
+      Pairs consecutive;
+      for (std::size_t k = 1; k < order.size(); ++k) consecutive.emplace_back(order[k - 1], order[k]);
+      legs.estimate(consecutive);
+      legs.profile(consecutive);
+      costs_ = tourCosts(legs.tour_, legs.context_);
+      for (const auto& [from, to] : consecutive)
+        costs_.legs(from, to) = legCost(legs.tour_.legs.at(from, to).evaluation, legs.context_);
+      for (const auto& [from, to] : home) {
+        const TourLeg& leg = legs.tour_.legs.at(from, to);
+        if (!leg.evaluation.samples.empty()) {  // routed or refined since: its own samples are the ones to fly
+          costs_.legs(from, to) = legCost(leg.evaluation, legs.context_);
+        } else {
+          costs_.legs(from, to) = std::move(legs.home_costs_(from, to));
+          lent_.emplace_back(from, to);
+        }
+      }
+      legs.last_split_points_ = split_points;
+    }
+    SplitCosts(const SplitCosts&) = delete;
+    SplitCosts& operator=(const SplitCosts&) = delete;
+    ~SplitCosts() {
+      for (const auto& [from, to] : lent_) legs_.home_costs_(from, to) = std::move(costs_.legs(from, to));
+    }
+    const TourCosts& costs() const { return costs_; }
 
-  // What the split flies of a leg out of home or back: its load profile, kept apart from the leg
-  // while the leg is the estimate it was. A large tour needs these legs at every split point (a
-  // few thousand), each as long as the way home, and the plan flies a few of them: their samples
-  // (13 numbers each, where the profile keeps 2) held a third of a mode's memory. A leg with
-  // samples was routed or refined since: its own samples are the ones to fly.
-  LegCost homeCost(int from, int to) {
-    const TourLeg& leg = tour_.legs.at(from, to);
-    if (!leg.evaluation.samples.empty()) return legCost(leg.evaluation, context_);
-    return home_costs_.at(from, to);
-  }
+   private:
+    SparseLegs& legs_;
+    TourCosts costs_;
+    Pairs lent_;
+  };
 
-  // Scores the legs of `pairs` that have neither samples nor a profile kept (homeCost), on the
+  // Scores the legs of `pairs` that have neither samples nor a profile kept (home_costs_), on the
   // tour's threads, and keeps their profiles.
   void profileHomeLegs(Pairs pairs) {
     std::sort(pairs.begin(), pairs.end());
@@ -970,7 +985,8 @@ class SparseLegs {
     const CpuTimer timer(tour_.times.split_cpu_s);
     SortieOptions sortie_options = sortieOptions(context_.options());
     sortie_options.split_points.assign(split_points.begin(), split_points.end());
-    return planSorties(splitCosts(order, split_points), order, context_.battery(), sortie_options, split_memo_);
+    const SplitCosts costs(*this, order, split_points);
+    return planSorties(costs.costs(), order, context_.battery(), sortie_options, split_memo_);
   }
 
   // `split_points` and more, until one sortie flies each stretch between them alone: a stretch
@@ -981,7 +997,8 @@ class SparseLegs {
     for (bool halved = true; halved;) {
       halved = false;
       const std::vector<int> points(split_points.begin(), split_points.end());
-      for (int first : stretchesNoSortieFlies(splitCosts(order, split_points), order, context_.battery(), points)) {
+      const SplitCosts costs(*this, order, split_points);
+      for (int first : stretchesNoSortieFlies(costs.costs(), order, context_.battery(), points)) {
         const auto next = split_points.upper_bound(first);
         const int end = next == split_points.end() ? targets : *next;
         if (end - first < 2) continue;
@@ -1001,7 +1018,12 @@ class SparseLegs {
   PlanningContext::Mode planning_;
   std::vector<std::vector<int>> neighbours_;
   std::unique_ptr<TourRoadmap> roadmap_;
-  PairTable<LegCost> home_costs_;                                 // homeCost's profiles
+  // What the split flies of a leg out of home or back while the leg is the estimate it was: its
+  // load profile, kept apart from the leg. A large tour needs these legs at every split point (a
+  // few thousand), each as long as the way home, and the plan flies a few of them: their samples
+  // (13 numbers each, where the profile keeps 2) held a third of a mode's memory. A leg with
+  // samples was routed or refined since (SplitCosts flies those samples instead).
+  PairTable<LegCost> home_costs_;
   SortieMemo split_memo_;                                         // the sorties this round's splits flew home
   std::vector<std::vector<std::pair<int, double>>> visit_costs_;  // indexVisitCosts
   std::set<int> last_split_points_;
