@@ -59,6 +59,33 @@ TEST(LatticeRoadmap, RoutesAcrossTheBeamCostWhatTheLatticeAStarFinds) {
   EXPECT_FALSE(roadmap.routesFrom(0)[0]);  // no route from a place to itself
 }
 
+// Places closer together than the lattice spacing join the lattice at the same nodes: the
+// search looks up, at each node it closes, the joins into every goal that leave from it. Each
+// route still costs what the lattice A* finds for that pair alone, both ways.
+TEST(LatticeRoadmap, PlacesSharingTheirJoinNodesAreEachRoutedAsTheLatticeAStarRoutesThemAlone) {
+  BeamRoom room;
+  std::vector<Eigen::Vector3d> places{room.places[0]};
+  for (const double dz : {0.0, -0.07})
+    for (const double dy : {-0.07, 0.0, 0.07})
+      for (const double dx : {-0.07, 0.07}) places.push_back(room.places[1] + Eigen::Vector3d(dx, dy, dz));
+  planner::LatticeRoadmap roadmap(room.planner.spaceInformation(), spacing(0.3));
+  roadmap.build(room.planner.objective(), places);
+  const auto out = roadmap.routesFrom(0);
+  for (int place = 1; place < static_cast<int>(places.size()); ++place)
+    for (const auto& [from, to] : std::vector<std::pair<int, int>>{{0, place}, {place, 0}}) {
+      const auto route = from == 0 ? out[to] : roadmap.routesFrom(from)[to];
+      ASSERT_TRUE(route) << from << " -> " << to;
+      planner::LatticePlanner lattice(room.planner.spaceInformation(), spacing(0.3));
+      const Solved found = solveOnce(lattice, room.planner, places[from], places[to]);
+      ASSERT_EQ(found.status, ompl::base::PlannerStatus::EXACT_SOLUTION) << from << " -> " << to;
+      // Edge costs are stored in single precision.
+      EXPECT_NEAR(route->cost, found.cost, 1e-5 * found.cost) << from << " -> " << to;
+      EXPECT_EQ(route->waypoints.front(), places[from]);
+      EXPECT_EQ(route->waypoints.back(), places[to]);
+      EXPECT_FALSE(room.rules.checkPathDensely(route->waypoints)) << from << " -> " << to;
+    }
+}
+
 // A tour of many places asks for a few goals at a time: the search stops once it has reached
 // them (A* towards the nearest), and finds the routes the search to every place finds.
 TEST(LatticeRoadmap, RoutesToAFewGoalsCostWhatTheSearchToEveryPlaceFinds) {
