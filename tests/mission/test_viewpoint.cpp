@@ -68,6 +68,23 @@ TEST(Viewpoint, CeilingModeHugsTheSurfaceAbove) {
   EXPECT_LT(viewpoint.dwell_current_a, hoverCurrentA(flat().ceiling, paperQuad(), {0.05, 0.05, 2.7}, 0.65));
 }
 
+// Far from any ceiling, ceiling mode's least current is the ground's: a target on a wall 1 m up
+// is inspected from low down (ground effect under the rotors), not from the nearest position
+// straight out from the wall.
+TEST(Viewpoint, CeilingModeWeighsTheGroundBelowToo) {
+  const environment::OccupancyMap map = testing::analyticMap({-2, -2, 0}, {2, 2, 4}, 0.1, [](const Eigen::Vector3d& c) {
+    return c.z() < 0.2 || c.x() > 1.0 ? environment::CellState::Occupied : environment::CellState::Free;
+  });
+  const Environment walled(map, testing::quad());
+  const InspectionTarget target{"wall", {1.0, 0.05, 1.0}, 0.3, 1.5, 60.0};
+  const Viewpoint viewpoint = chooseViewpoint(target, walled, paperQuad());
+  expectUsable(viewpoint, target, walled);
+  EXPECT_LT(viewpoint.position_m.z(), 0.7) << "viewpoint at " << viewpoint.position_m.transpose();
+  const Eigen::Vector3d nearest(0.5, 0.05, 1.0);
+  ASSERT_TRUE(walled.isStateValid(nearest));
+  EXPECT_LT(viewpoint.dwell_current_a, hoverCurrentA(walled, paperQuad(), nearest, ViewpointOptions{}.soc) - 0.01);
+}
+
 TEST(Viewpoint, FreeModeKeepsTheConventionalStandoffAndTakesTheNearestPosition) {
   const InspectionTarget target = ceilingTarget();
   const Viewpoint viewpoint = chooseViewpoint(target, flat().ceiling, paperQuad(), freeMode());
