@@ -689,7 +689,9 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
   };
   // The joins into the goals by the state they leave from, in the order of the goals and of each
   // goal's joins: a closed state looks up its own joins instead of asking every goal (a search
-  // from home to every photo of a long structure closes a million nodes, for thousands of goals).
+  // from home to every photo of a long structure closes the whole lattice, for thousands of goals).
+  // A lattice node's joins are those within the join radius (joinPlaces), a vertex's those of its
+  // place (addBridge).
   struct GoalJoin {
     std::uint32_t state;
     int goal;
@@ -757,13 +759,7 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
       for (auto it = first; it != node_arcs_.end() && it->first == node; ++it)
         relax(it->second.to, state, g + it->second.cost);
     }
-    const auto [first, last] = joinsFrom(node);
-    if (first != last) {
-      const Eigen::Vector3d here = lattice.position(node);
-      for (auto join = first; join != last; ++join)
-        if ((places_m[join->goal] - here).norm() <= lattice.joinRadius_m())
-          relax(place_offset + join->goal, state, g + join->cost);
-    }
+    arrive(node, g);
   }
 
   std::vector<std::optional<RoadmapRoute>> routes(places);
