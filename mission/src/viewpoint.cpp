@@ -113,11 +113,8 @@ class ViewpointSearch {
   // once for both (the nearest gap above is the ceiling's, to the bit): the scan asks this of
   // every lattice point, and the columns under the discs are most of its cost.
   std::optional<double> admissibleKey(const Eigen::Vector3d& body_m) const {
+    if (options_.mode != FlightMode::Ceiling) return admissible(body_m) ? std::optional(key(body_m)) : std::nullopt;
     if (!validInRange(body_m)) return std::nullopt;
-    if (options_.mode != FlightMode::Ceiling) {
-      if (!environment_.ceilingGapAtLeast(body_m, options_.min_ceiling_gap_m)) return std::nullopt;
-      return key(body_m);
-    }
     const environment::Environment::CeilingAndGround gaps = environment_.ceilingAndGround(body_m);
     if (!(gaps.ceiling.nearest_gap_m >= options_.min_ceiling_gap_m)) return std::nullopt;
     return currentKey(hoverCurrentUnder(model_, gaps, options_.soc));
@@ -159,8 +156,8 @@ class ViewpointSearch {
     }
   };
 
-  // Keeps an admissible position (its key given) that sees the target if it beats the best so far, and the
-  // best reachable one apart (the reachability test, the costliest, last).
+  // Keeps an admissible position (its key given) that sees the target if it beats the best so
+  // far, and the best reachable one apart (the reachability test, the costliest, last).
   void consider(const Eigen::Vector3d& body_m, double key) {
     const double distance_m = (body_m - target_.point_m).norm();
     const bool better = any_.beatenBy(key, distance_m);
