@@ -91,11 +91,20 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
   double disc_reach = 0.0;
   for (const Eigen::Vector2d& rotor : vehicle.rotor_positions_m)
     disc_reach = std::max(disc_reach, rotor.norm() + vehicle.rotor_radius_m);
+  // With the proximity effects off only the speed rule's ceiling matters: a surface less than its
+  // gap over the disc.
   const environment::EnvironmentOptions& reach = environment_.options();
-  const double above =
-      vehicle.rotor_plane_height_m + std::max(reach.ceiling_reach_radii * vehicle.rotor_radius_m, near_ceiling_gap_m_);
-  const double below = reach.ground_reach_radii * vehicle.rotor_radius_m - vehicle.rotor_plane_height_m;
-  free_air_clearance_m_ = std::hypot(disc_reach, std::max(above, below)) + environment_.grid().frame().resolution_m();
+  const double plane = vehicle.rotor_plane_height_m;
+  double vertical = std::max(std::abs(plane), std::abs(plane + near_ceiling_gap_m_));
+  if (options_.proximity_effects)
+    vertical = std::max({vertical, plane + reach.ceiling_reach_radii * vehicle.rotor_radius_m,
+                         reach.ground_reach_radii * vehicle.rotor_radius_m - plane});
+  free_air_clearance_m_ = std::hypot(disc_reach, vertical) + environment_.grid().frame().resolution_m();
+  // A ceiling in the speed rule's band over a disc (rotor plane to near_ceiling_gap_m_ above it)
+  // lies within the band's half height and the disc's reach of the band's middle.
+  speed_rule_probe_m_ = plane + 0.5 * near_ceiling_gap_m_;
+  speed_rule_clearance_m_ =
+      std::hypot(disc_reach, 0.5 * near_ceiling_gap_m_) + environment_.grid().frame().resolution_m();
   airframe_radius_m_ = airframeRadius_m(vehicle);
 }
 
@@ -107,7 +116,18 @@ double FlightCostModel::standoffShortfall_m(const Eigen::Vector3d& body_m) const
 }
 
 PointConditions FlightCostModel::conditionsAt(const Eigen::Vector3d& body_m) const {
-  return farFromStructure(body_m) ? freeAirConditionsAt(body_m) : exactConditionsAt(body_m);
+  if (farFromStructure(body_m)) return freeAirConditionsAt(body_m);
+  return options_.proximity_effects ? exactConditionsAt(body_m) : speedRuleConditionsAt(body_m);
+}
+
+PointConditions FlightCostModel::speedRuleConditionsAt(const Eigen::Vector3d& body_m) const {
+  // Near the ground or a wall the band above the discs is mostly clear: one lookup says so,
+  // instead of a column search under every disc.
+  PointConditions conditions = freeAirConditionsAt(body_m);
+  const Eigen::Vector3d probe_m = body_m + speed_rule_probe_m_ * Eigen::Vector3d::UnitZ();
+  if (!environment_.contains(probe_m) || environment_.clearanceLowerBound_m(probe_m) <= speed_rule_clearance_m_)
+    conditions.nearest_ceiling_gap_m = environment_.nearestCeilingGap_m(body_m);
+  return conditions;
 }
 
 PointConditions FlightCostModel::freeAirConditionsAt(const Eigen::Vector3d& body_m) const {
@@ -152,7 +172,7 @@ std::vector<PointConditions> FlightCostModel::sampleConditions(const Eigen::Vect
     if (skip_free_air && farFromStructure(point)) {
       conditions.push_back(freeAirConditionsAt(point));
     } else if (!options_.proximity_effects) {
-      conditions.push_back(exactConditionsAt(point));
+      conditions.push_back(speedRuleConditionsAt(point));
     } else {
       near.push_back(point);
       near_index.push_back(conditions.size());
@@ -167,9 +187,27 @@ std::vector<PointConditions> FlightCostModel::sampleConditions(const Eigen::Vect
   return conditions;
 }
 
+std::optional<PointConditions> FlightCostModel::freeAirAlong(const Eigen::Vector3d& from_m,
+                                                             const Eigen::Vector3d& to_m) const {
+  // Clearance is 1-Lipschitz: every point of the motion is at least the midpoint's lower bound
+  // less half the length from structure. Beyond free_air_clearance_m_ every sample's exact
+  // conditions are free air's, and beyond the standoff its shortfall is 0, so one conditions
+  // serves every sample, the same to the bit as looking each up.
+  const Eigen::Vector3d middle_m = 0.5 * (from_m + to_m);
+  if (!environment_.contains(from_m) || !environment_.contains(to_m)) return std::nullopt;
+  const double clear_m = environment_.clearanceLowerBound_m(middle_m) - 0.5 * (to_m - from_m).norm();
+  const double standoff_m = options_.standoff_m == 0.0 ? 0.0 : options_.standoff_m + airframe_radius_m_;
+  if (!(clear_m > free_air_clearance_m_ && clear_m >= standoff_m)) return std::nullopt;
+  PointConditions conditions;
+  conditions.rotor_count = energy_.rotorCount();
+  return conditions;
+}
+
 std::pair<MotionTotals, MotionTotals> FlightCostModel::integrateBothWays(const Eigen::Vector3d& from_m,
                                                                          const Eigen::Vector3d& to_m) const {
   if ((to_m - from_m).norm() == 0.0) return {};
+  if (const std::optional<PointConditions> air = freeAirAlong(from_m, to_m))
+    return integrateBothWays(from_m, to_m, [&](const Eigen::Vector3d&) -> const PointConditions& { return *air; });
   const std::vector<PointConditions> conditions = conditionsAlong(from_m, to_m);
   std::size_t next = 0;  // integrateBothWays visits the samples in conditionsAlong's order
   return integrateBothWays(from_m, to_m,
@@ -247,6 +285,8 @@ energy::CurrentBreakdown FlightCostModel::breakdown(const PointConditions& condi
 
 MotionTotals FlightCostModel::integrate(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
   if ((to_m - from_m).norm() == 0.0) return {};
+  if (const std::optional<PointConditions> air = freeAirAlong(from_m, to_m))
+    return integrate(from_m, to_m, [&](const Eigen::Vector3d&) -> const PointConditions& { return *air; });
   const std::vector<PointConditions> conditions = conditionsAlong(from_m, to_m);
   std::size_t next = 0;  // integrate visits the samples in conditionsAlong's order
   return integrate(from_m, to_m, [&](const Eigen::Vector3d&) -> const PointConditions& { return conditions[next++]; });

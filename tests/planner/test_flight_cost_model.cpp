@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace ceilplan::testing {
@@ -101,6 +102,101 @@ TEST(FlightCostModel, MotionsShareGapLookupsAndGiveEachSampleItsOwnConditions) {
     EXPECT_EQ(forth.shortfall_m2, forth_each.shortfall_m2) << m;
   }
   EXPECT_GT(near_ceiling, 100);  // the motions met the beams and the ceiling, not only free air
+}
+
+TEST(FlightCostModel, AMotionWhollyInFreeAirCostsWhatItsSamplesLookedUpOneByOneDo) {
+  // The corridor's middle is more than a metre from the floor, the ceiling and the walls: motions
+  // there are costed from one lookup (FlightCostModel::integrate), motions reaching towards the
+  // structure sample by sample, and both must cost what each sample looked up alone does, and
+  // what it does with every gap looked up (exactConditionsAt: free air's skipped lookups change
+  // nothing the cost sees), with and without the proximity effects, and with a standoff that
+  // reaches beyond the rotors' reach.
+  CorridorModels scene;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> across(-1.6, 1.6), along(0.5, 5.5), height(0.9, 2.8), reach(0.05, 3.0);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const bool proximity : {true, false})
+    for (const double standoff_m : {0.0, 0.5}) {
+      CostModelOptions options;
+      options.proximity_effects = proximity;
+      options.standoff_m = standoff_m;
+      const FlightCostModel model(scene.environment, scene.energy, options);
+      int in_free_air = 0, near_structure = 0;
+      for (int m = 0; m < 400; ++m) {
+        const Eigen::Vector3d a(along(random), across(random), height(random));
+        const double length_m = m % 2 ? reach(random) : 0.2 * reach(random);
+        const Eigen::Vector3d b = a + length_m * Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized();
+        if (!scene.environment.contains(b)) continue;
+        const auto each = [&](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
+        const auto exact = [&](const Eigen::Vector3d& p) { return model.exactConditionsAt(p); };
+        const planner::MotionTotals once = model.integrate(a, b);
+        for (const planner::MotionTotals& sampled : {model.integrate(a, b, each), model.integrate(a, b, exact)}) {
+          EXPECT_EQ(once.charge_ah, sampled.charge_ah) << m;
+          EXPECT_EQ(once.duration_s, sampled.duration_s) << m;
+          EXPECT_EQ(once.shortfall_m2, sampled.shortfall_m2) << m;
+        }
+        const auto [forth, back] = model.integrateBothWays(a, b);
+        const auto [forth_each, back_each] = model.integrateBothWays(a, b, each);
+        EXPECT_EQ(forth.charge_ah, forth_each.charge_ah) << m;
+        EXPECT_EQ(back.charge_ah, back_each.charge_ah) << m;
+        EXPECT_EQ(back.shortfall_m2, back_each.shortfall_m2) << m;
+        // Farther than any rotor's reach (under 0.8 m for this vehicle) and than the standoff.
+        in_free_air += scene.environment.clearance_m(0.5 * (a + b)) - 0.5 * (b - a).norm() > 0.8 + standoff_m;
+        bool felt = false;  // some sample feels the structure: a gap, the speed rule or the standoff
+        const int intervals = model.intervalCount(a, b);
+        for (int k = 0; k <= intervals && !felt; ++k) {
+          const planner::PointConditions c = model.conditionsAt(a + (b - a) * (double(k) / intervals));
+          felt = c.standoff_shortfall_m > 0.0 || model.nearCeiling(c) || std::isfinite(c.ground_gap_m);
+          for (int r = 0; r < c.rotor_count; ++r) felt = felt || c.rotors[r].coverage > 0.0;
+        }
+        near_structure += felt;
+      }
+      EXPECT_GT(in_free_air, standoff_m > 0.0 ? 10 : 100) << proximity << " " << standoff_m;
+      EXPECT_GT(near_structure, 50) << proximity << " " << standoff_m;
+    }
+}
+
+TEST(FlightCostModel, WithoutProximityEffectsOnlyTheSpeedRulesCeilingIsLookedUp) {
+  // Free mode's rotors see free air: only a ceiling closer than the speed rule's gap over a disc
+  // matters, so the model skips the lookups farther from structure than that. Beside the beam a
+  // rotor's disc reaches under its edge while the body is well clear of it: those samples must
+  // still slow down, as every gap looked up says.
+  const environment::OccupancyMap map = beamRoom();
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  CostModelOptions options;
+  options.proximity_effects = false;
+  const FlightCostModel model(environment, energy, options);
+  std::mt19937 random(27);
+  std::uniform_real_distribution<double> x(-0.8, 1.1), y(-0.6, 0.6), z(1.2, 1.7), unit(-1.0, 1.0), reach(0.05, 1.0);
+  int slowed_beside = 0;
+  for (int m = 0; m < 400; ++m) {
+    const Eigen::Vector3d a(x(random), y(random), z(random));
+    const Eigen::Vector3d b =
+        a + reach(random) * Eigen::Vector3d(unit(random), unit(random), 0.2 * unit(random)).normalized();
+    if (!environment.contains(b) || !environment.isStateValid(a)) continue;
+    const auto exact = [&](const Eigen::Vector3d& p) { return model.exactConditionsAt(p); };
+    const planner::MotionTotals once = model.integrate(a, b), looked_up = model.integrate(a, b, exact);
+    EXPECT_EQ(once.charge_ah, looked_up.charge_ah) << m;
+    EXPECT_EQ(once.duration_s, looked_up.duration_s) << m;
+    const int intervals = model.intervalCount(a, b);
+    for (int k = 0; k <= intervals; ++k) {
+      const Eigen::Vector3d p = a + (b - a) * (double(k) / intervals);
+      slowed_beside += model.nearCeiling(model.exactConditionsAt(p)) && environment.clearance_m(p) > 0.3;
+    }
+  }
+  EXPECT_GT(slowed_beside, 20);
+  // Bodies approaching the beam below its underside (1.6 m), a disc's rim reaching under its edge:
+  // each slows down exactly where every gap looked up says so.
+  int slowed = 0;
+  for (double x = -0.7; x < -0.05; x += 0.01)
+    for (double plane_gap_m = 0.02; plane_gap_m < 0.5; plane_gap_m += 0.03) {
+      const Eigen::Vector3d p(x, 0.013, 1.6 - plane_gap_m - quad().rotor_plane_height_m);
+      const bool near = model.nearCeiling(model.exactConditionsAt(p));
+      EXPECT_EQ(model.nearCeiling(model.conditionsAt(p)), near) << p.transpose();
+      slowed += near;
+    }
+  EXPECT_GT(slowed, 50);
 }
 
 TEST(FlightCostModel, VerticalMotionsFollowClimbAndDescentRates) {

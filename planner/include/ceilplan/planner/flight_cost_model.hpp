@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -286,11 +287,18 @@ class FlightCostModel {
   CostModelOptions options_;
   double step_m_;
   double standoffShortfall_m(const Eigen::Vector3d& body_m) const;
+  /// Free air's conditions when they hold at every sample of the motion, from one lookup.
+  std::optional<PointConditions> freeAirAlong(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
   /// conditionsAt where farFromStructure holds.
   PointConditions freeAirConditionsAt(const Eigen::Vector3d& body_m) const;
+  /// conditionsAt near structure with the proximity effects off: the speed rule's ceiling only,
+  /// its columns searched unless one lookup above the rotor planes finds none within its gap.
+  PointConditions speedRuleConditionsAt(const Eigen::Vector3d& body_m) const;
 
   double near_ceiling_gap_m_;
   double free_air_clearance_m_;       ///< beyond it from the body centre, no surface can affect a rotor
+  double speed_rule_probe_m_;         ///< above the body centre, the middle of the speed rule's band over the discs
+  double speed_rule_clearance_m_;     ///< beyond it from there, no ceiling lies in that band
   double airframe_radius_m_;          ///< the airframe's bounding sphere, which the standoff is kept from
   Eigen::Vector2d air_velocity_m_s_;  ///< the wind in free air
 };
