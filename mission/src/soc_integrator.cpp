@@ -1,5 +1,8 @@
 #include "ceilplan/mission/soc_integrator.hpp"
 
+#include "ceilplan/core/error.hpp"
+#include "ceilplan/core/format.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -14,6 +17,25 @@ void flyProfile(SocIntegrator& flight, const std::vector<LoadSample>& profile, c
     if (visit) visit(k, current_a);
     previous_a = current_a;
   }
+}
+
+std::vector<LoadSample> stepProfile(const std::vector<LoadSample>& profile, double step_s) {
+  if (!(step_s > 0.0) || !std::isfinite(step_s))
+    throw ceilplan::InputError("a profile's step must be a positive number of seconds, got " + formatNumber(step_s));
+  if (profile.size() < 3) return profile;
+  std::vector<LoadSample> steps;
+  for (std::size_t first = 0, last = 0; first + 1 < profile.size(); first = last) {
+    double integral = 0.0;
+    for (last = first + 1;; ++last) {
+      integral += 0.5 * (profile[last - 1].load + profile[last].load) * (profile[last].t_s - profile[last - 1].t_s);
+      if (last + 1 == profile.size() || profile[last + 1].t_s - profile[first].t_s > step_s) break;
+    }
+    const double duration_s = profile[last].t_s - profile[first].t_s;
+    const double load = duration_s > 0.0 ? integral / duration_s : 0.5 * (profile[first].load + profile[last].load);
+    steps.push_back({profile[first].t_s, load});
+    steps.push_back({profile[last].t_s, load});
+  }
+  return steps;
 }
 
 std::size_t hoverSteps(double duration_s) {

@@ -962,7 +962,9 @@ class SparseLegs {
   };
 
   // Scores the legs of `pairs` that have neither samples nor a profile kept (home_costs_), on the
-  // tour's threads, and keeps their profiles.
+  // tour's threads, and keeps their profiles in a hover's steps: the split flies thousands of
+  // ways home from its split points, and a way home as long as the structure is tens of thousands
+  // of samples, in steps a few hundred.
   void profileHomeLegs(Pairs pairs) {
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
@@ -977,6 +979,7 @@ class SparseLegs {
       planner::PathEvaluation evaluation = leg.evaluation;  // its totals as estimated (a blocked leg's doubled)
       evaluation.samples = score_(from, to, leg.waypoints).samples;
       costs[k] = legCost(evaluation, context_);
+      costs[k].load_profile = stepProfile(costs[k].load_profile, kHoverStepS);
     });
     for (std::size_t k = 0; k < bare.size(); ++k) home_costs_(bare[k].first, bare[k].second) = std::move(costs[k]);
   }

@@ -54,6 +54,15 @@ using SampleVisitor = std::function<void(std::size_t sample, double current_a)>;
 
 /// Flies a load profile (at least one sample, times increasing) from the integrator's state.
 void flyProfile(SocIntegrator& flight, const std::vector<LoadSample>& profile, const SampleVisitor& visit = {});
+/// `profile` in steps of at most `step_s` (an interval longer than that is a step of its own),
+/// each drawing its mean load throughout: the integral of the load over the step (trapezoid rule,
+/// as flyProfile draws it) over the step's length. Two samples per step, at its start and end; a
+/// step's end and the next one's start share a time. Flown from any SOC it draws the profile's
+/// charge but for how the current curves in the load within a step, and the SOC's fall within a
+/// step, which flyProfile's intervals and a hover's steps (kHoverStepS) leave too. Profiles of
+/// fewer than 3 samples come back as they are. Throws ceilplan::InputError for a step that is
+/// not a positive number.
+std::vector<LoadSample> stepProfile(const std::vector<LoadSample>& profile, double step_s);
 /// Draws `load` for `duration_s` in steps of at most kHoverStepS; visit(k, current) for k = 0..steps.
 void hover(SocIntegrator& flight, double load, double duration_s, const SampleVisitor& visit = {});
 /// The number of steps hover() takes.
