@@ -587,18 +587,22 @@ constexpr int kSearchRounds = 2;
 // line's charge until it is routed.
 constexpr double kBlockedLegFactor = 2.0;
 
+// What a leg draws at each of its samples, as a LegScorer's samples have it.
+using LegLoads = std::function<std::vector<LoadSample>(int from, int to, const std::vector<Eigen::Vector3d>&)>;
+
 // The legs of a large tour: estimated where the order search or the split looks, routed and
 // refined where the plan flies.
 class SparseLegs {
  public:
   SparseLegs(TourResult& tour, const PlanningContext& context, FlightMode mode, const TourOptions& options,
-             const LegScorer& score, const LegScorer& score_totals)
+             const LegScorer& score, const LegScorer& score_totals, const LegLoads& loads)
       : tour_(tour),
         context_(context),
         mode_(mode),
         options_(options),
         score_(score),
         score_totals_(score_totals),
+        loads_(loads),
         planning_(context.mode(mode)),
         neighbours_(nearestPlaces(tour.places_m,
                                   std::min<int>(options.neighbours, static_cast<int>(tour.places_m.size()) - 1))) {
@@ -977,8 +981,13 @@ class SparseLegs {
       const auto [from, to] = bare[k];
       const TourLeg& leg = tour_.legs.at(from, to);
       planner::PathEvaluation evaluation = leg.evaluation;  // its totals as estimated (a blocked leg's doubled)
-      evaluation.samples = score_(from, to, leg.waypoints).samples;
-      costs[k] = legCost(evaluation, context_);
+      if (context_.vehicle().calibration) {
+        evaluation.samples = score_(from, to, leg.waypoints).samples;  // the sensitivities read every sample
+        costs[k] = legCost(evaluation, context_);
+      } else {
+        costs[k] = legCost(evaluation, context_);
+        costs[k].load_profile = loads_(from, to, leg.waypoints);
+      }
       costs[k].load_profile = stepProfile(costs[k].load_profile, kHoverStepS);
     });
     for (std::size_t k = 0; k < bare.size(); ++k) home_costs_(bare[k].first, bare[k].second) = std::move(costs[k]);
@@ -1018,6 +1027,7 @@ class SparseLegs {
   const TourOptions& options_;
   const LegScorer& score_;
   const LegScorer& score_totals_;  // an estimate's: evaluatePathTotals, what score_ gives without samples
+  const LegLoads& loads_;          // what score_'s samples draw, without the rest of each sample
   PlanningContext::Mode planning_;
   std::vector<std::vector<int>> neighbours_;
   std::unique_ptr<TourRoadmap> roadmap_;
@@ -1113,6 +1123,14 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
   const LegScorer score_totals = [&](int from, int to, const std::vector<Eigen::Vector3d>& waypoints) {
     return planner::evaluatePathTotals(context.fullModel(), pack, tour.start_soc, waypoints, speedCap(from, to));
   };
+  const LegLoads loads = [&](int from, int to, const std::vector<Eigen::Vector3d>& waypoints) {
+    std::vector<planner::PathDraw> draws;
+    planner::evaluatePathTotals(context.fullModel(), pack, tour.start_soc, waypoints, speedCap(from, to), draws);
+    std::vector<LoadSample> profile;
+    profile.reserve(draws.size());
+    for (const planner::PathDraw& draw : draws) profile.push_back({draw.t_s, draw.propulsion_power_w});
+    return profile;
+  };
   const auto legPlannerFor = [&](int from, int to) {
     return legPlanner(context, mode, tour.places_m[from], tour.places_m[to]);
   };
@@ -1131,7 +1149,7 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
                                  stageProgress(options, flightModeName(tour.mode) + " mode: planning legs"));
   }
   if (!all_pairs) {
-    sparse = std::make_unique<SparseLegs>(tour, context, mode, options, score, score_totals);
+    sparse = std::make_unique<SparseLegs>(tour, context, mode, options, score, score_totals, loads);
     sparse->estimateNeighbours();
   }
   tour.times.legs_s = clock.lap_s(tour.times.legs_cpu_s);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace ceilplan::planner {
 namespace {
@@ -90,6 +91,21 @@ PathEvaluation integratePath(const FlightCostModel& model, const battery::Pack& 
   return result;
 }
 
+// evaluatePathTotals: the integration on conditionsAlong (no gap lookup far from structure),
+// `keep` seeing each sample, and NaN for the figures only each sample's own lookups give.
+template <class Keep>
+PathEvaluation integrateTotals(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
+                               const std::vector<Eigen::Vector3d>& waypoints_m, double max_speed_m_s, Keep&& keep) {
+  requireEvaluable(pack, start_soc, waypoints_m, max_speed_m_s);
+  PathEvaluation result = integratePath(
+      model, pack, start_soc, waypoints_m, max_speed_m_s,
+      [&](const Eigen::Vector3d& from, const Eigen::Vector3d& to) { return model.conditionsAlong(from, to); },
+      std::forward<Keep>(keep));
+  const double unknown = std::numeric_limits<double>::quiet_NaN();
+  result.min_clearance_m = result.min_ceiling_gap_m = result.assumed_free_m = unknown;
+  return result;
+}
+
 }  // namespace
 
 PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
@@ -130,13 +146,23 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
 
 PathEvaluation evaluatePathTotals(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
                                   const std::vector<Eigen::Vector3d>& waypoints_m, double max_speed_m_s) {
-  requireEvaluable(pack, start_soc, waypoints_m, max_speed_m_s);
-  PathEvaluation result = integratePath(
-      model, pack, start_soc, waypoints_m, max_speed_m_s,
-      [&](const Eigen::Vector3d& from, const Eigen::Vector3d& to) { return model.conditionsAlong(from, to); },
-      [](PathSample&&) {});
-  const double unknown = std::numeric_limits<double>::quiet_NaN();
-  result.min_clearance_m = result.min_ceiling_gap_m = result.assumed_free_m = unknown;
+  return integrateTotals(model, pack, start_soc, waypoints_m, max_speed_m_s, [](PathSample&&) {});
+}
+
+PathEvaluation evaluatePathTotals(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
+                                  const std::vector<Eigen::Vector3d>& waypoints_m, double max_speed_m_s,
+                                  std::vector<PathDraw>& draws) {
+  draws.clear();
+  PathEvaluation result = integrateTotals(model, pack, start_soc, waypoints_m, max_speed_m_s, [&](PathSample&& sample) {
+    draws.push_back({sample.t_s, sample.propulsion_power_w});
+  });
+  if (draws.empty()) {
+    // As evaluatePath: a path that stays put is its place, hovering, at no time.
+    const PointConditions conditions = model.conditionsAt(waypoints_m.front());
+    PathSample hovering;
+    setDraw(hovering, model, conditions, model.hoverAt(conditions), start_soc);
+    draws.push_back({0.0, hovering.propulsion_power_w});
+  }
   return result;
 }
 

@@ -70,4 +70,18 @@ PathEvaluation evaluatePathTotals(const FlightCostModel& model, const battery::P
                                   const std::vector<Eigen::Vector3d>& waypoints_m,
                                   double max_speed_m_s = std::numeric_limits<double>::infinity());
 
+/// What a path draws at one of evaluatePath's samples: enough to integrate a pack's SOC along it
+/// from any start.
+struct PathDraw {
+  double t_s = 0.0;                 ///< time from the path's start
+  double propulsion_power_w = 0.0;  ///< to the motors: independent of the SOC
+};
+
+/// evaluatePathTotals, and in `draws` the time and propulsion power of each of evaluatePath's
+/// samples, the same to the bit as those samples' own (without their clearance and gap lookups):
+/// what a tour's split flies a long way home by. Throws as evaluatePath does.
+PathEvaluation evaluatePathTotals(const FlightCostModel& model, const battery::Pack& pack, double start_soc,
+                                  const std::vector<Eigen::Vector3d>& waypoints_m, double max_speed_m_s,
+                                  std::vector<PathDraw>& draws);
+
 }  // namespace ceilplan::planner
