@@ -20,6 +20,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -69,7 +70,10 @@ class DevTools:
                  "--mute-audio", "about:blank"]
         if os.geteuid() == 0:
             flags.insert(1, "--no-sandbox")  # Chromium refuses to run its sandbox as root
-        self.process = subprocess.Popen(flags, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        # Its own process group: closing ends the renderers and helpers too, which otherwise may
+        # still write into the profile while the temporary directory is removed.
+        self.process = subprocess.Popen(flags, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                                        start_new_session=True)
         endpoint, log = None, []
         deadline = time.time() + 60
         while time.time() < deadline and endpoint is None:
@@ -139,11 +143,22 @@ class DevTools:
             self.socket.close()
         except Exception:
             pass
-        self.process.terminate()
-        try:
-            self.process.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            self.process.kill()
+        for sig in (signal.SIGTERM, signal.SIGKILL):
+            try:
+                os.killpg(self.process.pid, sig)
+            except ProcessLookupError:
+                break
+            try:
+                self.process.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                pass
+        # Whatever of the group outlived its leader goes before the profile does.
+        for _ in range(100):
+            try:
+                os.killpg(self.process.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                break
+            time.sleep(0.05)
 
 
 def scene_colours(image, rect):
