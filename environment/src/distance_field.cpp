@@ -3,6 +3,7 @@
 #include "ceilplan/core/parallel_for.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -235,8 +236,10 @@ double DistanceField::boxDistance_m(const Eigen::Vector3d& point_m, std::int32_t
 
 double DistanceField::boundaryDistance_m(const Eigen::Vector3d& point_m) const {
   if (!unknown_is_blocked_) return kInfinity;
-  const Eigen::AlignedBox3d box = frame_.bounds();
-  const double inside = std::min((point_m - box.min()).minCoeff(), (box.max() - point_m).minCoeff());
+  double inside = kInfinity;  // to the nearest face of the grid's extent (frame_.bounds(), without building it)
+  for (int axis = 0; axis < 3; ++axis)
+    inside = std::min(
+        {inside, point_m[axis] - frame_.faceOf(axis, 0), frame_.faceOf(axis, frame_.size()[axis]) - point_m[axis]});
   return std::max(inside, 0.0);
 }
 
@@ -246,15 +249,22 @@ double DistanceField::distance_m(const Eigen::Vector3d& point_m) const {
   Index3 centre;
   for (int axis = 0; axis < 3; ++axis)
     centre[axis] = std::clamp(frame_.indexOf(axis, point_m[axis]), 0, frame_.size()[axis] - 1);
-  double best = boundary;
+  // Neighbouring voxels mostly share their nearest blocked voxel: each distinct one is measured
+  // once (the minimum over the same set, so the same value).
+  std::array<std::int32_t, 27> features;
+  int distinct = 0;
   for (int dk = -1; dk <= 1; ++dk)
     for (int dj = -1; dj <= 1; ++dj)
       for (int di = -1; di <= 1; ++di) {
         const int i = centre[0] + di, j = centre[1] + dj, k = centre[2] + dk;
         if (!frame_.inside(i, j, k)) continue;
         const std::int32_t feature = nearest_[frame_.linear(i, j, k)];
-        if (feature >= 0) best = std::min(best, boxDistance_m(point_m, feature));
+        if (feature >= 0 &&
+            std::find(features.begin(), features.begin() + distinct, feature) == features.begin() + distinct)
+          features[distinct++] = feature;
       }
+  double best = boundary;
+  for (int f = 0; f < distinct; ++f) best = std::min(best, boxDistance_m(point_m, features[f]));
   return best;
 }
 
