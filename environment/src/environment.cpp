@@ -24,6 +24,10 @@ constexpr int kKeptGaps = 256;  // columns under a rotor disc: 9 for a 10" rotor
 // columns); a long diagonal motion's box is mostly columns none of its discs reach.
 constexpr long kSpansPerPoint = 32;
 constexpr long kSpansBeyondPoints = 256;
+// Beyond those columns, a batch is asked in runs of this many consecutive points (1.6 m of a
+// motion sampled every 0.05 m), each run's columns looked up once for it, before falling back to
+// a search of every column under every disc at every point.
+constexpr std::size_t kRunPoints = 32;
 
 // Calls `visit(i, j, n)` for every column the disc of `radius_m` around `centre_m` overlaps with
 // positive area, n counting them, until one returns false; returns whether none did.
@@ -204,93 +208,104 @@ Environment::CeilingAndGround Environment::ceilingAndGround(const Eigen::Vector3
 void Environment::ceilingAndGroundAlong(const std::vector<Eigen::Vector3d>& bodies_m,
                                         const std::function<void(std::size_t, const CeilingAndGround&)>& visit) const {
   for (const Eigen::Vector3d& body_m : bodies_m) requireInside(body_m, "ceiling gap");
-  if (bodies_m.empty()) return;
   CeilingAndGround both;
-  // The columns a disc at any of the points can reach (a voxel of margin against rounding): one
-  // free span each, unless the points spread too far apart for that to pay.
-  const GridFrame& frame = grid().frame();
-  Eigen::Vector2d reach_m = Eigen::Vector2d::Zero();
-  for (const Eigen::Vector2d& offset : vehicle_.rotor_positions_m) reach_m = reach_m.cwiseMax(offset.cwiseAbs());
-  reach_m.array() += vehicle_.rotor_radius_m + frame.resolution_m();
-  Eigen::Vector2d low_m = bodies_m.front().head<2>(), high_m = low_m;
-  for (const Eigen::Vector3d& body_m : bodies_m)
-    low_m = low_m.cwiseMin(body_m.head<2>()), high_m = high_m.cwiseMax(body_m.head<2>());
-  const int i0 = frame.indexOf(0, low_m.x() - reach_m.x()), i1 = frame.indexOf(0, high_m.x() + reach_m.x());
-  const int j0 = frame.indexOf(1, low_m.y() - reach_m.y()), j1 = frame.indexOf(1, high_m.y() + reach_m.y());
-  const long width = i1 - i0 + 1, columns = width * (j1 - j0 + 1);
-  if (columns > kSpansPerPoint * static_cast<long>(bodies_m.size()) + kSpansBeyondPoints) {
-    for (std::size_t k = 0; k < bodies_m.size(); ++k) {
-      gaps(bodies_m[k], &both.ceiling, &both.ground);
-      visit(k, both);
-    }
-    return;
-  }
-  // A column's free span and what surfaceGap makes of around()'s boundaries inside it.
-  struct Span {
-    double lo = 1.0, hi = 0.0;  // empty until looked up, and where the height lies in no span
-    double above_face_m = 0.0, below_face_m = 0.0;
-    bool above_surface = false, below_surface = false, looked_up = false;
-    bool operator==(const Span& o) const {
-      return lo == o.lo && hi == o.hi && above_face_m == o.above_face_m && below_face_m == o.below_face_m &&
-             above_surface == o.above_surface && below_surface == o.below_surface;
-    }
-    bool holds(double t) const { return lo < t && t < hi; }
-    std::array<double, 2> gaps(double z_m) const {
-      return {above_surface ? std::abs(above_face_m - z_m) : kInfinity,
-              below_surface ? std::abs(below_face_m - z_m) : kInfinity};
-    }
-  };
-  std::vector<Span> spans(columns);
-  // Column (i, j), inside the box; looked up at height z_m the first time.
-  const auto spanOf = [&](int i, int j, double z_m) -> const Span& {
-    Span& span = spans[(j - j0) * width + (i - i0)];
-    if (!span.looked_up) {
-      span.looked_up = true;
-      if (const std::optional<ColumnIndex::FreeSpan> free = columns_->freeSpan(i, j, z_m)) {
-        span.lo = free->lo, span.hi = free->hi;
-        span.above_face_m = free->around.above.face_m, span.below_face_m = free->around.below.face_m;
-        span.above_surface = isSurface(free->around.above), span.below_surface = isSurface(free->around.below);
+  // The points [begin, end): the whole batch, or one run of it.
+  const auto answer = [&](const auto& self, std::size_t begin, std::size_t end) -> void {
+    if (begin == end) return;
+    const Eigen::Vector3d* const run_m = bodies_m.data() + begin;
+    const std::size_t count = end - begin;
+    // The columns a disc at any of the points can reach (a voxel of margin against rounding): one
+    // free span each, unless the points spread too far apart for that to pay.
+    const GridFrame& frame = grid().frame();
+    Eigen::Vector2d reach_m = Eigen::Vector2d::Zero();
+    for (const Eigen::Vector2d& offset : vehicle_.rotor_positions_m) reach_m = reach_m.cwiseMax(offset.cwiseAbs());
+    reach_m.array() += vehicle_.rotor_radius_m + frame.resolution_m();
+    Eigen::Vector2d low_m = run_m[0].head<2>(), high_m = low_m;
+    for (std::size_t k = 0; k < count; ++k)
+      low_m = low_m.cwiseMin(run_m[k].head<2>()), high_m = high_m.cwiseMax(run_m[k].head<2>());
+    const int i0 = frame.indexOf(0, low_m.x() - reach_m.x()), i1 = frame.indexOf(0, high_m.x() + reach_m.x());
+    const int j0 = frame.indexOf(1, low_m.y() - reach_m.y()), j1 = frame.indexOf(1, high_m.y() + reach_m.y());
+    const long width = i1 - i0 + 1, columns = width * (j1 - j0 + 1);
+    if (columns > kSpansPerPoint * static_cast<long>(count) + kSpansBeyondPoints) {
+      if (count > kRunPoints) {
+        // A long motion: runs of consecutive samples, each with the spans of its own columns.
+        for (std::size_t run = begin; run < end; run += kRunPoints) self(self, run, std::min(end, run + kRunPoints));
+        return;
       }
+      for (std::size_t k = 0; k < count; ++k) {
+        gaps(run_m[k], &both.ceiling, &both.ground);
+        visit(begin + k, both);
+      }
+      return;
     }
-    return span;
-  };
-  const auto column_gaps = [&](int i, int j, double z_m) -> std::array<double, 2> {
-    if (i >= i0 && i <= i1 && j >= j0 && j <= j1) {  // always, but exact either way
-      const Span& span = spanOf(i, j, z_m);
-      if (span.holds(columns_->voxelHeight(z_m))) return span.gaps(z_m);
+    // A column's free span and what surfaceGap makes of around()'s boundaries inside it.
+    struct Span {
+      double lo = 1.0, hi = 0.0;  // empty until looked up, and where the height lies in no span
+      double above_face_m = 0.0, below_face_m = 0.0;
+      bool above_surface = false, below_surface = false, looked_up = false;
+      bool operator==(const Span& o) const {
+        return lo == o.lo && hi == o.hi && above_face_m == o.above_face_m && below_face_m == o.below_face_m &&
+               above_surface == o.above_surface && below_surface == o.below_surface;
+      }
+      bool holds(double t) const { return lo < t && t < hi; }
+      std::array<double, 2> gaps(double z_m) const {
+        return {above_surface ? std::abs(above_face_m - z_m) : kInfinity,
+                below_surface ? std::abs(below_face_m - z_m) : kInfinity};
+      }
+    };
+    std::vector<Span> spans(columns);
+    // Column (i, j), inside the box; looked up at height z_m the first time.
+    const auto spanOf = [&](int i, int j, double z_m) -> const Span& {
+      Span& span = spans[(j - j0) * width + (i - i0)];
+      if (!span.looked_up) {
+        span.looked_up = true;
+        if (const std::optional<ColumnIndex::FreeSpan> free = columns_->freeSpan(i, j, z_m)) {
+          span.lo = free->lo, span.hi = free->hi;
+          span.above_face_m = free->around.above.face_m, span.below_face_m = free->around.below.face_m;
+          span.above_surface = isSurface(free->around.above), span.below_surface = isSurface(free->around.below);
+        }
+      }
+      return span;
+    };
+    const auto column_gaps = [&](int i, int j, double z_m) -> std::array<double, 2> {
+      if (i >= i0 && i <= i1 && j >= j0 && j <= j1) {  // always, but exact either way
+        const Span& span = spanOf(i, j, z_m);
+        if (span.holds(columns_->voxelHeight(z_m))) return span.gaps(z_m);
+      }
+      return searchedColumnGaps(i, j, z_m);
+    };
+    // A rotor whose disc, at every point, covers columns of one span (every column in the
+    // rectangle the discs sweep): at a height inside it each column gives the same gaps, so
+    // gaps() needs none of them.
+    const double radius = vehicle_.rotor_radius_m, plane_height = vehicle_.rotor_plane_height_m;
+    std::vector<const Span*> uniform(vehicle_.rotor_positions_m.size(), nullptr);
+    for (std::size_t r = 0; r < uniform.size(); ++r) {
+      int ri0 = i1, ri1 = i0, rj0 = j1, rj1 = j0;
+      for (std::size_t k = 0; k < count; ++k) {  // as forEachDiscColumn bounds each disc
+        const Eigen::Vector2d centre = run_m[k].head<2>() + vehicle_.rotor_positions_m[r];
+        ri0 = std::min(ri0, frame.indexOf(0, centre.x() - radius)),
+        ri1 = std::max(ri1, frame.indexOf(0, centre.x() + radius));
+        rj0 = std::min(rj0, frame.indexOf(1, centre.y() - radius)),
+        rj1 = std::max(rj1, frame.indexOf(1, centre.y() + radius));
+      }
+      if (ri0 < i0 || ri1 > i1 || rj0 < j0 || rj1 > j1) continue;  // never, but exact either way
+      const double z_m = run_m[0].z() + plane_height;
+      const Span& first = spanOf(ri0, rj0, z_m);
+      bool same = first.lo < first.hi;
+      for (int j = rj0; j <= rj1 && same; ++j)
+        for (int i = ri0; i <= ri1 && same; ++i) same = spanOf(i, j, z_m) == first;
+      if (same) uniform[r] = &first;
     }
-    return searchedColumnGaps(i, j, z_m);
-  };
-  // A rotor whose disc, at every point, covers columns of one span (every column in the
-  // rectangle the discs sweep): at a height inside it each column gives the same gaps, so
-  // gaps() needs none of them.
-  const double radius = vehicle_.rotor_radius_m, plane_height = vehicle_.rotor_plane_height_m;
-  std::vector<const Span*> uniform(vehicle_.rotor_positions_m.size(), nullptr);
-  for (std::size_t r = 0; r < uniform.size(); ++r) {
-    int ri0 = i1, ri1 = i0, rj0 = j1, rj1 = j0;
-    for (const Eigen::Vector3d& body_m : bodies_m) {  // as forEachDiscColumn bounds each disc
-      const Eigen::Vector2d centre = body_m.head<2>() + vehicle_.rotor_positions_m[r];
-      ri0 = std::min(ri0, frame.indexOf(0, centre.x() - radius)),
-      ri1 = std::max(ri1, frame.indexOf(0, centre.x() + radius));
-      rj0 = std::min(rj0, frame.indexOf(1, centre.y() - radius)),
-      rj1 = std::max(rj1, frame.indexOf(1, centre.y() + radius));
+    const auto uniform_gaps = [&](std::size_t r, double z_m) -> std::optional<std::array<double, 2>> {
+      if (!uniform[r] || !uniform[r]->holds(columns_->voxelHeight(z_m))) return std::nullopt;
+      return uniform[r]->gaps(z_m);
+    };
+    for (std::size_t k = 0; k < count; ++k) {
+      gaps(run_m[k], &both.ceiling, &both.ground, column_gaps, uniform_gaps);
+      visit(begin + k, both);
     }
-    if (ri0 < i0 || ri1 > i1 || rj0 < j0 || rj1 > j1) continue;  // never, but exact either way
-    const double z_m = bodies_m.front().z() + plane_height;
-    const Span& first = spanOf(ri0, rj0, z_m);
-    bool same = first.lo < first.hi;
-    for (int j = rj0; j <= rj1 && same; ++j)
-      for (int i = ri0; i <= ri1 && same; ++i) same = spanOf(i, j, z_m) == first;
-    if (same) uniform[r] = &first;
-  }
-  const auto uniform_gaps = [&](std::size_t r, double z_m) -> std::optional<std::array<double, 2>> {
-    if (!uniform[r] || !uniform[r]->holds(columns_->voxelHeight(z_m))) return std::nullopt;
-    return uniform[r]->gaps(z_m);
   };
-  for (std::size_t k = 0; k < bodies_m.size(); ++k) {
-    gaps(bodies_m[k], &both.ceiling, &both.ground, column_gaps, uniform_gaps);
-    visit(k, both);
-  }
+  answer(answer, 0, bodies_m.size());
 }
 
 std::array<double, 2> Environment::searchedColumnGaps(int i, int j, double z_m) const {

@@ -41,9 +41,11 @@ struct Seen {
 };
 
 // `motions` seeded straight motions inside `box`: lattice edges (0.4 m along one of the 26
-// neighbour directions) and longer motions in any direction, sampled every 0.05 m as the cost
-// model samples them; each motion's samples asked together and one by one.
-Seen compareAlongMotions(const Environment& environment, const Eigen::AlignedBox3d& box, int motions, unsigned seed) {
+// neighbour directions) and longer motions in any direction (up to 3 m along each axis, or to
+// another point of the box `across`), sampled every 0.05 m as the cost model samples them; each
+// motion's samples asked together and one by one.
+Seen compareAlongMotions(const Environment& environment, const Eigen::AlignedBox3d& box, int motions, unsigned seed,
+                         bool across = false) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   Seen seen;
@@ -56,6 +58,9 @@ Seen compareAlongMotions(const Environment& environment, const Eigen::AlignedBox
       while (offset == std::array<int, 3>{0, 0, 0})
         for (int& o : offset) o = static_cast<int>(random() % 3) - 1;
       delta = 0.4 * Eigen::Vector3d(offset[0], offset[1], offset[2]);
+    } else if (across) {
+      delta = box.min() +
+              (box.max() - box.min()).cwiseProduct(Eigen::Vector3d(unit(random), unit(random), unit(random))) - from;
     } else {
       delta = Eigen::Vector3d(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5) * 6.0;
     }
@@ -98,6 +103,20 @@ TEST(GapBatch, MotionsUnderTheShippedBridgeAnswerAsSinglePointQueries) {
   EXPECT_GT(seen.covered_rotors, 10000);
   EXPECT_GT(seen.partial_rotors, 1000);
   EXPECT_GT(seen.ground_seen, 10000);
+}
+
+TEST(GapBatch, LongMotionsAnsweredInRunsAnswerAsSinglePointQueries) {
+  // A refined leg's segment is tens of metres: its samples are asked in runs, each run with the
+  // spans of its own columns.
+  const Environment environment(bridge(), testing::quad());
+  const Eigen::AlignedBox3d all = environment.grid().frame().bounds();
+  const Eigen::AlignedBox3d box(all.min() + Eigen::Vector3d(0.5, 0.5, 0.1),
+                                Eigen::Vector3d(all.max().x() - 0.5, all.max().y() - 0.5, 6.5));
+  const Seen seen = compareAlongMotions(environment, box, 300, 29, true);
+  EXPECT_GT(seen.points, 50000);
+  EXPECT_GT(seen.covered_rotors, 10000);
+  EXPECT_GT(seen.partial_rotors, 1000);
+  EXPECT_GT(seen.ground_seen, 8000);
 }
 
 TEST(GapBatch, UnknownSpaceAsASurfaceAnswersAsSinglePointQueriesToo) {
