@@ -23,6 +23,11 @@ void requireAtLeast(double value, double minimum, const char* name) {
                                formatNumber(value));
 }
 
+// The clearance of the body centre the standoff asks for (0: no standoff).
+double keptClearance_m(const CostModelOptions& options, double airframe_radius_m) {
+  return options.standoff_m == 0.0 ? 0.0 : options.standoff_m + airframe_radius_m;
+}
+
 }  // namespace
 
 void FlightSpeeds::validate(double max_speed_m_s) const {
@@ -110,7 +115,7 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
 
 double FlightCostModel::standoffShortfall_m(const Eigen::Vector3d& body_m) const {
   if (options_.standoff_m == 0.0) return 0.0;
-  const double wanted_m = options_.standoff_m + airframe_radius_m_;  // clearance of the body centre
+  const double wanted_m = keptClearance_m(options_, airframe_radius_m_);
   if (environment_.clearanceLowerBound_m(body_m) >= wanted_m) return 0.0;
   return std::max(0.0, wanted_m - environment_.clearance_m(body_m));
 }
@@ -153,24 +158,39 @@ PointConditions surfaceConditions(const environment::SurfaceGaps& ceiling, const
 
 std::vector<PointConditions> FlightCostModel::conditionsAlong(const Eigen::Vector3d& from_m,
                                                               const Eigen::Vector3d& to_m) const {
-  return sampleConditions(from_m, to_m, true);
+  return sampleConditions(from_m, to_m, Lookups::NearStructure);
 }
 
 std::vector<PointConditions> FlightCostModel::exactConditionsAlong(const Eigen::Vector3d& from_m,
                                                                    const Eigen::Vector3d& to_m) const {
-  return sampleConditions(from_m, to_m, false);
+  return sampleConditions(from_m, to_m, Lookups::Every);
 }
 
 std::vector<PointConditions> FlightCostModel::sampleConditions(const Eigen::Vector3d& from_m,
-                                                               const Eigen::Vector3d& to_m, bool skip_free_air) const {
+                                                               const Eigen::Vector3d& to_m, Lookups lookups) const {
   const int intervals = intervalCount(from_m, to_m);
   std::vector<PointConditions> conditions;
   conditions.reserve(intervals + 1);
   std::vector<Eigen::Vector3d> near;  // the samples whose gaps are looked up, together
   std::vector<std::size_t> near_index;
+  // Clearance is 1-Lipschitz: a lookup's lower bound, less the way flown since, still bounds the
+  // clearance of the samples that follow (the way between samples rounded up). Traced, while that
+  // stays beyond free_air_clearance_m_ they are in free air without a lookup of their own (their
+  // exact conditions cost the same, as freeAirAlong's), and while it stays beyond the standoff
+  // they keep it.
+  const bool skip_free_air = lookups != Lookups::Every, traced = lookups == Lookups::NearStructureTraced;
+  const double interval_m = (to_m - from_m).norm() / intervals * (1.0 + 1e-9) + 1e-12;
+  const double standoff_m = keptClearance_m(options_, airframe_radius_m_);
+  double clear_m = -std::numeric_limits<double>::infinity();
   forEachSample(from_m, to_m, intervals, [&](const Eigen::Vector3d& point) {
-    if (skip_free_air && farFromStructure(point)) {
-      conditions.push_back(freeAirConditionsAt(point));
+    clear_m -= interval_m;
+    if (skip_free_air && (!traced || !(clear_m > free_air_clearance_m_) || !environment_.contains(point)))
+      clear_m = environment_.clearanceLowerBound_m(point);  // outside the map: throws, as ever
+    if (skip_free_air && clear_m > free_air_clearance_m_) {
+      PointConditions free_air;  // as freeAirConditionsAt
+      free_air.rotor_count = energy_.rotorCount();
+      free_air.standoff_shortfall_m = clear_m >= standoff_m ? 0.0 : standoffShortfall_m(point);
+      conditions.push_back(free_air);
     } else if (!options_.proximity_effects) {
       conditions.push_back(speedRuleConditionsAt(point));
     } else {
@@ -196,8 +216,8 @@ std::optional<PointConditions> FlightCostModel::freeAirAlong(const Eigen::Vector
   const Eigen::Vector3d middle_m = 0.5 * (from_m + to_m);
   if (!environment_.contains(from_m) || !environment_.contains(to_m)) return std::nullopt;
   const double clear_m = environment_.clearanceLowerBound_m(middle_m) - 0.5 * (to_m - from_m).norm();
-  const double standoff_m = options_.standoff_m == 0.0 ? 0.0 : options_.standoff_m + airframe_radius_m_;
-  if (!(clear_m > free_air_clearance_m_ && clear_m >= standoff_m)) return std::nullopt;
+  if (!(clear_m > free_air_clearance_m_ && clear_m >= keptClearance_m(options_, airframe_radius_m_)))
+    return std::nullopt;
   PointConditions conditions;
   conditions.rotor_count = energy_.rotorCount();
   return conditions;
@@ -208,8 +228,8 @@ std::pair<MotionTotals, MotionTotals> FlightCostModel::integrateBothWays(const E
   if ((to_m - from_m).norm() == 0.0) return {};
   if (const std::optional<PointConditions> air = freeAirAlong(from_m, to_m))
     return integrateBothWays(from_m, to_m, [&](const Eigen::Vector3d&) -> const PointConditions& { return *air; });
-  const std::vector<PointConditions> conditions = conditionsAlong(from_m, to_m);
-  std::size_t next = 0;  // integrateBothWays visits the samples in conditionsAlong's order
+  const std::vector<PointConditions> conditions = sampleConditions(from_m, to_m, Lookups::NearStructureTraced);
+  std::size_t next = 0;  // integrateBothWays visits the samples in their order
   return integrateBothWays(from_m, to_m,
                            [&](const Eigen::Vector3d&) -> const PointConditions& { return conditions[next++]; });
 }
@@ -287,8 +307,8 @@ MotionTotals FlightCostModel::integrate(const Eigen::Vector3d& from_m, const Eig
   if ((to_m - from_m).norm() == 0.0) return {};
   if (const std::optional<PointConditions> air = freeAirAlong(from_m, to_m))
     return integrate(from_m, to_m, [&](const Eigen::Vector3d&) -> const PointConditions& { return *air; });
-  const std::vector<PointConditions> conditions = conditionsAlong(from_m, to_m);
-  std::size_t next = 0;  // integrate visits the samples in conditionsAlong's order
+  const std::vector<PointConditions> conditions = sampleConditions(from_m, to_m, Lookups::NearStructureTraced);
+  std::size_t next = 0;  // integrate visits the samples in their order
   return integrate(from_m, to_m, [&](const Eigen::Vector3d&) -> const PointConditions& { return conditions[next++]; });
 }
 

@@ -156,6 +156,62 @@ TEST(FlightCostModel, AMotionWhollyInFreeAirCostsWhatItsSamplesLookedUpOneByOneD
     }
 }
 
+TEST(FlightCostModel, ALongMotionCostsWhatItsSamplesLookedUpOneByOneDo) {
+  // A refined leg's segments run tens of metres, from free air to the structure and back: after
+  // one lookup the samples that lie in free air by its bound, less the way flown since, are
+  // costed without their own (FlightCostModel::integrate), and must cost what each sample looked
+  // up alone does. Under the shipped bridge, in both modes, with and without a standoff.
+  const environment::OccupancyMap map = environment::OccupancyMap::load(CEILPLAN_SOURCE_DIR "/maps/bridge.bt");
+  const environment::Environment environment(map, quad());
+  const energy::EnergyModel energy = paperEnergy();
+  const Eigen::AlignedBox3d box = environment.grid().frame().bounds();
+  std::mt19937 random(31);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto somewhere = [&] {
+    return Eigen::Vector3d(box.min() +
+                           box.sizes().cwiseProduct(Eigen::Vector3d(unit(random), unit(random), unit(random))));
+  };
+  for (const bool proximity : {true, false})
+    for (const double standoff_m : {0.0, 1.0}) {
+      CostModelOptions options;
+      options.proximity_effects = proximity;
+      options.standoff_m = standoff_m;
+      const FlightCostModel model(environment, energy, options);
+      int motions = 0, felt = 0, in_free_air = 0;
+      for (int m = 0; m < 120; ++m) {
+        const Eigen::Vector3d a = somewhere(), b = somewhere();
+        const auto each = [&](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
+        const planner::MotionTotals once = model.integrate(a, b), sampled = model.integrate(a, b, each);
+        EXPECT_EQ(once.charge_ah, sampled.charge_ah) << m;  // bit for bit
+        EXPECT_EQ(once.duration_s, sampled.duration_s) << m;
+        EXPECT_EQ(once.shortfall_m2, sampled.shortfall_m2) << m;
+        const auto [forth, back] = model.integrateBothWays(a, b);
+        const auto [forth_each, back_each] = model.integrateBothWays(a, b, each);
+        EXPECT_EQ(forth.charge_ah, forth_each.charge_ah) << m;
+        EXPECT_EQ(back.charge_ah, back_each.charge_ah) << m;
+        EXPECT_EQ(back.duration_s, back_each.duration_s) << m;
+        EXPECT_EQ(back.shortfall_m2, back_each.shortfall_m2) << m;
+        ++motions;
+        // The motion met both: samples far from everything, and samples that feel the structure.
+        bool near = false, far = false;
+        const int intervals = model.intervalCount(a, b);
+        for (int k = 0; k <= intervals; ++k) {
+          const Eigen::Vector3d p = a + (b - a) * (double(k) / intervals);
+          const planner::PointConditions c = model.conditionsAt(p);
+          bool feels = c.standoff_shortfall_m > 0.0 || model.nearCeiling(c) || std::isfinite(c.ground_gap_m);
+          for (int r = 0; r < c.rotor_count; ++r) feels = feels || c.rotors[r].coverage > 0.0;
+          near = near || feels;
+          far = far || environment.clearance_m(p) > 1.5;
+        }
+        felt += near && far;
+        in_free_air += far;
+      }
+      EXPECT_EQ(motions, 120);
+      EXPECT_GT(felt, 80) << proximity << " " << standoff_m;
+      EXPECT_GT(in_free_air, 80) << proximity << " " << standoff_m;
+    }
+}
+
 TEST(FlightCostModel, WithoutProximityEffectsOnlyTheSpeedRulesCeilingIsLookedUp) {
   // Free mode's rotors see free air: only a ceiling closer than the speed rule's gap over a disc
   // matters, so the model skips the lookups farther from structure than that. Beside the beam a

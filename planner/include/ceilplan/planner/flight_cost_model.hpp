@@ -219,9 +219,16 @@ class FlightCostModel {
 
  private:
   double costPerMetre(const CostWeights& weights, double current_a, double speed_m_s) const;
-  /// conditionsAlong, or with `skip_free_air` false exactConditionsAlong.
+  /// Which samples of a motion look their conditions up.
+  enum class Lookups {
+    Every,          ///< exactConditionsAlong
+    NearStructure,  ///< conditionsAlong: each sample unless farFromStructure holds there
+    /// What integrate() reads: also none while an earlier lookup's bound, less the way flown
+    /// since, keeps the samples in free air (conditions that cost the same as conditionsAt's).
+    NearStructureTraced
+  };
   std::vector<PointConditions> sampleConditions(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
-                                                bool skip_free_air) const;
+                                                Lookups lookups) const;
 
   /// One direction's totals over the samples of a motion, by the trapezoid rule on 1/speed and
   /// current/speed; samples may come in either order.
