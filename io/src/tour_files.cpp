@@ -164,37 +164,53 @@ std::string geodeticExportsSkippedLine(const mission::Mission& mission) {
          " has no 'origin:' ({lat, lon, alt} of the map frame); every local-frame output was written";
 }
 
-std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission) {
-  if (!mission.origin) return "no geodetic origin";
+namespace {
+
+// The KMZ's problem and its clamps from one generation of every sortie's WPML (a tour's outputs
+// ask for both, and the documents of thousands of waypoints are not free to build).
+struct DjiExport {
+  std::optional<std::string> problem;
+  std::vector<DjiClamp> clamps;  // none when there is a problem
+};
+
+DjiExport djiExport(const mission::TourResult& tour, const mission::Mission& mission) {
+  DjiExport result;
+  if (!mission.origin) {
+    result.problem = "no geodetic origin";
+    return result;
+  }
   const DjiWpmlOptions options = djiWpmlOptions(mission.dji);
   for (const mission::SortieRoute& route : tour.routes) {
     try {
-      djiWpml(route, *mission.origin, options);
+      const std::vector<DjiClamp> sortie = djiWpml(route, *mission.origin, options).clamps;
+      result.clamps.insert(result.clamps.end(), sortie.begin(), sortie.end());
     } catch (const InputError& e) {
-      return "sortie " + std::to_string(route.sortie) + ": " + e.what() + " (dji: " + mission.dji.payload + " on the " +
-             mission.dji.payload_position + " mount of the " + mission.dji.drone +
-             "; a payload on the upper mount of an M300 or M350 RTK looks up: dji: {payload_position: upper})";
+      result.problem =
+          "sortie " + std::to_string(route.sortie) + ": " + e.what() + " (dji: " + mission.dji.payload + " on the " +
+          mission.dji.payload_position + " mount of the " + mission.dji.drone +
+          "; a payload on the upper mount of an M300 or M350 RTK looks up: dji: {payload_position: upper})";
+      result.clamps.clear();
+      return result;
     }
   }
-  return std::nullopt;
+  return result;
+}
+
+}  // namespace
+
+std::optional<std::string> djiExportProblem(const mission::TourResult& tour, const mission::Mission& mission) {
+  return djiExport(tour, mission).problem;
 }
 
 std::vector<DjiClamp> djiClamps(const mission::TourResult& tour, const mission::Mission& mission) {
-  std::vector<DjiClamp> clamps;
-  if (djiExportProblem(tour, mission)) return clamps;
-  const DjiWpmlOptions options = djiWpmlOptions(mission.dji);
-  for (const mission::SortieRoute& route : tour.routes) {
-    const std::vector<DjiClamp> sortie = djiWpml(route, *mission.origin, options).clamps;
-    clamps.insert(clamps.end(), sortie.begin(), sortie.end());
-  }
-  return clamps;
+  return djiExport(tour, mission).clamps;
 }
 
 std::string exportNotes(const mission::TourResult& tour, const mission::Mission& mission) {
   if (!mission.origin) return "";  // tourFilesLine names every geodetic export skipped, once
-  if (const std::optional<std::string> dji = djiExportProblem(tour, mission))
-    return "  DJI KMZ not written: " + *dji + "\n";
-  const std::vector<DjiClamp> clamps = djiClamps(tour, mission);
+  const DjiExport dji = djiExport(tour, mission);
+  if (dji.problem) return "  DJI KMZ not written: " + *dji.problem + "\n";
+  const std::vector<DjiClamp>& clamps = dji.clamps;
   if (clamps.empty()) return "";
   std::map<std::string, std::vector<const DjiClamp*>> by_element;
   for (const DjiClamp& c : clamps) by_element[c.element].push_back(&c);
@@ -296,14 +312,14 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
   json["unknown_space"] = unknownSpaceJson(tour.unknown_space, tour.unknown_summary);
   json["assumed_free_m"] = tour.assumed_free_m;
   json["stops_rechosen"] = tour.stops_rechosen;
-  const std::optional<std::string> dji = djiExportProblem(tour, mission);
-  json["dji_kmz"] = dji ? "not written: " + *dji : "written";
+  const DjiExport dji = djiExport(tour, mission);
+  json["dji_kmz"] = dji.problem ? "not written: " + *dji.problem : "written";
   if (!mission.origin)
     json["geodetic_exports_skipped"] = {{"files", geodeticExportsSkipped(mission)},
                                         {"reason", "the mission has no 'origin:' ({lat, lon, alt} of the map frame)"}};
-  if (!dji) {
+  if (!dji.problem) {
     nlohmann::json clamps = nlohmann::json::array();
-    for (const DjiClamp& c : djiClamps(tour, mission))
+    for (const DjiClamp& c : dji.clamps)
       clamps.push_back({{"sortie", c.sortie},
                         {"waypoint", c.waypoint},
                         {"element", c.element},
