@@ -33,6 +33,17 @@ void setDraw(PathSample& sample, const FlightCostModel& model, const PointCondit
   sample.propulsion_power_w = terms.propulsionW();
 }
 
+// A path that stays where it starts (two targets seen from the same place): nothing is flown; its
+// one sample is the place, hovering, at no time.
+PathSample hoveringAt(const FlightCostModel& model, const Eigen::Vector3d& place_m, double soc) {
+  PathSample hovering;
+  hovering.position_m = place_m;
+  const PointConditions conditions = model.exactConditionsAt(place_m);
+  setDraw(hovering, model, conditions, model.hoverAt(conditions), soc);
+  hovering.soc = soc;
+  return hovering;
+}
+
 // The one integration of a path under the full model, for evaluatePath and evaluatePathTotals:
 // each segment's conditions come from `conditions_along(from, to)` (one per sample, in the order
 // FlightCostModel::integrate takes them), and `keep(sample)` sees each sample once its time and
@@ -123,15 +134,9 @@ PathEvaluation evaluatePath(const FlightCostModel& model, const battery::Pack& p
       });
   result.samples = std::move(samples);
   if (result.samples.empty()) {
-    // A path that stays where it starts (two targets seen from the same place): nothing is
-    // flown; its one sample is the place, hovering, at no time.
-    PathSample hovering;
-    hovering.position_m = waypoints_m.front();
-    const PointConditions conditions = model.exactConditionsAt(hovering.position_m);
-    setDraw(hovering, model, conditions, model.hoverAt(conditions), start_soc);
+    PathSample hovering = hoveringAt(model, waypoints_m.front(), start_soc);
     hovering.clearance_m = environment.clearance_m(hovering.position_m);
     hovering.assumed_free = environment.assumesFree(hovering.position_m);
-    hovering.soc = start_soc;
     result.samples.push_back(hovering);
   }
   result.min_clearance_m = std::numeric_limits<double>::infinity();
@@ -156,13 +161,7 @@ PathEvaluation evaluatePathTotals(const FlightCostModel& model, const battery::P
   PathEvaluation result = integrateTotals(model, pack, start_soc, waypoints_m, max_speed_m_s, [&](PathSample&& sample) {
     draws.push_back({sample.t_s, sample.propulsion_power_w});
   });
-  if (draws.empty()) {
-    // As evaluatePath: a path that stays put is its place, hovering, at no time.
-    const PointConditions conditions = model.conditionsAt(waypoints_m.front());
-    PathSample hovering;
-    setDraw(hovering, model, conditions, model.hoverAt(conditions), start_soc);
-    draws.push_back({0.0, hovering.propulsion_power_w});
-  }
+  if (draws.empty()) draws.push_back({0.0, hoveringAt(model, waypoints_m.front(), start_soc).propulsion_power_w});
   return result;
 }
 

@@ -113,8 +113,9 @@ TEST(PathEvaluation, APathThatStaysWhereItStartsIsNoFlight) {
 }
 
 // A search ranks thousands of paths by their totals alone (a large tour's leg estimates):
-// evaluatePathTotals must give evaluatePath's totals to the bit, near the ceiling, in free air
-// (where it looks no gap up), in wind sheltered under the ceiling, and under a speed cap.
+// evaluatePathTotals must give evaluatePath's totals (and, asked, its samples' times and
+// propulsion powers) to the bit, near the ceiling, in free air (where it looks no gap up), in
+// wind sheltered under the ceiling, and under a speed cap.
 TEST(PathEvaluation, TotalsAloneAreTheFullEvaluationsToTheBit) {
   const environment::OccupancyMap map = corridor(flatCeiling);
   const environment::Environment environment(map, quad());
@@ -152,6 +153,15 @@ TEST(PathEvaluation, TotalsAloneAreTheFullEvaluationsToTheBit) {
                 std::isnan(totals.assumed_free_m));
     for (const planner::PathSample& sample : full.samples)
       (model.farFromStructure(sample.position_m) ? far_samples : near_samples) += 1;
+    // The draws the split flies home: each sample's time and propulsion power, the same totals.
+    std::vector<planner::PathDraw> draws;
+    const planner::PathEvaluation drawn = planner::evaluatePathTotals(model, pack, 0.9, path, cap, draws);
+    EXPECT_EQ(drawn.charge_ah, full.charge_ah) << m;
+    ASSERT_EQ(draws.size(), full.samples.size()) << m;
+    for (std::size_t k = 0; k < draws.size(); ++k) {
+      EXPECT_EQ(draws[k].t_s, full.samples[k].t_s) << m << " " << k;
+      EXPECT_EQ(draws[k].propulsion_power_w, full.samples[k].propulsion_power_w) << m << " " << k;
+    }
   }
   // Both kinds of sample were met: the free-air shortcut and the gap lookups.
   EXPECT_GT(far_samples, 1000);
@@ -162,6 +172,14 @@ TEST(PathEvaluation, TotalsAloneAreTheFullEvaluationsToTheBit) {
   EXPECT_EQ(stay.charge_ah, 0.0);
   EXPECT_EQ(stay.duration_s, 0.0);
   EXPECT_EQ(stay.min_soc, 0.9);
+  std::vector<planner::PathDraw> hovering;
+  planner::evaluatePathTotals(calm, pack, 0.9, {place, place}, std::numeric_limits<double>::infinity(), hovering);
+  const planner::PathEvaluation stay_full = planner::evaluatePath(calm, pack, 0.9, {place, place});
+  ASSERT_EQ(hovering.size(), 1u);
+  ASSERT_EQ(stay_full.samples.size(), 1u);
+  EXPECT_EQ(hovering[0].t_s, 0.0);
+  EXPECT_EQ(hovering[0].propulsion_power_w, stay_full.samples[0].propulsion_power_w);
+  EXPECT_GT(hovering[0].propulsion_power_w, 0.0);
   EXPECT_THROW(planner::evaluatePathTotals(calm, pack, 0.9, {place}), ceilplan::InputError);
 }
 
