@@ -21,6 +21,14 @@ struct CorridorModels {
   energy::EnergyModel energy = paperEnergy();
 };
 
+// A seeded point anywhere in the environment's map box.
+Eigen::Vector3d somewhereIn(const environment::Environment& environment, std::mt19937& random) {
+  const Eigen::AlignedBox3d box = environment.grid().frame().bounds();
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double x = unit(random), y = unit(random), z = unit(random);  // in this order, whatever the compiler
+  return box.min() + box.sizes().cwiseProduct(Eigen::Vector3d(x, y, z));
+}
+
 TEST(FlightCostModel, LevelFlightInFreeAirTakesLengthOverCruiseSpeed) {
   CorridorModels scene;
   const FlightCostModel model(scene.environment, scene.energy, CostModelOptions{});
@@ -58,13 +66,8 @@ TEST(FlightCostModel, MotionsShareGapLookupsAndGiveEachSampleItsOwnConditions) {
   CostModelOptions options;
   options.standoff_m = 0.3;  // the shortfall is part of each sample's conditions too
   const FlightCostModel model(environment, energy, options);
-  const Eigen::AlignedBox3d box = environment.grid().frame().bounds();
   std::mt19937 random(26);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const auto somewhere = [&] {
-    return Eigen::Vector3d(box.min() +
-                           box.sizes().cwiseProduct(Eigen::Vector3d(unit(random), unit(random), unit(random))));
-  };
+  const auto somewhere = [&] { return somewhereIn(environment, random); };
   int near_ceiling = 0;
   for (int m = 0; m < 300; ++m) {
     const Eigen::Vector3d a = somewhere(),
@@ -104,6 +107,38 @@ TEST(FlightCostModel, MotionsShareGapLookupsAndGiveEachSampleItsOwnConditions) {
   EXPECT_GT(near_ceiling, 100);  // the motions met the beams and the ceiling, not only free air
 }
 
+// integrate() and integrateBothWays() of the motion a -> b cost what its samples do, each looked up
+// alone (conditionsAt) and with every gap looked up (exactConditionsAt): bit for bit, EXPECT_EQ
+// on doubles.
+void expectCostsOfTheSamplesLookedUpOneByOne(const FlightCostModel& model, const Eigen::Vector3d& a,
+                                             const Eigen::Vector3d& b, int motion) {
+  const auto each = [&](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
+  const auto exact = [&](const Eigen::Vector3d& p) { return model.exactConditionsAt(p); };
+  const auto expectSame = [&](const planner::MotionTotals& got, const planner::MotionTotals& sampled) {
+    EXPECT_EQ(got.charge_ah, sampled.charge_ah) << motion;
+    EXPECT_EQ(got.duration_s, sampled.duration_s) << motion;
+    EXPECT_EQ(got.shortfall_m2, sampled.shortfall_m2) << motion;
+  };
+  const planner::MotionTotals once = model.integrate(a, b);
+  expectSame(once, model.integrate(a, b, each));
+  expectSame(once, model.integrate(a, b, exact));
+  const auto [forth, back] = model.integrateBothWays(a, b);
+  for (const auto& [forth_sampled, back_sampled] :
+       {model.integrateBothWays(a, b, each), model.integrateBothWays(a, b, exact)}) {
+    expectSame(forth, forth_sampled);
+    expectSame(back, back_sampled);
+  }
+}
+
+// Whether a sample feels the structure: a rotor's or the ground's gap, the speed rule or the
+// standoff.
+bool feelsStructure(const FlightCostModel& model, const planner::PointConditions& conditions) {
+  bool feels =
+      conditions.standoff_shortfall_m > 0.0 || model.nearCeiling(conditions) || std::isfinite(conditions.ground_gap_m);
+  for (int r = 0; r < conditions.rotor_count; ++r) feels = feels || conditions.rotors[r].coverage > 0.0;
+  return feels;
+}
+
 TEST(FlightCostModel, AMotionWhollyInFreeAirCostsWhatItsSamplesLookedUpOneByOneDo) {
   // The corridor's middle is more than a metre from the floor, the ceiling and the walls: motions
   // there are costed from one lookup (FlightCostModel::integrate), motions reaching towards the
@@ -127,28 +162,13 @@ TEST(FlightCostModel, AMotionWhollyInFreeAirCostsWhatItsSamplesLookedUpOneByOneD
         const double length_m = m % 2 ? reach(random) : 0.2 * reach(random);
         const Eigen::Vector3d b = a + length_m * Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized();
         if (!scene.environment.contains(b)) continue;
-        const auto each = [&](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
-        const auto exact = [&](const Eigen::Vector3d& p) { return model.exactConditionsAt(p); };
-        const planner::MotionTotals once = model.integrate(a, b);
-        for (const planner::MotionTotals& sampled : {model.integrate(a, b, each), model.integrate(a, b, exact)}) {
-          EXPECT_EQ(once.charge_ah, sampled.charge_ah) << m;
-          EXPECT_EQ(once.duration_s, sampled.duration_s) << m;
-          EXPECT_EQ(once.shortfall_m2, sampled.shortfall_m2) << m;
-        }
-        const auto [forth, back] = model.integrateBothWays(a, b);
-        const auto [forth_each, back_each] = model.integrateBothWays(a, b, each);
-        EXPECT_EQ(forth.charge_ah, forth_each.charge_ah) << m;
-        EXPECT_EQ(back.charge_ah, back_each.charge_ah) << m;
-        EXPECT_EQ(back.shortfall_m2, back_each.shortfall_m2) << m;
+        expectCostsOfTheSamplesLookedUpOneByOne(model, a, b, m);
         // Farther than any rotor's reach (under 0.8 m for this vehicle) and than the standoff.
         in_free_air += scene.environment.clearance_m(0.5 * (a + b)) - 0.5 * (b - a).norm() > 0.8 + standoff_m;
-        bool felt = false;  // some sample feels the structure: a gap, the speed rule or the standoff
+        bool felt = false;
         const int intervals = model.intervalCount(a, b);
-        for (int k = 0; k <= intervals && !felt; ++k) {
-          const planner::PointConditions c = model.conditionsAt(a + (b - a) * (double(k) / intervals));
-          felt = c.standoff_shortfall_m > 0.0 || model.nearCeiling(c) || std::isfinite(c.ground_gap_m);
-          for (int r = 0; r < c.rotor_count; ++r) felt = felt || c.rotors[r].coverage > 0.0;
-        }
+        for (int k = 0; k <= intervals && !felt; ++k)
+          felt = feelsStructure(model, model.conditionsAt(a + (b - a) * (double(k) / intervals)));
         near_structure += felt;
       }
       EXPECT_GT(in_free_air, standoff_m > 0.0 ? 10 : 100) << proximity << " " << standoff_m;
@@ -164,13 +184,8 @@ TEST(FlightCostModel, ALongMotionCostsWhatItsSamplesLookedUpOneByOneDo) {
   const environment::OccupancyMap map = environment::OccupancyMap::load(CEILPLAN_SOURCE_DIR "/maps/bridge.bt");
   const environment::Environment environment(map, quad());
   const energy::EnergyModel energy = paperEnergy();
-  const Eigen::AlignedBox3d box = environment.grid().frame().bounds();
   std::mt19937 random(31);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const auto somewhere = [&] {
-    return Eigen::Vector3d(box.min() +
-                           box.sizes().cwiseProduct(Eigen::Vector3d(unit(random), unit(random), unit(random))));
-  };
+  const auto somewhere = [&] { return somewhereIn(environment, random); };
   for (const bool proximity : {true, false})
     for (const double standoff_m : {0.0, 1.0}) {
       CostModelOptions options;
@@ -180,27 +195,14 @@ TEST(FlightCostModel, ALongMotionCostsWhatItsSamplesLookedUpOneByOneDo) {
       int motions = 0, felt = 0, in_free_air = 0;
       for (int m = 0; m < 120; ++m) {
         const Eigen::Vector3d a = somewhere(), b = somewhere();
-        const auto each = [&](const Eigen::Vector3d& p) { return model.conditionsAt(p); };
-        const planner::MotionTotals once = model.integrate(a, b), sampled = model.integrate(a, b, each);
-        EXPECT_EQ(once.charge_ah, sampled.charge_ah) << m;  // bit for bit
-        EXPECT_EQ(once.duration_s, sampled.duration_s) << m;
-        EXPECT_EQ(once.shortfall_m2, sampled.shortfall_m2) << m;
-        const auto [forth, back] = model.integrateBothWays(a, b);
-        const auto [forth_each, back_each] = model.integrateBothWays(a, b, each);
-        EXPECT_EQ(forth.charge_ah, forth_each.charge_ah) << m;
-        EXPECT_EQ(back.charge_ah, back_each.charge_ah) << m;
-        EXPECT_EQ(back.duration_s, back_each.duration_s) << m;
-        EXPECT_EQ(back.shortfall_m2, back_each.shortfall_m2) << m;
+        expectCostsOfTheSamplesLookedUpOneByOne(model, a, b, m);
         ++motions;
         // The motion met both: samples far from everything, and samples that feel the structure.
         bool near = false, far = false;
         const int intervals = model.intervalCount(a, b);
         for (int k = 0; k <= intervals; ++k) {
           const Eigen::Vector3d p = a + (b - a) * (double(k) / intervals);
-          const planner::PointConditions c = model.conditionsAt(p);
-          bool feels = c.standoff_shortfall_m > 0.0 || model.nearCeiling(c) || std::isfinite(c.ground_gap_m);
-          for (int r = 0; r < c.rotor_count; ++r) feels = feels || c.rotors[r].coverage > 0.0;
-          near = near || feels;
+          near = near || feelsStructure(model, model.conditionsAt(p));
           far = far || environment.clearance_m(p) > 1.5;
         }
         felt += near && far;
