@@ -114,31 +114,36 @@ FlightCostModel::FlightCostModel(const environment::Environment& environment, co
 }
 
 double FlightCostModel::standoffShortfall_m(const Eigen::Vector3d& body_m) const {
+  return options_.standoff_m == 0.0 ? 0.0 : standoffShortfall_m(body_m, environment_.clearanceLowerBound_m(body_m));
+}
+
+double FlightCostModel::standoffShortfall_m(const Eigen::Vector3d& body_m, double clear_m) const {
   if (options_.standoff_m == 0.0) return 0.0;
   const double wanted_m = keptClearance_m(options_, airframe_radius_m_);
-  if (environment_.clearanceLowerBound_m(body_m) >= wanted_m) return 0.0;
+  if (clear_m >= wanted_m) return 0.0;
   return std::max(0.0, wanted_m - environment_.clearance_m(body_m));
 }
 
 PointConditions FlightCostModel::conditionsAt(const Eigen::Vector3d& body_m) const {
-  if (farFromStructure(body_m)) return freeAirConditionsAt(body_m);
-  return options_.proximity_effects ? exactConditionsAt(body_m) : speedRuleConditionsAt(body_m);
+  const double clear_m = environment_.clearanceLowerBound_m(body_m);  // as farFromStructure
+  if (clear_m > free_air_clearance_m_) return freeAirConditions(standoffShortfall_m(body_m, clear_m));
+  return options_.proximity_effects ? exactConditionsAt(body_m) : speedRuleConditionsAt(body_m, clear_m);
 }
 
-PointConditions FlightCostModel::speedRuleConditionsAt(const Eigen::Vector3d& body_m) const {
+PointConditions FlightCostModel::speedRuleConditionsAt(const Eigen::Vector3d& body_m, double clear_m) const {
   // Near the ground or a wall the band above the discs is mostly clear: one lookup says so,
   // instead of a column search under every disc.
-  PointConditions conditions = freeAirConditionsAt(body_m);
+  PointConditions conditions = freeAirConditions(standoffShortfall_m(body_m, clear_m));
   const Eigen::Vector3d probe_m = body_m + speed_rule_probe_m_ * Eigen::Vector3d::UnitZ();
   if (!environment_.contains(probe_m) || environment_.clearanceLowerBound_m(probe_m) <= speed_rule_clearance_m_)
     conditions.nearest_ceiling_gap_m = environment_.nearestCeilingGap_m(body_m);
   return conditions;
 }
 
-PointConditions FlightCostModel::freeAirConditionsAt(const Eigen::Vector3d& body_m) const {
+PointConditions FlightCostModel::freeAirConditions(double standoff_shortfall_m) const {
   PointConditions conditions;
   conditions.rotor_count = energy_.rotorCount();
-  conditions.standoff_shortfall_m = standoffShortfall_m(body_m);
+  conditions.standoff_shortfall_m = standoff_shortfall_m;
   return conditions;
 }
 
@@ -173,36 +178,36 @@ std::vector<PointConditions> FlightCostModel::sampleConditions(const Eigen::Vect
   conditions.reserve(intervals + 1);
   std::vector<Eigen::Vector3d> near;  // the samples whose gaps are looked up, together
   std::vector<std::size_t> near_index;
-  // Clearance is 1-Lipschitz: a lookup's lower bound, less the way flown since, still bounds the
-  // clearance of the samples that follow (the way between samples rounded up). Traced, while that
+  std::vector<double> near_clear_m;
+  // clear_m is a lower bound on the sample's clearance, for free air and the standoff (or -inf
+  // where neither asks). Clearance is 1-Lipschitz: a lookup's bound, less the way flown since,
+  // still bounds the samples that follow (the way between samples rounded up). Traced, while that
   // stays beyond free_air_clearance_m_ they are in free air without a lookup of their own (their
   // exact conditions cost the same, as freeAirAlong's), and while it stays beyond the standoff
   // they keep it.
   const bool skip_free_air = lookups != Lookups::Every, traced = lookups == Lookups::NearStructureTraced;
   const double interval_m = (to_m - from_m).norm() / intervals * (1.0 + 1e-9) + 1e-12;
-  const double standoff_m = keptClearance_m(options_, airframe_radius_m_);
   double clear_m = -std::numeric_limits<double>::infinity();
   forEachSample(from_m, to_m, intervals, [&](const Eigen::Vector3d& point) {
     clear_m -= interval_m;
-    if (skip_free_air && (!traced || !(clear_m > free_air_clearance_m_) || !environment_.contains(point)))
-      clear_m = environment_.clearanceLowerBound_m(point);  // outside the map: throws, as ever
+    const bool look_up = skip_free_air ? !traced || !(clear_m > free_air_clearance_m_) || !environment_.contains(point)
+                                       : options_.standoff_m != 0.0;
+    if (look_up) clear_m = environment_.clearanceLowerBound_m(point);  // outside the map: throws, as ever
     if (skip_free_air && clear_m > free_air_clearance_m_) {
-      PointConditions free_air;  // as freeAirConditionsAt
-      free_air.rotor_count = energy_.rotorCount();
-      free_air.standoff_shortfall_m = clear_m >= standoff_m ? 0.0 : standoffShortfall_m(point);
-      conditions.push_back(free_air);
+      conditions.push_back(freeAirConditions(standoffShortfall_m(point, clear_m)));
     } else if (!options_.proximity_effects) {
-      conditions.push_back(speedRuleConditionsAt(point));
+      conditions.push_back(speedRuleConditionsAt(point, clear_m));
     } else {
       near.push_back(point);
       near_index.push_back(conditions.size());
+      near_clear_m.push_back(clear_m);
       conditions.emplace_back();
     }
   });
   environment_.ceilingAndGroundAlong(near, [&](std::size_t k, const environment::Environment::CeilingAndGround& gaps) {
     PointConditions& at = conditions[near_index[k]];
     at = surfaceConditions(gaps.ceiling, gaps.ground);  // as exactConditionsAt
-    at.standoff_shortfall_m = standoffShortfall_m(near[k]);
+    at.standoff_shortfall_m = standoffShortfall_m(near[k], near_clear_m[k]);
   });
   return conditions;
 }
@@ -218,20 +223,24 @@ std::optional<PointConditions> FlightCostModel::freeAirAlong(const Eigen::Vector
   const double clear_m = environment_.clearanceLowerBound_m(middle_m) - 0.5 * (to_m - from_m).norm();
   if (!(clear_m > free_air_clearance_m_ && clear_m >= keptClearance_m(options_, airframe_radius_m_)))
     return std::nullopt;
-  PointConditions conditions;
-  conditions.rotor_count = energy_.rotorCount();
-  return conditions;
+  return freeAirConditions(0.0);
+}
+
+template <typename IntegrateWith>
+auto FlightCostModel::integrateMotion(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
+                                      IntegrateWith&& integrate_with) const {
+  if (const std::optional<PointConditions> air = freeAirAlong(from_m, to_m))
+    return integrate_with([&](const Eigen::Vector3d&) -> const PointConditions& { return *air; });
+  const std::vector<PointConditions> conditions = sampleConditions(from_m, to_m, Lookups::NearStructureTraced);
+  std::size_t next = 0;  // the integration visits the samples in their order
+  return integrate_with([&](const Eigen::Vector3d&) -> const PointConditions& { return conditions[next++]; });
 }
 
 std::pair<MotionTotals, MotionTotals> FlightCostModel::integrateBothWays(const Eigen::Vector3d& from_m,
                                                                          const Eigen::Vector3d& to_m) const {
   if ((to_m - from_m).norm() == 0.0) return {};
-  if (const std::optional<PointConditions> air = freeAirAlong(from_m, to_m))
-    return integrateBothWays(from_m, to_m, [&](const Eigen::Vector3d&) -> const PointConditions& { return *air; });
-  const std::vector<PointConditions> conditions = sampleConditions(from_m, to_m, Lookups::NearStructureTraced);
-  std::size_t next = 0;  // integrateBothWays visits the samples in their order
-  return integrateBothWays(from_m, to_m,
-                           [&](const Eigen::Vector3d&) -> const PointConditions& { return conditions[next++]; });
+  return integrateMotion(from_m, to_m,
+                         [&](const auto& conditions_at) { return integrateBothWays(from_m, to_m, conditions_at); });
 }
 
 PointConditions FlightCostModel::exactConditionsAt(const Eigen::Vector3d& body_m) const {
@@ -305,11 +314,8 @@ energy::CurrentBreakdown FlightCostModel::breakdown(const PointConditions& condi
 
 MotionTotals FlightCostModel::integrate(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {
   if ((to_m - from_m).norm() == 0.0) return {};
-  if (const std::optional<PointConditions> air = freeAirAlong(from_m, to_m))
-    return integrate(from_m, to_m, [&](const Eigen::Vector3d&) -> const PointConditions& { return *air; });
-  const std::vector<PointConditions> conditions = sampleConditions(from_m, to_m, Lookups::NearStructureTraced);
-  std::size_t next = 0;  // integrate visits the samples in their order
-  return integrate(from_m, to_m, [&](const Eigen::Vector3d&) -> const PointConditions& { return conditions[next++]; });
+  return integrateMotion(from_m, to_m,
+                         [&](const auto& conditions_at) { return integrate(from_m, to_m, conditions_at); });
 }
 
 int FlightCostModel::intervalCount(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const {

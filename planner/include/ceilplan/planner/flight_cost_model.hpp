@@ -293,14 +293,25 @@ class FlightCostModel {
   const energy::EnergyModel& energy_;
   CostModelOptions options_;
   double step_m_;
+  /// How far the body at `body_m` lacks the standoff (0 without one).
   double standoffShortfall_m(const Eigen::Vector3d& body_m) const;
+  /// The same where its clearance is known to be at least `clear_m`: looked up exactly only when
+  /// that bound is within the standoff.
+  double standoffShortfall_m(const Eigen::Vector3d& body_m, double clear_m) const;
   /// Free air's conditions when they hold at every sample of the motion, from one lookup.
   std::optional<PointConditions> freeAirAlong(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m) const;
-  /// conditionsAt where farFromStructure holds.
-  PointConditions freeAirConditionsAt(const Eigen::Vector3d& body_m) const;
-  /// conditionsAt near structure with the proximity effects off: the speed rule's ceiling only,
-  /// its columns searched unless one lookup above the rotor planes finds none within its gap.
-  PointConditions speedRuleConditionsAt(const Eigen::Vector3d& body_m) const;
+  /// Free air under every rotor, with the standoff's shortfall: conditionsAt where
+  /// farFromStructure holds.
+  PointConditions freeAirConditions(double standoff_shortfall_m) const;
+  /// conditionsAt near structure with the proximity effects off, the body's clearance at least
+  /// `clear_m`: the speed rule's ceiling only, its columns searched unless one lookup above the
+  /// rotor planes finds none within its gap.
+  PointConditions speedRuleConditionsAt(const Eigen::Vector3d& body_m, double clear_m) const;
+  /// `integrate_with(conditions_at)` over a motion's samples: free air's conditions from one
+  /// lookup where freeAirAlong holds, else each sample's (Lookups::NearStructureTraced).
+  template <typename IntegrateWith>
+  auto integrateMotion(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m,
+                       IntegrateWith&& integrate_with) const;
 
   double near_ceiling_gap_m_;
   double free_air_clearance_m_;       ///< beyond it from the body centre, no surface can affect a rotor
