@@ -921,8 +921,8 @@ PYBIND11_MODULE(ceilplan, m) {
       .def_property_readonly(
           "comparison",
           [](const PyTourComparison& c) {
-            nlohmann::json json = io::comparisonJson(c.ceiling->tour, c.free->tour, *c.ceiling->mission,
-                                                     io::Provenance::of("python: " + c.call));
+            nlohmann::json json =
+                io::comparisonJson(c.ceiling->tour, c.free->tour, io::Provenance::of("python: " + c.call));
             json.erase("provenance");
             return pythonJson(json);
           },

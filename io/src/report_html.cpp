@@ -36,26 +36,39 @@ void requireFinite(const Eigen::Vector3d& p, const std::string& what) {
   if (!p.allFinite()) throw InputError("report: " + what + " must be finite, got " + formatPoint(p));
 }
 
+// The objects below are filled by moving their parts in: a braced list copies each part, and a
+// long tour's samples run to millions of numbers.
 nlohmann::json samplesJson(const std::vector<ReportSample>& samples) {
-  nlohmann::json t = nlohmann::json::array(), x = t, y = t, z = t, current = t, soc = t, sortie = t;
+  nlohmann::json::array_t t, x, y, z, current, soc, sortie;
+  for (nlohmann::json::array_t* column : {&t, &x, &y, &z, &current, &soc, &sortie}) column->reserve(samples.size());
   for (const ReportSample& s : samples) {
-    t.push_back(rounded(s.t_s));
-    x.push_back(rounded(s.position_m.x()));
-    y.push_back(rounded(s.position_m.y()));
-    z.push_back(rounded(s.position_m.z()));
-    current.push_back(rounded(s.current_a));
-    soc.push_back(rounded(s.soc, 1e5));
-    sortie.push_back(s.sortie);
+    t.emplace_back(rounded(s.t_s));
+    x.emplace_back(rounded(s.position_m.x()));
+    y.emplace_back(rounded(s.position_m.y()));
+    z.emplace_back(rounded(s.position_m.z()));
+    current.emplace_back(rounded(s.current_a));
+    soc.emplace_back(rounded(s.soc, 1e5));
+    sortie.emplace_back(s.sortie);
   }
-  return {{"t", t}, {"x", x}, {"y", y}, {"z", z}, {"current", current}, {"soc", soc}, {"sortie", sortie}};
+  nlohmann::json json = nlohmann::json::object();
+  json["t"] = std::move(t);
+  json["x"] = std::move(x);
+  json["y"] = std::move(y);
+  json["z"] = std::move(z);
+  json["current"] = std::move(current);
+  json["soc"] = std::move(soc);
+  json["sortie"] = std::move(sortie);
+  return json;
 }
 
 nlohmann::json planJson(const ReportPlan& plan) {
-  nlohmann::json targets = nlohmann::json::array(), photos = nlohmann::json::array(), patches = nlohmann::json::array();
+  nlohmann::json::array_t targets, photos, patches, summary;
+  targets.reserve(plan.targets.size());
   for (const ReportTarget& t : plan.targets)
     targets.push_back({{"name", t.name},
                        {"point", point(t.point_m)},
                        {"viewpoint", t.viewpoint_m ? point(*t.viewpoint_m) : nlohmann::json(nullptr)}});
+  photos.reserve(plan.photos.size());
   for (const ReportPhoto& p : plan.photos)
     photos.push_back({{"p", point(p.position_m)},
                       {"yaw_deg", rounded(p.yaw_deg, 100)},
@@ -63,19 +76,24 @@ nlohmann::json planJson(const ReportPlan& plan) {
                       {"hfov_deg", p.horizontal_fov_deg},
                       {"vfov_deg", p.vertical_fov_deg},
                       {"range_m", p.range_m}});
+  patches.reserve(plan.coverage.size());
   for (const ReportSurfacePatch& p : plan.coverage)
     patches.push_back({{"c", point(p.centre_m)},
                        {"n", {rounded(p.normal.x()), rounded(p.normal.y()), rounded(p.normal.z())}},
                        {"s", p.size_m},
                        {"v", std::isnan(p.value) ? nlohmann::json(nullptr) : nlohmann::json(p.value)}});
-  nlohmann::json summary = nlohmann::json::array();
   for (const auto& [figure, value] : plan.summary) summary.push_back({figure, value});
-  return {{"name", plan.name},
-          {"samples", samplesJson(plan.samples)},
-          {"targets", targets},
-          {"photos", photos},
-          {"coverage", {{"label", plan.coverage_label}, {"patches", patches}}},
-          {"summary", summary}};
+  nlohmann::json coverage = nlohmann::json::object();
+  coverage["label"] = plan.coverage_label;
+  coverage["patches"] = std::move(patches);
+  nlohmann::json json = nlohmann::json::object();
+  json["name"] = plan.name;
+  json["samples"] = samplesJson(plan.samples);
+  json["targets"] = std::move(targets);
+  json["photos"] = std::move(photos);
+  json["coverage"] = std::move(coverage);
+  json["summary"] = std::move(summary);
+  return json;
 }
 
 // Voxel centres as integer steps from the lowest corner, each followed by its face bits: a
@@ -86,13 +104,18 @@ nlohmann::json structureJson(const ReportStructure& structure) {
     low = structure.centres_m.front();
     for (const Eigen::Vector3d& c : structure.centres_m) low = low.cwiseMin(c);
   }
-  nlohmann::json cells = nlohmann::json::array();
+  nlohmann::json::array_t cells;
+  cells.reserve(4 * structure.centres_m.size());
   for (std::size_t v = 0; v < structure.centres_m.size(); ++v) {
     for (int axis = 0; axis < 3; ++axis)
       cells.push_back(std::lround((structure.centres_m[v][axis] - low[axis]) / structure.voxel_m));
     cells.push_back(structure.faces.empty() ? 63 : structure.faces[v]);
   }
-  return {{"voxel_m", structure.voxel_m}, {"origin", point(low)}, {"cells", cells}};
+  nlohmann::json json = nlohmann::json::object();
+  json["voxel_m"] = structure.voxel_m;
+  json["origin"] = point(low);
+  json["cells"] = std::move(cells);
+  return json;
 }
 
 // JSON inside a <script> element: "</" must not appear.
@@ -102,10 +125,45 @@ std::string scriptSafe(std::string text) {
   return text;
 }
 
-void replaceOnce(std::string& page, const std::string& placeholder, std::string_view value) {
-  const std::size_t at = page.find(placeholder);
-  if (at == std::string::npos) throw Error("report template lacks " + placeholder);
-  page.replace(at, placeholder.size(), value.data(), value.size());
+// The page's data, script-safe. The document is gone once its text is made.
+std::string pageData(const ReportModel& model) {
+  model.validate();
+  nlohmann::json::array_t plans;
+  plans.reserve(model.plans.size());
+  for (const ReportPlan& plan : model.plans) plans.push_back(planJson(plan));
+  nlohmann::json comparison = nlohmann::json::object();
+  comparison["header"] = model.comparison_header;
+  comparison["rows"] = model.comparison_rows;
+  nlohmann::json data = nlohmann::json::object();
+  data["title"] = model.title;
+  data["home"] = point(model.home_m);
+  data["reserve_soc"] = model.reserve_soc;
+  data["structure"] = structureJson(model.structure);
+  data["plans"] = std::move(plans);
+  data["comparison"] = std::move(comparison);
+  return scriptSafe(jsonText(data));
+}
+
+// The page in order, part by part: the template up to each placeholder, then what replaces it
+// (the placeholders stand in the template in this order). Written out as it goes, a long tour's
+// page is never held whole beside its data.
+template <typename Emit>
+void emitPage(std::string_view data, Emit&& emit) {
+  const std::string_view page = report_assets::PageTemplate;
+  const std::pair<std::string_view, std::string_view> parts[] = {{"/*CEILPLAN:THREE*/", report_assets::Three},
+                                                                 {"/*CEILPLAN:ORBIT*/", report_assets::OrbitControls},
+                                                                 {"/*CEILPLAN:DATA*/", data},
+                                                                 {"/*CEILPLAN:APP*/", report_assets::ViewerScript}};
+  std::size_t from = 0;
+  for (const auto& [placeholder, value] : parts) {
+    const std::size_t at = page.find(placeholder, from);
+    if (at == std::string_view::npos)
+      throw Error("report template lacks " + std::string(placeholder) + " in its place");
+    emit(page.substr(from, at - from));
+    emit(value);
+    from = at + placeholder.size();
+  }
+  emit(page.substr(from));
 }
 
 }  // namespace
@@ -288,27 +346,19 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
 }
 
 std::string reportHtml(const ReportModel& model) {
-  model.validate();
-  nlohmann::json plans = nlohmann::json::array();
-  for (const ReportPlan& plan : model.plans) plans.push_back(planJson(plan));
-  const nlohmann::json data = {{"title", model.title},
-                               {"home", point(model.home_m)},
-                               {"reserve_soc", model.reserve_soc},
-                               {"structure", structureJson(model.structure)},
-                               {"plans", plans},
-                               {"comparison", {{"header", model.comparison_header}, {"rows", model.comparison_rows}}}};
-  std::string page(report_assets::PageTemplate);
-  // Largest last, so each search runs over the template, not over three.js.
-  replaceOnce(page, "/*CEILPLAN:APP*/", report_assets::ViewerScript);
-  replaceOnce(page, "/*CEILPLAN:DATA*/", scriptSafe(jsonText(data)));
-  replaceOnce(page, "/*CEILPLAN:ORBIT*/", report_assets::OrbitControls);
-  replaceOnce(page, "/*CEILPLAN:THREE*/", report_assets::Three);
+  const std::string data = pageData(model);
+  std::string page;
+  page.reserve(report_assets::PageTemplate.size() + report_assets::Three.size() + report_assets::OrbitControls.size() +
+               data.size() + report_assets::ViewerScript.size());
+  emitPage(data, [&](std::string_view part) { page.append(part); });
   return page;
 }
 
 void writeReportHtml(const std::filesystem::path& file, const ReportModel& model) {
-  const std::string page = reportHtml(model);
-  writeTextAtomically(file, [&](std::ostream& out) { out << page; });
+  const std::string data = pageData(model);
+  writeTextAtomically(file, [&](std::ostream& out) {
+    emitPage(data, [&](std::string_view part) { out.write(part.data(), static_cast<std::streamsize>(part.size())); });
+  });
 }
 
 }  // namespace ceilplan::io

@@ -292,6 +292,32 @@ nlohmann::json tourSortiesJson(const mission::TourResult& tour) {
   return sorties;
 }
 
+namespace {
+
+// The counts, totals, wear and duty of a tour, which tour.json and comparison.json share. Point
+// targets, contact readings and photos are counted apart: a photo is no target.
+void addTourFigures(nlohmann::json& json, const mission::TourResult& tour) {
+  const StopCounts counts = stopCounts(tour);
+  json["targets_total"] = counts.targets;
+  json["targets_visited"] = counts.targets_visited;
+  json["contact_readings_total"] = counts.contact_readings;
+  json["contact_readings_taken"] = counts.contact_readings_taken;
+  json["photos_total"] = counts.photos;
+  json["photos_taken"] = counts.photos_taken;
+  json["charge_ah"] = tour.plan.charge_ah;
+  json["flight_s"] = tour.plan.flight_s;
+  json["duration_s"] = tour.plan.duration_s;
+  json["fec"] = tour.plan.fec;
+  json["min_soc"] = tour.plan.min_soc;
+  nlohmann::json wear;
+  for (const mission::PlanWear& w : tour.wear)
+    wear[w.model] = {{"wear_name", w.wear_name}, {"cycle_wear", w.cycle_wear}, {"capacity_loss", w.capacity_loss}};
+  json["wear"] = std::move(wear);
+  json["duty"] = dutyJson(tour.duty, tour.options);
+}
+
+}  // namespace
+
 nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission& mission,
                         const Provenance& provenance) {
   nlohmann::json json;
@@ -327,14 +353,7 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
                         {"written", c.written}});
     json["dji_clamps"] = clamps;
   }
-  // Point targets, contact readings and photos are counted apart: a photo is no target.
-  const StopCounts counts = stopCounts(tour);
-  json["targets_total"] = counts.targets;
-  json["targets_visited"] = counts.targets_visited;
-  json["contact_readings_total"] = counts.contact_readings;
-  json["contact_readings_taken"] = counts.contact_readings_taken;
-  json["photos_total"] = counts.photos;
-  json["photos_taken"] = counts.photos_taken;
+  addTourFigures(json, tour);
   nlohmann::json targets = nlohmann::json::array();
   for (const mission::TourStop& stop : tour.stops) {
     const mission::Viewpoint& v = stop.viewpoint;
@@ -361,18 +380,8 @@ nlohmann::json tourJson(const mission::TourResult& tour, const mission::Mission&
       {"viewpoint_standoff_m", kStandoffMeasures}};
   if (tour.standoff) json["standoff"] = tourStandoffJson(tour, *tour.standoff);
   json["sorties"] = tourSortiesJson(tour);
-  json["charge_ah"] = tour.plan.charge_ah;
-  json["flight_s"] = tour.plan.flight_s;
-  json["duration_s"] = tour.plan.duration_s;
-  json["fec"] = tour.plan.fec;
-  json["min_soc"] = tour.plan.min_soc;
   json["start_soc"] = tour.start_soc;
   json["reserve_soc"] = tour.reserve_soc;
-  nlohmann::json wear;
-  for (const mission::PlanWear& w : tour.wear)
-    wear[w.model] = {{"wear_name", w.wear_name}, {"cycle_wear", w.cycle_wear}, {"capacity_loss", w.capacity_loss}};
-  json["wear"] = wear;
-  json["duty"] = dutyJson(tour.duty, tour.options);
   if (tour.coverage) json["coverage"] = coverageSummaryJson(tour);
   json["provenance"] = provenance.json();
   return json;
@@ -509,14 +518,15 @@ std::string comparisonTable(const mission::TourResult& ceiling, const mission::T
 }
 
 nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free,
-                              const mission::Mission& mission, const Provenance& provenance) {
+                              const Provenance& provenance) {
   nlohmann::json json;
   for (const mission::TourResult* tour : {&ceiling, &free}) {
-    const nlohmann::json full = tourJson(*tour, mission, provenance);
+    nlohmann::json figures;
+    addTourFigures(figures, *tour);
     nlohmann::json entry;
     for (const char* key : {"targets_total", "targets_visited", "contact_readings_taken", "photos_taken", "charge_ah",
                             "flight_s", "duration_s", "fec", "min_soc", "wear", "duty"})
-      entry[key] = full[key];
+      entry[key] = std::move(figures[key]);
     entry["sorties"] = tour->plan.sorties.size();
     json[mission::flightModeName(tour->mode)] = entry;
   }
@@ -547,7 +557,7 @@ void writeTourComparison(const std::filesystem::path& dir, const mission::TourRe
   writeTextAtomically(dir / "comparison.txt", [&](std::ostream& stream) { stream << comparisonTable(ceiling, free); });
   writeReportHtml(dir / "report.html",
                   tourReport({&ceiling, &free}, mission, environment, mission.name() + ": both modes"));
-  writeJsonFile(dir / "comparison.json", comparisonJson(ceiling, free, mission, provenance));
+  writeJsonFile(dir / "comparison.json", comparisonJson(ceiling, free, provenance));
 }
 
 std::string standoffLine(const mission::TourResult& tour) {

@@ -1,5 +1,6 @@
 #include "ceilplan/io/trajectory_file.hpp"
 
+#include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/json_values.hpp"
@@ -80,19 +81,11 @@ std::string trajectoryCsv(const mission::Trajectory& trajectory, TrajectoryFrame
   return text;
 }
 
-nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryFrame frame,
-                              const std::optional<mission::GeodeticOrigin>& origin) {
-  // Arrays sized before they are filled: a long sortie has tens of thousands of setpoints.
-  nlohmann::json::array_t setpoints;
-  setpoints.reserve(trajectory.setpoints.size());
-  for (const mission::TrajectorySetpoint& s : trajectory.setpoints) {
-    const std::vector<double> row = trajectoryRow(s, frame);
-    nlohmann::json::array_t values;
-    values.reserve(row.size());
-    for (std::size_t c = 0; c + 1 < row.size(); ++c) values.emplace_back(row[c]);
-    values.emplace_back(s.trigger ? 1 : 0);
-    setpoints.emplace_back(std::move(values));
-  }
+namespace {
+
+// trajectory.json without its setpoints.
+nlohmann::json trajectoryHeader(const mission::Trajectory& trajectory, TrajectoryFrame frame,
+                                const std::optional<mission::GeodeticOrigin>& origin) {
   const mission::TrajectoryLimits& l = trajectory.limits;
   return {{"format", "ceilplan-trajectory"},
           {"version", 1},
@@ -115,8 +108,31 @@ nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryF
                                              {"lon_deg", origin->longitude_deg},
                                              {"alt_m", origin->altitude_m}}
                             : nlohmann::json(nullptr)},
-          {"columns", trajectoryColumns(frame)},
-          {"setpoints", std::move(setpoints)}};
+          {"columns", trajectoryColumns(frame)}};
+}
+
+// One setpoint as trajectory.json holds it: the row's numbers, the trigger as an integer.
+void setRow(nlohmann::json& values, const mission::TrajectorySetpoint& s, TrajectoryFrame frame) {
+  const std::vector<double> row = trajectoryRow(s, frame);
+  for (std::size_t c = 0; c + 1 < row.size(); ++c) values[c] = row[c];
+  values[row.size() - 1] = s.trigger ? 1 : 0;
+}
+
+}  // namespace
+
+nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryFrame frame,
+                              const std::optional<mission::GeodeticOrigin>& origin) {
+  // Arrays sized before they are filled: a long sortie has tens of thousands of setpoints.
+  nlohmann::json::array_t setpoints;
+  setpoints.reserve(trajectory.setpoints.size());
+  for (const mission::TrajectorySetpoint& s : trajectory.setpoints) {
+    nlohmann::json values = nlohmann::json::array();
+    setRow(values, s, frame);
+    setpoints.emplace_back(std::move(values));
+  }
+  nlohmann::json json = trajectoryHeader(trajectory, frame, origin);
+  json["setpoints"] = std::move(setpoints);
+  return json;
 }
 
 void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajectory& trajectory, TrajectoryFrame frame,
@@ -128,7 +144,26 @@ void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajec
 void writeTrajectoryJson(const std::filesystem::path& file, const mission::Trajectory& trajectory,
                          TrajectoryFrame frame, const std::optional<mission::GeodeticOrigin>& origin,
                          const Provenance& provenance) {
-  const std::string text = jsonText(withProvenance(trajectoryJson(trajectory, frame, origin), provenance)) + "\n";
+  // trajectoryJson's text, with the setpoints written row by row into the header's empty array
+  // instead of made a document first (a long sortie's rows are most of the tour's output). In
+  // compact JSON a quote inside a string is escaped, so the empty array's key is found only as
+  // the key itself.
+  nlohmann::json header = trajectoryHeader(trajectory, frame, origin);
+  header["setpoints"] = nlohmann::json::array();
+  std::string text = jsonText(withProvenance(std::move(header), provenance));
+  const std::string key = "\"setpoints\":[";
+  const std::size_t at = text.find(key + "]");
+  if (at == std::string::npos) throw Error("trajectory.json lacks its setpoints");
+  std::string rows;
+  rows.reserve(trajectory.setpoints.size() * 14 * 12);
+  nlohmann::json values = nlohmann::json::array();
+  for (std::size_t k = 0; k < trajectory.setpoints.size(); ++k) {
+    setRow(values, trajectory.setpoints[k], frame);
+    if (k) rows += ',';
+    rows += values.dump();
+  }
+  text.insert(at + key.size(), rows);
+  text += '\n';
   writeTextAtomically(file, [&](std::ostream& out) { out << text; });
 }
 

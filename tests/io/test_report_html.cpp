@@ -106,6 +106,29 @@ TEST(ReportHtml, OneSelfContainedPageWithTheDataBlock) {
   EXPECT_EQ(data["comparison"]["rows"][0][2], "0.2");
 }
 
+TEST(ReportHtml, TheWrittenFileIsTheDocumentWithEveryPartInItsPlace) {
+  // writeReportHtml streams the page part by part; reportHtml builds it whole. Both are the
+  // template with each placeholder replaced, in the template's order: three.js, OrbitControls,
+  // the data, the viewer. A title that quotes a placeholder stays a title.
+  ReportModel m = model();
+  m.title = "quoting /*CEILPLAN:APP*/ and /*CEILPLAN:THREE*/";
+  const std::filesystem::path dir = testing::scratchDirectory("report_parts");
+  writeReportHtml(dir / "report.html", m);
+  const std::string page = testing::readWholeFile(dir / "report.html");
+  EXPECT_EQ(page, reportHtml(m));
+  const std::size_t three = page.find("REVISION=\"111\""), orbit = page.find("var OrbitControls = function"),
+                    data = page.find("id=\"ceilplan-data\""), title = page.find("quoting /*CEILPLAN:APP*/"),
+                    viewer = page.find("window.ceilplanReport");
+  ASSERT_NE(three, std::string::npos);
+  ASSERT_NE(title, std::string::npos);
+  EXPECT_LT(three, orbit);
+  EXPECT_LT(orbit, data);
+  EXPECT_LT(data, title);
+  EXPECT_LT(title, viewer);
+  EXPECT_EQ(page.find("/*CEILPLAN:"), title + std::string("quoting ").size()) << "only the title's own text";
+  EXPECT_EQ(page.find("/*CEILPLAN:THREE*/"), page.rfind("/*CEILPLAN:THREE*/"));
+}
+
 TEST(ReportHtml, RefusesBadModels) {
   const auto refuses = [](const ReportModel& m, const std::string& words) {
     try {

@@ -4,7 +4,9 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/io/csv_columns.hpp"
+#include "ceilplan/io/json_values.hpp"
 #include "ceilplan/io/plan_files.hpp"
+#include "ceilplan/io/provenance.hpp"
 #include "ceilplan/io/trajectory_file.hpp"
 #include "run_command.hpp"
 
@@ -113,6 +115,20 @@ TEST(TrajectoryFile, JsonCarriesTheSetpointsTheFrameAndTheLimits) {
   }
   EXPECT_TRUE(trajectoryJson(t).at("origin").is_null());
   EXPECT_EQ(trajectoryJson(t).at("frame"), "ENU");
+}
+
+TEST(TrajectoryFile, TheWrittenJsonIsTheDocumentsTextRowByRow) {
+  // writeTrajectoryJson writes the rows into the text without making them a document first;
+  // the file is still trajectoryJson's compact text with the provenance, to the byte.
+  const mission::Trajectory t = sampleTrajectory();
+  const std::filesystem::path dir = testing::scratchDirectory("trajectory_json_text");
+  const mission::GeodeticOrigin origin{52.218, 0.0923, 12.0};
+  const Provenance provenance = Provenance::of("test \"setpoints\":[] quoted");
+  for (const TrajectoryFrame frame : {TrajectoryFrame::Enu, TrajectoryFrame::Ned}) {
+    writeTrajectoryJson(dir / "trajectory.json", t, frame, origin, provenance);
+    EXPECT_EQ(testing::readWholeFile(dir / "trajectory.json"),
+              jsonText(withProvenance(trajectoryJson(t, frame, origin), provenance)) + "\n");
+  }
 }
 
 TEST(PathCsv, ReadsPathCsvAndTrajectoryCsvColumnsByName) {

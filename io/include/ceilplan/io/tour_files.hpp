@@ -111,9 +111,9 @@ void writeTourDirectory(const std::filesystem::path& dir, const mission::TourRes
 
 /// The side-by-side table of two modes (ceiling first), as printed and as DIR/comparison.txt.
 std::string comparisonTable(const mission::TourResult& ceiling, const mission::TourResult& free);
-/// comparison.json: both modes' figures with the mission, map and vehicle named.
+/// comparison.json: both modes' figures, with the provenance (which names the mission, map and vehicle).
 nlohmann::json comparisonJson(const mission::TourResult& ceiling, const mission::TourResult& free,
-                              const mission::Mission& mission, const Provenance& provenance);
+                              const Provenance& provenance);
 /// DIR/comparison.txt, DIR/comparison.json, DIR/report.html (both modes) and map views covering both routes.
 void writeTourComparison(const std::filesystem::path& dir, const mission::TourResult& ceiling,
                          const mission::TourResult& free, const mission::Mission& mission,
