@@ -222,7 +222,7 @@ DistanceField::DistanceField(const ColumnIndex& columns, bool unknown_is_blocked
       stage(0.55, 1.0));
 }
 
-double DistanceField::boxDistance_m(const Eigen::Vector3d& point_m, std::int32_t voxel) const {
+double DistanceField::boxSquared_m2(const Eigen::Vector3d& point_m, std::int32_t voxel) const {
   const Index3 index = frame_.unlinear(voxel);
   double squared = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
@@ -231,7 +231,7 @@ double DistanceField::boxDistance_m(const Eigen::Vector3d& point_m, std::int32_t
     const double outside = std::max({lo - point_m[axis], 0.0, point_m[axis] - hi});
     squared += outside * outside;
   }
-  return std::sqrt(squared);
+  return squared;
 }
 
 double DistanceField::boundaryDistance_m(const Eigen::Vector3d& point_m) const {
@@ -246,26 +246,31 @@ double DistanceField::boundaryDistance_m(const Eigen::Vector3d& point_m) const {
 double DistanceField::distance_m(const Eigen::Vector3d& point_m) const {
   const double boundary = boundaryDistance_m(point_m);
   if (boundary == 0.0) return 0.0;
-  Index3 centre;
-  for (int axis = 0; axis < 3; ++axis)
-    centre[axis] = std::clamp(frame_.indexOf(axis, point_m[axis]), 0, frame_.size()[axis] - 1);
+  const Index3& size = frame_.size();
+  Index3 low, high;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int centre = std::clamp(frame_.indexOf(axis, point_m[axis]), 0, size[axis] - 1);
+    low[axis] = std::max(centre - 1, 0);
+    high[axis] = std::min(centre + 1, size[axis] - 1);
+  }
   // Neighbouring voxels mostly share their nearest blocked voxel: each distinct one is measured
-  // once (the minimum over the same set, so the same value).
+  // once, by its squared distance (the square root of the least is the least square root, to the
+  // bit: the square root is monotone and correctly rounded).
   std::array<std::int32_t, 27> features;
   int distinct = 0;
-  for (int dk = -1; dk <= 1; ++dk)
-    for (int dj = -1; dj <= 1; ++dj)
-      for (int di = -1; di <= 1; ++di) {
-        const int i = centre[0] + di, j = centre[1] + dj, k = centre[2] + dk;
-        if (!frame_.inside(i, j, k)) continue;
-        const std::int32_t feature = nearest_[frame_.linear(i, j, k)];
+  for (int k = low[2]; k <= high[2]; ++k)
+    for (int j = low[1]; j <= high[1]; ++j) {
+      const std::size_t row = frame_.linear(0, j, k);
+      for (int i = low[0]; i <= high[0]; ++i) {
+        const std::int32_t feature = nearest_[row + i];
         if (feature >= 0 &&
             std::find(features.begin(), features.begin() + distinct, feature) == features.begin() + distinct)
           features[distinct++] = feature;
       }
-  double best = boundary;
-  for (int f = 0; f < distinct; ++f) best = std::min(best, boxDistance_m(point_m, features[f]));
-  return best;
+    }
+  double best_squared = kInfinity;
+  for (int f = 0; f < distinct; ++f) best_squared = std::min(best_squared, boxSquared_m2(point_m, features[f]));
+  return std::min(boundary, std::sqrt(best_squared));
 }
 
 double DistanceField::lowerBound_m(const Eigen::Vector3d& point_m) const {

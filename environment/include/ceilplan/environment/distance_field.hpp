@@ -54,7 +54,8 @@ class DistanceField {
   }
 
  private:
-  double boxDistance_m(const Eigen::Vector3d& point_m, std::int32_t voxel) const;
+  /// Squared distance from `point_m` to the box of voxel `voxel` (a linear index).
+  double boxSquared_m2(const Eigen::Vector3d& point_m, std::int32_t voxel) const;
   Eigen::Vector3d centreOf(std::int32_t voxel) const;
   double boundaryDistance_m(const Eigen::Vector3d& point_m) const;
 
