@@ -129,6 +129,36 @@ TEST(ReportHtml, TheWrittenFileIsTheDocumentWithEveryPartInItsPlace) {
   EXPECT_EQ(page.find("/*CEILPLAN:THREE*/"), page.rfind("/*CEILPLAN:THREE*/"));
 }
 
+TEST(ReportHtml, LongSamplesAreWrittenAsTheWholeArraysDump) {
+  // The samples are written a slice of 4096 at a time, not as one document: across slices the
+  // text is still what dumping each whole column gives (values rounded to the millimetre, the
+  // SOC to 1e-5), and it parses back to them.
+  ReportModel m = model();
+  m.plans.resize(1);
+  m.plans[0].samples.clear();
+  nlohmann::json x = nlohmann::json::array(), soc = nlohmann::json::array(), sortie = nlohmann::json::array();
+  for (int k = 0; k < 10000; ++k) {
+    const ReportSample s{0.1 * k, {1.0 + 0.0123456 * k, 2.0, 2.5}, 8.0, 0.95 - 0.0000711 * k, 1 + k / 5000};
+    m.plans[0].samples.push_back(s);
+    x.push_back(std::round(s.position_m.x() * 1e3) / 1e3);
+    soc.push_back(std::round(s.soc * 1e5) / 1e5);
+    sortie.push_back(s.sortie);
+  }
+  const std::string page = reportHtml(m);
+  for (const auto& [key, column] :
+       {std::pair<std::string, const nlohmann::json*>{"x", &x}, {"soc", &soc}, {"sortie", &sortie}})
+    EXPECT_NE(page.find("\"" + key + "\":" + column->dump() + ","), std::string::npos) << key;
+  const std::string open = "<script type=\"application/json\" id=\"ceilplan-data\">";
+  const std::size_t begin = page.find(open) + open.size();
+  const nlohmann::json data = nlohmann::json::parse(page.substr(begin, page.find("</script>", begin) - begin));
+  const nlohmann::json& samples = data["plans"][0]["samples"];
+  EXPECT_EQ(samples["x"], x);
+  EXPECT_EQ(samples["soc"], soc);
+  EXPECT_EQ(samples["sortie"], sortie);
+  EXPECT_EQ(samples["t"].size(), 10000u);
+  EXPECT_EQ(data["plans"][0]["name"], "ceiling");
+}
+
 TEST(ReportHtml, RefusesBadModels) {
   const auto refuses = [](const ReportModel& m, const std::string& words) {
     try {
