@@ -348,8 +348,6 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
 std::string reportHtml(const ReportModel& model) {
   const std::string data = pageData(model);
   std::string page;
-  page.reserve(report_assets::PageTemplate.size() + report_assets::Three.size() + report_assets::OrbitControls.size() +
-               data.size() + report_assets::ViewerScript.size());
   emitPage(data, [&](std::string_view part) { page.append(part); });
   return page;
 }

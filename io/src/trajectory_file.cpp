@@ -150,19 +150,20 @@ void writeTrajectoryJson(const std::filesystem::path& file, const mission::Traje
   // the key itself.
   nlohmann::json header = trajectoryHeader(trajectory, frame, origin);
   header["setpoints"] = nlohmann::json::array();
-  std::string text = jsonText(withProvenance(std::move(header), provenance));
+  const std::string skeleton = jsonText(withProvenance(std::move(header), provenance));
   const std::string key = "\"setpoints\":[";
-  const std::size_t at = text.find(key + "]");
+  const std::size_t at = skeleton.find(key + "]");
   if (at == std::string::npos) throw Error("trajectory.json lacks its setpoints");
-  std::string rows;
-  rows.reserve(trajectory.setpoints.size() * 14 * 12);
+  const std::size_t rows_at = at + key.size();
+  std::string text = skeleton.substr(0, rows_at);
+  text.reserve(skeleton.size() + trajectory.setpoints.size() * 14 * 12);
   nlohmann::json values = nlohmann::json::array();
   for (std::size_t k = 0; k < trajectory.setpoints.size(); ++k) {
     setRow(values, trajectory.setpoints[k], frame);
-    if (k) rows += ',';
-    rows += values.dump();
+    if (k) text += ',';
+    text += jsonText(values);
   }
-  text.insert(at + key.size(), rows);
+  text.append(skeleton, rows_at, std::string::npos);
   text += '\n';
   writeTextAtomically(file, [&](std::ostream& out) { out << text; });
 }
