@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <unordered_map>
+#include <utility>
 
 namespace ceilplan::planner {
 
@@ -109,10 +111,16 @@ class SegmentMemo {
   std::unordered_map<Ends, Segment, Hash> segments_;
 };
 
-}  // namespace
+// `refined` where every motion of it is valid and it costs less than `path`, else `path`.
+Waypoints validAndCheaper(const Waypoints& refined, const Waypoints& path, const SafetyRules& rules,
+                          const FlightObjective& objective) {
+  if (invalidMotions(refined, rules) > 0 || !rules.isStateValid(refined.front())) return path;
+  return objective.pathCost(refined) < objective.pathCost(path) ? refined : path;
+}
 
-Waypoints refinePath(const Waypoints& path, const SafetyRules& rules, const FlightObjective& objective,
-                     const RefinementOptions& options) {
+// BOBYQA over the inner waypoints of the whole path (refinePath).
+Waypoints refineWhole(const Waypoints& path, const SafetyRules& rules, const FlightObjective& objective,
+                      const RefinementOptions& options) {
   if (path.size() < 2) return path;
   // Enough inner waypoints to bend the path, few enough for a derivative-free local method.
   const int segments = std::max(2, options.max_waypoints - 1);
@@ -161,9 +169,49 @@ Waypoints refinePath(const Waypoints& path, const SafetyRules& rules, const Flig
   } catch (const std::exception&) {
     // NLopt gives up (roundoff, forced stop): whatever x holds is re-checked below.
   }
-  const Waypoints refined = shortcutPath(toPath(x.data()), rules, objective);
-  if (invalidMotions(refined, rules) > 0 || !rules.isStateValid(refined.front())) return path;
-  return objective.pathCost(refined) < objective.pathCost(path) ? refined : path;
+  return validAndCheaper(shortcutPath(toPath(x.data()), rules, objective), path, rules, objective);
+}
+
+// The path cut `at_m` along it: the part before the cut, ending there, and the part after,
+// starting there.
+std::pair<Waypoints, Waypoints> cutAt(const Waypoints& path, double at_m) {
+  double walked_m = 0.0;
+  for (std::size_t k = 1; k < path.size(); ++k) {
+    const double step_m = (path[k] - path[k - 1]).norm();
+    if (walked_m + step_m >= at_m) {
+      const auto next = path.begin() + static_cast<std::ptrdiff_t>(k);
+      std::pair<Waypoints, Waypoints> parts{Waypoints(path.begin(), next), Waypoints(next, path.end())};
+      const Eigen::Vector3d cut_m =
+          walked_m + step_m == at_m
+              ? path[k]
+              : Eigen::Vector3d(path[k - 1] + (path[k] - path[k - 1]) * ((at_m - walked_m) / step_m));
+      if (cut_m != parts.first.back()) parts.first.push_back(cut_m);
+      if (cut_m != parts.second.front()) parts.second.insert(parts.second.begin(), cut_m);
+      return parts;
+    }
+    walked_m += step_m;
+  }
+  return {path, Waypoints{path.back()}};
+}
+
+}  // namespace
+
+Waypoints refinePath(const Waypoints& path, const SafetyRules& rules, const FlightObjective& objective,
+                     const RefinementOptions& options) {
+  const double window_m = options.end_window_m;
+  const double length_m = pathLength(path);
+  if (!(window_m > 0.0) || length_m <= 3.0 * window_m) return refineWhole(path, rules, objective, options);
+  // A long leg's middle is the roadmap's route along the structure, optimal on its lattice: the
+  // waypoints resampled over all of it would lie tens of metres apart, each moved at most
+  // max_move_m, and every evaluation would cost the whole leg. Each end is refined on its own
+  // instead, where the leg leaves and meets the structure, at the same cost however long the leg.
+  const auto [head, rest] = cutAt(path, window_m);
+  const auto [middle, tail] = cutAt(rest, pathLength(rest) - window_m);
+  Waypoints joined = refineWhole(head, rules, objective, options);
+  joined.insert(joined.end(), middle.begin() + 1, middle.end() - 1);  // its ends are the parts'
+  const Waypoints refined_tail = refineWhole(tail, rules, objective, options);
+  joined.insert(joined.end(), refined_tail.begin(), refined_tail.end());
+  return validAndCheaper(shortcutPath(joined, rules, objective), path, rules, objective);
 }
 
 }  // namespace ceilplan::planner

@@ -26,10 +26,14 @@ struct RefinementOptions {
   int max_evaluations = 600;  ///< cost evaluations the refinement may spend
   int max_waypoints = 12;     ///< the path is resampled to at most this many waypoints first
   double max_move_m = 0.6;    ///< each inner waypoint moves at most this far per axis
+  /// A path longer than three times this is refined within this far of each end, each end on its
+  /// own, and keeps its middle; 0 refines every path whole.
+  double end_window_m = 30.0;
 };
 
 /// Moves the inner waypoints with NLopt's LN_BOBYQA on cost x (1 + number of invalid motions),
 /// the endpoints fixed, then keeps the result only if every motion is valid and the cost dropped.
+/// A path longer than 3 x RefinementOptions::end_window_m is refined so near each of its ends.
 /// Returns the input when nothing better was found.
 Waypoints refinePath(const Waypoints& path, const SafetyRules& rules, const FlightObjective& objective,
                      const RefinementOptions& options);
