@@ -14,8 +14,7 @@ namespace {
 // 1.95 m saves charge where the refinement raises it towards the ceiling.
 environment::OccupancyMap longCorridor() {
   return analyticMap({-0.5, -2.7, 0.0}, {28.5, 2.7, 2.6}, 0.1, [](const Eigen::Vector3d& c) {
-    if (c.z() < 0.2 || c.z() > 2.2 || std::abs(c.y()) > 2.5 || c.x() < -0.3 || c.x() > 28.3)
-      return CellState::Occupied;
+    if (c.z() < 0.2 || c.z() > 2.2 || std::abs(c.y()) > 2.5 || c.x() < -0.3 || c.x() > 28.3) return CellState::Occupied;
     return CellState::Free;
   });
 }
