@@ -587,8 +587,13 @@ constexpr int kSearchRounds = 2;
 // line's charge until it is routed.
 constexpr double kBlockedLegFactor = 2.0;
 
-// What a leg draws at each of its samples, as a LegScorer's samples have it.
-using LegLoads = std::function<std::vector<LoadSample>(int from, int to, const std::vector<Eigen::Vector3d>&)>;
+// A leg's totals, as a LegScorer's estimate has them, and what it draws at each of its samples,
+// as a LegScorer's samples have it: one integration.
+struct LegDraws {
+  planner::PathEvaluation totals;
+  std::vector<LoadSample> loads;
+};
+using LegLoads = std::function<LegDraws(int from, int to, const std::vector<Eigen::Vector3d>&)>;
 
 // The legs of a large tour: estimated where the order search or the split looks, routed and
 // refined where the plan flies.
@@ -618,8 +623,9 @@ class SparseLegs {
   const std::vector<std::vector<int>>& neighbours() const { return neighbours_; }
   const std::set<int>& lastSplitPoints() const { return last_split_points_; }
 
-  // Estimates the legs not stored yet, on the tour's threads.
-  void estimate(Pairs pairs) {
+  // Estimates the legs not stored yet, on the tour's threads; with `keep_loads`, also keeps what
+  // the split flies of each (home_costs_, as profileHomeLegs would) from the same integration.
+  void estimate(Pairs pairs, bool keep_loads = false) {
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     Pairs missing;
@@ -639,14 +645,22 @@ class SparseLegs {
     // Stored once all are estimated: an estimate that throws (no route joins the places) leaves
     // no empty leg behind for a later round to fly.
     std::vector<std::pair<TourLeg, TourLeg>> estimated(tasks.size());
+    std::vector<LegCost> kept(keep_loads ? tasks.size() : 0);
     parallelFor(tasks.size(), options_.workers, [&](std::size_t k) {
       const auto [from, to] = tasks[k];
-      estimated[k] = both[k] ? firstLegsBothWays(from, to) : std::make_pair(firstLeg(from, to), TourLeg{});
+      if (both[k]) {
+        estimated[k] = firstLegsBothWays(from, to);
+        return;
+      }
+      std::vector<LoadSample> loads;
+      estimated[k].first = firstLeg(from, to, keep_loads ? &loads : nullptr);
+      if (keep_loads) kept[k] = homeCost(estimated[k].first.evaluation, loads);
     });
     for (std::size_t k = 0; k < tasks.size(); ++k) {
       const auto [from, to] = tasks[k];
       tour_.legs(from, to) = std::move(estimated[k].first);
       if (both[k]) tour_.legs(to, from) = std::move(estimated[k].second);
+      if (keep_loads && !both[k]) home_costs_(from, to) = std::move(kept[k]);
     }
   }
 
@@ -663,7 +677,7 @@ class SparseLegs {
     if (const double* known = knownVisit(from, to)) return *known;
     // Stored once estimated: an estimate that throws (no route joins the places) leaves no empty
     // leg behind, which a later round would fly as a leg without a waypoint.
-    TourLeg estimated = firstLeg(from, to);
+    TourLeg estimated = firstLeg(from, to, nullptr);
     const TourLeg& leg = tour_.legs(from, to) = std::move(estimated);
     const double cost = mission::visitCost(tour_, leg, to);
     std::vector<std::pair<int, double>>& row = visit_costs_[from];
@@ -842,15 +856,16 @@ class SparseLegs {
   // line, the cheaper. Else an estimate, routed once a plan flies it: the straight line scored at
   // kBlockedLegFactor times its charge (a search here, in a pocket of the structure, may take
   // a tenth of a second, and the order avoids such legs anyway).
-  TourLeg firstLeg(int from, int to) const {
-    if (viaRoadmap(from, to)) return scoredEstimate(from, to, roadmap_->homeLeg(from, to), true);
-    return firstLeg(from, to, shapeBetween(tour_.places_m[from], tour_.places_m[to]));
+  // `loads` (when given) gains what the leg draws at each sample (scoredEstimate).
+  TourLeg firstLeg(int from, int to, std::vector<LoadSample>* loads) const {
+    if (viaRoadmap(from, to)) return scoredEstimate(from, to, roadmap_->homeLeg(from, to), true, loads);
+    return firstLeg(from, to, shapeBetween(tour_.places_m[from], tour_.places_m[to]), loads);
   }
 
   // firstLeg(from, to) and firstLeg(to, from), the same legs, with the map read once for the two.
   std::pair<TourLeg, TourLeg> firstLegsBothWays(int from, int to) const {
     const LegShape shape = shapeBetween(tour_.places_m[from], tour_.places_m[to]);
-    return {firstLeg(from, to, shape), firstLeg(to, from, shape)};
+    return {firstLeg(from, to, shape, nullptr), firstLeg(to, from, shape, nullptr)};
   }
 
   bool viaRoadmap(int from, int to) const { return roadmap_ && (from == 0 || to == 0); }
@@ -879,9 +894,9 @@ class SparseLegs {
   // The leg from `from` to `to` that `shape` (of the line between them) allows: the straight
   // line, else the valid turn of least charge this way (the first in turnCandidates' order on a
   // tie), else the blocked estimate.
-  TourLeg firstLeg(int from, int to, const LegShape& shape) const {
+  TourLeg firstLeg(int from, int to, const LegShape& shape, std::vector<LoadSample>* loads) const {
     const Eigen::Vector3d &a = tour_.places_m[from], &b = tour_.places_m[to];
-    if (shape.straight) return scoredEstimate(from, to, {a, b}, true);
+    if (shape.straight) return scoredEstimate(from, to, {a, b}, true, loads);
     std::optional<Eigen::Vector3d> best;
     double best_cost = std::numeric_limits<double>::infinity();
     for (const Eigen::Vector3d& turn : turnCandidates(a, b)) {
@@ -892,8 +907,8 @@ class SparseLegs {
         best = turn;
       }
     }
-    if (best) return scoredEstimate(from, to, {a, *best, b}, true);
-    return scoredEstimate(from, to, {a, b}, false);
+    if (best) return scoredEstimate(from, to, {a, *best, b}, true, loads);
+    return scoredEstimate(from, to, {a, b}, false, loads);
   }
 
   // Between near neighbours the straight line is often blocked by a flange or a pier cap's
@@ -912,12 +927,20 @@ class SparseLegs {
   // An estimate on `waypoints`: its totals (a blocked leg's charge priced up). The order search
   // reads the totals only, and about twenty legs are estimated per place: their samples would
   // hold most of a large tour's memory, and the lookups only samples need (clearance) cost time.
-  // profile() scores them in full where a split needs them.
-  TourLeg scoredEstimate(int from, int to, std::vector<Eigen::Vector3d> waypoints, bool routed) const {
+  // profile() scores them in full where a split needs them. With `loads`, what the leg draws
+  // at each sample too, from the same integration (the same totals, to the bit).
+  TourLeg scoredEstimate(int from, int to, std::vector<Eigen::Vector3d> waypoints, bool routed,
+                         std::vector<LoadSample>* loads = nullptr) const {
     TourLeg leg;
     leg.waypoints = std::move(waypoints);
     leg.routed = routed;
-    leg.evaluation = score_totals_(from, to, leg.waypoints);
+    if (loads) {
+      LegDraws draws = loads_(from, to, leg.waypoints);
+      leg.evaluation = std::move(draws.totals);
+      *loads = std::move(draws.loads);
+    } else {
+      leg.evaluation = score_totals_(from, to, leg.waypoints);
+    }
     if (!leg.routed) leg.evaluation.charge_ah *= kBlockedLegFactor;
     return leg;
   }
@@ -932,7 +955,9 @@ class SparseLegs {
       Pairs home = legs.homeLegs(order, split_points);
       std::sort(home.begin(), home.end());
       home.erase(std::unique(home.begin(), home.end()), home.end());
-      legs.estimate(home);
+      // A leg out of home or back is estimated and profiled at once (an uncalibrated vehicle's
+      // profile is its samples' loads): a long structure's is as long as the way home.
+      legs.estimate(home, !legs.context_.vehicle().calibration);
       legs.profileHomeLegs(home);
       Pairs consecutive;
       for (std::size_t k = 1; k < order.size(); ++k) consecutive.emplace_back(order[k - 1], order[k]);
@@ -984,13 +1009,20 @@ class SparseLegs {
       if (context_.vehicle().calibration) {
         evaluation.samples = score_(from, to, leg.waypoints).samples;  // the sensitivities read every sample
         costs[k] = legCost(evaluation, context_);
+        costs[k].load_profile = stepProfile(costs[k].load_profile, kHoverStepS);
       } else {
-        costs[k] = legCost(evaluation, context_);
-        costs[k].load_profile = loads_(from, to, leg.waypoints);
+        costs[k] = homeCost(evaluation, loads_(from, to, leg.waypoints).loads);
       }
-      costs[k].load_profile = stepProfile(costs[k].load_profile, kHoverStepS);
     });
     for (std::size_t k = 0; k < bare.size(); ++k) home_costs_(bare[k].first, bare[k].second) = std::move(costs[k]);
+  }
+
+  // What the split flies of an uncalibrated vehicle's leg out of home or back: its estimate's
+  // totals and its loads in a hover's steps.
+  LegCost homeCost(const planner::PathEvaluation& estimate, const std::vector<LoadSample>& loads) const {
+    LegCost cost = legCost(estimate, context_);
+    cost.load_profile = stepProfile(loads, kHoverStepS);
+    return cost;
   }
 
   SortiePlan split(const std::vector<int>& order, const std::set<int>& split_points) {
@@ -1125,11 +1157,12 @@ TourResult planTourWith(const Mission& mission, const PlanningContext& context, 
   };
   const LegLoads loads = [&](int from, int to, const std::vector<Eigen::Vector3d>& waypoints) {
     std::vector<planner::PathDraw> draws;
-    planner::evaluatePathTotals(context.fullModel(), pack, tour.start_soc, waypoints, speedCap(from, to), draws);
-    std::vector<LoadSample> profile;
-    profile.reserve(draws.size());
-    for (const planner::PathDraw& draw : draws) profile.push_back({draw.t_s, draw.propulsion_power_w});
-    return profile;
+    LegDraws leg;
+    leg.totals =
+        planner::evaluatePathTotals(context.fullModel(), pack, tour.start_soc, waypoints, speedCap(from, to), draws);
+    leg.loads.reserve(draws.size());
+    for (const planner::PathDraw& draw : draws) leg.loads.push_back({draw.t_s, draw.propulsion_power_w});
+    return leg;
   };
   const auto legPlannerFor = [&](int from, int to) {
     return legPlanner(context, mode, tour.places_m[from], tour.places_m[to]);
