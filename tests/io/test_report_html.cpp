@@ -130,9 +130,8 @@ TEST(ReportHtml, TheWrittenFileIsTheDocumentWithEveryPartInItsPlace) {
 }
 
 TEST(ReportHtml, LongSamplesAreWrittenAsTheWholeArraysDump) {
-  // The samples are written a slice of 4096 at a time, not as one document: across slices the
-  // text is still what dumping each whole column gives (values rounded to the millimetre, the
-  // SOC to 1e-5), and it parses back to them.
+  // A long plan's sample columns go into the page as each whole column's dump (values rounded to
+  // the millimetre, the SOC to 1e-5), and the page's data parses back to them.
   ReportModel m = model();
   m.plans.resize(1);
   m.plans[0].samples.clear();
