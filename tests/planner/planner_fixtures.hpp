@@ -21,12 +21,15 @@
 
 namespace ceilplan::testing {
 
-// A 7 m corridor along x, 5 m wide, floor top at 0.2 m, ceiling underside at `ceiling(x, y)`
-// (0.4 m slab), walls beyond |y| = 2.5 m and x outside [-0.5, 6.5]: high and wide enough that
-// free mode's 1 m standoff leaves room. No ceiling: `ceiling` returns +inf (free up to 4 m).
-inline environment::OccupancyMap corridor(const std::function<double(double x, double y)>& ceiling) {
-  return analyticMap({-0.7, -2.7, 0}, {6.7, 2.7, 4.2}, 0.1, [&](const Eigen::Vector3d& c) {
-    if (c.z() < 0.2 || std::abs(c.y()) > 2.5 || c.x() < -0.5 || c.x() > 6.5) return CellState::Occupied;
+// A corridor along x, `length_m` long (7 m by default), 5 m wide, floor top at 0.2 m, ceiling
+// underside at `ceiling(x, y)` (0.4 m slab), walls beyond |y| = 2.5 m and x outside
+// [-0.5, length_m - 0.5]: high and wide enough that free mode's 1 m standoff leaves room. No
+// ceiling: `ceiling` returns +inf (free up to 4 m).
+inline environment::OccupancyMap corridor(const std::function<double(double x, double y)>& ceiling,
+                                          double length_m = 7.0) {
+  const double end_m = length_m - 0.5;
+  return analyticMap({-0.7, -2.7, 0}, {end_m + 0.2, 2.7, 4.2}, 0.1, [&](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || std::abs(c.y()) > 2.5 || c.x() < -0.5 || c.x() > end_m) return CellState::Occupied;
     const double underside = ceiling(c.x(), c.y());
     if (c.z() < std::min(underside, 4.0)) return CellState::Free;
     if (c.z() < underside + 0.4) return CellState::Occupied;
