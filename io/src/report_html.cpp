@@ -4,7 +4,9 @@
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "json_number.hpp"
 
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -36,32 +38,39 @@ void requireFinite(const Eigen::Vector3d& p, const std::string& what) {
   if (!p.allFinite()) throw InputError("report: " + what + " must be finite, got " + formatPoint(p));
 }
 
-// The objects below are filled by moving their parts in: a braced list copies each part, and a
-// long tour's samples run to millions of numbers.
-nlohmann::json samplesJson(const std::vector<ReportSample>& samples) {
-  nlohmann::json::array_t t, x, y, z, current, soc, sortie;
-  for (nlohmann::json::array_t* column : {&t, &x, &y, &z, &current, &soc, &sortie}) column->reserve(samples.size());
-  for (const ReportSample& s : samples) {
-    t.emplace_back(rounded(s.t_s));
-    x.emplace_back(rounded(s.position_m.x()));
-    y.emplace_back(rounded(s.position_m.y()));
-    z.emplace_back(rounded(s.position_m.z()));
-    current.emplace_back(rounded(s.current_a));
-    soc.emplace_back(rounded(s.soc, 1e5));
-    sortie.emplace_back(s.sortie);
+// A JSON array of `count` numbers, `value(k)` each, appended as jsonText writes it: a long
+// tour's samples run to millions of numbers, which are not made a document first.
+template <class Value>
+void appendNumbers(std::string& text, std::size_t count, Value&& value) {
+  text += '[';
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k) text += ',';
+    appendJsonNumber(text, value(k));
   }
-  nlohmann::json json = nlohmann::json::object();
-  json["t"] = std::move(t);
-  json["x"] = std::move(x);
-  json["y"] = std::move(y);
-  json["z"] = std::move(z);
-  json["current"] = std::move(current);
-  json["soc"] = std::move(soc);
-  json["sortie"] = std::move(sortie);
-  return json;
+  text += ']';
 }
 
-nlohmann::json planJson(const ReportPlan& plan) {
+// The text of the samples' object: one array per figure, as jsonText writes its keys (in order).
+void appendSamples(std::string& text, const std::vector<ReportSample>& samples) {
+  const std::size_t n = samples.size();
+  text += "{\"current\":";
+  appendNumbers(text, n, [&](std::size_t k) { return rounded(samples[k].current_a); });
+  text += ",\"soc\":";
+  appendNumbers(text, n, [&](std::size_t k) { return rounded(samples[k].soc, 1e5); });
+  text += ",\"sortie\":";
+  appendNumbers(text, n, [&](std::size_t k) { return static_cast<long>(samples[k].sortie); });
+  text += ",\"t\":";
+  appendNumbers(text, n, [&](std::size_t k) { return rounded(samples[k].t_s); });
+  for (int axis = 0; axis < 3; ++axis) {
+    text += axis == 0 ? ",\"x\":" : axis == 1 ? ",\"y\":" : ",\"z\":";
+    appendNumbers(text, n, [&](std::size_t k) { return rounded(samples[k].position_m[axis]); });
+  }
+  text += '}';
+}
+
+// The text of one plan's object, its keys in jsonText's order. The objects are filled by moving
+// their parts in: a braced list copies each part.
+void appendPlan(std::string& text, const ReportPlan& plan) {
   nlohmann::json::array_t targets, photos, patches, summary;
   targets.reserve(plan.targets.size());
   for (const ReportTarget& t : plan.targets)
@@ -86,36 +95,32 @@ nlohmann::json planJson(const ReportPlan& plan) {
   nlohmann::json coverage = nlohmann::json::object();
   coverage["label"] = plan.coverage_label;
   coverage["patches"] = std::move(patches);
-  nlohmann::json json = nlohmann::json::object();
-  json["name"] = plan.name;
-  json["samples"] = samplesJson(plan.samples);
-  json["targets"] = std::move(targets);
-  json["photos"] = std::move(photos);
-  json["coverage"] = std::move(coverage);
-  json["summary"] = std::move(summary);
-  return json;
+  text += "{\"coverage\":" + jsonText(coverage);
+  text += ",\"name\":" + jsonText(nlohmann::json(plan.name));
+  text += ",\"photos\":" + jsonText(nlohmann::json(std::move(photos)));
+  text += ",\"samples\":";
+  appendSamples(text, plan.samples);
+  text += ",\"summary\":" + jsonText(nlohmann::json(std::move(summary)));
+  text += ",\"targets\":" + jsonText(nlohmann::json(std::move(targets))) + "}";
 }
 
-// Voxel centres as integer steps from the lowest corner, each followed by its face bits: a
-// third of the text of coordinates.
-nlohmann::json structureJson(const ReportStructure& structure) {
+// The structure's object: voxel centres as integer steps from the lowest corner, each followed
+// by its face bits (a third of the text of coordinates).
+void appendStructure(std::string& text, const ReportStructure& structure) {
   Eigen::Vector3d low = Eigen::Vector3d::Constant(0.0);
   if (!structure.centres_m.empty()) {
     low = structure.centres_m.front();
     for (const Eigen::Vector3d& c : structure.centres_m) low = low.cwiseMin(c);
   }
-  nlohmann::json::array_t cells;
-  cells.reserve(4 * structure.centres_m.size());
-  for (std::size_t v = 0; v < structure.centres_m.size(); ++v) {
-    for (int axis = 0; axis < 3; ++axis)
-      cells.push_back(std::lround((structure.centres_m[v][axis] - low[axis]) / structure.voxel_m));
-    cells.push_back(structure.faces.empty() ? 63 : structure.faces[v]);
-  }
-  nlohmann::json json = nlohmann::json::object();
-  json["voxel_m"] = structure.voxel_m;
-  json["origin"] = point(low);
-  json["cells"] = std::move(cells);
-  return json;
+  text += "{\"cells\":";
+  appendNumbers(text, 4 * structure.centres_m.size(), [&](std::size_t k) -> long {
+    const std::size_t v = k / 4;
+    const int axis = static_cast<int>(k % 4);
+    if (axis == 3) return structure.faces.empty() ? 63 : structure.faces[v];
+    return std::lround((structure.centres_m[v][axis] - low[axis]) / structure.voxel_m);
+  });
+  text += ",\"origin\":" + jsonText(point(low));
+  text += ",\"voxel_m\":" + jsonText(nlohmann::json(structure.voxel_m)) + "}";
 }
 
 // JSON inside a <script> element: "</" must not appear.
@@ -125,23 +130,25 @@ std::string scriptSafe(std::string text) {
   return text;
 }
 
-// The page's data, script-safe. The document is gone once its text is made.
+// The page's data, script-safe: jsonText of the document {comparison, home, plans, reserve_soc,
+// structure, title}, written part by part, its large arrays straight into the text.
 std::string pageData(const ReportModel& model) {
   model.validate();
-  nlohmann::json::array_t plans;
-  plans.reserve(model.plans.size());
-  for (const ReportPlan& plan : model.plans) plans.push_back(planJson(plan));
   nlohmann::json comparison = nlohmann::json::object();
   comparison["header"] = model.comparison_header;
   comparison["rows"] = model.comparison_rows;
-  nlohmann::json data = nlohmann::json::object();
-  data["title"] = model.title;
-  data["home"] = point(model.home_m);
-  data["reserve_soc"] = model.reserve_soc;
-  data["structure"] = structureJson(model.structure);
-  data["plans"] = std::move(plans);
-  data["comparison"] = std::move(comparison);
-  return scriptSafe(jsonText(data));
+  std::string text = "{\"comparison\":" + jsonText(comparison);
+  text += ",\"home\":" + jsonText(point(model.home_m));
+  text += ",\"plans\":[";
+  for (std::size_t p = 0; p < model.plans.size(); ++p) {
+    if (p) text += ',';
+    appendPlan(text, model.plans[p]);
+  }
+  text += "],\"reserve_soc\":" + jsonText(nlohmann::json(model.reserve_soc));
+  text += ",\"structure\":";
+  appendStructure(text, model.structure);
+  text += ",\"title\":" + jsonText(nlohmann::json(model.title)) + "}";
+  return scriptSafe(std::move(text));
 }
 
 // The page in order, part by part: the template up to each placeholder, then what replaces it
@@ -250,6 +257,11 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
     return i >= frame.indexOf(0, p.x() - half) && i <= frame.indexOf(0, p.x() + half) &&
            std::abs(frame.centreOf(0, i) - p.x()) <= half;
   };
+  // A probe farther than this (squared) from a voxel's centre cannot take it: `takes` is the
+  // sphere's test, computed otherwise, and the margin is far above its rounding. Most probes in
+  // the buckets around a voxel are (often a whole bucket's, from its probes' box), and this is
+  // cheaper than `takes`.
+  const double beyond_m2 = radius_m * radius_m * (1.0 + 1e-6) + 1e-9;
   // Each voxel is visited once, not once per probe whose sphere holds it (spheres half a metre
   // apart overlap a dozen times over): the probes are bucketed in cubes at least the radius
   // wide, so every probe that may take a voxel lies in the 27 cubes around the voxel's.
@@ -278,11 +290,14 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
   };
   std::vector<std::vector<Eigen::Vector3d>> buckets(
       static_cast<std::size_t>(bucket_count[0] * bucket_count[1] * bucket_count[2]));
+  std::vector<Eigen::AlignedBox3d> bucket_boxes(buckets.size());  // around each bucket's probes
   constexpr int kMost = std::numeric_limits<int>::max(), kLeast = std::numeric_limits<int>::min();
   environment::Index3 low{kMost, kMost, kMost}, high{kLeast, kLeast, kLeast};
   for (const Eigen::Vector3d& p : probes) {
     const std::array<long, 3> bucket = bucketOf(p);
-    buckets[static_cast<std::size_t>(bucketIndex(bucket[0], bucket[1], bucket[2]))].push_back(p);
+    const auto at = static_cast<std::size_t>(bucketIndex(bucket[0], bucket[1], bucket[2]));
+    buckets[at].push_back(p);
+    bucket_boxes[at].extend(p);
     for (int axis = 0; axis < 3; ++axis) {
       low[axis] = std::min(low[axis], frame.indexOf(axis, p[axis]) - reach - 1);
       high[axis] = std::max(high[axis], frame.indexOf(axis, p[axis]) + reach + 1);
@@ -299,16 +314,18 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
             static_cast<std::uint8_t>(isFree(i - 1, j, k) | isFree(i + 1, j, k) << 1 | isFree(i, j - 1, k) << 2 |
                                       isFree(i, j + 1, k) << 3 | isFree(i, j, k - 1) << 4 | isFree(i, j, k + 1) << 5);
         if (!faces) continue;
-        const std::array<long, 3> centre =
-            bucketOf(Eigen::Vector3d(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k)));
+        const Eigen::Vector3d centre_m(frame.centreOf(0, i), frame.centreOf(1, j), frame.centreOf(2, k));
+        const std::array<long, 3> centre = bucketOf(centre_m);
         bool taken = false;
         for (long dx = -1; dx <= 1 && !taken; ++dx)
           for (long dy = -1; dy <= 1 && !taken; ++dy)
             for (long dz = -1; dz <= 1 && !taken; ++dz) {
               const long bucket = bucketIndex(centre[0] + dx, centre[1] + dy, centre[2] + dz);
-              if (bucket < 0) continue;
+              if (bucket < 0 ||
+                  bucket_boxes[static_cast<std::size_t>(bucket)].squaredExteriorDistance(centre_m) > beyond_m2)
+                continue;
               for (const Eigen::Vector3d& p : buckets[static_cast<std::size_t>(bucket)])
-                if (takes(p, i, j, k)) {
+                if ((centre_m - p).squaredNorm() <= beyond_m2 && takes(p, i, j, k)) {
                   taken = true;
                   break;
                 }

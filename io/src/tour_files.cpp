@@ -409,19 +409,30 @@ std::vector<TourPathRow> tourPathRows(const mission::TourResult& tour) {
 
 void writeTourPathCsv(const std::filesystem::path& file, const mission::TourResult& tour,
                       const Provenance& provenance) {
-  writeTextAtomically(file, [&](std::ostream& out) {
-    out << provenance.csvComment() << '\n'
-        << "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie,ground_gap_m,phase,assumed_free\n"
-        << std::setprecision(12);
-    for (const TourPathRow& row : tourPathRows(tour)) {
-      out << row.t_s << ',' << row.position_m.x() << ',' << row.position_m.y() << ',' << row.position_m.z() << ','
-          << row.speed_m_s << ',';
-      if (std::isfinite(row.ceiling_gap_m)) out << row.ceiling_gap_m;
-      out << ',' << row.current_a << ',' << row.soc << ',' << row.sortie << ',';
-      if (std::isfinite(row.ground_gap_m)) out << row.ground_gap_m;
-      out << ',' << row.phase << ',' << (row.assumed_free ? 1 : 0) << '\n';
+  // Twelve significant digits, as a stream with that precision wrote them, formatted into one
+  // string: a long tour has a row every few centimetres.
+  constexpr int kDigits = 12;
+  const std::vector<TourPathRow> rows = tourPathRows(tour);
+  std::string text = provenance.csvComment() + "\n" +
+                     "t_s,x,y,z,speed_m_s,ceiling_gap_m,current_a,soc,sortie,ground_gap_m,phase,assumed_free\n";
+  text.reserve(text.size() + rows.size() * 12 * 14);
+  for (const TourPathRow& row : rows) {
+    for (const double value : {row.t_s, row.position_m.x(), row.position_m.y(), row.position_m.z(), row.speed_m_s}) {
+      appendNumber(text, value, kDigits);
+      text += ',';
     }
-  });
+    if (std::isfinite(row.ceiling_gap_m)) appendNumber(text, row.ceiling_gap_m, kDigits);
+    text += ',';
+    appendNumber(text, row.current_a, kDigits);
+    text += ',';
+    appendNumber(text, row.soc, kDigits);
+    text += ',' + std::to_string(row.sortie) + ',';
+    if (std::isfinite(row.ground_gap_m)) appendNumber(text, row.ground_gap_m, kDigits);
+    text += ',';
+    text += row.phase;
+    text += row.assumed_free ? ",1\n" : ",0\n";
+  }
+  writeTextAtomically(file, [&](std::ostream& out) { out << text; });
 }
 
 std::vector<AutopilotMission> autopilotMissions(const mission::TourResult& tour, const mission::Mission& mission,

@@ -4,8 +4,11 @@
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/io/atomic_file.hpp"
 #include "ceilplan/io/json_values.hpp"
+#include "json_number.hpp"
 
+#include <array>
 #include <cmath>
+#include <iterator>
 
 namespace ceilplan::io {
 namespace {
@@ -22,18 +25,10 @@ double wrapAngle(double radians) {
 
 // Decimals per column: time, then 9 lengths, yaw, yaw rate, pitch, trigger.
 constexpr int kDecimals[] = {3, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 4, 0};
+constexpr std::size_t kColumns = std::size(kDecimals);
 
-}  // namespace
-
-std::vector<std::string> trajectoryColumns(TrajectoryFrame frame) {
-  if (frame == TrajectoryFrame::Ned)
-    return {"t_s",     "north_m", "east_m",  "down_m",  "vn_m_s",         "ve_m_s",           "vd_m_s",
-            "an_m_s2", "ae_m_s2", "ad_m_s2", "yaw_rad", "yaw_rate_rad_s", "gimbal_pitch_deg", "trigger"};
-  return {"t_s",     "x_m",     "y_m",     "z_m",     "vx_m_s",         "vy_m_s",           "vz_m_s",
-          "ax_m_s2", "ay_m_s2", "az_m_s2", "yaw_rad", "yaw_rate_rad_s", "gimbal_pitch_deg", "trigger"};
-}
-
-std::vector<double> trajectoryRow(const mission::TrajectorySetpoint& s, TrajectoryFrame frame) {
+// trajectoryRow without a vector of its own: a long sortie has tens of thousands of rows.
+std::array<double, kColumns> rowValues(const mission::TrajectorySetpoint& s, TrajectoryFrame frame) {
   const bool ned = frame == TrajectoryFrame::Ned;
   const Eigen::Vector3d p = ned ? toNed(s.position_m) : s.position_m;
   const Eigen::Vector3d v = ned ? toNed(s.velocity_m_s) : s.velocity_m_s;
@@ -57,6 +52,21 @@ std::vector<double> trajectoryRow(const mission::TrajectorySetpoint& s, Trajecto
           s.trigger ? 1.0 : 0.0};
 }
 
+}  // namespace
+
+std::vector<std::string> trajectoryColumns(TrajectoryFrame frame) {
+  if (frame == TrajectoryFrame::Ned)
+    return {"t_s",     "north_m", "east_m",  "down_m",  "vn_m_s",         "ve_m_s",           "vd_m_s",
+            "an_m_s2", "ae_m_s2", "ad_m_s2", "yaw_rad", "yaw_rate_rad_s", "gimbal_pitch_deg", "trigger"};
+  return {"t_s",     "x_m",     "y_m",     "z_m",     "vx_m_s",         "vy_m_s",           "vz_m_s",
+          "ax_m_s2", "ay_m_s2", "az_m_s2", "yaw_rad", "yaw_rate_rad_s", "gimbal_pitch_deg", "trigger"};
+}
+
+std::vector<double> trajectoryRow(const mission::TrajectorySetpoint& s, TrajectoryFrame frame) {
+  const std::array<double, kColumns> row = rowValues(s, frame);
+  return {row.begin(), row.end()};
+}
+
 std::string trajectoryCsv(const mission::Trajectory& trajectory, TrajectoryFrame frame) {
   std::string text;
   const std::vector<std::string> columns = trajectoryColumns(frame);
@@ -65,16 +75,13 @@ std::string trajectoryCsv(const mission::Trajectory& trajectory, TrajectoryFrame
   // About 14 fields of up to 12 characters a row: reserved once, not grown row by row.
   text.reserve(text.size() + trajectory.setpoints.size() * 14 * 12);
   for (const mission::TrajectorySetpoint& s : trajectory.setpoints) {
-    const std::vector<double> row = trajectoryRow(s, frame);
+    const std::array<double, kColumns> row = rowValues(s, frame);
     for (std::size_t c = 0; c < row.size(); ++c) {
       if (c) text += ',';
       const std::size_t start = text.size();
       appendFixed(text, row[c], kDecimals[c]);
       // Rounding may leave "-0.000000": write a plain zero.
-      if (text.find_first_not_of("-0.", start) == std::string::npos) {
-        text.resize(start);
-        appendFixed(text, 0.0, kDecimals[c]);
-      }
+      if (text[start] == '-' && text.find_first_not_of("0.", start + 1) == std::string::npos) text.erase(start, 1);
     }
     text += '\n';
   }
@@ -112,10 +119,22 @@ nlohmann::json trajectoryHeader(const mission::Trajectory& trajectory, Trajector
 }
 
 // One setpoint as trajectory.json holds it: the row's numbers, the trigger as an integer.
-void setRow(nlohmann::json& values, const mission::TrajectorySetpoint& s, TrajectoryFrame frame) {
-  const std::vector<double> row = trajectoryRow(s, frame);
-  for (std::size_t c = 0; c + 1 < row.size(); ++c) values[c] = row[c];
-  values[row.size() - 1] = s.trigger ? 1 : 0;
+nlohmann::json rowJson(const mission::TrajectorySetpoint& s, TrajectoryFrame frame) {
+  const std::array<double, kColumns> row = rowValues(s, frame);
+  nlohmann::json::array_t values(row.begin(), row.end() - 1);
+  values.emplace_back(s.trigger ? 1 : 0);
+  return values;
+}
+
+// Appends jsonText(rowJson(s, frame)), without a document or serializer of its own.
+void appendRowJson(std::string& text, const mission::TrajectorySetpoint& s, TrajectoryFrame frame) {
+  const std::array<double, kColumns> row = rowValues(s, frame);
+  text += '[';
+  for (std::size_t c = 0; c + 1 < row.size(); ++c) {
+    appendJsonNumber(text, row[c]);
+    text += ',';
+  }
+  text += s.trigger ? "1]" : "0]";
 }
 
 }  // namespace
@@ -125,11 +144,7 @@ nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryF
   // Arrays sized before they are filled: a long sortie has tens of thousands of setpoints.
   nlohmann::json::array_t setpoints;
   setpoints.reserve(trajectory.setpoints.size());
-  for (const mission::TrajectorySetpoint& s : trajectory.setpoints) {
-    nlohmann::json values = nlohmann::json::array();
-    setRow(values, s, frame);
-    setpoints.emplace_back(std::move(values));
-  }
+  for (const mission::TrajectorySetpoint& s : trajectory.setpoints) setpoints.emplace_back(rowJson(s, frame));
   nlohmann::json json = trajectoryHeader(trajectory, frame, origin);
   json["setpoints"] = std::move(setpoints);
   return json;
@@ -157,11 +172,9 @@ void writeTrajectoryJson(const std::filesystem::path& file, const mission::Traje
   const std::size_t rows_at = at + key.size();
   std::string text = skeleton.substr(0, rows_at);
   text.reserve(skeleton.size() + trajectory.setpoints.size() * 14 * 12);
-  nlohmann::json values = nlohmann::json::array();
   for (std::size_t k = 0; k < trajectory.setpoints.size(); ++k) {
-    setRow(values, trajectory.setpoints[k], frame);
     if (k) text += ',';
-    text += jsonText(values);
+    appendRowJson(text, trajectory.setpoints[k], frame);
   }
   text.append(skeleton, rows_at, std::string::npos);
   text += '\n';

@@ -12,6 +12,10 @@ namespace ceilplan {
 /// At most `significant` significant digits, no trailing zeros: "5.2", "0.009655", "1e-09", "nan", "inf".
 std::string formatNumber(double value, int significant = 6);
 
+/// Appends formatNumber(value, significant) to `text`, without a string of its own: what a
+/// stream with that precision writes (printf's "%.*g"), for files of many numbers (path.csv).
+void appendNumber(std::string& text, double value, int significant = 6);
+
 /// Exactly `decimals` decimals: formatFixed(43.5, 2) == "43.50"; from 1e15 on, as formatNumber.
 std::string formatFixed(double value, int decimals);
 
