@@ -3,6 +3,7 @@
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
 #include "ceilplan/environment/disc_area.hpp"
+#include "disc_columns.hpp"
 
 #include <algorithm>
 #include <array>
@@ -13,6 +14,8 @@
 
 namespace ceilplan::environment {
 namespace {
+
+using detail::forEachDiscColumn;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kDenseStepVoxels = 0.1;  // checkPathDensely's step: finer than any planner's
@@ -28,23 +31,6 @@ constexpr long kSpansBeyondPoints = 256;
 // motion sampled every 0.05 m), each run's columns looked up once for it, before falling back to
 // a search of every column under every disc at every point.
 constexpr std::size_t kRunPoints = 32;
-
-// Calls `visit(i, j, n)` for every column the disc of `radius_m` around `centre_m` overlaps with
-// positive area, n counting them, until one returns false; returns whether none did.
-template <class Visit>
-bool forEachDiscColumn(const GridFrame& frame, const Eigen::Vector2d& centre_m, double radius_m, Visit&& visit) {
-  const int i_begin = frame.indexOf(0, centre_m.x() - radius_m), i_end = frame.indexOf(0, centre_m.x() + radius_m);
-  const int j_begin = frame.indexOf(1, centre_m.y() - radius_m), j_end = frame.indexOf(1, centre_m.y() + radius_m);
-  int n = 0;
-  for (int j = j_begin; j <= j_end; ++j) {
-    const double dy = std::max({frame.faceOf(1, j) - centre_m.y(), 0.0, centre_m.y() - frame.faceOf(1, j + 1)});
-    for (int i = i_begin; i <= i_end; ++i) {
-      const double dx = std::max({frame.faceOf(0, i) - centre_m.x(), 0.0, centre_m.x() - frame.faceOf(0, i + 1)});
-      if (dx * dx + dy * dy < radius_m * radius_m && !visit(i, j, n++)) return false;
-    }
-  }
-  return true;
-}
 
 void validateOptions(const EnvironmentOptions& options) {
   if (!(options.ceiling_reach_radii > 0.0) || !std::isfinite(options.ceiling_reach_radii))

@@ -2,6 +2,7 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/core/format.hpp"
+#include "ceilplan/environment/vertical_ceiling_test.hpp"
 #include "ceilplan/planner/flight_cost_model.hpp"
 #include "ceilplan/planner/standoff.hpp"
 
@@ -124,10 +125,14 @@ class ViewpointSearch {
   // highest admissible position up to a step below; bisect upwards for it (admissibility is
   // taken as lost once, upwards, within the span).
   Eigen::Vector3d raised(const Eigen::Vector3d& body_m, double span_m) const {
+    // admissible() at each height, its ceiling test from the columns under the discs found once
+    // for the whole vertical line.
+    const environment::VerticalCeilingTest ceiling(environment_, body_m);
     double low_m = 0.0, high_m = span_m;
     for (int step = 0; step < 24; ++step) {
       const double middle_m = 0.5 * (low_m + high_m);
-      (admissible(body_m + Eigen::Vector3d(0, 0, middle_m)) ? low_m : high_m) = middle_m;
+      const Eigen::Vector3d at_m = body_m + Eigen::Vector3d(0, 0, middle_m);
+      (validInRange(at_m) && ceiling.gapAtLeast(at_m, options_.min_ceiling_gap_m) ? low_m : high_m) = middle_m;
     }
     return body_m + Eigen::Vector3d(0, 0, low_m);
   }

@@ -5,9 +5,11 @@
 
 #include "ceilplan/core/error.hpp"
 #include "ceilplan/environment/environment.hpp"
+#include "ceilplan/environment/vertical_ceiling_test.hpp"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -20,6 +22,26 @@ using testing::room;
 using testing::singleRotor;
 constexpr double kExact = 1e-6;
 constexpr double kNone = std::numeric_limits<double>::infinity();
+
+// A ceiling rising 0.1 m every 0.2 m of x, from 2.5 m at x = 0.
+OccupancyMap slopedCeiling() {
+  return room([](double x, double) { return 2.5 + 0.1 * std::floor(x / 0.2); });
+}
+
+// Unknown space from 2.5 m up, but where x > 0.3 an occupied ceiling from 2.4 m.
+OccupancyMap unknownCeiling() {
+  return analyticMap({-2, -2, 0}, {2, 2, 4}, 0.1, [](const Eigen::Vector3d& c) {
+    if (c.z() < 0.2 || (c.x() > 0.3 && c.z() > 2.4)) return CellState::Occupied;
+    return c.z() < 2.5 ? CellState::Free : CellState::Unknown;
+  });
+}
+
+// The default unknown-space policy, and unknown space as a surface.
+std::array<EnvironmentOptions, 2> bothPolicies() {
+  EnvironmentOptions cautious;
+  cautious.unknown_is_surface = true;
+  return {EnvironmentOptions{}, cautious};
+}
 
 TEST(CeilingGap, FlatCeilingOnAVoxelFaceGivesTheExactGapForEveryRotor) {
   const OccupancyMap map = room([](double, double) { return 3.0; });
@@ -125,17 +147,12 @@ TEST(CeilingGap, UnknownAboveMeansNoCeilingUnlessTheOptionSaysOtherwise) {
 // The candidate views ask only whether the nearest gap reaches a bound: the same answer as the
 // full query at every height under sloped, stepped and unknown ceilings, bounds on a gap included.
 TEST(CeilingGap, AtLeastAnswersAsTheNearestGapOfTheFullQuery) {
-  const OccupancyMap sloped = room([](double x, double) { return 2.5 + 0.1 * std::floor(x / 0.2); });
+  const OccupancyMap sloped = slopedCeiling();
   const OccupancyMap stepped = room([](double x, double y) { return x < 0 ? 3.0 : (y < 0.1 ? 2.6 : 2.8); });
-  const OccupancyMap unknown = analyticMap({-2, -2, 0}, {2, 2, 4}, 0.1, [](const Eigen::Vector3d& c) {
-    if (c.z() < 0.2 || (c.x() > 0.3 && c.z() > 2.4)) return CellState::Occupied;
-    return c.z() < 2.5 ? CellState::Free : CellState::Unknown;
-  });
-  EnvironmentOptions cautious;
-  cautious.unknown_is_surface = true;
+  const OccupancyMap unknown = unknownCeiling();
   int below = 0, above = 0;
   for (const OccupancyMap* map : {&sloped, &stepped, &unknown})
-    for (const EnvironmentOptions& options : {EnvironmentOptions{}, cautious}) {
+    for (const EnvironmentOptions& options : bothPolicies()) {
       const Environment environment(*map, quad(), options);
       for (double x = -0.6; x <= 0.6; x += 0.037)
         for (double z = 1.8; z <= 2.4; z += 0.043) {
@@ -150,6 +167,44 @@ TEST(CeilingGap, AtLeastAnswersAsTheNearestGapOfTheFullQuery) {
     }
   EXPECT_GT(below, 100);
   EXPECT_GT(above, 100);
+}
+
+// The viewpoint search's bisection asks ceilingGapAtLeast at many heights on one vertical line:
+// VerticalCeilingTest answers from the columns under the discs found once, the same as the full
+// query at every height, bounds on a gap included, also past a thin slab (a column's span at the
+// line's first height no longer holds there), off the line and outside the map.
+TEST(CeilingGap, TheVerticalTestAnswersAsCeilingGapAtLeastOnTheWholeLine) {
+  const OccupancyMap sloped = slopedCeiling();
+  const OccupancyMap slab = analyticMap({-2, -2, 0}, {2, 2, 4}, 0.1, [](const Eigen::Vector3d& c) {
+    const bool thin_slab = c.x() < 0.2 && c.z() > 2.0 && c.z() < 2.1;
+    return c.z() < 0.2 || c.z() > 3.0 || thin_slab ? CellState::Occupied : CellState::Free;
+  });
+  const OccupancyMap unknown = unknownCeiling();
+  int below = 0, above = 0;
+  for (const OccupancyMap* map : {&sloped, &slab, &unknown})
+    for (const EnvironmentOptions& options : bothPolicies()) {
+      const Environment environment(*map, quad(), options);
+      for (double x = -0.6; x <= 0.6; x += 0.083) {
+        const Eigen::Vector3d line(x, 0.05 - 0.3 * x, 1.6);
+        const VerticalCeilingTest vertical(environment, line);
+        for (double z = 1.6; z <= 3.2; z += 0.0137) {
+          const Eigen::Vector3d body(line.x(), line.y(), z);
+          const double nearest_m = environment.ceiling(body).nearest_gap_m;
+          for (const double bound_m : {0.03, 0.1, 0.25, nearest_m, std::nextafter(nearest_m, kNone)}) {
+            const bool at_least = environment.ceilingGapAtLeast(body, bound_m);
+            ASSERT_EQ(vertical.gapAtLeast(body, bound_m), at_least) << body.transpose() << " bound " << bound_m;
+            ASSERT_EQ(vertical.gapAtLeast(body + Eigen::Vector3d(0.031, 0, 0), bound_m),
+                      environment.ceilingGapAtLeast(body + Eigen::Vector3d(0.031, 0, 0), bound_m));
+            (at_least ? above : below) += 1;
+          }
+        }
+      }
+      EXPECT_THROW(VerticalCeilingTest(environment, {2.5, 0, 1}), ceilplan::InputError);
+      const VerticalCeilingTest inside(environment, {0, 0, 1});
+      EXPECT_THROW(inside.gapAtLeast({0, 0, 4.5}, 0.03), ceilplan::InputError);
+    }
+  EXPECT_GT(below, 1000);
+  EXPECT_GT(above, 1000);
 }
 
 TEST(GroundGap, MeasuresDownToTheFloorsUpperFace) {
