@@ -1,7 +1,9 @@
 #pragma once
-// The columns a rotor disc covers, for every query that weighs or tests them (environment.cpp)
-// and for the vertical ceiling test, which must visit the same columns in the same order.
+// The columns a rotor disc covers, and what counts as a surface in them, for every query that
+// weighs or tests them (environment.cpp) and for the vertical ceiling test, which must visit the
+// same columns and see the same surfaces.
 
+#include "ceilplan/environment/column_index.hpp"
 #include "ceilplan/environment/voxel_grid.hpp"
 
 #include <Eigen/Core>
@@ -25,6 +27,12 @@ bool forEachDiscColumn(const GridFrame& frame, const Eigen::Vector2d& centre_m, 
     }
   }
   return true;
+}
+
+// Whether a column's boundary is a surface the gaps measure to: occupied, or unknown where the
+// policy takes unknown space as a surface.
+inline bool isSurface(const ColumnIndex::Boundary& boundary, bool unknown_is_surface) {
+  return boundary.state == CellState::Occupied || (boundary.state == CellState::Unknown && unknown_is_surface);
 }
 
 }  // namespace ceilplan::environment::detail

@@ -125,7 +125,7 @@ bool Environment::anyColumnUnderCylinder(const Eigen::Vector3d& body_m, Visit&& 
 }
 
 bool Environment::isSurface(const ColumnIndex::Boundary& boundary) const {
-  return boundary.state == CellState::Occupied || (boundary.state == CellState::Unknown && options_.unknown_is_surface);
+  return detail::isSurface(boundary, options_.unknown_is_surface);
 }
 
 double Environment::surfaceGap(const ColumnIndex::Boundary& boundary, double z_m) const {

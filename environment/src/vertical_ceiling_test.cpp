@@ -9,11 +9,8 @@ namespace ceilplan::environment {
 
 VerticalCeilingTest::VerticalCeilingTest(const Environment& environment, const Eigen::Vector3d& body_m)
     : environment_(environment), line_m_(body_m.head<2>()) {
-  if (!environment.contains(body_m)) {
-    environment.ceilingGapAtLeast(body_m, 0.0);  // throws its error for a position outside the map
-    spans_ = false;
-    return;
-  }
+  // A position outside the map, or not finite, gets ceilingGapAtLeast's own error.
+  if (!environment.contains(body_m)) environment.ceilingGapAtLeast(body_m, 0.0);
   const VehicleGeometry& vehicle = environment.vehicle();
   const ColumnIndex& columns = environment.columns();
   const double plane_z = body_m.z() + vehicle.rotor_plane_height_m;
@@ -22,12 +19,10 @@ VerticalCeilingTest::VerticalCeilingTest(const Environment& environment, const E
         environment.grid().frame(), line_m_ + offset, vehicle.rotor_radius_m, [&](int i, int j, int) {
           const std::optional<ColumnIndex::FreeSpan> span = columns.freeSpan(i, j, plane_z);
           if (!span) return spans_ = false;
-          // As Environment's surface test: the boundary above the span,
-          // which ColumnIndex::above gives at every height inside it.
+          // The boundary above the span, which ColumnIndex::above gives at every height inside it.
           const ColumnIndex::Boundary& above = span->around.above;
-          const bool surface = above.state == CellState::Occupied ||
-                               (above.state == CellState::Unknown && environment.options().unknown_is_surface);
-          columns_.push_back({span->lo, span->hi, above.face_m, surface});
+          columns_.push_back(
+              {span->lo, span->hi, above.face_m, detail::isSurface(above, environment.options().unknown_is_surface)});
           return true;
         });
 }
