@@ -113,6 +113,8 @@ class LazyLattice {
       : grid(frame, spacing_m), costs_(grid.nodeCount(), kDirections, kUncosted) {}
 
   std::atomic<float>& cost(std::size_t node, int direction) const { return costs_.at(node, direction); }
+  // The node's 26 outgoing costs, in direction order.
+  std::atomic<float>* costsOf(std::size_t node) const { return &costs_.at(node, 0); }
   template <typename Visit>
   void forEachCost(Visit&& visit) const {
     costs_.forEachSet(visit);
@@ -619,6 +621,7 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     std::vector<double> cost_to;
     std::vector<std::uint32_t> parent;
     std::vector<char> closed;
+    std::vector<char> joins;  // whether a join into a goal leaves from the state
     std::vector<std::uint32_t> touched;
   };
   thread_local Buffers buffers;
@@ -626,6 +629,7 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     buffers.cost_to.resize(state_count, std::numeric_limits<double>::infinity());
     buffers.parent.resize(state_count, kStart);
     buffers.closed.resize(state_count, 0);
+    buffers.joins.resize(state_count, 0);
   }
   struct Reset {
     Buffers& b;
@@ -702,7 +706,17 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     for (const Join& join : place_data[goal].in) goal_joins.push_back({join.state, goal, join.cost});
   std::stable_sort(goal_joins.begin(), goal_joins.end(),
                    [](const GoalJoin& a, const GoalJoin& b) { return a.state < b.state; });
+  // Marked for the search's states, so that the many states without joins skip the lookup.
+  struct Marks {
+    std::vector<char>& joins;
+    const std::vector<GoalJoin>& goal_joins;
+    ~Marks() {
+      for (const GoalJoin& join : goal_joins) joins[join.state] = 0;
+    }
+  } marks{buffers.joins, goal_joins};
+  for (const GoalJoin& join : goal_joins) marks.joins[join.state] = 1;
   const auto joinsFrom = [&](std::uint32_t state) {
+    if (!marks.joins[state]) return std::make_pair(goal_joins.end(), goal_joins.end());
     const auto first = std::lower_bound(goal_joins.begin(), goal_joins.end(), state,
                                         [](const GoalJoin& join, std::uint32_t s) { return join.state < s; });
     auto last = first;
@@ -713,6 +727,13 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     const auto [first, last] = joinsFrom(state);
     for (auto join = first; join != last; ++join) relax(place_offset + join->goal, state, g + join->cost);
   };
+
+  // Each direction's step in node ids.
+  std::array<std::int64_t, kDirections> id_steps{};
+  for (int d = 0; d < kDirections; ++d) {
+    const std::array<int, 3>& offset = directions.offsets[d];
+    id_steps[d] = (static_cast<std::int64_t>(offset[2]) * lattice.size(1) + offset[1]) * lattice.size(0) + offset[0];
+  }
 
   for (const Join& join : place_data[from].out) relax(join.state, kStart, join.cost);
   int goals_left = static_cast<int>(targets.size());
@@ -742,15 +763,23 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
       continue;
     }
     const std::uint32_t node = state;  // valid: reached by an edge or a join
+    // The node's indices once for its 26 neighbours (each a division), which lie inside the
+    // lattice unless the node is on its boundary.
+    const std::array<int, 3> at = lattice.indices(node);
+    const bool interior = at[0] > 0 && at[1] > 0 && at[2] > 0 && at[0] + 1 < lattice.size(0) &&
+                          at[1] + 1 < lattice.size(1) && at[2] + 1 < lattice.size(2);
+    const std::atomic<float>* const costs = lattice_->costsOf(node);
     for (int d = 0; d < kDirections; ++d) {
-      const std::optional<std::uint32_t> next = neighbourNode(lattice, directions, node, d);
-      if (!next || closed[*next]) continue;
-      const float c = lattice_->cost(node, d).load(std::memory_order_relaxed);
+      const std::array<int, 3>& offset = directions.offsets[d];
+      if (!interior && !lattice.inside(at[0] + offset[0], at[1] + offset[1], at[2] + offset[2])) continue;
+      const std::uint32_t next = static_cast<std::uint32_t>(node + id_steps[d]);
+      if (closed[next]) continue;
+      const float c = costs[d].load(std::memory_order_relaxed);
       if (c == kUncosted) {
         // Below the key its end gets through this edge, and no lower than this node's own.
-        if (g + edge_bounds_[d] < cost_to[*next]) open.push({g + edge_bounds_[d] + heuristic(*next), node, d});
+        if (g + edge_bounds_[d] < cost_to[next]) open.push({g + edge_bounds_[d] + heuristic(next), node, d});
       } else if (c != kNoEdge) {
-        relax(*next, node, g + c);
+        relax(next, node, g + c);
       }
     }
     if (!node_arcs_.empty()) {
