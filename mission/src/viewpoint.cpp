@@ -13,6 +13,7 @@
 #include <optional>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 namespace ceilplan::mission {
 
@@ -61,17 +62,54 @@ class ViewpointSearch {
 
   // Every lattice point at `step_m` spacing within `reach_m` of `centre_m`. With `hug`, the top
   // admissible point of each lattice column is also tried as high as it stays admissible.
+  // Each point's key is found column by column (in ceiling mode a column's points look their
+  // gaps up together: Environment::ceilingAndGroundAlong searches each column under the discs
+  // once for all of them), then the points are considered in the lattice's order (z, then y,
+  // then x), which decides between equals.
   // By value: the refining pass scans around best(), which the scan itself moves.
   // NOLINTNEXTLINE(performance-unnecessary-value-param)
   void scan(const Eigen::Vector3d centre_m, double step_m, double reach_m, bool hug) {
     const int n = static_cast<int>(std::ceil(reach_m / step_m));
+    const int side = 2 * n + 1;
+    const auto bodyAt = [&](int i, int j, int k) {
+      return ontoShell(centre_m + step_m * Eigen::Vector3d(i, j, k), step_m);
+    };
+    const auto place = [&](int i, int j, int k) {
+      return (static_cast<std::size_t>(k + n) * side + (j + n)) * side + (i + n);
+    };
+    keys_.assign(static_cast<std::size_t>(side) * side * side, kInadmissible);
+    std::vector<Eigen::Vector3d> bodies_m;
+    std::vector<std::size_t> places;
+    for (int j = -n; j <= n; ++j)
+      for (int i = -n; i <= n; ++i) {
+        bodies_m.clear(), places.clear();
+        for (int k = -n; k <= n; ++k) {
+          const Eigen::Vector3d body_m = bodyAt(i, j, k);
+          if (!validInRange(body_m)) continue;
+          bodies_m.push_back(body_m);
+          places.push_back(place(i, j, k));
+        }
+        if (options_.mode != FlightMode::Ceiling) {
+          for (std::size_t p = 0; p < bodies_m.size(); ++p)
+            if (environment_.ceilingGapAtLeast(bodies_m[p], options_.min_ceiling_gap_m))
+              keys_[places[p]] = key(bodies_m[p]);
+          continue;
+        }
+        // Ceiling mode reads the gaps above and below once for both (the nearest gap above is
+        // the ceiling's, to the bit), and prices the point from them.
+        environment_.ceilingAndGroundAlong(
+            bodies_m, [&](std::size_t p, const environment::Environment::CeilingAndGround& gaps) {
+              if (gaps.ceiling.nearest_gap_m >= options_.min_ceiling_gap_m)
+                keys_[places[p]] = currentKey(hoverCurrentUnder(model_, gaps, options_.soc));
+            });
+      }
     for (int k = -n; k <= n; ++k)
       for (int j = -n; j <= n; ++j)
         for (int i = -n; i <= n; ++i) {
-          const Eigen::Vector3d body_m = ontoShell(centre_m + step_m * Eigen::Vector3d(i, j, k), step_m);
-          const std::optional<double> key = admissibleKey(body_m);
-          if (!key) continue;
-          consider(body_m, *key);
+          const double point_key = keys_[place(i, j, k)];
+          if (point_key == kInadmissible) continue;
+          const Eigen::Vector3d body_m = bodyAt(i, j, k);
+          consider(body_m, point_key);
           const Eigen::Vector3d step_up_m(0, 0, step_m);
           if (hug && !admissible(body_m + step_up_m)) {
             const Eigen::Vector3d top_m = raised(body_m, step_m);
@@ -108,17 +146,6 @@ class ViewpointSearch {
   // validInRange, and clear of the ceiling by the minimum gap.
   bool admissible(const Eigen::Vector3d& body_m) const {
     return validInRange(body_m) && environment_.ceilingGapAtLeast(body_m, options_.min_ceiling_gap_m);
-  }
-
-  // key() at an admissible position, none elsewhere. Ceiling mode reads the gaps above and below
-  // once for both (the nearest gap above is the ceiling's, to the bit): the scan asks this of
-  // every lattice point, and the columns under the discs are most of its cost.
-  std::optional<double> admissibleKey(const Eigen::Vector3d& body_m) const {
-    if (options_.mode != FlightMode::Ceiling) return admissible(body_m) ? std::optional(key(body_m)) : std::nullopt;
-    if (!validInRange(body_m)) return std::nullopt;
-    const environment::Environment::CeilingAndGround gaps = environment_.ceilingAndGround(body_m);
-    if (!(gaps.ceiling.nearest_gap_m >= options_.min_ceiling_gap_m)) return std::nullopt;
-    return currentKey(hoverCurrentUnder(model_, gaps, options_.soc));
   }
 
   // Ceiling mode: the current keeps falling as the gap above closes, and a lattice leaves the
@@ -177,6 +204,10 @@ class ViewpointSearch {
   const energy::EnergyModel& model_;
   const ViewpointOptions& options_;
   Best any_, reachable_;
+  // Each lattice point's key in the scan under way (kInadmissible where it is not admissible),
+  // kept between scans for its storage.
+  static constexpr double kInadmissible = -1.0;  // keys are never negative
+  std::vector<double> keys_;
 };
 
 }  // namespace
