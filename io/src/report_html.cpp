@@ -243,7 +243,6 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
     for (int s = 1; s <= steps; ++s) probes.push_back(from + d * (s * kProbeSpacing_m / d.norm()));
   }
   if (route_m.size() > 1 && (route_m.back() - probes.back()).norm() > 0.0) probes.push_back(route_m.back());
-  const auto occupied = [&](int i, int j, int k) { return grid.at(i, j, k) == environment::CellState::Occupied; };
   const auto isFree = [&](int i, int j, int k) { return grid.at(i, j, k) == environment::CellState::Free; };
   const int reach = static_cast<int>(std::ceil(radius_m / r));
   // Whether probe p's sphere takes voxel (i, j, k): its row within reach, its centre within the
@@ -307,9 +306,12 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
   // Voxel -> faces towards free space, in linear order (each voxel is visited once, in order).
   std::vector<std::pair<std::size_t, std::uint8_t>> voxels;
   for (int k = std::max(0, low[2]); k <= std::min(size[2] - 1, high[2]); ++k)
-    for (int j = std::max(0, low[1]); j <= std::min(size[1] - 1, high[1]); ++j)
+    for (int j = std::max(0, low[1]); j <= std::min(size[1] - 1, high[1]); ++j) {
+      // The box is inside the grid: its rows are read by linear index, without a bounds check
+      // each (the route's box spans a large structure's millions of voxels).
+      const std::size_t row = frame.linear(0, j, k);
       for (int i = std::max(0, low[0]); i <= std::min(size[0] - 1, high[0]); ++i) {
-        if (!occupied(i, j, k)) continue;
+        if (grid.atLinear(row + i) != environment::CellState::Occupied) continue;
         const std::uint8_t faces =
             static_cast<std::uint8_t>(isFree(i - 1, j, k) | isFree(i + 1, j, k) << 1 | isFree(i, j - 1, k) << 2 |
                                       isFree(i, j + 1, k) << 3 | isFree(i, j, k - 1) << 4 | isFree(i, j, k + 1) << 5);
@@ -332,6 +334,7 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
             }
         if (taken) voxels.emplace_back(frame.linear(i, j, k), faces);
       }
+    }
   // Coarsen until it fits: a coarse cell holds any chosen voxel and draws any face they show.
   for (int factor = 1;; ++factor) {
     if (factor == 1 && voxels.size() > max_voxels) continue;  // uncoarsened, each voxel is its own cell

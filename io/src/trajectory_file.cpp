@@ -152,8 +152,8 @@ nlohmann::json trajectoryJson(const mission::Trajectory& trajectory, TrajectoryF
 
 void writeTrajectoryCsv(const std::filesystem::path& file, const mission::Trajectory& trajectory, TrajectoryFrame frame,
                         const Provenance& provenance) {
-  const std::string text = provenance.csvComment() + "\n" + trajectoryCsv(trajectory, frame);
-  writeTextAtomically(file, [&](std::ostream& out) { out << text; });
+  const std::string comment = provenance.csvComment(), csv = trajectoryCsv(trajectory, frame);
+  writeTextAtomically(file, [&](std::ostream& out) { out << comment << '\n' << csv; });
 }
 
 void writeTrajectoryJson(const std::filesystem::path& file, const mission::Trajectory& trajectory,
