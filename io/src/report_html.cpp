@@ -15,6 +15,7 @@
 #include <limits>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 
 namespace ceilplan::io {
 
@@ -341,8 +342,15 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
     std::vector<environment::Index3> cells;
     std::vector<std::uint8_t> faces;
     std::unordered_map<std::size_t, std::size_t> cell_of;
+    cells.reserve(factor == 1 ? voxels.size() : 0);
+    faces.reserve(cells.capacity());
     for (const auto& [voxel, voxel_faces] : voxels) {
       const environment::Index3 index = frame.unlinear(voxel);
+      if (factor == 1) {  // each voxel is its own cell, visited once
+        cells.push_back(index);
+        faces.push_back(voxel_faces);
+        continue;
+      }
       const environment::Index3 cell{index[0] / factor, index[1] / factor, index[2] / factor};
       const auto [at, inserted] = cell_of.emplace(frame.linear(cell[0], cell[1], cell[2]), cells.size());
       if (inserted) {
@@ -354,7 +362,8 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
     if (cells.size() <= max_voxels || factor > 16) {
       ReportStructure structure;
       structure.voxel_m = r * factor;
-      structure.faces = faces;
+      structure.faces = std::move(faces);
+      structure.centres_m.reserve(cells.size());
       for (const environment::Index3& cell : cells) {
         Eigen::Vector3d centre;
         for (int axis = 0; axis < 3; ++axis) centre[axis] = frame.faceOf(axis, cell[axis] * factor) + 0.5 * r * factor;
