@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include <array>
 #include <initializer_list>
 #include <string>
 
@@ -22,6 +23,16 @@ void writeMapViews(const std::filesystem::path& dir, const environment::Environm
     const double c = frame.centreOf(axis, index);
     return c >= band.min()[axis] && c <= band.max()[axis];
   };
+  // The indices along each axis whose centres lie in the band: one run, as centres increase.
+  std::array<std::array<int, 2>, 3> in_band{};
+  for (int axis = 0; axis < 3; ++axis) {
+    in_band[axis] = {0, -1};
+    int index = 0;
+    while (index < frame.size()[axis] && !inBand(axis, index)) ++index;
+    in_band[axis][0] = index;
+    while (index < frame.size()[axis] && inBand(axis, index)) ++index;
+    in_band[axis][1] = index - 1;
+  }
   // Top: the height of the first structure above the lowest route point, per column.
   const double reference_z = band.min().z() + 1.0;
   // A row of numbers as a stream writes them (six significant digits), into one string.
@@ -33,21 +44,18 @@ void writeMapViews(const std::filesystem::path& dir, const environment::Environm
     text.back() = '\n';
   };
   std::string top = provenance.csvComment() + "\nx_m,y_m,ceiling_m\n";
-  for (int j = 0; j < frame.size()[1]; ++j)
-    for (int i = 0; i < frame.size()[0]; ++i) {
-      if (!inBand(0, i) || !inBand(1, j)) continue;
+  for (int j = in_band[1][0]; j <= in_band[1][1]; ++j)
+    for (int i = in_band[0][0]; i <= in_band[0][1]; ++i) {
       const environment::ColumnIndex::Boundary above = environment.columns().above(i, j, reference_z);
       if (above.state == environment::CellState::Occupied)
         appendRow(top, {frame.centreOf(0, i), frame.centreOf(1, j), above.face_m});
     }
   writeTextAtomically(dir / "map_top.csv", [&](std::ostream& out) { out << top; });
   std::string side = provenance.csvComment() + "\nx_m,z_m\n";
-  for (int k = 0; k < frame.size()[2]; ++k) {
-    if (!inBand(2, k)) continue;
-    for (int i = 0; i < frame.size()[0]; ++i) {
-      if (!inBand(0, i)) continue;
-      for (int j = 0; j < frame.size()[1]; ++j)
-        if (inBand(1, j) && grid.at(i, j, k) == environment::CellState::Occupied) {
+  for (int k = in_band[2][0]; k <= in_band[2][1]; ++k) {
+    for (int i = in_band[0][0]; i <= in_band[0][1]; ++i) {
+      for (int j = in_band[1][0]; j <= in_band[1][1]; ++j)
+        if (grid.at(i, j, k) == environment::CellState::Occupied) {
           appendRow(side, {frame.centreOf(0, i), frame.centreOf(2, k)});
           break;
         }

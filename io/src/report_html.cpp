@@ -232,6 +232,10 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
   // Probes along the route, half a metre apart.
   constexpr double kProbeSpacing_m = 0.5;
   std::vector<Eigen::Vector3d> probes;
+  double route_length_m = 0.0;
+  for (std::size_t k = 1; k < route_m.size(); ++k) route_length_m += (route_m[k] - route_m[k - 1]).norm();
+  if (std::isfinite(route_length_m))
+    probes.reserve(route_m.size() + static_cast<std::size_t>(route_length_m / kProbeSpacing_m));
   for (std::size_t k = 0; k < route_m.size(); ++k) {
     requireFinite(route_m[k], "route point");
     if (probes.empty()) {
@@ -306,6 +310,7 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
   const environment::Index3& size = frame.size();
   // Voxel -> faces towards free space, in linear order (each voxel is visited once, in order).
   std::vector<std::pair<std::size_t, std::uint8_t>> voxels;
+  voxels.reserve(std::min<std::size_t>(max_voxels, std::size_t{1} << 20));  // most routes take fewer
   for (int k = std::max(0, low[2]); k <= std::min(size[2] - 1, high[2]); ++k)
     for (int j = std::max(0, low[1]); j <= std::min(size[1] - 1, high[1]); ++j) {
       // The box is inside the grid: its rows are read by linear index, without a bounds check
