@@ -742,7 +742,8 @@ std::vector<std::optional<RoadmapRoute>> LatticeRoadmap::search(const std::vecto
     open.pop();
     if (entry.direction >= 0) {
       const std::uint32_t node = entry.state;
-      const std::uint32_t next = *neighbourNode(lattice, directions, node, entry.direction);
+      // Such an entry is pushed only for a neighbour inside the lattice.
+      const std::uint32_t next = static_cast<std::uint32_t>(node + id_steps[entry.direction]);
       const double g = cost_to[node];
       if (closed[next] || g + edge_bounds_[entry.direction] >= cost_to[next]) continue;
       const float c = edgeCost(node, entry.direction);
