@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -22,6 +23,9 @@ inline void appendJsonNumber(std::string& text, double value) {
 }
 
 /// Appends what jsonText writes for the integer `value`.
-inline void appendJsonNumber(std::string& text, long value) { text += std::to_string(value); }
+inline void appendJsonNumber(std::string& text, long value) {
+  std::array<char, 24> buffer{};
+  text.append(buffer.data(), std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr);
+}
 
 }  // namespace ceilplan::io

@@ -26,7 +26,6 @@ void writeMapViews(const std::filesystem::path& dir, const environment::Environm
   // The indices along each axis whose centres lie in the band: one run, as centres increase.
   std::array<std::array<int, 2>, 3> in_band{};
   for (int axis = 0; axis < 3; ++axis) {
-    in_band[axis] = {0, -1};
     int index = 0;
     while (index < frame.size()[axis] && !inBand(axis, index)) ++index;
     in_band[axis][0] = index;

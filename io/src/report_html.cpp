@@ -347,8 +347,10 @@ ReportStructure structureNear(const environment::VoxelGrid& grid, const std::vec
     std::vector<environment::Index3> cells;
     std::vector<std::uint8_t> faces;
     std::unordered_map<std::size_t, std::size_t> cell_of;
-    cells.reserve(factor == 1 ? voxels.size() : 0);
-    faces.reserve(cells.capacity());
+    if (factor == 1) {
+      cells.reserve(voxels.size());
+      faces.reserve(voxels.size());
+    }
     for (const auto& [voxel, voxel_faces] : voxels) {
       const environment::Index3 index = frame.unlinear(voxel);
       if (factor == 1) {  // each voxel is its own cell, visited once
